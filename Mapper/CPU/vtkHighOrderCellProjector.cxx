@@ -1,0 +1,358 @@
+#include "vtkHighOrderCellProjector.h"
+
+#include "vtkHighOrderTetraSetup.h"
+#include "vtkHighOrderViewRays.h"
+
+#include "hovCompositing.h"      // CompositeBehind
+#include "hovTransferFunction.h" // the table
+
+#include "vtkSMPTools.h"
+
+#include <algorithm> // std::min, std::max, std::sort
+#include <array>     // pixel boxes
+#include <cmath>     // std::ceil, std::floor
+
+namespace
+{
+// Witness tolerance: a later cell may start this much (relative to the view
+// depth) in front of the farthest exit so far before the order counts as
+// wrong. Exits and entries through a shared face are bit-identical (canonical
+// planes), so this only absorbs round-off at edges and vertices.
+constexpr double WitnessRelativeTolerance = 1e-9;
+
+using Box = std::array<int, 4>; // i0, i1, j0, j1 inclusive; i0 > i1 means empty
+using Tetra = vtkHighOrderTetraSetup::Tetra;
+using Ray = vtkHighOrderViewRays::Ray;
+
+/// Pixel box of a tetrahedron: centres inside its projected bounding box,
+/// plus one pixel of margin (the per-pixel ray test is exact).
+Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
+  const std::vector<unsigned char>& projectable, int width, int height)
+{
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (vtkIdType id : tet.Points)
+  {
+    if (!projectable[id])
+    {
+      return Box{ 0, width - 1, 0, height - 1 }; // crosses the eye plane
+    }
+    x0 = std::min(x0, window[id].x);
+    x1 = std::max(x1, window[id].x);
+    y0 = std::min(y0, window[id].y);
+    y1 = std::max(y1, window[id].y);
+  }
+  const double lim = 1e9; // keep the int conversion defined for far-off cells
+  Box b;
+  b[0] = static_cast<int>(std::max(0.0, std::ceil(std::max(x0, -lim) - 0.5) - 1.0));
+  b[1] = static_cast<int>(std::min(width - 1.0, std::floor(std::min(x1, lim) - 0.5) + 1.0));
+  b[2] = static_cast<int>(std::max(0.0, std::ceil(std::max(y0, -lim) - 0.5) - 1.0));
+  b[3] = static_cast<int>(std::min(height - 1.0, std::floor(std::min(y1, lim) - 0.5) + 1.0));
+  return b;
+}
+
+/// Exact clip of a ray against the four face planes; false if it misses.
+inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, double& tIn, double& tOut)
+{
+  tIn = 0.0;
+  tOut = tMax;
+  for (int k = 0; k < 4; ++k)
+  {
+    const double denom = glm::dot(tet.Normal[k], ray.Direction);
+    const double num = tet.Offset[k] - glm::dot(tet.Normal[k], ray.Origin);
+    if (denom > 0.0)
+    {
+      tOut = std::min(tOut, num / denom);
+    }
+    else if (denom < 0.0)
+    {
+      tIn = std::max(tIn, num / denom);
+    }
+    else if (num < 0.0)
+    {
+      return false;
+    }
+  }
+  return tIn < tOut;
+}
+
+/// A ray-cell segment waiting for its turn (per-pixel ordering).
+struct Fragment
+{
+  int Pixel;
+  double TIn, TOut, SIn, SOut;
+  vtkIdType Order;
+  bool operator<(const Fragment& o) const
+  {
+    if (this->Pixel != o.Pixel)
+    {
+      return this->Pixel < o.Pixel;
+    }
+    if (this->TIn != o.TIn)
+    {
+      return this->TIn < o.TIn;
+    }
+    return this->Order < o.Order;
+  }
+};
+
+/// Cells binned into image tiles, each tile's list in visibility order.
+struct TileBins
+{
+  int Size, TilesX, TilesY;
+  std::vector<Box> Boxes;           // per ordered cell
+  std::vector<vtkIdType> Start;     // per tile, into Cells
+  std::vector<vtkIdType> Cells;     // ordered-cell indices
+
+  void Build(const std::vector<Box>& boxes, int width, int height, int tileSize)
+  {
+    this->Size = tileSize;
+    this->TilesX = (width + tileSize - 1) / tileSize;
+    this->TilesY = (height + tileSize - 1) / tileSize;
+    const int numTiles = this->TilesX * this->TilesY;
+    this->Start.assign(numTiles + 1, 0);
+    auto forTiles = [&](const Box& b, auto&& f) {
+      if (b[0] > b[1] || b[2] > b[3])
+      {
+        return;
+      }
+      for (int ty = b[2] / tileSize; ty <= b[3] / tileSize; ++ty)
+      {
+        for (int tx = b[0] / tileSize; tx <= b[1] / tileSize; ++tx)
+        {
+          f(ty * this->TilesX + tx);
+        }
+      }
+    };
+    for (const Box& b : boxes)
+    {
+      forTiles(b, [&](int t) { ++this->Start[t + 1]; });
+    }
+    for (int t = 0; t < numTiles; ++t)
+    {
+      this->Start[t + 1] += this->Start[t];
+    }
+    this->Cells.resize(this->Start[numTiles]);
+    std::vector<vtkIdType> fill(this->Start.begin(), this->Start.end() - 1);
+    for (size_t k = 0; k < boxes.size(); ++k)
+    {
+      forTiles(boxes[k], [&](int t) { this->Cells[fill[t]++] = static_cast<vtkIdType>(k); });
+    }
+  }
+};
+
+/// One tile's pixels: rays, accumulated colour, witness state.
+struct Tile
+{
+  int X0 = 0, Y0 = 0, W = 0, H = 0;
+  std::vector<Ray> Rays;
+  std::vector<double> TMax;
+  std::vector<hov::RGBA> Accum;
+  std::vector<double> MaxExit;
+  std::vector<unsigned char> Violated;
+  std::vector<unsigned char> Done;
+  std::vector<Fragment> Fragments;
+
+  void Init(int tileIndex, const TileBins& bins, const vtkHighOrderViewRays& rays, const float* depth)
+  {
+    const int width = rays.GetWidth();
+    this->X0 = (tileIndex % bins.TilesX) * bins.Size;
+    this->Y0 = (tileIndex / bins.TilesX) * bins.Size;
+    this->W = std::min(bins.Size, width - this->X0);
+    this->H = std::min(bins.Size, rays.GetHeight() - this->Y0);
+    const size_t n = static_cast<size_t>(this->W) * this->H;
+    this->Rays.resize(n);
+    this->TMax.resize(n);
+    this->Accum.assign(n, hov::RGBA());
+    this->MaxExit.assign(n, -1e300);
+    this->Violated.assign(n, 0);
+    this->Done.assign(n, 0);
+    this->Fragments.clear();
+    for (int j = 0; j < this->H; ++j)
+    {
+      for (int i = 0; i < this->W; ++i)
+      {
+        const int pi = this->X0 + i, pj = this->Y0 + j;
+        const size_t p = static_cast<size_t>(j) * this->W + i;
+        this->Rays[p] = rays.PixelRay(pi, pj);
+        double tMax = this->Rays[p].TFar;
+        const double z = depth ? depth[static_cast<size_t>(pj) * width + pi] : 1.0;
+        if (z < 1.0)
+        {
+          tMax = std::min(tMax, rays.DepthToT(pi, pj, this->Rays[p], z));
+        }
+        this->TMax[p] = tMax;
+      }
+    }
+  }
+
+  /// Tile-local pixel range covered by box b.
+  void Clamp(const Box& b, int& i0, int& i1, int& j0, int& j1) const
+  {
+    i0 = std::max(b[0], this->X0) - this->X0;
+    i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
+    j0 = std::max(b[2], this->Y0) - this->Y0;
+    j1 = std::min(b[3], this->Y0 + this->H - 1) - this->Y0;
+  }
+
+  void Write(std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const
+  {
+    for (int j = 0; j < this->H; ++j)
+    {
+      for (int i = 0; i < this->W; ++i)
+      {
+        const size_t p = static_cast<size_t>(j) * this->W + i;
+        double* out = &rgba[4 * (static_cast<size_t>(this->Y0 + j) * width + this->X0 + i)];
+        out[0] = this->Accum[p].R;
+        out[1] = this->Accum[p].G;
+        out[2] = this->Accum[p].B;
+        out[3] = this->Accum[p].A;
+        st.WitnessViolations += this->Violated[p];
+      }
+    }
+  }
+};
+
+/// Everything a tile worker reads.
+struct Frame
+{
+  const std::vector<Tetra>& Tets;
+  const std::vector<vtkIdType>& Order;
+  const TileBins& Bins;
+  const hov::TransferFunction& TF;
+  const vtkHighOrderCellProjector::Settings& Settings;
+  double WitnessTol;
+
+  /// Witness, integral and compositing of one segment at tile pixel p.
+  void Integrate(Tile& tile, size_t p, double tIn, double tOut, double sIn, double sOut,
+    vtkHighOrderCellProjector::Statistics& st) const
+  {
+    if (tIn < tile.MaxExit[p] - this->WitnessTol)
+    {
+      tile.Violated[p] = 1;
+    }
+    tile.MaxExit[p] = std::max(tile.MaxExit[p], tOut);
+    int pieces = 0;
+    const hov::RGBA seg =
+      hov::IntegrateLinearScalar(this->TF, sIn, sOut, tOut - tIn, this->Settings.Integration, &pieces);
+    hov::CompositeBehind(tile.Accum[p], seg);
+    ++st.Segments;
+    st.Pieces += pieces;
+    if (1.0 - tile.Accum[p].A <= this->Settings.TerminationTransmittance)
+    {
+      tile.Done[p] = 1;
+    }
+  }
+
+  /// Visit every (pixel, segment) of the tile's cells in visibility order.
+  template <typename Visit>
+  void ForSegments(Tile& tile, int tileIndex, bool skipDone, Visit&& visit) const
+  {
+    for (vtkIdType c = this->Bins.Start[tileIndex]; c < this->Bins.Start[tileIndex + 1]; ++c)
+    {
+      const vtkIdType k = this->Bins.Cells[c];
+      const Tetra& tet = this->Tets[this->Order[k]];
+      int i0, i1, j0, j1;
+      tile.Clamp(this->Bins.Boxes[k], i0, i1, j0, j1);
+      for (int j = j0; j <= j1; ++j)
+      {
+        for (int i = i0; i <= i1; ++i)
+        {
+          const size_t p = static_cast<size_t>(j) * tile.W + i;
+          double tIn, tOut;
+          if ((skipDone && tile.Done[p]) || !ClipRay(tet, tile.Rays[p], tile.TMax[p], tIn, tOut))
+          {
+            continue;
+          }
+          const Ray& ray = tile.Rays[p];
+          const double sAtOrigin = tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - tet.RefPoint);
+          const double slope = glm::dot(tet.Gradient, ray.Direction);
+          visit(p, k, tIn, tOut, sAtOrigin + tIn * slope, sAtOrigin + tOut * slope);
+        }
+      }
+    }
+  }
+
+  void RenderTile(Tile& tile, int tileIndex, vtkHighOrderCellProjector::Statistics& st) const
+  {
+    if (!this->Settings.PerPixelSort)
+    {
+      this->ForSegments(tile, tileIndex, true,
+        [&](size_t p, vtkIdType, double tIn, double tOut, double sIn, double sOut) {
+          this->Integrate(tile, p, tIn, tOut, sIn, sOut, st);
+        });
+      return;
+    }
+    this->ForSegments(tile, tileIndex, false,
+      [&](size_t p, vtkIdType k, double tIn, double tOut, double sIn, double sOut) {
+        tile.Fragments.push_back(Fragment{ static_cast<int>(p), tIn, tOut, sIn, sOut, k });
+      });
+    std::sort(tile.Fragments.begin(), tile.Fragments.end());
+    for (const Fragment& f : tile.Fragments)
+    {
+      if (!tile.Done[f.Pixel])
+      {
+        this->Integrate(tile, f.Pixel, f.TIn, f.TOut, f.SIn, f.SOut, st);
+      }
+    }
+  }
+};
+}
+
+vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
+  const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& frontToBack,
+  const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf, const Settings& settings,
+  const float* depth, std::vector<double>& rgba) const
+{
+  Statistics stats;
+  const int width = rays.GetWidth(), height = rays.GetHeight();
+  rgba.assign(static_cast<size_t>(width) * height * 4, 0.0);
+  if (width <= 0 || height <= 0 || frontToBack.empty() || tf.GetNumberOfNodes() == 0)
+  {
+    return stats;
+  }
+  const auto& tets = setup.GetTetras();
+  const auto& points = setup.GetPoints();
+
+  // Project every point once, then box every cell (in visibility order).
+  std::vector<glm::dvec2> window(points.size());
+  std::vector<unsigned char> projectable(points.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      double x = 0.0, y = 0.0;
+      projectable[i] = rays.Project(points[i], x, y);
+      window[i] = glm::dvec2(x, y);
+    }
+  });
+  TileBins bins;
+  bins.Boxes.resize(frontToBack.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      bins.Boxes[k] = PixelBox(tets[frontToBack[k]], window, projectable, width, height);
+    }
+  });
+  bins.Build(bins.Boxes, width, height, std::max(4, settings.TileSize));
+
+  // Tiles in parallel; every pixel is composited by one thread in a fixed order.
+  const int numTiles = bins.TilesX * bins.TilesY;
+  const Frame frame{ tets, frontToBack, bins, tf, settings,
+    WitnessRelativeTolerance * rays.GetDepthScale() };
+  std::vector<Statistics> tileStats(numTiles);
+  vtkSMPTools::For(0, numTiles, 1, [&](vtkIdType tBegin, vtkIdType tEnd) {
+    Tile tile;
+    for (vtkIdType t = tBegin; t < tEnd; ++t)
+    {
+      tile.Init(static_cast<int>(t), bins, rays, depth);
+      frame.RenderTile(tile, static_cast<int>(t), tileStats[t]);
+      tile.Write(rgba, width, tileStats[t]);
+    }
+  });
+  for (const Statistics& st : tileStats)
+  {
+    stats.WitnessViolations += st.WitnessViolations;
+    stats.Segments += st.Segments;
+    stats.Pieces += st.Pieces;
+  }
+  return stats;
+}

@@ -1,0 +1,89 @@
+#include "vtkHighOrderViewRays.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+
+#include <cmath> // std::isfinite
+
+namespace
+{
+/// VTK matrices are row-major with column vectors; glm is column-major.
+glm::dmat4 ToGlm(const vtkMatrix4x4* m)
+{
+  glm::dmat4 g(1.0);
+  if (m)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        g[c][r] = m->GetElement(r, c);
+      }
+    }
+  }
+  return g;
+}
+}
+
+bool vtkHighOrderViewRays::Setup(
+  vtkCamera* camera, vtkMatrix4x4* volumeMatrix, int width, int height, double aspect)
+{
+  if (!camera || width <= 0 || height <= 0 || !(aspect > 0.0))
+  {
+    return false;
+  }
+  this->Width = width;
+  this->Height = height;
+  // World -> NDC (z in [-1, 1]), as OpenGL uses it.
+  const glm::dmat4 worldToClip =
+    ToGlm(camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0));
+  this->DataToClip = worldToClip * ToGlm(volumeMatrix);
+  const double det = glm::determinant(this->DataToClip);
+  if (!std::isfinite(det) || det == 0.0)
+  {
+    return false;
+  }
+  this->ClipToData = glm::inverse(this->DataToClip);
+  const glm::dvec3 nearC = this->Unproject(0.0, 0.0, -1.0);
+  const glm::dvec3 farC = this->Unproject(0.0, 0.0, 1.0);
+  this->DepthScale = glm::length(farC - nearC);
+  return std::isfinite(this->DepthScale) && this->DepthScale > 0.0;
+}
+
+glm::dvec3 vtkHighOrderViewRays::Unproject(double xNdc, double yNdc, double zNdc) const
+{
+  const glm::dvec4 h = this->ClipToData * glm::dvec4(xNdc, yNdc, zNdc, 1.0);
+  return glm::dvec3(h) / h.w;
+}
+
+vtkHighOrderViewRays::Ray vtkHighOrderViewRays::PixelRay(int i, int j) const
+{
+  const double x = 2.0 * (i + 0.5) / this->Width - 1.0;
+  const double y = 2.0 * (j + 0.5) / this->Height - 1.0;
+  Ray ray;
+  ray.Origin = this->Unproject(x, y, -1.0);
+  const glm::dvec3 delta = this->Unproject(x, y, 1.0) - ray.Origin;
+  ray.TFar = glm::length(delta);
+  ray.Direction = delta / ray.TFar;
+  return ray;
+}
+
+double vtkHighOrderViewRays::DepthToT(int i, int j, const Ray& ray, double windowDepth) const
+{
+  const double x = 2.0 * (i + 0.5) / this->Width - 1.0;
+  const double y = 2.0 * (j + 0.5) / this->Height - 1.0;
+  const glm::dvec3 p = this->Unproject(x, y, 2.0 * windowDepth - 1.0);
+  return glm::dot(p - ray.Origin, ray.Direction);
+}
+
+bool vtkHighOrderViewRays::Project(const glm::dvec3& p, double& xWindow, double& yWindow) const
+{
+  const glm::dvec4 c = this->DataToClip * glm::dvec4(p, 1.0);
+  if (!(c.w > 0.0))
+  {
+    return false;
+  }
+  xWindow = (c.x / c.w + 1.0) * 0.5 * this->Width;
+  yWindow = (c.y / c.w + 1.0) * 0.5 * this->Height;
+  return std::isfinite(xWindow) && std::isfinite(yWindow);
+}

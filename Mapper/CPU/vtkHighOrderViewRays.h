@@ -1,0 +1,78 @@
+/**
+ * @class   vtkHighOrderViewRays
+ * @brief   Primary rays through OpenGL pixel centres, in dataset coordinates.
+ *
+ * For a viewport of W x H pixels, pixel (i, j) (j = 0 at the bottom, as in
+ * OpenGL window coordinates) has its centre at NDC
+ * x = 2 (i + 1/2) / W - 1, y = 2 (j + 1/2) / H - 1, where OpenGL rasterizes
+ * and where VTK's other mappers sample. Its ray runs from the near-plane point
+ * (NDC z = -1) to the far-plane point (z = +1), both unprojected exactly
+ * through the inverse of (camera composite projection) x (volume matrix), so
+ * rays live in dataset coordinates and their parameter t is dataset length
+ * (the length vtkGPUVolumeRayCastMapper and the Bunyk ray caster integrate
+ * over). Orthographic and perspective cameras, off-axis projections and
+ * any affine volume matrix are handled by the same unprojection.
+ *
+ * Thread safety: after Setup(), every const method is thread safe.
+ * @sa vtkHighOrderCellProjector
+ */
+#ifndef vtkHighOrderViewRays_h
+#define vtkHighOrderViewRays_h
+
+#include <glm/glm.hpp> // dvec3, dvec4, dmat4
+
+class vtkCamera;
+class vtkMatrix4x4;
+
+class vtkHighOrderViewRays
+{
+public:
+  /// A ray: origin on the near plane, unit direction (dataset space), far limit.
+  struct Ray
+  {
+    glm::dvec3 Origin;
+    glm::dvec3 Direction;
+    double TFar;
+  };
+
+  /**
+   * Set up from a camera, the volume's data-to-world matrix (may be null) and
+   * the viewport size. @p aspect is the projection's aspect (usually W/H, or
+   * the renderer's tiled aspect ratio). Returns false if the matrices are
+   * singular or the size is not positive.
+   */
+  bool Setup(vtkCamera* camera, vtkMatrix4x4* volumeMatrix, int width, int height, double aspect);
+
+  int GetWidth() const { return this->Width; }
+  int GetHeight() const { return this->Height; }
+
+  /// The ray through the centre of pixel (i, j).
+  Ray PixelRay(int i, int j) const;
+
+  /**
+   * Ray parameter of the point of pixel (i, j)'s ray at OpenGL window depth
+   * @p windowDepth in [0,1] (a depth-buffer value).
+   */
+  double DepthToT(int i, int j, const Ray& ray, double windowDepth) const;
+
+  /**
+   * Project a dataset point to window coordinates (pixels, centres at
+   * half-integers). Returns false if the point is at or behind the eye plane
+   * (its projection is then unbounded).
+   */
+  bool Project(const glm::dvec3& p, double& xWindow, double& yWindow) const;
+
+  /// A length scale of the view (near-to-far distance along the central ray).
+  double GetDepthScale() const { return this->DepthScale; }
+
+private:
+  glm::dvec3 Unproject(double xNdc, double yNdc, double zNdc) const;
+
+  glm::dmat4 DataToClip{ 1.0 };
+  glm::dmat4 ClipToData{ 1.0 };
+  int Width = 0;
+  int Height = 0;
+  double DepthScale = 1.0;
+};
+
+#endif

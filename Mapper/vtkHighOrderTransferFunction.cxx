@@ -1,0 +1,268 @@
+#include "vtkHighOrderTransferFunction.h"
+
+#include "hovTransferFunction.h" // the kernel table built here
+
+#include "vtkColorTransferFunction.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm> // std::max
+#include <array>     // sampled values
+#include <cmath>     // std::abs
+#include <functional> // sampled evaluators
+
+vtkStandardNewMacro(vtkHighOrderTransferFunction);
+
+namespace
+{
+// Depth limit of the adaptive sampling of non-linear segments: 2^-20 of a
+// segment, enough to resolve VTK's sharpness-1 steps to 1e-6 of the segment.
+constexpr int MaxSamplingDepth = 20;
+
+template <int N>
+using Evaluator = std::function<std::array<double, N>(double)>;
+
+/// Appends samples in (x0, x1] so that linear interpolation between them is
+/// within tol of f at the quarter points of every piece.
+template <int N>
+void SampleAdaptively(const Evaluator<N>& f, double x0, const std::array<double, N>& v0, double x1,
+  const std::array<double, N>& v1, double tol, int depth,
+  std::vector<std::pair<double, std::array<double, N>>>& out)
+{
+  bool linear = true;
+  for (double w : { 0.25, 0.5, 0.75 })
+  {
+    const std::array<double, N> v = f(x0 + (x1 - x0) * w);
+    for (int c = 0; c < N && linear; ++c)
+    {
+      linear = std::abs(v[c] - (v0[c] + (v1[c] - v0[c]) * w)) <= tol;
+    }
+  }
+  const double xm = 0.5 * (x0 + x1);
+  if (!linear && depth < MaxSamplingDepth && xm > x0 && xm < x1)
+  {
+    const std::array<double, N> vm = f(xm);
+    SampleAdaptively<N>(f, x0, v0, xm, vm, tol, depth + 1, out);
+    SampleAdaptively<N>(f, xm, vm, x1, v1, tol, depth + 1, out);
+    return;
+  }
+  out.emplace_back(x1, v1);
+}
+
+/// Nodes of a piecewise function with per-segment midpoint/sharpness.
+template <int N>
+struct NodeList
+{
+  std::vector<double> X, Mid, Sharp;
+  std::vector<std::array<double, N>> V;
+};
+
+/// Exact copy where the segments are linear, adaptive sampling elsewhere.
+template <int N>
+std::vector<std::pair<double, std::array<double, N>>> Linearize(
+  const NodeList<N>& nodes, const Evaluator<N>& f, bool nonlinearEverywhere, double tol)
+{
+  std::vector<std::pair<double, std::array<double, N>>> out;
+  const size_t n = nodes.X.size();
+  for (size_t i = 0; i < n; ++i)
+  {
+    out.emplace_back(nodes.X[i], nodes.V[i]);
+    if (i + 1 == n || nodes.X[i + 1] == nodes.X[i])
+    {
+      continue;
+    }
+    const bool linear = !nonlinearEverywhere && nodes.Mid[i] == 0.5 && nodes.Sharp[i] == 0.0;
+    if (!linear)
+    {
+      SampleAdaptively<N>(f, nodes.X[i], nodes.V[i], nodes.X[i + 1], nodes.V[i + 1], tol, 0, out);
+      out.pop_back(); // the next node is appended by the loop
+    }
+  }
+  return out;
+}
+}
+
+vtkHighOrderTransferFunction::vtkHighOrderTransferFunction()
+  : Table(new hov::TransferFunction)
+{
+}
+
+vtkHighOrderTransferFunction::~vtkHighOrderTransferFunction() = default;
+
+bool vtkHighOrderTransferFunction::Update(vtkVolumeProperty* property)
+{
+  if (!property)
+  {
+    return false;
+  }
+  const vtkMTimeType propertyTime = property->GetMTime();
+  if (property == this->LastProperty && propertyTime == this->LastPropertyTime &&
+    this->GetMTime() == this->LastBuildSettingsTime && this->Table->GetNumberOfNodes() > 0)
+  {
+    return true;
+  }
+  this->LastProperty = property;
+  this->LastPropertyTime = propertyTime;
+  this->LastBuildSettingsTime = this->GetMTime();
+  this->Messages.clear();
+  ++this->BuildCount;
+
+  const int comp = this->Component;
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = static_cast<hov::OpacitySemantics>(this->OpacitySemantics);
+  spec.UnitDistance = property->GetScalarOpacityUnitDistance(comp);
+  spec.GPUTolerance = this->GPUTolerance;
+  spec.EmissionScale = this->EmissionScale;
+
+  // Colour: RGB function, or grey function replicated to RGB.
+  NodeList<3> colorNodes;
+  Evaluator<3> colorOf;
+  bool colorNonlinear = false;
+  bool clampColor = true;
+  bool useBelow = false, useAbove = false;
+  std::array<double, 3> below{ 0, 0, 0 }, above{ 0, 0, 0 };
+  if (property->GetColorChannels(comp) == 1)
+  {
+    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(comp);
+    for (int i = 0; i < gray->GetSize(); ++i)
+    {
+      double v[4];
+      gray->GetNodeValue(i, v);
+      colorNodes.X.push_back(v[0]);
+      colorNodes.V.push_back({ v[1], v[1], v[1] });
+      colorNodes.Mid.push_back(v[2]);
+      colorNodes.Sharp.push_back(v[3]);
+    }
+    colorOf = [gray](double x) {
+      const double g = gray->GetValue(x);
+      return std::array<double, 3>{ g, g, g };
+    };
+    clampColor = gray->GetClamping() != 0;
+  }
+  else
+  {
+    vtkColorTransferFunction* ctf = property->GetRGBTransferFunction(comp);
+    for (int i = 0; i < ctf->GetSize(); ++i)
+    {
+      double v[6];
+      ctf->GetNodeValue(i, v);
+      colorNodes.X.push_back(v[0]);
+      colorNodes.V.push_back({ v[1], v[2], v[3] });
+      colorNodes.Mid.push_back(v[4]);
+      colorNodes.Sharp.push_back(v[5]);
+    }
+    colorOf = [ctf](double x) {
+      std::array<double, 3> c;
+      ctf->GetColor(x, c.data());
+      return c;
+    };
+    colorNonlinear = ctf->GetColorSpace() != VTK_CTF_RGB || ctf->GetScale() != VTK_CTF_LINEAR;
+    clampColor = ctf->GetClamping() != 0;
+    useBelow = ctf->GetUseBelowRangeColor() != 0;
+    useAbove = ctf->GetUseAboveRangeColor() != 0;
+    ctf->GetBelowRangeColor(below.data());
+    ctf->GetAboveRangeColor(above.data());
+  }
+  const auto colorSamples = Linearize<3>(colorNodes, colorOf, colorNonlinear, this->SamplingTolerance);
+  if (!colorSamples.empty())
+  {
+    // Outside the node range: clamped end colours, black, or VTK's
+    // below/above-range colours; a differing value becomes a jump.
+    if (!useBelow)
+    {
+      below = clampColor ? colorSamples.front().second : std::array<double, 3>{ 0, 0, 0 };
+    }
+    if (!useAbove)
+    {
+      above = clampColor ? colorSamples.back().second : std::array<double, 3>{ 0, 0, 0 };
+    }
+    spec.Color.push_back({ colorSamples.front().first, below[0], below[1], below[2] });
+  }
+  for (const auto& s : colorSamples)
+  {
+    spec.Color.push_back({ s.first, s.second[0], s.second[1], s.second[2] });
+  }
+  if (!colorSamples.empty())
+  {
+    spec.Color.push_back({ colorSamples.back().first, above[0], above[1], above[2] });
+  }
+
+  // Scalar opacity.
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(comp);
+  NodeList<1> opacityNodes;
+  for (int i = 0; i < opacity->GetSize(); ++i)
+  {
+    double v[4];
+    opacity->GetNodeValue(i, v);
+    opacityNodes.X.push_back(v[0]);
+    opacityNodes.V.push_back({ v[1] });
+    opacityNodes.Mid.push_back(v[2]);
+    opacityNodes.Sharp.push_back(v[3]);
+  }
+  const Evaluator<1> opacityOf = [opacity](double x) {
+    return std::array<double, 1>{ opacity->GetValue(x) };
+  };
+  const auto opacitySamples = Linearize<1>(opacityNodes, opacityOf, false, this->SamplingTolerance);
+  const bool clampOpacity = opacity->GetClamping() != 0;
+  if (!clampOpacity && !opacitySamples.empty())
+  {
+    spec.Opacity.push_back({ opacitySamples.front().first, 0.0 });
+  }
+  for (const auto& s : opacitySamples)
+  {
+    spec.Opacity.push_back({ s.first, s.second[0] });
+  }
+  if (!clampOpacity && !opacitySamples.empty())
+  {
+    spec.Opacity.push_back({ opacitySamples.back().first, 0.0 });
+  }
+
+  this->Table->Build(spec, &this->Messages);
+  return true;
+}
+
+int vtkHighOrderTransferFunction::GetNumberOfNodes()
+{
+  return this->Table->GetNumberOfNodes();
+}
+
+void vtkHighOrderTransferFunction::GetNode(int i, double node[5])
+{
+  const int n = this->Table->GetNumberOfNodes();
+  if (i < 0 || i >= n)
+  {
+    vtkErrorMacro("node index " << i << " out of range [0," << n << ")");
+    return;
+  }
+  hov::SegmentEnd end;
+  const double x = this->Table->GetNodes()[i];
+  // Interval i-1 ends at node i, interval i starts at it; use the one that has node i as an end.
+  this->Table->Evaluate(i < n - 1 ? i : i - 1, x, false, end);
+  node[0] = x;
+  node[1] = end.Color[0];
+  node[2] = end.Color[1];
+  node[3] = end.Color[2];
+  node[4] = end.Tau;
+}
+
+int vtkHighOrderTransferFunction::GetNumberOfRefinementNodes()
+{
+  return this->Table->GetNumberOfRefinementNodes();
+}
+
+const char* vtkHighOrderTransferFunction::GetMessage(int i)
+{
+  return (i >= 0 && i < static_cast<int>(this->Messages.size())) ? this->Messages[i].c_str() : "";
+}
+
+void vtkHighOrderTransferFunction::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
+  os << indent << "GPUTolerance: " << this->GPUTolerance << "\n";
+  os << indent << "EmissionScale: " << this->EmissionScale << "\n";
+  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "SamplingTolerance: " << this->SamplingTolerance << "\n";
+  os << indent << "NumberOfNodes: " << this->Table->GetNumberOfNodes() << "\n";
+}

@@ -1,0 +1,373 @@
+#include "vtkHighOrderVolumeMapper.h"
+
+#include "vtkHighOrderCellProjector.h" // CPU path
+#include "vtkHighOrderImageDisplay.h"  // OpenGL blit of the float image
+#include "vtkHighOrderTetraSetup.h"    // per-cell preparation
+#include "vtkHighOrderTransferFunction.h"
+#include "vtkHighOrderViewRays.h" // pixel rays
+
+#include "hovTransferFunction.h" // the kernel table
+
+#include "vtkCamera.h"
+#include "vtkCellCenterDepthSort.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGridBase.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm> // std::reverse
+#include <vector>    // buffers
+
+vtkStandardNewMacro(vtkHighOrderVolumeMapper);
+vtkCxxSetObjectMacro(vtkHighOrderVolumeMapper, VisibilitySort, vtkVisibilitySort);
+
+struct vtkHighOrderVolumeMapper::Internals
+{
+  vtkHighOrderTetraSetup Setup;
+  vtkMTimeType SetupInputTime = 0;
+  vtkDataArray* SetupArray = nullptr;
+  vtkMTimeType SetupArrayTime = 0;
+  int SetupComponent = -2;
+  bool SetupCellScalars = false;
+  bool SetupValid = false;
+  unsigned long SetupGeneration = 0;
+
+  std::vector<vtkIdType> FrontToBack;
+  vtkCamera* OrderCamera = nullptr;
+  vtkMTimeType OrderCameraTime = 0;
+  vtkMTimeType OrderMatrixTime = 0;
+  vtkMTimeType OrderSortTime = 0;
+  unsigned long OrderGeneration = ~0ul;
+
+  vtkNew<vtkHighOrderTransferFunction> TransferFunction;
+  vtkHighOrderCellProjector Projector;
+  vtkHighOrderImageDisplay Display;
+  vtkNew<vtkImageData> FloatImage;
+  std::vector<double> RGBA;
+  std::vector<float> Depth;
+};
+
+vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
+  : Impl(new Internals)
+{
+  vtkCellCenterDepthSort* sort = vtkCellCenterDepthSort::New();
+  this->SetVisibilitySort(sort);
+  sort->Delete();
+}
+
+vtkHighOrderVolumeMapper::~vtkHighOrderVolumeMapper()
+{
+  this->SetVisibilitySort(nullptr);
+}
+
+vtkImageData* vtkHighOrderVolumeMapper::GetFloatImage()
+{
+  return this->Impl->FloatImage;
+}
+
+vtkHighOrderTransferFunction* vtkHighOrderVolumeMapper::GetTransferFunction()
+{
+  return this->Impl->TransferFunction;
+}
+
+bool vtkHighOrderVolumeMapper::PrepareCells(vtkVolume*)
+{
+  Internals& impl = *this->Impl;
+  vtkUnstructuredGridBase* input = this->GetInput();
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(input, this->ScalarMode,
+    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (!scalars)
+  {
+    vtkErrorMacro("No numeric scalars to render: set point scalars on the input or select a "
+                  "numeric point/cell array with SelectScalarArray().");
+    impl.SetupValid = false;
+    return false;
+  }
+  const bool cellScalars = cellFlag == 1;
+  const int nc = scalars->GetNumberOfComponents();
+  int component = -1;
+  if (nc > 1 && this->VectorMode == COMPONENT)
+  {
+    component = std::min(std::max(this->VectorComponent, 0), nc - 1);
+    if (component != this->VectorComponent)
+    {
+      vtkWarningMacro("VectorComponent " << this->VectorComponent << " out of range for array '"
+                                         << (scalars->GetName() ? scalars->GetName() : "")
+                                         << "' with " << nc << " components; using " << component);
+    }
+  }
+  if (nc == 1)
+  {
+    component = 0;
+  }
+  if (impl.SetupValid && impl.SetupInputTime == input->GetMTime() && impl.SetupArray == scalars &&
+    impl.SetupArrayTime == scalars->GetMTime() && impl.SetupComponent == component &&
+    impl.SetupCellScalars == cellScalars)
+  {
+    return true;
+  }
+  impl.SetupInputTime = input->GetMTime();
+  impl.SetupArray = scalars;
+  impl.SetupArrayTime = scalars->GetMTime();
+  impl.SetupComponent = component;
+  impl.SetupCellScalars = cellScalars;
+  impl.SetupValid = true;
+  ++impl.SetupGeneration;
+  impl.Setup.Build(input, scalars, cellScalars, component);
+  const vtkHighOrderTetraSetup::Statistics& st = impl.Setup.GetStatistics();
+  this->NumberOfRenderedCells = st.Rendered;
+  this->NumberOfSkippedCells = st.Cells - st.Rendered;
+  if (st.Cells == 0)
+  {
+    vtkWarningMacro("The input grid has no cells: nothing to render.");
+  }
+  if (st.NonTetra)
+  {
+    vtkWarningMacro(<< st.NonTetra << " of " << st.Cells
+                    << " cells are not linear tetrahedra (first type: " << st.FirstNonTetraType
+                    << "); the accurate CPU path renders VTK_TETRA only, these cells are skipped.");
+  }
+  if (st.NonFinitePoints || st.NonFiniteScalars || st.Degenerate)
+  {
+    vtkWarningMacro(<< "Skipped cells: " << st.NonFinitePoints << " with NaN/Inf points or bad "
+                    << "connectivity, " << st.NonFiniteScalars << " with NaN/Inf scalars, "
+                    << st.Degenerate << " degenerate (zero-volume) tetrahedra.");
+  }
+  if (st.Inverted)
+  {
+    vtkWarningMacro(<< st.Inverted << " tetrahedra are inverted (negative orientation); they are "
+                    << "rendered as the convex hull of their vertices.");
+  }
+  return true;
+}
+
+bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume)
+{
+  Internals& impl = *this->Impl;
+  if (this->CellOrdering == PER_PIXEL_SORT)
+  {
+    // Any order will do: each pixel sorts its own segments.
+    const vtkIdType n = static_cast<vtkIdType>(impl.Setup.GetTetras().size());
+    if (impl.OrderGeneration != impl.SetupGeneration || impl.OrderCamera != nullptr ||
+      static_cast<vtkIdType>(impl.FrontToBack.size()) != n)
+    {
+      impl.FrontToBack.resize(n);
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        impl.FrontToBack[i] = i;
+      }
+      impl.OrderGeneration = impl.SetupGeneration;
+      impl.OrderCamera = nullptr;
+    }
+    return true;
+  }
+  vtkMatrix4x4* matrix = volume->GetMatrix();
+  if (!this->VisibilitySort)
+  {
+    vtkErrorMacro("No visibility sort set.");
+    return false;
+  }
+  if (impl.OrderGeneration == impl.SetupGeneration && impl.OrderCamera == camera &&
+    impl.OrderCameraTime == camera->GetMTime() && impl.OrderMatrixTime == matrix->GetMTime() &&
+    impl.OrderSortTime == this->VisibilitySort->GetMTime())
+  {
+    return true; // same view: reuse the order (also keeps ties deterministic)
+  }
+  vtkVisibilitySort* sort = this->VisibilitySort;
+  sort->SetInput(this->GetInput());
+  sort->SetCamera(camera);
+  sort->SetModelTransform(matrix);
+  sort->SetDirectionToBackToFront();
+  sort->InitTraversal();
+  impl.FrontToBack.clear();
+  impl.FrontToBack.reserve(impl.Setup.GetTetras().size());
+  while (vtkIdTypeArray* cells = sort->GetNextCells())
+  {
+    const vtkIdType n = cells->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const vtkIdType tet = impl.Setup.GetTetraOfCell(cells->GetValue(i));
+      if (tet >= 0)
+      {
+        impl.FrontToBack.push_back(tet);
+      }
+    }
+  }
+  std::reverse(impl.FrontToBack.begin(), impl.FrontToBack.end());
+  if (impl.FrontToBack.size() != impl.Setup.GetTetras().size())
+  {
+    vtkWarningMacro("The visibility sort returned " << impl.FrontToBack.size() << " of "
+                                                    << impl.Setup.GetTetras().size() << " cells.");
+  }
+  impl.OrderGeneration = impl.SetupGeneration;
+  impl.OrderCamera = camera;
+  impl.OrderCameraTime = camera->GetMTime();
+  impl.OrderMatrixTime = matrix->GetMTime();
+  impl.OrderSortTime = this->VisibilitySort->GetMTime();
+  return true;
+}
+
+int vtkHighOrderVolumeMapper::ComputeImage(
+  vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect, const float* depth)
+{
+  Internals& impl = *this->Impl;
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  impl.RGBA.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
+
+  bool ok = camera && volume && width > 0 && height > 0;
+  if (!ok)
+  {
+    vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
+  }
+  vtkUnstructuredGridBase* input = this->GetInput();
+  if (ok && !input)
+  {
+    vtkErrorMacro("No input.");
+    ok = false;
+  }
+  vtkVolumeProperty* property = volume ? volume->GetProperty() : nullptr;
+  if (ok && !property)
+  {
+    vtkErrorMacro("The volume has no vtkVolumeProperty.");
+    ok = false;
+  }
+  bool render = ok && this->PrepareCells(volume) && !impl.Setup.GetTetras().empty();
+
+  if (render)
+  {
+    vtkHighOrderTransferFunction* tf = impl.TransferFunction;
+    tf->SetOpacitySemantics(this->OpacitySemantics);
+    tf->SetGPUTolerance(this->GPUOpacityTolerance);
+    tf->SetEmissionScale(this->EmissionScale);
+    const int buildsBefore = tf->GetBuildCount();
+    tf->Update(property);
+    if (tf->GetBuildCount() != buildsBefore)
+    {
+      for (int i = 0; i < tf->GetNumberOfMessages(); ++i)
+      {
+        vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
+      }
+    }
+    const bool wvg = this->EmissionModel == WILHELMS_VAN_GELDER;
+    render = tf->GetTable().HasExtinction() || wvg;
+  }
+
+  vtkHighOrderViewRays rays;
+  if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
+  {
+    vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
+    render = false;
+  }
+  if (render && this->PrepareOrder(camera, volume))
+  {
+    vtkHighOrderCellProjector::Settings settings;
+    settings.Integration.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
+    settings.Integration.Method = static_cast<hov::SegmentMethod>(this->IntegrationMethod);
+    settings.TerminationTransmittance = this->TerminationTransmittance;
+    settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT;
+    const vtkHighOrderCellProjector::Statistics st = impl.Projector.Render(impl.Setup,
+      impl.FrontToBack, rays, impl.TransferFunction->GetTable(), settings, depth, impl.RGBA);
+    this->WitnessViolations = st.WitnessViolations;
+    this->NumberOfSegments = st.Segments;
+    this->NumberOfPieces = st.Pieces;
+  }
+
+  // Publish the float image.
+  vtkImageData* image = impl.FloatImage;
+  image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
+  vtkNew<vtkFloatArray> array;
+  array->SetName("RGBA");
+  array->SetNumberOfComponents(4);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(impl.RGBA.size() / 4));
+  float* out = array->GetPointer(0);
+  for (size_t i = 0; i < impl.RGBA.size(); ++i)
+  {
+    out[i] = static_cast<float>(impl.RGBA[i]);
+  }
+  image->GetPointData()->SetScalars(array);
+  timer->StopTimer();
+  this->LastImageTime = timer->GetElapsedTime();
+  return ok ? 1 : 0;
+}
+
+int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, int width, int height)
+{
+  return this->ComputeImage(
+    camera, volume, width, height, height > 0 ? static_cast<double>(width) / height : 1.0, nullptr);
+}
+
+void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+  Internals& impl = *this->Impl;
+  const float* depth = nullptr;
+  if (this->UseDepthBuffer)
+  {
+    impl.Depth.resize(static_cast<size_t>(width) * height);
+    if (vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, impl.Depth.data()))
+    {
+      depth = impl.Depth.data();
+    }
+    else
+    {
+      vtkWarningMacro("Could not read the depth buffer; opaque geometry will not clip the volume.");
+    }
+  }
+  // The same aspect VTK's own mappers and actors use for the projection.
+  const double tiledAspect = ren->GetTiledAspectRatio();
+  this->ComputeImage(ren->GetActiveCamera(), vol, width, height, tiledAspect, depth);
+  vtkDataArray* rgba = impl.FloatImage->GetPointData()->GetScalars();
+  if (rgba && rgba->GetNumberOfTuples() == static_cast<vtkIdType>(width) * height)
+  {
+    if (!impl.Display.Draw(ren, static_cast<vtkFloatArray*>(rgba)->GetPointer(0), width, height))
+    {
+      vtkErrorMacro("Could not draw the volume image with OpenGL.");
+    }
+  }
+  timer->StopTimer();
+  this->TimeToDraw = timer->GetElapsedTime();
+}
+
+void vtkHighOrderVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Impl->Display.ReleaseGraphicsResources(win);
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
+  os << indent << "CellOrdering: " << this->CellOrdering << "\n";
+  os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";
+  os << indent << "EmissionModel: " << this->EmissionModel << "\n";
+  os << indent << "EmissionScale: " << this->EmissionScale << "\n";
+  os << indent << "IntegrationMethod: " << this->IntegrationMethod << "\n";
+  os << indent << "VectorMode: " << this->VectorMode << "\n";
+  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
+  os << indent << "UseDepthBuffer: " << this->UseDepthBuffer << "\n";
+  os << indent << "VisibilitySort: " << this->VisibilitySort << "\n";
+  os << indent << "WitnessViolations: " << this->WitnessViolations << "\n";
+  os << indent << "NumberOfRenderedCells: " << this->NumberOfRenderedCells << "\n";
+  os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
+}

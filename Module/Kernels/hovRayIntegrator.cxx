@@ -1,0 +1,89 @@
+#include "hovRayIntegrator.h"
+
+#include "hovTransferFunction.h" // the table walked here
+
+#include <cmath> // isfinite
+
+namespace hov
+{
+RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBack, double length,
+  const IntegrationSettings& settings, int* pieces)
+{
+  RGBA accum;
+  int count = 0;
+  if (!(length > 0.0) || !std::isfinite(sFront) || !std::isfinite(sBack) || tf.GetNumberOfNodes() == 0)
+  {
+    if (pieces)
+    {
+      *pieces = 0;
+    }
+    return accum;
+  }
+  const bool emission = settings.Emission == EmissionModel::WilhelmsVanGelder;
+  const std::vector<double>& nodes = tf.GetNodes();
+  const int n = static_cast<int>(nodes.size());
+  const double ds = sBack - sFront;
+  SegmentEnd front, back;
+  if (ds == 0.0)
+  {
+    const int k = tf.FindIntervalUpward(sFront);
+    tf.Evaluate(k, sFront, emission, front);
+    accum = IntegrateSegment(length, front, front, settings.Emission, settings.Method);
+    count = 1;
+  }
+  else
+  {
+    // Walk the intervals from the front value toward the back value. Interval k
+    // spans [nodes[k], nodes[k+1]]; -1 and n-1 are the clamped outer regions.
+    const bool up = ds > 0.0;
+    int k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
+    const double invDs = 1.0 / ds;
+    double xPrev = 0.0; // fraction of the segment already integrated
+    double sPrev = sFront;
+    while (true)
+    {
+      // Where this interval ends along the ray (the next node in walking direction).
+      double sNext = sBack, xNext = 1.0;
+      bool last = true;
+      if (up && k + 1 < n && nodes[k + 1] < sBack)
+      {
+        sNext = nodes[k + 1];
+        last = false;
+      }
+      else if (!up && k >= 0 && nodes[k] > sBack)
+      {
+        sNext = nodes[k];
+        last = false;
+      }
+      if (!last)
+      {
+        xNext = (sNext - sFront) * invDs;
+      }
+      const double pieceLength = length * (xNext - xPrev);
+      if (pieceLength > 0.0)
+      {
+        tf.Evaluate(k, sPrev, emission, front);
+        tf.Evaluate(k, sNext, emission, back);
+        CompositeBehind(accum, IntegrateSegment(pieceLength, front, back, settings.Emission, settings.Method));
+        ++count;
+        if (accum.A >= 1.0)
+        {
+          break; // opaque: nothing behind is visible
+        }
+      }
+      if (last)
+      {
+        break;
+      }
+      xPrev = xNext;
+      sPrev = sNext;
+      k += up ? 1 : -1;
+    }
+  }
+  if (pieces)
+  {
+    *pieces = count;
+  }
+  return accum;
+}
+}

@@ -1,0 +1,292 @@
+#include "hovSegmentIntegral.h"
+
+#include "hovSpecialFunctions.h" // Erfcx, Dawson (libcerf)
+
+#include <algorithm> // std::max, std::min
+#include <array>     // coefficient tables
+#include <cmath>     // exp, expm1, sqrt, isfinite
+
+namespace hov
+{
+namespace
+{
+constexpr double SqrtPi = 1.7724538509055160273;
+
+// Below this total depth D(1) the closed form K0 = sqrt(pi)/(2s)(...) loses
+// digits in 1 - K0 (absolute error ~ eps / D(1)); the Taylor series in D
+// converges like D^n/n! and needs at most 11 terms for 2^-56 relative at 1/8.
+constexpr double ThinDepth = 0.125;
+constexpr int MaxThinOrder = 14;
+
+// Wilhelms-Van Gelder only: K1 = (A - a K0)/(2b) has absolute error
+// ~ eps (A + a K0) / (2|b|); below |b| = 1/16 we use the series in b, which
+// converges like |b|^n/n! (<= 9 terms for 2^-56).
+constexpr double SmallSlope = 1.0 / 16.0;
+constexpr int MaxSlopeOrder = 12;
+
+// Relative |b| below which b is treated as zero in the closed form: the
+// neglected term b M_2(a) is below 1e-15 of K0, and a/(2 sqrt(b)) cannot
+// overflow above it.
+constexpr double ZeroSlopeRelative = 1e-15;
+
+// Above this a, the moments M_k(a) come from the upward recurrence (stable
+// when a > 2k); below it from a positive series and the downward recurrence.
+constexpr double MomentUpwardFrom = 40.0;
+
+// Depth rates are capped here: a+b stays finite, T(1) underflows to 0, and
+// every weight is already exact in double precision.
+constexpr double DepthCap = 1e300;
+
+/**
+ * Coefficients of the thin-segment series. With D(x) = x (a (1-x) + D1 x),
+ *   integral_0^1 x^m D^n dx / n! = sum_k P[m][n][k] a^(n-k) D1^k,
+ *     P[m][n][k] = (n+k+m)! / (k! (2n+m+1)!),            m = 0, 1
+ *   integral_0^1 (1-x) D^n dx / n! = sum_k Q[n][k] a^(n-k) D1^k,
+ *     Q[n][k] = (n+k)! (n-k+1) / (k! (2n+2)!).
+ * All terms are positive for a >= 0, D1 >= 0.
+ */
+struct ThinTables
+{
+  double P0[MaxThinOrder + 1][MaxThinOrder + 1] = {};
+  double P1[MaxThinOrder + 1][MaxThinOrder + 1] = {};
+  double Q[MaxThinOrder + 1][MaxThinOrder + 1] = {};
+  double InvFactorial[MaxThinOrder + 1] = {};
+};
+
+constexpr ThinTables MakeThinTables()
+{
+  ThinTables t{};
+  double fact[2 * MaxThinOrder + 4] = {};
+  fact[0] = 1.0;
+  for (int i = 1; i < 2 * MaxThinOrder + 4; ++i)
+  {
+    fact[i] = fact[i - 1] * i;
+  }
+  for (int n = 0; n <= MaxThinOrder; ++n)
+  {
+    t.InvFactorial[n] = 1.0 / fact[n];
+    for (int k = 0; k <= n; ++k)
+    {
+      t.P0[n][k] = fact[n + k] / (fact[k] * fact[2 * n + 1]);
+      t.P1[n][k] = fact[n + k + 1] / (fact[k] * fact[2 * n + 2]);
+      t.Q[n][k] = fact[n + k] * (n - k + 1) / (fact[k] * fact[2 * n + 2]);
+    }
+  }
+  return t;
+}
+
+constexpr ThinTables Thin = MakeThinTables();
+
+/// sum_k coef[k] a^(n-k) d^k with precomputed powers.
+inline double BernsteinSum(const double* coef, int n, const double* powA, const double* powD)
+{
+  double sum = 0.0;
+  for (int k = 0; k <= n; ++k)
+  {
+    sum += coef[k] * powA[n - k] * powD[k];
+  }
+  return sum;
+}
+
+/// Thin segment (D1 <= ThinDepth): all weights from the Taylor series in D.
+SegmentWeights ThinWeights(double a, double d1, bool withEmission)
+{
+  SegmentWeights w;
+  w.Transmittance = std::exp(-d1);
+  w.Alpha = -std::expm1(-d1);
+  double powA[MaxThinOrder + 1];
+  double powD[MaxThinOrder + 1];
+  powA[0] = powD[0] = 1.0;
+  // Stop once D1^(n-1)/n! < 2^-56 / 3 (the first terms of WFront and WBack are
+  // both >= D1/3) and, for the emission weights (first terms 1/2), D1^n/n! < 2^-56.
+  constexpr double stop = 1.0 / 72057594037927936.0 / 3.0; // 2^-56 / 3
+  double wFront = 0.0, wBack = 0.0, k1 = 0.0, v0 = 0.0;
+  double sign = 1.0;
+  for (int n = 0; n <= MaxThinOrder; ++n)
+  {
+    if (n > 0)
+    {
+      powA[n] = powA[n - 1] * a;
+      powD[n] = powD[n - 1] * d1;
+    }
+    const double boundTerm = powD[n] * Thin.InvFactorial[n];
+    if (n > 0)
+    {
+      const double p = BernsteinSum(Thin.P0[n], n, powA, powD);
+      wFront -= sign * p;               // sum_{n>=1} (-1)^(n+1) I_n / n!
+      wBack -= sign * (boundTerm - p);  // sum_{n>=1} (-1)^(n+1) (D1^n - I_n) / n!
+    }
+    if (withEmission)
+    {
+      k1 += sign * BernsteinSum(Thin.P1[n], n, powA, powD);
+      v0 += sign * BernsteinSum(Thin.Q[n], n, powA, powD);
+    }
+    if (n > 0 && boundTerm < stop * d1 && (!withEmission || boundTerm < stop))
+    {
+      break;
+    }
+    sign = -sign;
+  }
+  w.WFront = std::max(0.0, wFront);
+  w.WBack = std::max(0.0, wBack);
+  if (withEmission)
+  {
+    w.VBack = k1;
+    w.VFront = v0;
+  }
+  return w;
+}
+
+/**
+ * Moments M_k(a) = integral_0^1 x^k exp(-a x) dx for k = 0..kMax (a > 0).
+ * Large a: upward recurrence M_k = (k M_{k-1} - e^{-a}) / a from
+ * M_0 = -expm1(-a)/a; each step damps errors by k/a < 1/2.
+ * Otherwise: M_kMax = e^{-a} sum_j a^j / ((kMax+1)...(kMax+1+j)) (positive
+ * terms) and the downward recurrence M_{k-1} = (a M_k + e^{-a}) / k, which
+ * adds positive numbers only.
+ */
+void Moments(double a, int kMax, double* m)
+{
+  const double ea = std::exp(-a);
+  if (a > MomentUpwardFrom)
+  {
+    m[0] = -std::expm1(-a) / a;
+    for (int k = 1; k <= kMax; ++k)
+    {
+      m[k] = (k * m[k - 1] - ea) / a;
+    }
+    return;
+  }
+  double term = 1.0 / (kMax + 1);
+  double sum = term;
+  for (int j = 1; j < 400; ++j)
+  {
+    term *= a / (kMax + 1 + j);
+    sum += term;
+    if (term < 1e-17 * sum)
+    {
+      break;
+    }
+  }
+  m[kMax] = ea * sum;
+  for (int k = kMax; k > 0; --k)
+  {
+    m[k - 1] = (a * m[k] + ea) / k;
+  }
+}
+
+/// K1 = integral_0^1 x exp(-a x - b x^2) dx for |b| < SmallSlope, as
+/// sum_n (-b)^n / n! M_{2n+1}(a).
+double FirstMomentSmallSlope(double a, double b)
+{
+  int order = 0;
+  double bound = 1.0;
+  while (order < MaxSlopeOrder && bound > 1e-17)
+  {
+    ++order;
+    bound *= std::abs(b) / order;
+  }
+  const int kMax = 2 * order + 1;
+  double m[2 * MaxSlopeOrder + 2];
+  Moments(a, kMax, m);
+  double sum = 0.0;
+  double coef = 1.0;
+  for (int n = 0; n <= order; ++n)
+  {
+    sum += coef * m[2 * n + 1];
+    coef *= -b / (n + 1);
+  }
+  return sum;
+}
+}
+
+SegmentWeights ExactSegmentWeights(double depthFront, double depthBack, bool withEmissionWeights)
+{
+  const double a = std::min(std::max(depthFront, 0.0), DepthCap);
+  const double c = std::min(std::max(depthBack, 0.0), DepthCap);
+  const double d1 = 0.5 * (a + c); // total optical depth D(1)
+  if (d1 <= ThinDepth)
+  {
+    return ThinWeights(a, d1, withEmissionWeights);
+  }
+  SegmentWeights w;
+  w.Transmittance = std::exp(-d1);
+  w.Alpha = -std::expm1(-d1);
+  const double b = 0.5 * (c - a);
+  double k0;
+  if (std::abs(b) <= ZeroSlopeRelative * d1)
+  {
+    k0 = w.Alpha / d1;
+  }
+  else if (b > 0.0)
+  {
+    const double s = std::sqrt(b);
+    k0 = SqrtPi / (2.0 * s) *
+      (Erfcx(a / (2.0 * s)) - w.Transmittance * Erfcx(c / (2.0 * s)));
+  }
+  else
+  {
+    const double s = std::sqrt(-b);
+    k0 = (Dawson(a / (2.0 * s)) - w.Transmittance * Dawson(c / (2.0 * s))) / s;
+  }
+  k0 = std::min(std::max(k0, w.Transmittance), 1.0); // T(1) <= K0 <= 1
+  w.WFront = 1.0 - k0;
+  w.WBack = k0 - w.Transmittance;
+  if (withEmissionWeights)
+  {
+    double k1 = std::abs(b) >= SmallSlope ? (w.Alpha - a * k0) / (2.0 * b)
+                                          : FirstMomentSmallSlope(a, b);
+    k1 = std::min(std::max(k1, 0.0), k0);
+    w.VBack = k1;
+    w.VFront = k0 - k1;
+  }
+  return w;
+}
+
+RGBA IntegrateSegment(double length, const SegmentEnd& front, const SegmentEnd& back,
+  EmissionModel emission, SegmentMethod method)
+{
+  RGBA out;
+  if (!(length > 0.0))
+  {
+    return out; // zero, negative or NaN length: nothing
+  }
+  const bool wm = emission == EmissionModel::WilliamsMax;
+  const double depthFront = std::max(front.Tau, 0.0) * length;
+  const double depthBack = std::max(back.Tau, 0.0) * length;
+  if (!std::isfinite(depthFront) || !std::isfinite(depthBack))
+  {
+    // Opaque medium at (or immediately behind) the front: what is seen is the
+    // front chromaticity; with emission independent of extinction an
+    // infinitely dense medium shows nothing of its glow.
+    out.A = 1.0;
+    if (wm)
+    {
+      out.R = front.Color[0];
+      out.G = front.Color[1];
+      out.B = front.Color[2];
+    }
+    return out;
+  }
+  if (method == SegmentMethod::Approximate)
+  {
+    const double d1 = 0.5 * (depthFront + depthBack);
+    out.A = -std::expm1(-d1);
+    // Williams-Max: C = A * average chromaticity. Wilhelms-Van Gelder: the
+    // average emission times integral of T for constant extinction, L A / D1.
+    const double scale = wm ? 0.5 * out.A : 0.5 * length * (d1 > 0.0 ? out.A / d1 : 1.0);
+    out.R = scale * (front.Color[0] + back.Color[0]);
+    out.G = scale * (front.Color[1] + back.Color[1]);
+    out.B = scale * (front.Color[2] + back.Color[2]);
+    return out;
+  }
+  const SegmentWeights w = ExactSegmentWeights(depthFront, depthBack, !wm);
+  out.A = w.Alpha;
+  const double wf = wm ? w.WFront : length * w.VFront;
+  const double wb = wm ? w.WBack : length * w.VBack;
+  out.R = wf * front.Color[0] + wb * back.Color[0];
+  out.G = wf * front.Color[1] + wb * back.Color[1];
+  out.B = wf * front.Color[2] + wb * back.Color[2];
+  return out;
+}
+}

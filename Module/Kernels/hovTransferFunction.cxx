@@ -1,0 +1,394 @@
+#include "hovTransferFunction.h"
+
+#include <algorithm> // sort, lower_bound, upper_bound
+#include <array>     // node values
+#include <cmath>     // log1p, isfinite
+#include <limits>    // infinity
+#include <sstream>   // messages
+
+namespace hov
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+// Samples per refinement piece when checking the chord of -ln(1-a)/u. The
+// relative error is smooth inside a piece, so 33 samples locate its maximum to
+// well under 1% of its value; the maximum at a zero end is taken analytically.
+constexpr int ChordSamples = 33;
+constexpr int MaxRefinementDepth = 64;
+
+/// Nodes of a piecewise-linear function with N channels; a jump is two nodes
+/// at one X. Values may be +infinity (opaque extinction).
+template <int N>
+struct Pwl
+{
+  std::vector<double> X;
+  std::vector<std::array<double, N>> V;
+
+  void Append(double x, const std::array<double, N>& v)
+  {
+    // Drop an exact repeat, and keep at most two nodes (left, right) at one X.
+    const size_t n = this->X.size();
+    if (n > 0 && this->X[n - 1] == x && this->V[n - 1] == v)
+    {
+      return;
+    }
+    if (n > 1 && this->X[n - 1] == x && this->X[n - 2] == x)
+    {
+      this->V[n - 1] = v;
+      return;
+    }
+    this->X.push_back(x);
+    this->V.push_back(v);
+  }
+
+  static double Lerp(double v0, double v1, double w)
+  {
+    if (v0 == Infinity || v1 == Infinity)
+    {
+      return Infinity;
+    }
+    return v0 + (v1 - v0) * w;
+  }
+
+  /// Left and right limits at x (constant beyond the end nodes).
+  void Limits(double x, std::array<double, N>& left, std::array<double, N>& right) const
+  {
+    const auto lo = std::lower_bound(this->X.begin(), this->X.end(), x);
+    const auto hi = std::upper_bound(this->X.begin(), this->X.end(), x);
+    if (lo != hi)
+    {
+      left = this->V[lo - this->X.begin()];
+      right = this->V[(hi - this->X.begin()) - 1];
+      return;
+    }
+    const long i = static_cast<long>(hi - this->X.begin()) - 1;
+    if (i < 0)
+    {
+      left = right = this->V.front();
+    }
+    else if (i + 1 >= static_cast<long>(this->X.size()))
+    {
+      left = right = this->V.back();
+    }
+    else
+    {
+      const double w = (x - this->X[i]) / (this->X[i + 1] - this->X[i]);
+      for (int c = 0; c < N; ++c)
+      {
+        left[c] = Lerp(this->V[i][c], this->V[i + 1][c], w);
+      }
+      right = left;
+    }
+  }
+};
+
+void Note(std::vector<std::string>* messages, const std::string& text)
+{
+  if (messages)
+  {
+    messages->push_back(text);
+  }
+}
+
+/// Sorted, finite colour nodes (stable, so a jump keeps its left/right order).
+Pwl<3> SanitizeColor(const std::vector<ColorNode>& in, std::vector<std::string>* messages)
+{
+  std::vector<ColorNode> nodes;
+  int dropped = 0, clamped = 0;
+  for (const ColorNode& n : in)
+  {
+    if (!std::isfinite(n.X) || !std::isfinite(n.R) || !std::isfinite(n.G) || !std::isfinite(n.B))
+    {
+      ++dropped;
+      continue;
+    }
+    ColorNode c = n;
+    if (c.R < 0.0 || c.G < 0.0 || c.B < 0.0)
+    {
+      ++clamped;
+      c.R = std::max(c.R, 0.0);
+      c.G = std::max(c.G, 0.0);
+      c.B = std::max(c.B, 0.0);
+    }
+    nodes.push_back(c);
+  }
+  if (dropped)
+  {
+    Note(messages, std::to_string(dropped) + " colour node(s) with NaN/Inf dropped");
+  }
+  if (clamped)
+  {
+    Note(messages, std::to_string(clamped) + " colour node(s) with negative components clamped to 0");
+  }
+  std::stable_sort(nodes.begin(), nodes.end(),
+    [](const ColorNode& p, const ColorNode& q) { return p.X < q.X; });
+  Pwl<3> out;
+  for (const ColorNode& n : nodes)
+  {
+    out.Append(n.X, { n.R, n.G, n.B });
+  }
+  if (out.X.empty())
+  {
+    Note(messages, "no colour nodes: the colour is black");
+    out.Append(0.0, { 0.0, 0.0, 0.0 });
+  }
+  return out;
+}
+
+/// Sorted opacity nodes clamped to [0,1].
+std::vector<OpacityNode> SanitizeOpacity(
+  const std::vector<OpacityNode>& in, std::vector<std::string>* messages)
+{
+  std::vector<OpacityNode> nodes;
+  int dropped = 0, clamped = 0;
+  for (const OpacityNode& n : in)
+  {
+    if (!std::isfinite(n.X) || std::isnan(n.Opacity))
+    {
+      ++dropped;
+      continue;
+    }
+    OpacityNode o = n;
+    if (o.Opacity < 0.0 || o.Opacity > 1.0)
+    {
+      ++clamped;
+      o.Opacity = std::min(std::max(o.Opacity, 0.0), 1.0);
+    }
+    nodes.push_back(o);
+  }
+  if (dropped)
+  {
+    Note(messages, std::to_string(dropped) + " opacity node(s) with NaN or infinite position dropped");
+  }
+  if (clamped)
+  {
+    Note(messages, std::to_string(clamped) + " opacity value(s) outside [0,1] clamped");
+  }
+  std::stable_sort(nodes.begin(), nodes.end(),
+    [](const OpacityNode& p, const OpacityNode& q) { return p.X < q.X; });
+  if (nodes.empty())
+  {
+    Note(messages, "no opacity nodes: the volume is transparent");
+    nodes.push_back(OpacityNode{ 0.0, 0.0 });
+  }
+  return nodes;
+}
+
+/// GPU-compatible extinction -ln(1-a)/u with 1-a clamped at OpaqueClamp.
+struct GPUExtinction
+{
+  double InvUnit;
+  double operator()(double a) const
+  {
+    const double p = 1.0 - a;
+    if (p <= TransferFunction::OpaqueClamp)
+    {
+      return -std::log(TransferFunction::OpaqueClamp) * this->InvUnit;
+    }
+    return -std::log1p(-a) * this->InvUnit;
+  }
+};
+
+/// Bisects [s0,s1] (opacity linear from a0 to a1) until the chord of tau has
+/// relative error <= tol; appends the right end of every piece.
+class Refiner
+{
+public:
+  Refiner(GPUExtinction tau, double tol, Pwl<1>& out)
+    : TauOf(tau)
+    , Tol(tol)
+    , Out(out)
+  {
+  }
+
+  void Run(double s0, double a0, double s1, double a1, int depth)
+  {
+    const double t0 = this->TauOf(a0), t1 = this->TauOf(a1);
+    if (depth < MaxRefinementDepth && this->Added < TransferFunction::MaxRefinementNodes &&
+      this->ChordError(a0, t0, a1, t1) > this->Tol)
+    {
+      const double sm = 0.5 * (s0 + s1);
+      const double am = 0.5 * (a0 + a1);
+      if (sm > s0 && sm < s1)
+      {
+        this->Run(s0, a0, sm, am, depth + 1);
+        ++this->Added;
+        this->Run(sm, am, s1, a1, depth + 1);
+        return;
+      }
+    }
+    if (depth >= MaxRefinementDepth || this->Added >= TransferFunction::MaxRefinementNodes)
+    {
+      this->Exhausted = true;
+    }
+    this->Out.Append(s1, { t1 });
+  }
+
+  int Added = 0;
+  bool Exhausted = false;
+
+private:
+  /// Max relative error of the chord of tau(a) over [a0,a1] (a linear in s).
+  double ChordError(double a0, double t0, double a1, double t1) const
+  {
+    if (a0 == a1)
+    {
+      return 0.0;
+    }
+    double worst = 0.0;
+    // At a zero end, chord/tau -> (chord slope)/(tau'(0) = 1/u).
+    if (t0 == 0.0)
+    {
+      worst = std::max(worst, t1 / (a1 * this->TauOf.InvUnit) - 1.0);
+    }
+    if (t1 == 0.0)
+    {
+      worst = std::max(worst, t0 / (a0 * this->TauOf.InvUnit) - 1.0);
+    }
+    for (int j = 1; j < ChordSamples; ++j)
+    {
+      const double w = static_cast<double>(j) / ChordSamples;
+      const double exact = this->TauOf(a0 + (a1 - a0) * w);
+      const double chord = t0 + (t1 - t0) * w;
+      worst = std::max(worst, std::abs(chord - exact) / exact);
+    }
+    return worst;
+  }
+
+  GPUExtinction TauOf;
+  double Tol;
+  Pwl<1>& Out;
+};
+}
+
+bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::string>* messages)
+{
+  this->X.clear();
+  this->Tau.clear();
+  this->R.clear();
+  this->G.clear();
+  this->B.clear();
+  this->RefinementNodes = 0;
+  this->Semantics = spec.Semantics;
+
+  double unit = spec.UnitDistance;
+  if (!(unit > 0.0) || !std::isfinite(unit))
+  {
+    Note(messages, "unit distance must be positive and finite; using 1");
+    unit = 1.0;
+  }
+  double tol = spec.GPUTolerance;
+  if (!(tol >= 1e-14) || !(tol <= 0.5))
+  {
+    tol = std::min(std::max(std::isnan(tol) ? 1e-4 : tol, 1e-14), 0.5);
+    Note(messages, "GPU opacity tolerance clamped to [1e-14, 0.5]");
+  }
+  this->EmissionFactor = (std::isfinite(spec.EmissionScale) ? spec.EmissionScale : 1.0) / unit;
+
+  const Pwl<3> color = SanitizeColor(spec.Color, messages);
+  const std::vector<OpacityNode> opacity = SanitizeOpacity(spec.Opacity, messages);
+
+  // Extinction nodes, refined where the semantics is not linear in a.
+  Pwl<1> tau;
+  const GPUExtinction gpu{ 1.0 / unit };
+  Refiner refiner(gpu, tol, tau);
+  auto tauOf = [&](double a) {
+    switch (spec.Semantics)
+    {
+      case OpacitySemantics::GPUCompatible:
+        return a >= 1.0 ? Infinity : gpu(a);
+      case OpacitySemantics::VTKUnstructured:
+        return a / unit;
+      default:
+        return a;
+    }
+  };
+  tau.Append(opacity[0].X, { tauOf(opacity[0].Opacity) });
+  for (size_t i = 0; i + 1 < opacity.size(); ++i)
+  {
+    const OpacityNode& p = opacity[i];
+    const OpacityNode& q = opacity[i + 1];
+    const bool gpuSemantics = spec.Semantics == OpacitySemantics::GPUCompatible;
+    if (!gpuSemantics || p.X == q.X || (p.Opacity >= 1.0 && q.Opacity >= 1.0))
+    {
+      // Linear semantics, a jump, or an opaque interval (tau = +inf on both ends).
+      tau.Append(p.X, { tauOf(p.Opacity) });
+      tau.Append(q.X, { tauOf(q.Opacity) });
+      continue;
+    }
+    // A finite interval: its ends use the clamped extinction even where a = 1
+    // (a jump to +inf is added by the opaque neighbour if there is one).
+    tau.Append(p.X, { gpu(p.Opacity) });
+    refiner.Run(p.X, p.Opacity, q.X, q.Opacity, 0);
+  }
+  tau.Append(opacity.back().X, { tauOf(opacity.back().Opacity) });
+  this->RefinementNodes = refiner.Added;
+  if (refiner.Exhausted)
+  {
+    Note(messages, "GPU-compatible refinement stopped at its node budget; tolerance not met everywhere");
+  }
+
+  // Merge: every colour and extinction position, with left/right limits.
+  std::vector<double> positions = color.X;
+  positions.insert(positions.end(), tau.X.begin(), tau.X.end());
+  std::sort(positions.begin(), positions.end());
+  positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+  this->AnyExtinction = false;
+  for (double x : positions)
+  {
+    std::array<double, 3> cl, cr;
+    std::array<double, 1> tl, tr;
+    color.Limits(x, cl, cr);
+    tau.Limits(x, tl, tr);
+    auto push = [this](double px, const std::array<double, 3>& c, double t) {
+      this->X.push_back(px);
+      this->R.push_back(c[0]);
+      this->G.push_back(c[1]);
+      this->B.push_back(c[2]);
+      this->Tau.push_back(t);
+    };
+    push(x, cl, tl[0]);
+    if (cl != cr || tl != tr)
+    {
+      push(x, cr, tr[0]);
+    }
+    this->AnyExtinction = this->AnyExtinction || tl[0] > 0.0 || tr[0] > 0.0;
+  }
+  return true;
+}
+
+int TransferFunction::FindIntervalUpward(double s) const
+{
+  return static_cast<int>(std::upper_bound(this->X.begin(), this->X.end(), s) - this->X.begin()) - 1;
+}
+
+int TransferFunction::FindIntervalDownward(double s) const
+{
+  return static_cast<int>(std::lower_bound(this->X.begin(), this->X.end(), s) - this->X.begin()) - 1;
+}
+
+void TransferFunction::Evaluate(int k, double s, bool emission, SegmentEnd& out) const
+{
+  const int n = static_cast<int>(this->X.size());
+  const double scale = emission ? this->EmissionFactor : 1.0;
+  if (k < 0 || k >= n - 1)
+  {
+    const int i = k < 0 ? 0 : n - 1;
+    out.Tau = this->Tau[i];
+    out.Color[0] = scale * this->R[i];
+    out.Color[1] = scale * this->G[i];
+    out.Color[2] = scale * this->B[i];
+    return;
+  }
+  const double width = this->X[k + 1] - this->X[k];
+  double w = width > 0.0 ? (s - this->X[k]) / width : 0.0;
+  w = std::min(std::max(w, 0.0), 1.0);
+  const double t0 = this->Tau[k], t1 = this->Tau[k + 1];
+  out.Tau = (t0 == Infinity || t1 == Infinity) ? Infinity : t0 + (t1 - t0) * w;
+  out.Color[0] = scale * (this->R[k] + (this->R[k + 1] - this->R[k]) * w);
+  out.Color[1] = scale * (this->G[k] + (this->G[k + 1] - this->G[k]) * w);
+  out.Color[2] = scale * (this->B[k] + (this->B[k + 1] - this->B[k]) * w);
+}
+}
