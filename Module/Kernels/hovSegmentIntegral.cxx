@@ -88,49 +88,74 @@ inline double BernsteinSum(const double* coef, int n, const double* powA, const 
   return sum;
 }
 
+/// Number of series terms that reach 2^-56 relative accuracy for total depth
+/// d1: the first terms of WFront and WBack are both >= d1/3 and term n is
+/// bounded by d1^n/n!, so n terms suffice once d1^n/(n+1)! < 2^-56/3. The
+/// emission weights (first terms 1/2) need d1^(n+1)/(n+1)! < 2^-56 as well.
+struct ThinTermTable
+{
+  double MaxDepth[MaxThinOrder + 1] = {};
+  ThinTermTable()
+  {
+    const double stop = std::ldexp(1.0, -56) / 3.0;
+    double fact = 1.0;
+    for (int n = 1; n <= MaxThinOrder; ++n)
+    {
+      fact *= n + 1; // (n+1)!
+      const double wm = std::pow(stop * fact, 1.0 / n);
+      const double wvg = std::pow(3.0 * stop * fact, 1.0 / (n + 1));
+      this->MaxDepth[n] = std::min(wm, wvg);
+    }
+  }
+  int Terms(double d1) const
+  {
+    int n = 1;
+    while (n < MaxThinOrder && d1 > this->MaxDepth[n])
+    {
+      ++n;
+    }
+    return n;
+  }
+};
+
 /// Thin segment (D1 <= ThinDepth): all weights from the Taylor series in D.
 SegmentWeights ThinWeights(double a, double d1, bool withEmission)
 {
+  static const ThinTermTable termTable; // thread-safe initialisation (C++11)
   SegmentWeights w;
-  w.Transmittance = std::exp(-d1);
   w.Alpha = -std::expm1(-d1);
+  w.Transmittance = 1.0 - w.Alpha; // absolute accuracy is what compositing needs
+  const int terms = termTable.Terms(d1);
   double powA[MaxThinOrder + 1];
   double powD[MaxThinOrder + 1];
   powA[0] = powD[0] = 1.0;
-  // Stop once D1^(n-1)/n! < 2^-56 / 3 (the first terms of WFront and WBack are
-  // both >= D1/3) and, for the emission weights (first terms 1/2), D1^n/n! < 2^-56.
-  constexpr double stop = 1.0 / 72057594037927936.0 / 3.0; // 2^-56 / 3
-  double wFront = 0.0, wBack = 0.0, k1 = 0.0, v0 = 0.0;
-  double sign = 1.0;
-  for (int n = 0; n <= MaxThinOrder; ++n)
+  for (int n = 1; n <= terms; ++n)
   {
-    if (n > 0)
-    {
-      powA[n] = powA[n - 1] * a;
-      powD[n] = powD[n - 1] * d1;
-    }
-    const double boundTerm = powD[n] * Thin.InvFactorial[n];
-    if (n > 0)
-    {
-      const double p = BernsteinSum(Thin.P0[n], n, powA, powD);
-      wFront -= sign * p;               // sum_{n>=1} (-1)^(n+1) I_n / n!
-      wBack -= sign * (boundTerm - p);  // sum_{n>=1} (-1)^(n+1) (D1^n - I_n) / n!
-    }
-    if (withEmission)
-    {
-      k1 += sign * BernsteinSum(Thin.P1[n], n, powA, powD);
-      v0 += sign * BernsteinSum(Thin.Q[n], n, powA, powD);
-    }
-    if (n > 0 && boundTerm < stop * d1 && (!withEmission || boundTerm < stop))
-    {
-      break;
-    }
+    powA[n] = powA[n - 1] * a;
+    powD[n] = powD[n - 1] * d1;
+  }
+  // WFront = sum_{n>=1} (-1)^(n+1) I_n/n!, WBack = sum_{n>=1} (-1)^(n+1) (D1^n - I_n)/n!.
+  double wFront = 0.0, wBack = 0.0, sign = 1.0;
+  for (int n = 1; n <= terms; ++n)
+  {
+    const double p = BernsteinSum(Thin.P0[n], n, powA, powD);
+    wFront += sign * p;
+    wBack += sign * (powD[n] * Thin.InvFactorial[n] - p);
     sign = -sign;
   }
   w.WFront = std::max(0.0, wFront);
   w.WBack = std::max(0.0, wBack);
   if (withEmission)
   {
+    // VBack = K1 = sum_n (-1)^n I_{n,1}/n!, VFront = sum_n (-1)^n J_n/n!.
+    double k1 = 0.0, v0 = 0.0;
+    sign = 1.0;
+    for (int n = 0; n <= terms; ++n)
+    {
+      k1 += sign * BernsteinSum(Thin.P1[n], n, powA, powD);
+      v0 += sign * BernsteinSum(Thin.Q[n], n, powA, powD);
+      sign = -sign;
+    }
     w.VBack = k1;
     w.VFront = v0;
   }

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# README command 1: set up, build, then render the bundled dataset with
+# vtkHighOrderVolumeMapper and VTK's unstructured mappers side by side.
+# Output: <build>/demo/ (PNGs, montage, float image, table.md).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${HOV_BUILD_DIR:-$root/build}"
+"$root/Utilities/build.sh"
+PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+  xvfb-run -a -s "-screen 0 1280x1024x24" \
+  /usr/bin/python3 "$root/Utilities/hov_demo.py" --out "$build/demo" "$@"
