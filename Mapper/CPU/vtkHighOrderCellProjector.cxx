@@ -24,8 +24,11 @@ using Box = std::array<int, 4>; // i0, i1, j0, j1 inclusive; i0 > i1 means empty
 using Tetra = vtkHighOrderTetraSetup::Tetra;
 using Ray = vtkHighOrderViewRays::Ray;
 
-/// Pixel box of a tetrahedron: centres inside its projected bounding box,
-/// plus one pixel of margin (the per-pixel ray test is exact).
+/// Pixel box of a tetrahedron: the pixel centres inside its projected
+/// bounding box, widened by BoxMargin pixels against round-off in the
+/// projection (the per-pixel ray test that follows is exact).
+constexpr double BoxMargin = 1e-6;
+
 Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
   const std::vector<unsigned char>& projectable, int width, int height)
 {
@@ -43,10 +46,10 @@ Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
   }
   const double lim = 1e9; // keep the int conversion defined for far-off cells
   Box b;
-  b[0] = static_cast<int>(std::max(0.0, std::ceil(std::max(x0, -lim) - 0.5) - 1.0));
-  b[1] = static_cast<int>(std::min(width - 1.0, std::floor(std::min(x1, lim) - 0.5) + 1.0));
-  b[2] = static_cast<int>(std::max(0.0, std::ceil(std::max(y0, -lim) - 0.5) - 1.0));
-  b[3] = static_cast<int>(std::min(height - 1.0, std::floor(std::min(y1, lim) - 0.5) + 1.0));
+  b[0] = static_cast<int>(std::max(0.0, std::ceil(std::max(x0, -lim) - 0.5 - BoxMargin)));
+  b[1] = static_cast<int>(std::min(width - 1.0, std::floor(std::min(x1, lim) - 0.5 + BoxMargin)));
+  b[2] = static_cast<int>(std::max(0.0, std::ceil(std::max(y0, -lim) - 0.5 - BoxMargin)));
+  b[3] = static_cast<int>(std::min(height - 1.0, std::floor(std::min(y1, lim) - 0.5 + BoxMargin)));
   return b;
 }
 

@@ -12,9 +12,10 @@
  * Here the order is front to back (the reverse of a back-to-front visibility
  * sort), so a pixel stops once its accumulated transmittance is below
  * TerminationTransmittance (the error this causes is at most that value).
- * Scan conversion is exact: each cell's projected bounding box (one pixel of
- * margin) is walked and the pixel's ray is clipped against the cell's four
- * face planes; pixels the ray misses contribute nothing.
+ * Scan conversion is exact: the pixel centres in each cell's projected
+ * bounding box (widened by 1e-6 pixel against round-off) are walked and each
+ * pixel's ray is clipped against the cell's four face planes; pixels the ray
+ * misses contribute nothing.
  *
  * Threads: the image is split into tiles; each cell is binned, in order, into
  * the tiles its box overlaps; tiles run in parallel (vtkSMPTools) and each

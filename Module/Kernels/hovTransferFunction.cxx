@@ -266,10 +266,7 @@ private:
 bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::string>* messages)
 {
   this->X.clear();
-  this->Tau.clear();
-  this->R.clear();
-  this->G.clear();
-  this->B.clear();
+  this->Nodes.clear();
   this->RefinementNodes = 0;
   this->Semantics = spec.Semantics;
 
@@ -344,10 +341,7 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
     tau.Limits(x, tl, tr);
     auto push = [this](double px, const std::array<double, 3>& c, double t) {
       this->X.push_back(px);
-      this->R.push_back(c[0]);
-      this->G.push_back(c[1]);
-      this->B.push_back(c[2]);
-      this->Tau.push_back(t);
+      this->Nodes.push_back(Node{ t, c[0], c[1], c[2], 0.0, 0.0, 0.0, 0.0 });
     };
     push(x, cl, tl[0]);
     if (cl != cr || tl != tr)
@@ -355,6 +349,25 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
       push(x, cr, tr[0]);
     }
     this->AnyExtinction = this->AnyExtinction || tl[0] > 0.0 || tr[0] > 0.0;
+  }
+  // Slopes per interval, so that Evaluate() is one multiply-add per value.
+  for (size_t k = 0; k + 1 < this->Nodes.size(); ++k)
+  {
+    Node& p = this->Nodes[k];
+    const Node& q = this->Nodes[k + 1];
+    const double width = this->X[k + 1] - this->X[k];
+    if (width > 0.0)
+    {
+      const bool opaque = p.Tau == Infinity || q.Tau == Infinity;
+      p.DTau = opaque ? 0.0 : (q.Tau - p.Tau) / width;
+      p.DR = (q.R - p.R) / width;
+      p.DG = (q.G - p.G) / width;
+      p.DB = (q.B - p.B) / width;
+      if (opaque)
+      {
+        p.Tau = Infinity; // both ends of an opaque interval are +inf by construction
+      }
+    }
   }
   return true;
 }
@@ -375,20 +388,19 @@ void TransferFunction::Evaluate(int k, double s, bool emission, SegmentEnd& out)
   const double scale = emission ? this->EmissionFactor : 1.0;
   if (k < 0 || k >= n - 1)
   {
-    const int i = k < 0 ? 0 : n - 1;
-    out.Tau = this->Tau[i];
-    out.Color[0] = scale * this->R[i];
-    out.Color[1] = scale * this->G[i];
-    out.Color[2] = scale * this->B[i];
+    const Node& node = this->Nodes[k < 0 ? 0 : n - 1];
+    out.Tau = node.Tau;
+    out.Color[0] = scale * node.R;
+    out.Color[1] = scale * node.G;
+    out.Color[2] = scale * node.B;
     return;
   }
-  const double width = this->X[k + 1] - this->X[k];
-  double w = width > 0.0 ? (s - this->X[k]) / width : 0.0;
-  w = std::min(std::max(w, 0.0), 1.0);
-  const double t0 = this->Tau[k], t1 = this->Tau[k + 1];
-  out.Tau = (t0 == Infinity || t1 == Infinity) ? Infinity : t0 + (t1 - t0) * w;
-  out.Color[0] = scale * (this->R[k] + (this->R[k + 1] - this->R[k]) * w);
-  out.Color[1] = scale * (this->G[k] + (this->G[k + 1] - this->G[k]) * w);
-  out.Color[2] = scale * (this->B[k] + (this->B[k + 1] - this->B[k]) * w);
+  const Node& node = this->Nodes[k];
+  // Clamp to the interval: s may sit a rounding error outside it.
+  const double ds = std::min(std::max(s - this->X[k], 0.0), this->X[k + 1] - this->X[k]);
+  out.Tau = node.Tau + node.DTau * ds;
+  out.Color[0] = scale * (node.R + node.DR * ds);
+  out.Color[1] = scale * (node.G + node.DG * ds);
+  out.Color[2] = scale * (node.B + node.DB * ds);
 }
 }

@@ -122,9 +122,14 @@ public:
   void Evaluate(int k, double s, bool emission, SegmentEnd& out) const;
 
 private:
+  /// Values at a node and their slopes d/ds over the interval that starts there.
+  struct Node
+  {
+    double Tau, R, G, B;
+    double DTau, DR, DG, DB;
+  };
   std::vector<double> X;
-  std::vector<double> Tau;
-  std::vector<double> R, G, B;
+  std::vector<Node> Nodes;
   OpacitySemantics Semantics = OpacitySemantics::GPUCompatible;
   double EmissionFactor = 1.0;
   int RefinementNodes = 0;
