@@ -251,6 +251,10 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     tf->SetOpacitySemantics(this->OpacitySemantics);
     tf->SetGPUTolerance(this->GPUOpacityTolerance);
     tf->SetEmissionScale(this->EmissionScale);
+    // One component of a multi-component array with independent components
+    // uses that component's functions; everything else uses component 0's.
+    const bool independent = impl.SetupComponent > 0 && property->GetIndependentComponents();
+    tf->SetComponent(independent ? std::min(impl.SetupComponent, 3) : 0);
     const int buildsBefore = tf->GetBuildCount();
     tf->Update(property);
     if (tf->GetBuildCount() != buildsBefore)

@@ -117,7 +117,11 @@ public:
     COMPONENT = 1
   };
   ///@{
-  /// Multi-component arrays: render the magnitude (default) or one component.
+  /**
+   * Multi-component arrays: render the magnitude (default) or one component.
+   * With COMPONENT and vtkVolumeProperty::IndependentComponents on, the
+   * property's functions of that component are used; otherwise component 0's.
+   */
   vtkSetClampMacro(VectorMode, int, MAGNITUDE, COMPONENT);
   vtkGetMacro(VectorMode, int);
   vtkSetMacro(VectorComponent, int);
