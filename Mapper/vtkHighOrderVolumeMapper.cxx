@@ -25,6 +25,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm> // std::reverse
+#include <string>    // setup errors
 #include <vector>    // buffers
 
 vtkStandardNewMacro(vtkHighOrderVolumeMapper);
@@ -123,10 +124,14 @@ bool vtkHighOrderVolumeMapper::PrepareCells(vtkVolume*)
   impl.SetupCellScalars = cellScalars;
   impl.SetupValid = true;
   ++impl.SetupGeneration;
-  impl.Setup.Build(input, scalars, cellScalars, component);
+  std::string error;
+  if (!impl.Setup.Build(input, scalars, cellScalars, component, &error) && !error.empty())
+  {
+    vtkErrorMacro("Cannot render: " << error << ".");
+    impl.SetupValid = false;
+    return false;
+  }
   const vtkHighOrderTetraSetup::Statistics& st = impl.Setup.GetStatistics();
-  this->NumberOfRenderedCells = st.Rendered;
-  this->NumberOfSkippedCells = st.Cells - st.Rendered;
   if (st.Cells == 0)
   {
     vtkWarningMacro("The input grid has no cells: nothing to render.");
@@ -183,8 +188,10 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
   {
     return true; // same view: reuse the order (also keeps ties deterministic)
   }
+  // The sort sees only the valid tetrahedra (never a cell with broken
+  // connectivity or NaN points), and its ids are tetra indices.
   vtkVisibilitySort* sort = this->VisibilitySort;
-  sort->SetInput(this->GetInput());
+  sort->SetInput(impl.Setup.GetSortGrid());
   sort->SetCamera(camera);
   sort->SetModelTransform(matrix);
   sort->SetDirectionToBackToFront();
@@ -196,8 +203,8 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
     const vtkIdType n = cells->GetNumberOfTuples();
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const vtkIdType tet = impl.Setup.GetTetraOfCell(cells->GetValue(i));
-      if (tet >= 0)
+      const vtkIdType tet = cells->GetValue(i);
+      if (tet >= 0 && tet < static_cast<vtkIdType>(impl.Setup.GetTetras().size()))
       {
         impl.FrontToBack.push_back(tet);
       }
@@ -231,7 +238,12 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   {
     vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
   }
-  vtkUnstructuredGridBase* input = this->GetInput();
+  this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
+  if (ok && this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update(); // RenderImage may run before any render
+  }
+  vtkUnstructuredGridBase* input = ok ? this->GetInput() : nullptr;
   if (ok && !input)
   {
     vtkErrorMacro("No input.");
@@ -243,7 +255,17 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     vtkErrorMacro("The volume has no vtkVolumeProperty.");
     ok = false;
   }
-  bool render = ok && this->PrepareCells(volume) && !impl.Setup.GetTetras().empty();
+  if (ok && !this->PrepareCells(volume))
+  {
+    ok = false; // the error was reported
+  }
+  if (ok)
+  {
+    const vtkHighOrderTetraSetup::Statistics& st = impl.Setup.GetStatistics();
+    this->NumberOfRenderedCells = st.Rendered;
+    this->NumberOfSkippedCells = st.Cells - st.Rendered;
+  }
+  bool render = ok && !impl.Setup.GetTetras().empty();
 
   if (render)
   {

@@ -5,10 +5,11 @@
  * A vtkUnstructuredGridVolumeMapper that reads the same vtkVolumeProperty as
  * VTK's volume mappers. Render mode implemented so far: the accurate CPU path
  * (HIAC, Williams, Max & Stein 1998, sections 4-5.1): linear tetrahedra in
- * visibility order, exact ray entry/exit per OpenGL pixel centre, the scalar
- * split at every transfer-function breakpoint (colour and opacity nodes
- * alike), the exact emission-absorption integral per piece (closed form with
- * libcerf's erfcx/Dawson), premultiplied compositing in double precision.
+ * visibility order (per pixel, or from a vtkVisibilitySort), exact ray
+ * entry/exit per OpenGL pixel centre, the scalar split at every
+ * transfer-function breakpoint (colour and opacity nodes alike), the exact
+ * emission-absorption integral per piece (closed form with libcerf's
+ * erfcx/Dawson), premultiplied compositing in double precision.
  *
  * Opacity semantics (SetOpacitySemantics):
  *  - GPU_COMPATIBLE (default): extinction -ln(1 - a(s))/u, the limit
@@ -29,11 +30,12 @@
  * from GetFloatImage(); on screen it is blended over what is drawn, and rays
  * stop at the depth of opaque geometry rendered before the volume.
  *
- * Bad input never crashes and never produces NaN pixels: missing or
- * non-numeric scalars are an error (nothing drawn); non-tetrahedral cells,
- * NaN/Inf points or scalars and degenerate tetrahedra are skipped with one
- * warning per render that gives the counts; inverted tetrahedra are rendered
- * and reported.
+ * Bad input never crashes and never produces NaN pixels: missing,
+ * non-numeric or too short scalar arrays are an error (nothing drawn);
+ * non-tetrahedral cells, NaN/Inf points or scalars, broken connectivity and
+ * degenerate tetrahedra are skipped with one warning (giving the counts) each
+ * time the input or the scalar selection changes; inverted tetrahedra are
+ * rendered and reported the same way.
  *
  * Thread safety: rendering uses vtkSMPTools internally; the float image is
  * bit-identical for any number of threads.
@@ -135,11 +137,15 @@ public:
   };
   ///@{
   /**
-   * VISIBILITY_SORT (default, HIAC): cells are composited in the order of the
-   * visibility sort; exact only if that order is (the z-buffer witness counts
-   * the pixels where it was not). PER_PIXEL_SORT: each pixel's ray segments
-   * are sorted by entry distance, exact for any non-overlapping cells convex or
-   * not, without a global sort (the witness then counts overlapping cells).
+   * PER_PIXEL_SORT (default): each pixel's ray segments are sorted by entry
+   * distance; exact for any set of non-overlapping cells, convex or not, with
+   * no global sort (the witness then counts pixels where cells overlap).
+   * VISIBILITY_SORT (HIAC): cells are composited in the order of the
+   * vtkVisibilitySort set with SetVisibilitySort(); exact only where that
+   * order is, and the z-buffer witness counts the pixels where it was not.
+   * VTK's only sort, vtkCellCenterDepthSort, is approximate (measured: wrong
+   * on about half the pixels of a convex block of tetrahedra in an axis
+   * perspective view), which is why it is not the default.
    */
   vtkSetClampMacro(CellOrdering, int, VISIBILITY_SORT, PER_PIXEL_SORT);
   vtkGetMacro(CellOrdering, int);
@@ -149,8 +155,9 @@ public:
 
   ///@{
   /**
-   * Visibility sort giving the cell order (default: vtkCellCenterDepthSort,
-   * approximate; the z-buffer witness counts the pixels where it was wrong).
+   * Visibility sort used with CellOrdering VISIBILITY_SORT (default:
+   * vtkCellCenterDepthSort, approximate; the z-buffer witness counts the
+   * pixels where it was wrong). It is given the valid tetrahedra only.
    */
   void SetVisibilitySort(vtkVisibilitySort* sort);
   vtkGetObjectMacro(VisibilitySort, vtkVisibilitySort);
@@ -205,7 +212,7 @@ protected:
   ~vtkHighOrderVolumeMapper() override;
 
   int OpacitySemantics = GPU_COMPATIBLE;
-  int CellOrdering = VISIBILITY_SORT;
+  int CellOrdering = PER_PIXEL_SORT;
   double GPUOpacityTolerance = 1e-4;
   int EmissionModel = WILLIAMS_MAX;
   double EmissionScale = 1.0;

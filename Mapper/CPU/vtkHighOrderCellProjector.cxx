@@ -54,7 +54,12 @@ Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
 }
 
 /// Exact clip of a ray against the four face planes; false if it misses.
-inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, double& tIn, double& tOut)
+/// A ray parallel to a face and exactly in its plane (num == 0) is resolved
+/// by the symbolic displacement e px + e^2 py of vtkHighOrderViewRays: inside
+/// iff n.px < 0, or n.px == 0 and n.py < 0. The two cells sharing a face hold
+/// opposite canonical normals, so exactly one of them takes such a ray.
+inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& px,
+  const glm::dvec3& py, double& tIn, double& tOut)
 {
   tIn = 0.0;
   tOut = tMax;
@@ -73,6 +78,14 @@ inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, double& tIn, 
     else if (num < 0.0)
     {
       return false;
+    }
+    else if (num == 0.0)
+    {
+      const double nx = glm::dot(tet.Normal[k], px);
+      if (nx > 0.0 || (nx == 0.0 && glm::dot(tet.Normal[k], py) >= 0.0))
+      {
+        return false;
+      }
     }
   }
   return tIn < tOut;
@@ -224,6 +237,7 @@ struct Frame
   const hov::TransferFunction& TF;
   const vtkHighOrderCellProjector::Settings& Settings;
   double WitnessTol;
+  glm::dvec3 PerturbX, PerturbY;
 
   /// Witness, integral and compositing of one segment at tile pixel p.
   void Integrate(Tile& tile, size_t p, double tIn, double tOut, double sIn, double sOut,
@@ -262,7 +276,8 @@ struct Frame
         {
           const size_t p = static_cast<size_t>(j) * tile.W + i;
           double tIn, tOut;
-          if ((skipDone && tile.Done[p]) || !ClipRay(tet, tile.Rays[p], tile.TMax[p], tIn, tOut))
+          if ((skipDone && tile.Done[p]) ||
+            !ClipRay(tet, tile.Rays[p], tile.TMax[p], this->PerturbX, this->PerturbY, tIn, tOut))
           {
             continue;
           }
@@ -340,7 +355,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;
   const Frame frame{ tets, frontToBack, bins, tf, settings,
-    WitnessRelativeTolerance * rays.GetDepthScale() };
+    WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY() };
   std::vector<Statistics> tileStats(numTiles);
   vtkSMPTools::For(0, numTiles, 1, [&](vtkIdType tBegin, vtkIdType tEnd) {
     Tile tile;

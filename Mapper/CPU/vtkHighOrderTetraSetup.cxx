@@ -48,10 +48,11 @@ double ScalarOf(vtkDataArray* array, vtkIdType id, int component, double* tuple)
 }
 }
 
-bool vtkHighOrderTetraSetup::Build(
-  vtkUnstructuredGridBase* grid, vtkDataArray* scalars, bool cellScalars, int component)
+bool vtkHighOrderTetraSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* scalars,
+  bool cellScalars, int component, std::string* error)
 {
   this->Stats = Statistics();
+  this->SortGrid = nullptr;
   this->Tetras.clear();
   this->Points.clear();
   this->CellToTetra.clear();
@@ -66,6 +67,16 @@ bool vtkHighOrderTetraSetup::Build(
 
   // One scalar per point (or per cell): component or magnitude.
   const vtkIdType numValues = cellScalars ? numCells : numPoints;
+  if (scalars->GetNumberOfTuples() < numValues)
+  {
+    if (error)
+    {
+      *error = std::string("scalar array '") + (scalars->GetName() ? scalars->GetName() : "") +
+        "' has " + std::to_string(scalars->GetNumberOfTuples()) + " tuples for " +
+        std::to_string(numValues) + (cellScalars ? " cells" : " points");
+    }
+    return false;
+  }
   std::vector<double> values(numValues);
   const int nc = scalars->GetNumberOfComponents();
   vtkSMPTools::For(0, numValues, [&](vtkIdType begin, vtkIdType end) {
@@ -237,6 +248,15 @@ bool vtkHighOrderTetraSetup::Build(
   all.resize(next);
   all.shrink_to_fit();
   this->Tetras.swap(all);
+
+  // The grid given to visibility sorts: valid tetrahedra only, in tetra order.
+  this->SortGrid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  this->SortGrid->SetPoints(points);
+  this->SortGrid->Allocate(next);
+  for (const Tetra& tet : this->Tetras)
+  {
+    this->SortGrid->InsertNextCell(VTK_TETRA, 4, tet.Points);
+  }
   this->Stats.Rendered = next;
   this->ScalarRange[0] = next ? lo : 0.0;
   this->ScalarRange[1] = next ? hi : 0.0;

@@ -26,10 +26,13 @@
 #ifndef vtkHighOrderTetraSetup_h
 #define vtkHighOrderTetraSetup_h
 
-#include "vtkType.h" // vtkIdType
+#include "vtkSmartPointer.h"     // For SortGrid
+#include "vtkType.h"             // vtkIdType
+#include "vtkUnstructuredGrid.h" // For SortGrid
 
 #include <glm/glm.hpp> // dvec3
 
+#include <string> // error message
 #include <vector> // storage
 
 class vtkDataArray;
@@ -64,9 +67,19 @@ public:
   /**
    * Prepare every cell of @p grid. @p scalars is a point array (or a cell
    * array if @p cellScalars); @p component selects a component, -1 the
-   * magnitude. Returns false if nothing can be rendered.
+   * magnitude. Returns false if nothing can be rendered; @p error then says
+   * why if the input itself is unusable (e.g. an array shorter than the
+   * number of points).
    */
-  bool Build(vtkUnstructuredGridBase* grid, vtkDataArray* scalars, bool cellScalars, int component);
+  bool Build(vtkUnstructuredGridBase* grid, vtkDataArray* scalars, bool cellScalars, int component,
+    std::string* error = nullptr);
+
+  /**
+   * The rendered tetrahedra as a grid (input points, cell k = GetTetras()[k]):
+   * what a vtkVisibilitySort is given, so that it never sees invalid cells and
+   * the ids it returns are tetra indices.
+   */
+  vtkUnstructuredGrid* GetSortGrid() const { return this->SortGrid; }
 
   const std::vector<Tetra>& GetTetras() const { return this->Tetras; }
   /// All input points (dataset coordinates), indexed by point id.
@@ -88,6 +101,7 @@ private:
   std::vector<Tetra> Tetras;
   std::vector<glm::dvec3> Points;
   std::vector<vtkIdType> CellToTetra;
+  vtkSmartPointer<vtkUnstructuredGrid> SortGrid;
   Statistics Stats;
   double ScalarRange[2] = { 0.0, 0.0 };
   double Diagonal = 0.0;

@@ -47,6 +47,8 @@ bool vtkHighOrderViewRays::Setup(
   const glm::dvec3 nearC = this->Unproject(0.0, 0.0, -1.0);
   const glm::dvec3 farC = this->Unproject(0.0, 0.0, 1.0);
   this->DepthScale = glm::length(farC - nearC);
+  this->PerturbX = this->Unproject(1.0, 0.0, -1.0) - nearC;
+  this->PerturbY = this->Unproject(0.0, 1.0, -1.0) - nearC;
   return std::isfinite(this->DepthScale) && this->DepthScale > 0.0;
 }
 

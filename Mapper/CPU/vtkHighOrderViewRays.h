@@ -65,6 +65,15 @@ public:
   /// A length scale of the view (near-to-far distance along the central ray).
   double GetDepthScale() const { return this->DepthScale; }
 
+  /**
+   * Directions (dataset space) of +x and +y on the near plane. A ray that
+   * lies exactly in a cell face is resolved by displacing it symbolically by
+   * e PerturbX + e^2 PerturbY (e -> 0+): it then lies in exactly one of the
+   * cells around that face or edge (simulation of simplicity).
+   */
+  const glm::dvec3& GetPerturbX() const { return this->PerturbX; }
+  const glm::dvec3& GetPerturbY() const { return this->PerturbY; }
+
 private:
   glm::dvec3 Unproject(double xNdc, double yNdc, double zNdc) const;
 
@@ -73,6 +82,8 @@ private:
   int Width = 0;
   int Height = 0;
   double DepthScale = 1.0;
+  glm::dvec3 PerturbX{ 1.0, 0.0, 0.0 };
+  glm::dvec3 PerturbY{ 0.0, 1.0, 0.0 };
 };
 
 #endif

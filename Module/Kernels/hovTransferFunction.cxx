@@ -160,7 +160,7 @@ std::vector<OpacityNode> SanitizeOpacity(
   }
   if (dropped)
   {
-    Note(messages, std::to_string(dropped) + " opacity node(s) with NaN or infinite position dropped");
+    Note(messages, std::to_string(dropped) + " opacity node(s) with a NaN or infinite position or a NaN value dropped");
   }
   if (clamped)
   {
