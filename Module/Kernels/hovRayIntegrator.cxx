@@ -37,7 +37,10 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
     // spans [nodes[k], nodes[k+1]]; -1 and n-1 are the clamped outer regions.
     const bool up = ds > 0.0;
     int k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
-    const double invDs = 1.0 / ds;
+    // Fractions along the segment are (s - sFront)/ds; if ds overflows (s
+    // spanning more than the double range) they are taken on halved values.
+    const double scale = std::isfinite(ds) ? 1.0 : 0.5;
+    const double invDs = 1.0 / (scale * sBack - scale * sFront);
     double xPrev = 0.0; // fraction of the segment already integrated
     double sPrev = sFront;
     while (true)
@@ -57,7 +60,7 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
       }
       if (!last)
       {
-        xNext = (sNext - sFront) * invDs;
+        xNext = (scale * sNext - scale * sFront) * invDs;
       }
       const double pieceLength = length * (xNext - xPrev);
       if (pieceLength > 0.0)

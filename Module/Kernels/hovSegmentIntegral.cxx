@@ -19,10 +19,14 @@ constexpr double ThinDepth = 0.125;
 constexpr int MaxThinOrder = 14;
 
 // Wilhelms-Van Gelder only: K1 = (A - a K0)/(2b) has absolute error
-// ~ eps (A + a K0) / (2|b|); below |b| = 1/16 we use the series in b, which
-// converges like |b|^n/n! (<= 9 terms for 2^-56).
+// ~ eps (A + a K0) / (2|b|), relative ~ eps a^2 / |b| where K1 ~ 1/a^2. It is
+// replaced by the series in b, sum_n (-b)^n/n! M_{2n+1}(a), below |b| = 1/16
+// (terms <= |b|^n/n!: <= 9 terms for 2^-56) and where a^2 >= 400 |b| (terms
+// ~ n! (4|b|/a^2)^n: <= 14 terms for 2^-56; the closed form's relative error
+// is below 400 eps elsewhere).
 constexpr double SmallSlope = 1.0 / 16.0;
-constexpr int MaxSlopeOrder = 12;
+constexpr double SteepDecayRatio = 400.0;
+constexpr int MaxSlopeOrder = 16;
 
 // Relative |b| below which b is treated as zero in the closed form: the
 // neglected term b M_2(a) is below 1e-15 of K0, and a/(2 sqrt(b)) cannot
@@ -200,26 +204,25 @@ void Moments(double a, int kMax, double* m)
   }
 }
 
-/// K1 = integral_0^1 x exp(-a x - b x^2) dx for |b| < SmallSlope, as
-/// sum_n (-b)^n / n! M_{2n+1}(a).
-double FirstMomentSmallSlope(double a, double b)
+/// K1 = integral_0^1 x exp(-a x - b x^2) dx as sum_n (-b)^n / n! M_{2n+1}(a),
+/// for |b| < SmallSlope or a^2 >= SteepDecayRatio |b| (see the constants).
+double FirstMomentSlopeSeries(double a, double b)
 {
-  int order = 0;
-  double bound = 1.0;
-  while (order < MaxSlopeOrder && bound > 1e-17)
-  {
-    ++order;
-    bound *= std::abs(b) / order;
-  }
-  const int kMax = 2 * order + 1;
-  double m[2 * MaxSlopeOrder + 2];
+  constexpr int kMax = 2 * MaxSlopeOrder + 1;
+  double m[kMax + 1];
   Moments(a, kMax, m);
-  double sum = 0.0;
-  double coef = 1.0;
-  for (int n = 0; n <= order; ++n)
+  // Terms by their ratios, so that (-b)^n/n! and M_{2n+1}(a) never overflow or
+  // underflow separately (a and |b| may be as large as DepthCap).
+  double term = m[1];
+  double sum = term;
+  for (int n = 0; n < MaxSlopeOrder && m[2 * n + 1] > 0.0; ++n)
   {
-    sum += coef * m[2 * n + 1];
-    coef *= -b / (n + 1);
+    term *= (-b / (n + 1)) * (m[2 * n + 3] / m[2 * n + 1]);
+    sum += term;
+    if (std::abs(term) < 1e-17 * std::abs(sum))
+    {
+      break;
+    }
   }
   return sum;
 }
@@ -259,8 +262,8 @@ SegmentWeights ExactSegmentWeights(double depthFront, double depthBack, bool wit
   w.WBack = k0 - w.Transmittance;
   if (withEmissionWeights)
   {
-    double k1 = std::abs(b) >= SmallSlope ? (w.Alpha - a * k0) / (2.0 * b)
-                                          : FirstMomentSmallSlope(a, b);
+    const bool series = std::abs(b) < SmallSlope || a * a >= SteepDecayRatio * std::abs(b);
+    double k1 = series ? FirstMomentSlopeSeries(a, b) : (w.Alpha - a * k0) / (2.0 * b);
     k1 = std::min(std::max(k1, 0.0), k0);
     w.VBack = k1;
     w.VFront = k0 - k1;

@@ -1,5 +1,7 @@
 #include "hovTransferFunction.h"
 
+#include "hovOpacityRefinement.h" // GPU-compatible linearisation
+
 #include <algorithm> // sort, lower_bound, upper_bound
 #include <array>     // node values
 #include <cmath>     // log1p, isfinite
@@ -11,12 +13,6 @@ namespace hov
 namespace
 {
 constexpr double Infinity = std::numeric_limits<double>::infinity();
-
-// Samples per refinement piece when checking the chord of -ln(1-a)/u. The
-// relative error is smooth inside a piece, so 33 samples locate its maximum to
-// well under 1% of its value; the maximum at a zero end is taken analytically.
-constexpr int ChordSamples = 33;
-constexpr int MaxRefinementDepth = 64;
 
 /// Nodes of a piecewise-linear function with N channels; a jump is two nodes
 /// at one X. Values may be +infinity (opaque extinction).
@@ -176,91 +172,6 @@ std::vector<OpacityNode> SanitizeOpacity(
   return nodes;
 }
 
-/// GPU-compatible extinction -ln(1-a)/u with 1-a clamped at OpaqueClamp.
-struct GPUExtinction
-{
-  double InvUnit;
-  double operator()(double a) const
-  {
-    const double p = 1.0 - a;
-    if (p <= TransferFunction::OpaqueClamp)
-    {
-      return -std::log(TransferFunction::OpaqueClamp) * this->InvUnit;
-    }
-    return -std::log1p(-a) * this->InvUnit;
-  }
-};
-
-/// Bisects [s0,s1] (opacity linear from a0 to a1) until the chord of tau has
-/// relative error <= tol; appends the right end of every piece.
-class Refiner
-{
-public:
-  Refiner(GPUExtinction tau, double tol, Pwl<1>& out)
-    : TauOf(tau)
-    , Tol(tol)
-    , Out(out)
-  {
-  }
-
-  void Run(double s0, double a0, double s1, double a1, int depth)
-  {
-    const double t0 = this->TauOf(a0), t1 = this->TauOf(a1);
-    if (depth < MaxRefinementDepth && this->Added < TransferFunction::MaxRefinementNodes &&
-      this->ChordError(a0, t0, a1, t1) > this->Tol)
-    {
-      const double sm = 0.5 * (s0 + s1);
-      const double am = 0.5 * (a0 + a1);
-      if (sm > s0 && sm < s1)
-      {
-        this->Run(s0, a0, sm, am, depth + 1);
-        ++this->Added;
-        this->Run(sm, am, s1, a1, depth + 1);
-        return;
-      }
-    }
-    if (depth >= MaxRefinementDepth || this->Added >= TransferFunction::MaxRefinementNodes)
-    {
-      this->Exhausted = true;
-    }
-    this->Out.Append(s1, { t1 });
-  }
-
-  int Added = 0;
-  bool Exhausted = false;
-
-private:
-  /// Max relative error of the chord of tau(a) over [a0,a1] (a linear in s).
-  double ChordError(double a0, double t0, double a1, double t1) const
-  {
-    if (a0 == a1)
-    {
-      return 0.0;
-    }
-    double worst = 0.0;
-    // At a zero end, chord/tau -> (chord slope)/(tau'(0) = 1/u).
-    if (t0 == 0.0)
-    {
-      worst = std::max(worst, t1 / (a1 * this->TauOf.InvUnit) - 1.0);
-    }
-    if (t1 == 0.0)
-    {
-      worst = std::max(worst, t0 / (a0 * this->TauOf.InvUnit) - 1.0);
-    }
-    for (int j = 1; j < ChordSamples; ++j)
-    {
-      const double w = static_cast<double>(j) / ChordSamples;
-      const double exact = this->TauOf(a0 + (a1 - a0) * w);
-      const double chord = t0 + (t1 - t0) * w;
-      worst = std::max(worst, std::abs(chord - exact) / exact);
-    }
-    return worst;
-  }
-
-  GPUExtinction TauOf;
-  double Tol;
-  Pwl<1>& Out;
-};
 }
 
 bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::string>* messages)
@@ -288,27 +199,49 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
   const std::vector<OpacityNode> opacity = SanitizeOpacity(spec.Opacity, messages);
 
   // Extinction nodes, refined where the semantics is not linear in a.
-  Pwl<1> tau;
-  const GPUExtinction gpu{ 1.0 / unit };
-  Refiner refiner(gpu, tol, tau);
+  const bool gpuSemantics = spec.Semantics == OpacitySemantics::GPUCompatible;
+  const double invUnit = 1.0 / unit;
   auto tauOf = [&](double a) {
     switch (spec.Semantics)
     {
       case OpacitySemantics::GPUCompatible:
-        return a >= 1.0 ? Infinity : gpu(a);
+        return a >= 1.0 ? Infinity : GPUExtinction(a, 1.0 - a, invUnit);
       case OpacitySemantics::VTKUnstructured:
-        return a / unit;
+        return a * invUnit;
       default:
         return a;
     }
   };
+  // GPU-compatible intervals of finite extinction (not jumps, not opaque).
+  auto refinable = [&](size_t i) {
+    const OpacityNode& p = opacity[i];
+    const OpacityNode& q = opacity[i + 1];
+    return gpuSemantics && p.X != q.X && !(p.Opacity >= 1.0 && q.Opacity >= 1.0);
+  };
+  std::vector<OpacityInterval> intervals;
+  for (size_t i = 0; i + 1 < opacity.size(); ++i)
+  {
+    if (refinable(i))
+    {
+      intervals.push_back({ opacity[i].X, opacity[i].Opacity, opacity[i + 1].X, opacity[i + 1].Opacity });
+    }
+  }
+  const RefinementResult refined = RefineGPUExtinction(intervals, unit, tol, MaxRefinementNodes);
+  this->RefinementNodes = refined.Added;
+  if (refined.Exhausted)
+  {
+    Note(messages, "GPU-compatible refinement stopped at its budget of " +
+        std::to_string(MaxRefinementNodes) + " nodes; worst relative extinction error " +
+        std::to_string(refined.WorstError) + " (tolerance " + std::to_string(tol) + ")");
+  }
+  Pwl<1> tau;
   tau.Append(opacity[0].X, { tauOf(opacity[0].Opacity) });
+  size_t next = 0;
   for (size_t i = 0; i + 1 < opacity.size(); ++i)
   {
     const OpacityNode& p = opacity[i];
     const OpacityNode& q = opacity[i + 1];
-    const bool gpuSemantics = spec.Semantics == OpacitySemantics::GPUCompatible;
-    if (!gpuSemantics || p.X == q.X || (p.Opacity >= 1.0 && q.Opacity >= 1.0))
+    if (!refinable(i))
     {
       // Linear semantics, a jump, or an opaque interval (tau = +inf on both ends).
       tau.Append(p.X, { tauOf(p.Opacity) });
@@ -316,16 +249,15 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
       continue;
     }
     // A finite interval: its ends use the clamped extinction even where a = 1
-    // (a jump to +inf is added by the opaque neighbour if there is one).
-    tau.Append(p.X, { gpu(p.Opacity) });
-    refiner.Run(p.X, p.Opacity, q.X, q.Opacity, 0);
+    // (a jump to +inf comes from an opaque neighbour if there is one).
+    tau.Append(p.X, { GPUExtinction(p.Opacity, 1.0 - p.Opacity, invUnit) });
+    for (const auto& node : refined.Interior[next++])
+    {
+      tau.Append(node.first, { node.second });
+    }
+    tau.Append(q.X, { GPUExtinction(q.Opacity, 1.0 - q.Opacity, invUnit) });
   }
   tau.Append(opacity.back().X, { tauOf(opacity.back().Opacity) });
-  this->RefinementNodes = refiner.Added;
-  if (refiner.Exhausted)
-  {
-    Note(messages, "GPU-compatible refinement stopped at its node budget; tolerance not met everywhere");
-  }
 
   // Merge: every colour and extinction position, with left/right limits.
   std::vector<double> positions = color.X;

@@ -18,9 +18,8 @@
  * Opacity semantics (u = unit distance of the vtkVolumeProperty):
  *  - GPUCompatible: tau(s) = -ln(1 - a(s)) / u, the limit of
  *    vtkGPUVolumeRayCastMapper's per-sample 1-(1-a)^(dt/u). tau is convex in
- *    s, not linear; every opacity interval is bisected until the chord of tau
- *    has relative error <= GPUTolerance everywhere (checked analytically at a
- *    zero end and on 33 samples inside). If the extinction used along the whole
+ *    s, not linear; opacity intervals are bisected (hovOpacityRefinement.h)
+ *    until the chord of tau has relative error <= GPUTolerance everywhere. If the extinction used along the whole
  *    ray is within a factor (1 +- eps) of the true one, the ray's opacity is off
  *    by at most eps/e and its premultiplied colour by at most 2 eps max|c|
  *    (Williams-Max): the image error bound of this semantics is
@@ -43,7 +42,8 @@
 #define hovTransferFunction_h
 
 #include "hovConfig.h"
-#include "hovSegmentIntegral.h" // SegmentEnd
+#include "hovOpacityRefinement.h" // OpaqueClamp
+#include "hovSegmentIntegral.h"   // SegmentEnd
 
 #include <string> // Build() messages
 #include <vector> // node storage
@@ -85,9 +85,9 @@ class HOV_EXPORT TransferFunction
 {
 public:
   /// 1 - a is never taken below this in GPU-compatible semantics (see file doc).
-  static constexpr double OpaqueClamp = 1e-12;
+  static constexpr double OpaqueClamp = hov::OpaqueClamp;
   /// Refinement stops here even if the tolerance is not met (reported by Build()).
-  static constexpr int MaxRefinementNodes = 200000;
+  static constexpr int MaxRefinementNodes = 1000000;
 
   /**
    * Build the table. Returns false only if nothing usable remains (the table
