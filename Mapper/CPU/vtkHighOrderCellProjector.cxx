@@ -94,20 +94,12 @@ inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, const glm::dv
 /// A ray-cell segment waiting for its turn (per-pixel ordering).
 struct Fragment
 {
-  int Pixel;
   double TIn, TOut, SIn, SOut;
-  vtkIdType Order;
+  int Pixel;
+  int Order; ///< position in the tile's cell list: a deterministic tie-break
   bool operator<(const Fragment& o) const
   {
-    if (this->Pixel != o.Pixel)
-    {
-      return this->Pixel < o.Pixel;
-    }
-    if (this->TIn != o.TIn)
-    {
-      return this->TIn < o.TIn;
-    }
-    return this->Order < o.Order;
+    return this->TIn != o.TIn ? this->TIn < o.TIn : this->Order < o.Order;
   }
 };
 
@@ -166,7 +158,9 @@ struct Tile
   std::vector<double> MaxExit;
   std::vector<unsigned char> Violated;
   std::vector<unsigned char> Done;
-  std::vector<Fragment> Fragments;
+  std::vector<Fragment> Fragments; ///< in cell order
+  std::vector<Fragment> ByPixel;   ///< bucketed by pixel, then sorted by entry
+  std::vector<int> PixelStart;
 
   void Init(int tileIndex, const TileBins& bins, const vtkHighOrderViewRays& rays, const float* depth)
   {
@@ -238,6 +232,8 @@ struct Frame
   const vtkHighOrderCellProjector::Settings& Settings;
   double WitnessTol;
   glm::dvec3 PerturbX, PerturbY;
+  const std::vector<glm::dvec2>& Window;           ///< projected points (window coordinates)
+  const std::vector<unsigned char>& Projectable;   ///< in front of the eye plane
 
   /// Witness, integral and compositing of one segment at tile pixel p.
   void Integrate(Tile& tile, size_t p, double tIn, double tOut, double sIn, double sOut,
@@ -261,6 +257,41 @@ struct Frame
   }
 
   /// Visit every (pixel, segment) of the tile's cells in visibility order.
+  /**
+   * Window-x range of the projected cell on the row at height y: the
+   * projection is the convex hull of the projected vertices, and a line meets
+   * a convex hull of points in the span of its crossings with all segments
+   * between them (the six projected edges). False if the row misses it.
+   */
+  bool RowSpan(const Tetra& tet, double y, double& xMin, double& xMax) const
+  {
+    xMin = 1e300;
+    xMax = -1e300;
+    for (int a = 0; a < 4; ++a)
+    {
+      const glm::dvec2& p = this->Window[tet.Points[a]];
+      for (int b = a + 1; b < 4; ++b)
+      {
+        const glm::dvec2& q = this->Window[tet.Points[b]];
+        if ((p.y - y) * (q.y - y) > 0.0)
+        {
+          continue; // the edge is entirely above or below the row
+        }
+        if (p.y == q.y)
+        {
+          xMin = std::min(xMin, std::min(p.x, q.x));
+          xMax = std::max(xMax, std::max(p.x, q.x));
+          continue;
+        }
+        const double x = p.x + (q.x - p.x) * ((y - p.y) / (q.y - p.y));
+        xMin = std::min(xMin, x);
+        xMax = std::max(xMax, x);
+      }
+    }
+    return xMin <= xMax;
+  }
+
+  /// Visit every (pixel, segment) of the tile's cells in visibility order.
   template <typename Visit>
   void ForSegments(Tile& tile, int tileIndex, bool skipDone, Visit&& visit) const
   {
@@ -268,11 +299,25 @@ struct Frame
     {
       const vtkIdType k = this->Bins.Cells[c];
       const Tetra& tet = this->Tets[this->Order[k]];
+      const bool spans = this->Projectable[tet.Points[0]] && this->Projectable[tet.Points[1]] &&
+        this->Projectable[tet.Points[2]] && this->Projectable[tet.Points[3]];
       int i0, i1, j0, j1;
       tile.Clamp(this->Bins.Boxes[k], i0, i1, j0, j1);
       for (int j = j0; j <= j1; ++j)
       {
-        for (int i = i0; i <= i1; ++i)
+        int r0 = i0, r1 = i1;
+        double xMin, xMax;
+        if (spans)
+        {
+          // Only the pixel centres inside the projection (BoxMargin of slack).
+          if (!this->RowSpan(tet, tile.Y0 + j + 0.5, xMin, xMax))
+          {
+            continue;
+          }
+          r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - tile.X0);
+          r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - tile.X0);
+        }
+        for (int i = r0; i <= r1; ++i)
         {
           const size_t p = static_cast<size_t>(j) * tile.W + i;
           double tIn, tOut;
@@ -301,15 +346,37 @@ struct Frame
       return;
     }
     this->ForSegments(tile, tileIndex, false,
-      [&](size_t p, vtkIdType k, double tIn, double tOut, double sIn, double sOut) {
-        tile.Fragments.push_back(Fragment{ static_cast<int>(p), tIn, tOut, sIn, sOut, k });
+      [&](size_t p, vtkIdType c, double tIn, double tOut, double sIn, double sOut) {
+        tile.Fragments.push_back(
+          Fragment{ tIn, tOut, sIn, sOut, static_cast<int>(p), static_cast<int>(c) });
       });
-    std::sort(tile.Fragments.begin(), tile.Fragments.end());
+    // Counting sort by pixel (stable), then each pixel's short list by entry.
+    const size_t n = tile.Accum.size();
+    tile.PixelStart.assign(n + 1, 0);
     for (const Fragment& f : tile.Fragments)
     {
-      if (!tile.Done[f.Pixel])
+      ++tile.PixelStart[f.Pixel + 1];
+    }
+    for (size_t p = 0; p < n; ++p)
+    {
+      tile.PixelStart[p + 1] += tile.PixelStart[p];
+    }
+    tile.ByPixel.resize(tile.Fragments.size());
+    {
+      std::vector<int> fill(tile.PixelStart.begin(), tile.PixelStart.end() - 1);
+      for (const Fragment& f : tile.Fragments)
       {
-        this->Integrate(tile, f.Pixel, f.TIn, f.TOut, f.SIn, f.SOut, st);
+        tile.ByPixel[fill[f.Pixel]++] = f;
+      }
+    }
+    for (size_t p = 0; p < n; ++p)
+    {
+      Fragment* first = tile.ByPixel.data() + tile.PixelStart[p];
+      Fragment* last = tile.ByPixel.data() + tile.PixelStart[p + 1];
+      std::sort(first, last);
+      for (const Fragment* f = first; f != last && !tile.Done[p]; ++f)
+      {
+        this->Integrate(tile, p, f->TIn, f->TOut, f->SIn, f->SOut, st);
       }
     }
   }
@@ -355,7 +422,8 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;
   const Frame frame{ tets, frontToBack, bins, tf, settings,
-    WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY() };
+    WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY(), window,
+    projectable };
   std::vector<Statistics> tileStats(numTiles);
   vtkSMPTools::For(0, numTiles, 1, [&](vtkIdType tBegin, vtkIdType tEnd) {
     Tile tile;

@@ -5,6 +5,7 @@
 #include <algorithm> // std::max, std::min
 #include <array>     // coefficient tables
 #include <cmath>     // exp, expm1, sqrt, isfinite
+#include <utility>   // integer_sequence (unrolled series)
 
 namespace hov
 {
@@ -122,6 +123,44 @@ struct ThinTermTable
   }
 };
 
+/// WFront = sum_{n=1}^{N} (-1)^(n+1) I_n/n!, WBack = sum (-1)^(n+1) (D1^n - I_n)/n!,
+/// unrolled for a fixed number of terms N (the hot path of the CPU renderer).
+template <int N>
+inline void ThinWilliamsMax(double a, double d1, double& wFront, double& wBack)
+{
+  double powA[N + 1], powD[N + 1];
+  powA[0] = powD[0] = 1.0;
+#pragma GCC unroll 16
+  for (int n = 1; n <= N; ++n)
+  {
+    powA[n] = powA[n - 1] * a;
+    powD[n] = powD[n - 1] * d1;
+  }
+  wFront = wBack = 0.0;
+#pragma GCC unroll 16
+  for (int n = 1; n <= N; ++n)
+  {
+    double p = 0.0;
+#pragma GCC unroll 16
+    for (int k = 0; k <= n; ++k)
+    {
+      p += Thin.P0[n][k] * powA[n - k] * powD[k];
+    }
+    const double sign = (n % 2) ? 1.0 : -1.0;
+    wFront += sign * p;
+    wBack += sign * (powD[n] * Thin.InvFactorial[n] - p);
+  }
+}
+
+template <int... N>
+inline void ThinWilliamsMaxDispatch(
+  int terms, double a, double d1, double& wFront, double& wBack, std::integer_sequence<int, N...>)
+{
+  using Fn = void (*)(double, double, double&, double&);
+  static constexpr Fn table[] = { &ThinWilliamsMax<N + 1>... };
+  table[terms - 1](a, d1, wFront, wBack);
+}
+
 /// Thin segment (D1 <= ThinDepth): all weights from the Taylor series in D.
 SegmentWeights ThinWeights(double a, double d1, bool withEmission)
 {
@@ -130,30 +169,23 @@ SegmentWeights ThinWeights(double a, double d1, bool withEmission)
   w.Alpha = -std::expm1(-d1);
   w.Transmittance = 1.0 - w.Alpha; // absolute accuracy is what compositing needs
   const int terms = termTable.Terms(d1);
-  double powA[MaxThinOrder + 1];
-  double powD[MaxThinOrder + 1];
-  powA[0] = powD[0] = 1.0;
-  for (int n = 1; n <= terms; ++n)
-  {
-    powA[n] = powA[n - 1] * a;
-    powD[n] = powD[n - 1] * d1;
-  }
-  // WFront = sum_{n>=1} (-1)^(n+1) I_n/n!, WBack = sum_{n>=1} (-1)^(n+1) (D1^n - I_n)/n!.
-  double wFront = 0.0, wBack = 0.0, sign = 1.0;
-  for (int n = 1; n <= terms; ++n)
-  {
-    const double p = BernsteinSum(Thin.P0[n], n, powA, powD);
-    wFront += sign * p;
-    wBack += sign * (powD[n] * Thin.InvFactorial[n] - p);
-    sign = -sign;
-  }
+  double wFront, wBack;
+  ThinWilliamsMaxDispatch(
+    terms, a, d1, wFront, wBack, std::make_integer_sequence<int, MaxThinOrder>());
   w.WFront = std::max(0.0, wFront);
   w.WBack = std::max(0.0, wBack);
   if (withEmission)
   {
     // VBack = K1 = sum_n (-1)^n I_{n,1}/n!, VFront = sum_n (-1)^n J_n/n!.
-    double k1 = 0.0, v0 = 0.0;
-    sign = 1.0;
+    double powA[MaxThinOrder + 1];
+    double powD[MaxThinOrder + 1];
+    powA[0] = powD[0] = 1.0;
+    for (int n = 1; n <= terms; ++n)
+    {
+      powA[n] = powA[n - 1] * a;
+      powD[n] = powD[n - 1] * d1;
+    }
+    double k1 = 0.0, v0 = 0.0, sign = 1.0;
     for (int n = 0; n <= terms; ++n)
     {
       k1 += sign * BernsteinSum(Thin.P1[n], n, powA, powD);

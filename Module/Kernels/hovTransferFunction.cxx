@@ -282,6 +282,27 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
     }
     this->AnyExtinction = this->AnyExtinction || tl[0] > 0.0 || tr[0] > 0.0;
   }
+  // Interval lookup grid (4 buckets per node, at most 2^20).
+  this->Buckets.clear();
+  this->BucketScale = 0.0;
+  const size_t n = this->X.size();
+  const double span = n > 1 ? this->X[n - 1] - this->X[0] : 0.0;
+  if (n > 1 && span > 0.0 && std::isfinite(span))
+  {
+    const size_t buckets = std::min<size_t>(4 * n, size_t(1) << 20);
+    this->BucketScale = buckets / span;
+    this->Buckets.resize(buckets);
+    size_t k = 0;
+    for (size_t b = 0; b < buckets; ++b)
+    {
+      const double start = this->X[0] + b / this->BucketScale;
+      while (k + 1 < n && this->X[k + 1] <= start)
+      {
+        ++k;
+      }
+      this->Buckets[b] = static_cast<int>(k);
+    }
+  }
   // Slopes per interval, so that Evaluate() is one multiply-add per value.
   for (size_t k = 0; k + 1 < this->Nodes.size(); ++k)
   {
@@ -306,12 +327,39 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
 
 int TransferFunction::FindIntervalUpward(double s) const
 {
-  return static_cast<int>(std::upper_bound(this->X.begin(), this->X.end(), s) - this->X.begin()) - 1;
+  const int n = static_cast<int>(this->X.size());
+  if (n == 0 || s < this->X[0])
+  {
+    return -1;
+  }
+  if (s >= this->X[n - 1])
+  {
+    return n - 1;
+  }
+  if (this->Buckets.empty())
+  {
+    return static_cast<int>(std::upper_bound(this->X.begin(), this->X.end(), s) - this->X.begin()) - 1;
+  }
+  // The bucket's interval starts at or before s: walk forward to the last X[k] <= s.
+  const double pos = (s - this->X[0]) * this->BucketScale;
+  const size_t b = std::min(static_cast<size_t>(pos), this->Buckets.size() - 1);
+  int k = this->Buckets[b];
+  while (k + 1 < n && this->X[k + 1] <= s)
+  {
+    ++k;
+  }
+  return k;
 }
 
 int TransferFunction::FindIntervalDownward(double s) const
 {
-  return static_cast<int>(std::lower_bound(this->X.begin(), this->X.end(), s) - this->X.begin()) - 1;
+  // The largest k with X[k] < s.
+  int k = this->FindIntervalUpward(s);
+  while (k >= 0 && this->X[k] >= s)
+  {
+    --k;
+  }
+  return k;
 }
 
 void TransferFunction::Evaluate(int k, double s, bool emission, SegmentEnd& out) const

@@ -130,6 +130,10 @@ private:
   };
   std::vector<double> X;
   std::vector<Node> Nodes;
+  /// O(1) interval search: bucket b of a uniform grid over [X0, Xn-1] holds
+  /// the interval containing its left end.
+  std::vector<int> Buckets;
+  double BucketScale = 0.0;
   OpacitySemantics Semantics = OpacitySemantics::GPUCompatible;
   double EmissionFactor = 1.0;
   int RefinementNodes = 0;

@@ -1,0 +1,156 @@
+/**
+ * @file hovKernelTestUtilities.h
+ * @brief Small helpers shared by the kernel tests: printing of measured worst
+ * errors (so that the numbers quoted in the documentation can be re-measured
+ * by running the tests) and a tracker of the worst case with its inputs.
+ */
+#ifndef hovKernelTestUtilities_h
+#define hovKernelTestUtilities_h
+
+#include "hovCompositing.h"
+#include "hovTransferFunction.h"
+
+#include "hovKernelTestReference.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace hovtest
+{
+/// Keeps the largest value seen and a description of the inputs that gave it.
+struct Worst
+{
+  double Value = 0.0;
+  std::string Where;
+
+  void Add(double v, const std::string& where)
+  {
+    if (v > this->Value || std::isnan(v))
+    {
+      this->Value = v;
+      this->Where = where;
+    }
+  }
+};
+
+/// Prints "[measured] name = value (at ...)" and records it in the test's
+/// XML/JSON output (--gtest_output) as a property.
+inline void ReportMeasured(const std::string& name, const Worst& w)
+{
+  std::ostringstream os;
+  os.precision(3);
+  os << w.Value;
+  std::cout << "[measured] " << name << " = " << os.str();
+  if (!w.Where.empty())
+  {
+    std::cout << "  (at " << w.Where << ")";
+  }
+  std::cout << std::endl;
+  ::testing::Test::RecordProperty(name, os.str());
+}
+
+inline void ReportMeasured(const std::string& name, double v)
+{
+  Worst w;
+  w.Value = v;
+  ReportMeasured(name, w);
+}
+
+inline std::string ToString(const hov::RGBA& c)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "(" << c.R << ", " << c.G << ", " << c.B << ", " << c.A << ")";
+  return os.str();
+}
+
+inline bool AllFinite(const hov::RGBA& c)
+{
+  return std::isfinite(c.R) && std::isfinite(c.G) && std::isfinite(c.B) && std::isfinite(c.A);
+}
+
+/// The reference description (raw nodes, hovKernelTestReference.h) of a
+/// transfer-function spec whose nodes are already valid and sorted.
+inline RefTransferFunction ToReference(const hov::TransferFunctionSpec& spec)
+{
+  RefTransferFunction r;
+  for (const hov::ColorNode& n : spec.Color)
+  {
+    r.ColorX.push_back(n.X);
+    r.Color.push_back({ n.R, n.G, n.B });
+  }
+  for (const hov::OpacityNode& n : spec.Opacity)
+  {
+    r.OpacityX.push_back(n.X);
+    r.Opacity.push_back(n.Opacity);
+  }
+  switch (spec.Semantics)
+  {
+    case hov::OpacitySemantics::GPUCompatible:
+      r.Semantics = RefSemantics::GPU;
+      break;
+    case hov::OpacitySemantics::VTKUnstructured:
+      r.Semantics = RefSemantics::Unstructured;
+      break;
+    default:
+      r.Semantics = RefSemantics::Raw;
+  }
+  r.Unit = spec.UnitDistance;
+  r.EmissionScale = spec.EmissionScale;
+  return r;
+}
+
+inline RefEmission ToReference(hov::EmissionModel m)
+{
+  return m == hov::EmissionModel::WilliamsMax ? RefEmission::WilliamsMax : RefEmission::WilhelmsVanGelder;
+}
+
+/// Max absolute difference between a kernel result and a reference, colour
+/// divided by @p colorScale.
+inline double MaxAbsDiff(const hov::RGBA& p, const RefRGBA& q, double colorScale)
+{
+  const long double s = colorScale;
+  return static_cast<double>(std::max(std::max(std::fabs(p.R - q.R) / s, std::fabs(p.G - q.G) / s),
+    std::max(std::fabs(p.B - q.B) / s, std::fabs(p.A - q.A))));
+}
+
+inline std::string ToString(const RefRGBA& c)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "(" << static_cast<double>(c.R) << ", " << static_cast<double>(c.G) << ", "
+     << static_cast<double>(c.B) << ", " << static_cast<double>(c.A) << ")";
+  return os.str();
+}
+
+inline std::string ToString(const hov::TransferFunctionSpec& spec)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << "semantics=" << static_cast<int>(spec.Semantics) << " u=" << spec.UnitDistance
+     << " tol=" << spec.GPUTolerance << " colour{";
+  for (const auto& n : spec.Color)
+  {
+    os << " (" << n.X << ": " << n.R << "," << n.G << "," << n.B << ")";
+  }
+  os << " } opacity{";
+  for (const auto& n : spec.Opacity)
+  {
+    os << " (" << n.X << ": " << n.Opacity << ")";
+  }
+  os << " }";
+  return os.str();
+}
+
+inline double MaxAbsDiff(const hov::RGBA& p, const hov::RGBA& q)
+{
+  return std::max(std::max(std::abs(p.R - q.R), std::abs(p.G - q.G)),
+    std::max(std::abs(p.B - q.B), std::abs(p.A - q.A)));
+}
+}
+
+#endif
