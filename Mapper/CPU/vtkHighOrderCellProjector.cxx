@@ -6,6 +6,7 @@
 #include "hovCompositing.h"      // CompositeBehind
 #include "hovTransferFunction.h" // the table
 
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm> // std::min, std::max, std::sort
@@ -425,8 +426,11 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
     WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY(), window,
     projectable };
   std::vector<Statistics> tileStats(numTiles);
+  // One Tile per thread, reused from tile to tile so that its buffers keep
+  // their capacity (the result does not depend on which thread runs a tile).
+  vtkSMPThreadLocal<Tile> tiles;
   vtkSMPTools::For(0, numTiles, 1, [&](vtkIdType tBegin, vtkIdType tEnd) {
-    Tile tile;
+    Tile& tile = tiles.Local();
     for (vtkIdType t = tBegin; t < tEnd; ++t)
     {
       tile.Init(static_cast<int>(t), bins, rays, depth);

@@ -24,14 +24,21 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
   const int n = static_cast<int>(nodes.size());
   const double ds = sBack - sFront;
   SegmentEnd front, back;
-  if (ds == 0.0)
   {
-    const int k = tf.FindIntervalUpward(sFront);
-    tf.Evaluate(k, sFront, emission, front);
-    accum = IntegrateSegment(length, front, front, settings.Emission, settings.Method);
-    count = 1;
+    // Fast path (most segments): both ends in one interval, one piece.
+    const bool up = ds >= 0.0;
+    const int k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
+    if (up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack))
+    {
+      tf.Evaluate(k, sFront, emission, front);
+      tf.Evaluate(k, sBack, emission, back);
+      if (pieces)
+      {
+        *pieces = 1;
+      }
+      return IntegrateSegment(length, front, back, settings.Emission, settings.Method);
+    }
   }
-  else
   {
     // Walk the intervals from the front value toward the back value. Interval k
     // spans [nodes[k], nodes[k+1]]; -1 and n-1 are the clamped outer regions.

@@ -45,8 +45,9 @@
 #include "hovOpacityRefinement.h" // OpaqueClamp
 #include "hovSegmentIntegral.h"   // SegmentEnd
 
-#include <string> // Build() messages
-#include <vector> // node storage
+#include <algorithm> // std::min, std::max (inline lookups)
+#include <string>    // Build() messages
+#include <vector>    // node storage
 
 namespace hov
 {
@@ -139,6 +140,65 @@ private:
   int RefinementNodes = 0;
   bool AnyExtinction = false;
 };
+
+// Inline: these run once or twice per ray segment in every renderer.
+
+inline int TransferFunction::FindIntervalUpward(double s) const
+{
+  const int n = static_cast<int>(this->X.size());
+  if (n == 0 || s < this->X[0])
+  {
+    return -1;
+  }
+  if (s >= this->X[n - 1])
+  {
+    return n - 1;
+  }
+  int k = 0;
+  if (!this->Buckets.empty())
+  {
+    // The bucket's interval starts at or before s: walk to the last X[k] <= s.
+    const double pos = (s - this->X[0]) * this->BucketScale;
+    k = this->Buckets[std::min(static_cast<size_t>(pos), this->Buckets.size() - 1)];
+  }
+  while (k + 1 < n && this->X[k + 1] <= s)
+  {
+    ++k;
+  }
+  return k;
+}
+
+inline int TransferFunction::FindIntervalDownward(double s) const
+{
+  int k = this->FindIntervalUpward(s); // then the largest k with X[k] < s
+  while (k >= 0 && this->X[k] >= s)
+  {
+    --k;
+  }
+  return k;
+}
+
+inline void TransferFunction::Evaluate(int k, double s, bool emission, SegmentEnd& out) const
+{
+  const int n = static_cast<int>(this->X.size());
+  const double scale = emission ? this->EmissionFactor : 1.0;
+  if (k < 0 || k >= n - 1)
+  {
+    const Node& node = this->Nodes[k < 0 ? 0 : n - 1];
+    out.Tau = node.Tau;
+    out.Color[0] = scale * node.R;
+    out.Color[1] = scale * node.G;
+    out.Color[2] = scale * node.B;
+    return;
+  }
+  const Node& node = this->Nodes[k];
+  // Clamp to the interval: s may sit a rounding error outside it.
+  const double ds = std::min(std::max(s - this->X[k], 0.0), this->X[k + 1] - this->X[k]);
+  out.Tau = node.Tau + node.DTau * ds;
+  out.Color[0] = scale * (node.R + node.DR * ds);
+  out.Color[1] = scale * (node.G + node.DG * ds);
+  out.Color[2] = scale * (node.B + node.DB * ds);
+}
 }
 
 #endif
