@@ -104,6 +104,26 @@ struct Fragment
   }
 };
 
+/// Insertion sort: linear on the nearly sorted per-pixel lists.
+void InsertionSort(Fragment* first, Fragment* last)
+{
+  for (Fragment* i = first + 1; i < last; ++i)
+  {
+    if (!(*i < *(i - 1)))
+    {
+      continue;
+    }
+    const Fragment v = *i;
+    Fragment* j = i;
+    do
+    {
+      *j = *(j - 1);
+      --j;
+    } while (j > first && v < *(j - 1));
+    *j = v;
+  }
+}
+
 /// Cells binned into image tiles, each tile's list in visibility order.
 struct TileBins
 {
@@ -162,6 +182,8 @@ struct Tile
   std::vector<Fragment> Fragments; ///< in cell order
   std::vector<Fragment> ByPixel;   ///< bucketed by pixel, then sorted by entry
   std::vector<int> PixelStart;
+  std::vector<int> Fill;
+  std::vector<vtkIdType> CellOrder;
 
   void Init(int tileIndex, const TileBins& bins, const vtkHighOrderViewRays& rays, const float* depth)
   {
@@ -235,6 +257,7 @@ struct Frame
   glm::dvec3 PerturbX, PerturbY;
   const std::vector<glm::dvec2>& Window;           ///< projected points (window coordinates)
   const std::vector<unsigned char>& Projectable;   ///< in front of the eye plane
+  const std::vector<float>& DepthKey;              ///< per ordered cell: centroid depth
 
   /// Witness, integral and compositing of one segment at tile pixel p.
   void Integrate(Tile& tile, size_t p, double tIn, double tOut, double sIn, double sOut,
@@ -294,11 +317,11 @@ struct Frame
 
   /// Visit every (pixel, segment) of the tile's cells in visibility order.
   template <typename Visit>
-  void ForSegments(Tile& tile, int tileIndex, bool skipDone, Visit&& visit) const
+  void ForSegments(Tile& tile, const vtkIdType* cells, vtkIdType count, bool skipDone, Visit&& visit) const
   {
-    for (vtkIdType c = this->Bins.Start[tileIndex]; c < this->Bins.Start[tileIndex + 1]; ++c)
+    for (vtkIdType c = 0; c < count; ++c)
     {
-      const vtkIdType k = this->Bins.Cells[c];
+      const vtkIdType k = cells[c];
       const Tetra& tet = this->Tets[this->Order[k]];
       const bool spans = this->Projectable[tet.Points[0]] && this->Projectable[tet.Points[1]] &&
         this->Projectable[tet.Points[2]] && this->Projectable[tet.Points[3]];
@@ -338,20 +361,29 @@ struct Frame
 
   void RenderTile(Tile& tile, int tileIndex, vtkHighOrderCellProjector::Statistics& st) const
   {
+    const vtkIdType* cells = this->Bins.Cells.data() + this->Bins.Start[tileIndex];
+    const vtkIdType count = this->Bins.Start[tileIndex + 1] - this->Bins.Start[tileIndex];
     if (!this->Settings.PerPixelSort)
     {
-      this->ForSegments(tile, tileIndex, true,
+      this->ForSegments(tile, cells, count, true,
         [&](size_t p, vtkIdType, double tIn, double tOut, double sIn, double sOut) {
           this->Integrate(tile, p, tIn, tOut, sIn, sOut, st);
         });
       return;
     }
-    this->ForSegments(tile, tileIndex, false,
-      [&](size_t p, vtkIdType c, double tIn, double tOut, double sIn, double sOut) {
+    // Cells by centroid depth first: each pixel's fragments then arrive nearly
+    // in order and the insertion sort below has little to do. (Any order
+    // gives the same image; this one only makes sorting cheap.)
+    tile.CellOrder.assign(cells, cells + count);
+    const std::vector<float>& key = this->DepthKey;
+    std::sort(tile.CellOrder.begin(), tile.CellOrder.end(),
+      [&key](vtkIdType p, vtkIdType q) { return key[p] != key[q] ? key[p] < key[q] : p < q; });
+    this->ForSegments(tile, tile.CellOrder.data(), count, false,
+      [&](size_t p, vtkIdType k, double tIn, double tOut, double sIn, double sOut) {
         tile.Fragments.push_back(
-          Fragment{ tIn, tOut, sIn, sOut, static_cast<int>(p), static_cast<int>(c) });
+          Fragment{ tIn, tOut, sIn, sOut, static_cast<int>(p), static_cast<int>(k) });
       });
-    // Counting sort by pixel (stable), then each pixel's short list by entry.
+    // Counting sort by pixel (stable), then each pixel's list by entry.
     const size_t n = tile.Accum.size();
     tile.PixelStart.assign(n + 1, 0);
     for (const Fragment& f : tile.Fragments)
@@ -364,7 +396,8 @@ struct Frame
     }
     tile.ByPixel.resize(tile.Fragments.size());
     {
-      std::vector<int> fill(tile.PixelStart.begin(), tile.PixelStart.end() - 1);
+      std::vector<int>& fill = tile.Fill;
+      fill.assign(tile.PixelStart.begin(), tile.PixelStart.end() - 1);
       for (const Fragment& f : tile.Fragments)
       {
         tile.ByPixel[fill[f.Pixel]++] = f;
@@ -374,7 +407,7 @@ struct Frame
     {
       Fragment* first = tile.ByPixel.data() + tile.PixelStart[p];
       Fragment* last = tile.ByPixel.data() + tile.PixelStart[p + 1];
-      std::sort(first, last);
+      InsertionSort(first, last);
       for (const Fragment* f = first; f != last && !tile.Done[p]; ++f)
       {
         this->Integrate(tile, p, f->TIn, f->TOut, f->SIn, f->SOut, st);
@@ -420,11 +453,28 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   });
   bins.Build(bins.Boxes, width, height, std::max(4, settings.TileSize));
 
+  // Centroid depth along the central ray, to presort cells (per-pixel mode).
+  std::vector<float> depthKey;
+  if (settings.PerPixelSort)
+  {
+    const vtkHighOrderViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
+    depthKey.resize(frontToBack.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
+      for (vtkIdType k = b; k < e; ++k)
+      {
+        const Tetra& tet = tets[frontToBack[k]];
+        const glm::dvec3 c = 0.25 * (points[tet.Points[0]] + points[tet.Points[1]] +
+                                points[tet.Points[2]] + points[tet.Points[3]]);
+        depthKey[k] = static_cast<float>(glm::dot(c - centre.Origin, centre.Direction));
+      }
+    });
+  }
+
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;
   const Frame frame{ tets, frontToBack, bins, tf, settings,
     WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY(), window,
-    projectable };
+    projectable, depthKey };
   std::vector<Statistics> tileStats(numTiles);
   // One Tile per thread, reused from tile to tile so that its buffers keep
   // their capacity (the result does not depend on which thread runs a tile).
