@@ -56,6 +56,13 @@ struct NodeList
 {
   std::vector<double> X, Mid, Sharp;
   std::vector<std::array<double, N>> V;
+  void Add(double x, const std::array<double, N>& v, double mid, double sharp)
+  {
+    this->X.push_back(x);
+    this->V.push_back(v);
+    this->Mid.push_back(mid);
+    this->Sharp.push_back(sharp);
+  }
 };
 
 /// Exact copy where the segments are linear, adaptive sampling elsewhere.
@@ -80,6 +87,98 @@ std::vector<std::pair<double, std::array<double, N>>> Linearize(
     }
   }
   return out;
+}
+/// Nodes of a VTK piecewise function (x, value, midpoint, sharpness),
+/// its value replicated to N channels.
+template <int N>
+NodeList<N> ReadNodes(vtkPiecewiseFunction* f)
+{
+  NodeList<N> nodes;
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    double v[4];
+    f->GetNodeValue(i, v);
+    std::array<double, N> value;
+    value.fill(v[1]);
+    nodes.Add(v[0], value, v[2], v[3]);
+  }
+  return nodes;
+}
+
+/// Colour nodes (RGB or grey) as VTK evaluates them, with the values outside
+/// the node range (clamped end colours, black, or below/above-range colours)
+/// as jumps at the end nodes.
+void ReadColor(vtkVolumeProperty* property, int comp, double tol, std::vector<hov::ColorNode>& out)
+{
+  NodeList<3> nodes;
+  Evaluator<3> colorOf;
+  bool nonlinear = false, clamp = true, useBelow = false, useAbove = false;
+  std::array<double, 3> below{ 0, 0, 0 }, above{ 0, 0, 0 };
+  if (property->GetColorChannels(comp) == 1)
+  {
+    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(comp);
+    nodes = ReadNodes<3>(gray);
+    colorOf = [gray](double x) {
+      const double g = gray->GetValue(x);
+      return std::array<double, 3>{ g, g, g };
+    };
+    clamp = gray->GetClamping() != 0;
+  }
+  else
+  {
+    vtkColorTransferFunction* ctf = property->GetRGBTransferFunction(comp);
+    for (int i = 0; i < ctf->GetSize(); ++i)
+    {
+      double v[6];
+      ctf->GetNodeValue(i, v);
+      nodes.Add(v[0], { v[1], v[2], v[3] }, v[4], v[5]);
+    }
+    colorOf = [ctf](double x) {
+      std::array<double, 3> c;
+      ctf->GetColor(x, c.data());
+      return c;
+    };
+    nonlinear = ctf->GetColorSpace() != VTK_CTF_RGB || ctf->GetScale() != VTK_CTF_LINEAR;
+    clamp = ctf->GetClamping() != 0;
+    useBelow = ctf->GetUseBelowRangeColor() != 0;
+    useAbove = ctf->GetUseAboveRangeColor() != 0;
+    ctf->GetBelowRangeColor(below.data());
+    ctf->GetAboveRangeColor(above.data());
+  }
+  const auto samples = Linearize<3>(nodes, colorOf, nonlinear, tol);
+  if (samples.empty())
+  {
+    return;
+  }
+  const std::array<double, 3> black{ 0, 0, 0 };
+  below = useBelow ? below : (clamp ? samples.front().second : black);
+  above = useAbove ? above : (clamp ? samples.back().second : black);
+  out.push_back({ samples.front().first, below[0], below[1], below[2] });
+  for (const auto& s : samples)
+  {
+    out.push_back({ s.first, s.second[0], s.second[1], s.second[2] });
+  }
+  out.push_back({ samples.back().first, above[0], above[1], above[2] });
+}
+
+/// Opacity nodes as VTK evaluates them; 0 outside the range without clamping.
+void ReadOpacity(vtkPiecewiseFunction* opacity, double tol, std::vector<hov::OpacityNode>& out)
+{
+  const Evaluator<1> opacityOf = [opacity](double x) {
+    return std::array<double, 1>{ opacity->GetValue(x) };
+  };
+  const auto samples = Linearize<1>(ReadNodes<1>(opacity), opacityOf, false, tol);
+  if (samples.empty())
+  {
+    return;
+  }
+  const bool clamp = opacity->GetClamping() != 0;
+  out.push_back({ samples.front().first, clamp ? samples.front().second[0] : 0.0 });
+  for (const auto& s : samples)
+  {
+    out.push_back({ s.first, s.second[0] });
+  }
+  out.push_back({ samples.back().first, clamp ? samples.back().second[0] : 0.0 });
 }
 }
 
@@ -114,110 +213,8 @@ bool vtkHighOrderTransferFunction::Update(vtkVolumeProperty* property)
   spec.UnitDistance = property->GetScalarOpacityUnitDistance(comp);
   spec.GPUTolerance = this->GPUTolerance;
   spec.EmissionScale = this->EmissionScale;
-
-  // Colour: RGB function, or grey function replicated to RGB.
-  NodeList<3> colorNodes;
-  Evaluator<3> colorOf;
-  bool colorNonlinear = false;
-  bool clampColor = true;
-  bool useBelow = false, useAbove = false;
-  std::array<double, 3> below{ 0, 0, 0 }, above{ 0, 0, 0 };
-  if (property->GetColorChannels(comp) == 1)
-  {
-    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(comp);
-    for (int i = 0; i < gray->GetSize(); ++i)
-    {
-      double v[4];
-      gray->GetNodeValue(i, v);
-      colorNodes.X.push_back(v[0]);
-      colorNodes.V.push_back({ v[1], v[1], v[1] });
-      colorNodes.Mid.push_back(v[2]);
-      colorNodes.Sharp.push_back(v[3]);
-    }
-    colorOf = [gray](double x) {
-      const double g = gray->GetValue(x);
-      return std::array<double, 3>{ g, g, g };
-    };
-    clampColor = gray->GetClamping() != 0;
-  }
-  else
-  {
-    vtkColorTransferFunction* ctf = property->GetRGBTransferFunction(comp);
-    for (int i = 0; i < ctf->GetSize(); ++i)
-    {
-      double v[6];
-      ctf->GetNodeValue(i, v);
-      colorNodes.X.push_back(v[0]);
-      colorNodes.V.push_back({ v[1], v[2], v[3] });
-      colorNodes.Mid.push_back(v[4]);
-      colorNodes.Sharp.push_back(v[5]);
-    }
-    colorOf = [ctf](double x) {
-      std::array<double, 3> c;
-      ctf->GetColor(x, c.data());
-      return c;
-    };
-    colorNonlinear = ctf->GetColorSpace() != VTK_CTF_RGB || ctf->GetScale() != VTK_CTF_LINEAR;
-    clampColor = ctf->GetClamping() != 0;
-    useBelow = ctf->GetUseBelowRangeColor() != 0;
-    useAbove = ctf->GetUseAboveRangeColor() != 0;
-    ctf->GetBelowRangeColor(below.data());
-    ctf->GetAboveRangeColor(above.data());
-  }
-  const auto colorSamples = Linearize<3>(colorNodes, colorOf, colorNonlinear, this->SamplingTolerance);
-  if (!colorSamples.empty())
-  {
-    // Outside the node range: clamped end colours, black, or VTK's
-    // below/above-range colours; a differing value becomes a jump.
-    if (!useBelow)
-    {
-      below = clampColor ? colorSamples.front().second : std::array<double, 3>{ 0, 0, 0 };
-    }
-    if (!useAbove)
-    {
-      above = clampColor ? colorSamples.back().second : std::array<double, 3>{ 0, 0, 0 };
-    }
-    spec.Color.push_back({ colorSamples.front().first, below[0], below[1], below[2] });
-  }
-  for (const auto& s : colorSamples)
-  {
-    spec.Color.push_back({ s.first, s.second[0], s.second[1], s.second[2] });
-  }
-  if (!colorSamples.empty())
-  {
-    spec.Color.push_back({ colorSamples.back().first, above[0], above[1], above[2] });
-  }
-
-  // Scalar opacity.
-  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(comp);
-  NodeList<1> opacityNodes;
-  for (int i = 0; i < opacity->GetSize(); ++i)
-  {
-    double v[4];
-    opacity->GetNodeValue(i, v);
-    opacityNodes.X.push_back(v[0]);
-    opacityNodes.V.push_back({ v[1] });
-    opacityNodes.Mid.push_back(v[2]);
-    opacityNodes.Sharp.push_back(v[3]);
-  }
-  const Evaluator<1> opacityOf = [opacity](double x) {
-    return std::array<double, 1>{ opacity->GetValue(x) };
-  };
-  const auto opacitySamples = Linearize<1>(opacityNodes, opacityOf, false, this->SamplingTolerance);
-  const bool clampOpacity = opacity->GetClamping() != 0;
-  if (!clampOpacity && !opacitySamples.empty())
-  {
-    spec.Opacity.push_back({ opacitySamples.front().first, 0.0 });
-  }
-  for (const auto& s : opacitySamples)
-  {
-    spec.Opacity.push_back({ s.first, s.second[0] });
-  }
-  if (!clampOpacity && !opacitySamples.empty())
-  {
-    spec.Opacity.push_back({ opacitySamples.back().first, 0.0 });
-  }
-
+  ReadColor(property, comp, this->SamplingTolerance, spec.Color);
+  ReadOpacity(property->GetScalarOpacity(comp), this->SamplingTolerance, spec.Opacity);
   this->Table->Build(spec, &this->Messages);
   return true;
 }
