@@ -5,7 +5,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${HOV_BUILD_DIR:-$root/build}"
-"$root/Utilities/build.sh"
+# The demo needs the module and its Python package only.
+"$root/Utilities/build.sh" vtkRenderingHighOrderVolumePython
 PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
   xvfb-run -a -s "-screen 0 1280x1024x24" \
   /usr/bin/python3 "$root/Utilities/hov_demo.py" --out "$build/demo" "$@"

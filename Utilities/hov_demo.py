@@ -5,7 +5,7 @@ Renders the bundled bracket (linear tetrahedra, CalculiX von Mises stress) with
 
   * vtkHighOrderVolumeMapper, exact integral, VTK-unstructured opacity semantics,
     per-pixel segment sort (the REFERENCE image),
-  * vtkHighOrderVolumeMapper, same, default visibility sort (vtkCellCenterDepthSort),
+  * vtkHighOrderVolumeMapper, same, HIAC visibility-sort ordering (vtkCellCenterDepthSort),
   * vtkProjectedTetrahedraMapper (default vtkCellCenterDepthSort),
   * vtkUnstructuredGridVolumeRayCastMapper (Bunyk + vtkUnstructuredGridLinearRayIntegrator),
   * vtkHighOrderVolumeMapper in GPU-compatible opacity semantics (extra, not comparable),
