@@ -303,6 +303,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     settings.Integration.Method = static_cast<hov::SegmentMethod>(this->IntegrationMethod);
     settings.TerminationTransmittance = this->TerminationTransmittance;
     settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT;
+    settings.TileSize = this->TileSize;
     const vtkHighOrderCellProjector::Statistics st = impl.Projector.Render(impl.Setup,
       impl.FrontToBack, rays, impl.TransferFunction->GetTable(), settings, depth, impl.RGBA);
     this->WitnessViolations = st.WitnessViolations;
@@ -392,6 +393,7 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "UseDepthBuffer: " << this->UseDepthBuffer << "\n";
+  os << indent << "TileSize: " << this->TileSize << "\n";
   os << indent << "VisibilitySort: " << this->VisibilitySort << "\n";
   os << indent << "WitnessViolations: " << this->WitnessViolations << "\n";
   os << indent << "NumberOfRenderedCells: " << this->NumberOfRenderedCells << "\n";

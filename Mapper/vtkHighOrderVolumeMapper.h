@@ -173,6 +173,16 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Side in pixels of the square image tiles the CPU path distributes over
+   * threads (default 32). A performance knob only: the image does not
+   * depend on it.
+   */
+  vtkSetClampMacro(TileSize, int, 4, 256);
+  vtkGetMacro(TileSize, int);
+  ///@}
+
+  ///@{
   /// Clip rays at the depth of opaque geometry already drawn (default on).
   vtkSetMacro(UseDepthBuffer, bool);
   vtkGetMacro(UseDepthBuffer, bool);
@@ -221,6 +231,7 @@ protected:
   int VectorComponent = 0;
   double TerminationTransmittance = 1e-9;
   bool UseDepthBuffer = true;
+  int TileSize = 32;
   vtkVisibilitySort* VisibilitySort = nullptr;
 
   vtkIdType WitnessViolations = 0;
