@@ -25,13 +25,13 @@
  * F <= 0.55), so nothing overflows; and K1 = (A - a K0) / (2 b).
  *
  * Branches (each threshold is explained where it is defined in the .cxx):
- *  - thin segments, D(1) <= 1/8: every weight from its Taylor series in D
- *    written in a Bernstein basis whose terms are all positive; relative
- *    accuracy a few ulp where the closed form would cancel (1 - K0 for tiny
- *    depth);
- *  - |b| < 1/16 (near-constant extinction), Wilhelms-Van Gelder only: K1 from
- *    its series in b over the moments M_k(a) = integral_0^1 x^k e^{-a x} dx,
- *    where (A - a K0)/(2b) would cancel;
+ *  - thin segments, D(1) <= 1/4: every weight from its Taylor series in D
+ *    written in a Bernstein basis whose terms are all positive (evaluated by
+ *    Horner's rule in r = a/D(1)); relative accuracy a few ulp where the
+ *    closed form would cancel (1 - K0 for small depth);
+ *  - |b| < 1/16 (near-constant extinction) or a^2 >= 400 |b| (steep decay),
+ *    Wilhelms-Van Gelder only: K1 from its series in b over the moments
+ *    M_k(a) = integral_0^1 x^k e^{-a x} dx, where (A - a K0)/(2b) would cancel;
  *  - otherwise the closed forms above.
  *  - infinite extinction (an opaque medium, e.g. opacity 1 in GPU-compatible
  *    semantics) anywhere on the segment: A = 1, C = cFront (Williams-Max) or 0
