@@ -26,19 +26,12 @@
 // The quadrature reference is first cross-checked against brute-force
 // midpoint integration on a few rays. Max and mean (over covered pixels)
 // errors are printed per channel and per case.
+#include "hovTestAnalytic.h"
 #include "hovTestReference.h"
-
-#include "vtkHighOrderVolumeMapper.h"
+#include "hovTestScenes.h"
 
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
-#include "vtkImageData.h"
-#include "vtkNew.h"
-#include "vtkPiecewiseFunction.h"
-#include "vtkTestErrorObserver.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 
 #include <array>
 #include <chrono>
@@ -55,8 +48,6 @@ using hovTestRef::Real;
 
 constexpr int Width = 48;
 constexpr int Height = 40;
-constexpr double Tolerance = 1e-6;
-constexpr double GrazeDistance = 1e-9;
 constexpr double EmissionScale = 0.7;
 
 const double Origin[3] = { -1.0, -1.0, -1.0 };
@@ -167,21 +158,9 @@ int TestAnalyticCube(int, char*[])
   {
     const View& view = views[v];
     auto camera = vtkSmartPointer<vtkCamera>::New();
-    const double n = std::sqrt(view.Direction[0] * view.Direction[0] +
-      view.Direction[1] * view.Direction[1] + view.Direction[2] * view.Direction[2]);
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(view.Distance * view.Direction[0] / n, view.Distance * view.Direction[1] / n,
-      view.Distance * view.Direction[2] / n);
-    camera->SetViewUp(0.0, 0.0, 1.0);
-    camera->SetParallelProjection(view.Parallel);
-    if (view.Parallel)
-    {
-      camera->SetParallelScale(view.AngleOrScale);
-    }
-    else
-    {
-      camera->SetViewAngle(view.AngleOrScale);
-    }
+    const double focal[3] = { 0.0, 0.0, 0.0 }, up[3] = { 0.0, 0.0, 1.0 };
+    hovTest::PlaceCamera(
+      camera, focal, view.Direction, view.Distance, up, view.Parallel, view.AngleOrScale);
     camera->SetClippingRange(view.Distance - view.Near, view.Distance + view.Far);
     cameras.push_back(camera);
     specs.push_back(hovTestRef::ReadCamera(camera));
@@ -203,13 +182,12 @@ int TestAnalyticCube(int, char*[])
           ++numCovered;
           segment[p] = { Field(ray.At(tIn)), Field(ray.At(tOut)), static_cast<double>(tOut - tIn) };
         }
-        grazing[v][p] = hovTestRef::DistanceToBoxEdges(ray, Bounds) < GrazeDistance;
+        grazing[v][p] = hovTestRef::DistanceToBoxEdges(ray, Bounds) < hovTest::GrazeDistance;
       }
     }
-    if (numCovered < Width * Height / 4 || numCovered == Width * Height)
+    if (!hovTest::CoverageOk(
+          view.Name, numCovered, Width * Height / 4, Width * Height, "most of the image"))
     {
-      std::cerr << "FAILED: test set-up, view " << view.Name << " covers " << numCovered
-                << " pixels (want most of the image, not all of it)\n";
       ++failures;
     }
     for (int sem = 0; sem < 3; ++sem)
@@ -253,17 +231,12 @@ int TestAnalyticCube(int, char*[])
   {
     for (int ordering = 0; ordering < 2; ++ordering)
     {
-      vtkNew<vtkHighOrderVolumeMapper> mapper;
-      vtkNew<vtkTest::ErrorObserver> observer;
-      mapper->AddObserver(vtkCommand::ErrorEvent, observer);
-      mapper->AddObserver(vtkCommand::WarningEvent, observer);
-      mapper->SetInputData(mesh.Grid);
+      hovTest::VolumeScene scene(mesh.Grid);
+      vtkHighOrderVolumeMapper* mapper = scene.Mapper;
       mapper->SetCellOrdering(ordering);
       mapper->SetGPUOpacityTolerance(1e-8);
       mapper->SetEmissionScale(EmissionScale);
-      vtkNew<vtkVolume> volume;
-      volume->SetMapper(mapper);
-      volume->SetProperty(property);
+      scene.Volume->SetProperty(property);
       for (int v = 0; v < NumViews; ++v)
       {
         if (views[v].FirstMeshOnly && &mesh != &meshes[0])
@@ -281,31 +254,13 @@ int TestAnalyticCube(int, char*[])
             label << mesh.Name << " / " << views[v].Name << " / " << hovTestRef::SemanticsName(sem)
                   << " / " << hovTestRef::EmissionName(em) << " / "
                   << (ordering ? "PER_PIXEL_SORT" : "VISIBILITY_SORT");
-            int caseFailures = 0;
-            auto fail = [&](const std::string& what) {
-              if (caseFailures++ < 8)
-              {
-                std::cerr << "FAILED [" << label.str() << "]: " << what << "\n";
-              }
-            };
-            observer->Clear();
-            const Clock::time_point renderStart = Clock::now();
-            if (mapper->RenderImage(cameras[v], volume, Width, Height) != 1)
-            {
-              fail("RenderImage did not return 1");
-            }
-            const double renderSeconds = seconds(renderStart);
-            if (observer->GetError() || observer->GetWarning())
-            {
-              fail("unexpected VTK message: " + observer->GetErrorMessage() +
-                observer->GetWarningMessage());
-            }
-            std::string why;
-            const float* px = hovTestRef::ImagePixels(mapper->GetFloatImage(), Width, Height, why);
+            hovTest::CaseFailures fail(label.str());
+            double renderSeconds = 0.0;
+            const float* px = hovTest::RenderCase(mapper, cameras[v], scene.Volume, Width, Height,
+              scene.Observer, fail, &renderSeconds);
             if (!px)
             {
-              fail(why);
-              failures += caseFailures;
+              failures += fail.Count;
               continue;
             }
             // The witness decides what can be expected: with no violation the
@@ -344,7 +299,7 @@ int TestAnalyticCube(int, char*[])
                   const double err = std::fabs(static_cast<double>(got[c]) - static_cast<double>(want[c]));
                   stats.Max[c] = std::max(stats.Max[c], err);
                   stats.Sum[c] += covered[v][p] ? err : 0.0;
-                  if (!(err <= Tolerance))
+                  if (!(err <= hovTest::AnalyticTolerance))
                   {
                     wrongColour = wrongColour || c < 3;
                     if (!exact && c < 3)
@@ -384,7 +339,7 @@ int TestAnalyticCube(int, char*[])
               std::cout << "  NOTE: visibility order wrong at " << witness << " pixels (witness); "
                         << wrongColourPixels << " pixels with colour error > 1e-6; alpha exact\n";
             }
-            if (caseFailures)
+            if (fail.Count)
             {
               std::cerr << "  inputs: " << specs[v].ToString() << "\n  " << tfText
                         << "\n  field s = " << FieldOffset << " + (" << FieldGradient[0] << ", "
@@ -392,7 +347,7 @@ int TestAnalyticCube(int, char*[])
                         << "emission scale " << EmissionScale << "; GPU tolerance 1e-8; image "
                         << Width << "x" << Height << "\n";
             }
-            failures += caseFailures;
+            failures += fail.Count;
           }
         }
       }

@@ -10,9 +10,9 @@
 // pixels must match (pixels whose ray passes within 1e-9 of an edge are left
 // out of the coverage comparison). The quadrature reference is checked
 // against the same closed form.
+#include "hovTestAnalytic.h"
 #include "hovTestReference.h"
-
-#include "vtkHighOrderVolumeMapper.h"
+#include "hovTestScenes.h"
 
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -23,7 +23,6 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
-#include "vtkTestErrorObserver.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -39,8 +38,6 @@ using hovTestRef::Real;
 
 constexpr int Width = 64;
 constexpr int Height = 48;
-constexpr double Tolerance = 1e-6;
-constexpr double GrazeDistance = 1e-9;
 
 const double TetPoints[4][3] = { { 0.0, 0.0, 0.0 }, { 1.2, 0.1, -0.2 }, { 0.3, 1.1, 0.25 },
   { 0.2, 0.35, 1.3 } };
@@ -170,23 +167,9 @@ int TestAnalyticSingleTetra(int, char*[])
     }
     double focal[4];
     matrix->MultiplyPoint(centroid, focal);
-    const double norm = std::sqrt(view.Direction[0] * view.Direction[0] +
-      view.Direction[1] * view.Direction[1] + view.Direction[2] * view.Direction[2]);
     vtkNew<vtkCamera> camera;
-    camera->SetFocalPoint(focal[0], focal[1], focal[2]);
-    camera->SetPosition(focal[0] + view.Distance * view.Direction[0] / norm,
-      focal[1] + view.Distance * view.Direction[1] / norm,
-      focal[2] + view.Distance * view.Direction[2] / norm);
-    camera->SetViewUp(view.Up[0], view.Up[1], view.Up[2]);
-    camera->SetParallelProjection(view.Parallel);
-    if (view.Parallel)
-    {
-      camera->SetParallelScale(view.AngleOrScale);
-    }
-    else
-    {
-      camera->SetViewAngle(view.AngleOrScale);
-    }
+    hovTest::PlaceCamera(
+      camera, focal, view.Direction, view.Distance, view.Up, view.Parallel, view.AngleOrScale);
     camera->SetClippingRange(view.Distance - 1.8, view.Distance + 2.5);
     const hovTestRef::CameraSpec spec = hovTestRef::ReadCamera(camera);
 
@@ -204,14 +187,13 @@ int TestAnalyticSingleTetra(int, char*[])
         Real tIn, tOut;
         covered[p] = hovTestRef::IntersectTetra(ray, TetPoints, tIn, tOut);
         length[p] = covered[p] ? tOut - tIn : 0;
-        grazing[p] = hovTestRef::DistanceToTetraEdges(ray, TetPoints) < GrazeDistance;
+        grazing[p] = hovTestRef::DistanceToTetraEdges(ray, TetPoints) < hovTest::GrazeDistance;
         expectedCovered += covered[p] && !grazing[p];
       }
     }
-    if (expectedCovered < Width * Height / 10 || expectedCovered == Width * Height)
+    if (!hovTest::CoverageOk(view.Name, expectedCovered, Width * Height / 10, Width * Height,
+          "a good part of the image"))
     {
-      std::cerr << "FAILED: test set-up, view " << view.Name << " covers " << expectedCovered
-                << " pixels (want a good part of the image, not all of it)\n";
       ++failures;
     }
 
@@ -225,8 +207,7 @@ int TestAnalyticSingleTetra(int, char*[])
           const hovTestRef::Model model{ sem, em, 0.6 };
           vtkNew<vtkHighOrderVolumeMapper> mapper;
           vtkNew<vtkTest::ErrorObserver> observer;
-          mapper->AddObserver(vtkCommand::ErrorEvent, observer);
-          mapper->AddObserver(vtkCommand::WarningEvent, observer);
+          hovTest::ObserveMessages(mapper, observer);
           mapper->SetInputData(grid);
           mapper->SetOpacitySemantics(sem);
           mapper->SetGPUOpacityTolerance(1e-8);
@@ -239,29 +220,12 @@ int TestAnalyticSingleTetra(int, char*[])
           label << view.Name << " / " << hovTestRef::SemanticsName(sem) << " / "
                 << hovTestRef::EmissionName(em) << " / "
                 << (ordering ? "PER_PIXEL_SORT" : "VISIBILITY_SORT");
-          int caseFailures = 0;
-          auto fail = [&](const std::string& what) {
-            if (caseFailures++ < 8)
-            {
-              std::cerr << "FAILED [" << label.str() << "]: " << what << "\n";
-            }
-          };
-
-          if (mapper->RenderImage(camera, volume, Width, Height) != 1)
-          {
-            fail("RenderImage did not return 1");
-          }
-          if (observer->GetError() || observer->GetWarning())
-          {
-            fail("unexpected VTK message: " + observer->GetErrorMessage() +
-              observer->GetWarningMessage());
-          }
-          std::string why;
-          const float* px = hovTestRef::ImagePixels(mapper->GetFloatImage(), Width, Height, why);
+          hovTest::CaseFailures fail(label.str());
+          const float* px =
+            hovTest::RenderCase(mapper, camera, volume, Width, Height, observer, fail);
           if (!px)
           {
-            fail(why);
-            failures += caseFailures;
+            failures += fail.Count;
             continue;
           }
           double maxErr = 0.0;
@@ -292,7 +256,7 @@ int TestAnalyticSingleTetra(int, char*[])
               {
                 const double err = std::fabs(static_cast<double>(got[c]) - static_cast<double>(want[c]));
                 maxErr = std::max(maxErr, err);
-                if (!(err <= Tolerance))
+                if (!(err <= hovTest::AnalyticTolerance))
                 {
                   std::ostringstream os;
                   os << std::setprecision(12) << "pixel (" << i << ", " << j << ") channel " << c
@@ -317,14 +281,14 @@ int TestAnalyticSingleTetra(int, char*[])
           std::cout << std::left << std::setw(70) << label.str() << " covered " << gotCovered
                     << "/" << expectedCovered << "  max error " << std::scientific
                     << std::setprecision(2) << maxErr << std::defaultfloat << "\n";
-          if (caseFailures)
+          if (fail.Count)
           {
             std::cerr << "  inputs: " << spec.ToString() << "\n  "
                       << hovTestRef::DescribeProperty(property) << "; constant scalar "
                       << ConstantScalar << "; emission scale " << model.EmissionScale
                       << "; GPU tolerance 1e-8; image " << Width << "x" << Height << "\n";
           }
-          failures += caseFailures;
+          failures += fail.Count;
         }
       }
     }

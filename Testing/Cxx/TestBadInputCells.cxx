@@ -3,16 +3,23 @@
 // cells. For each: no crash, an error or warning where the input is bad (none
 // where it is fine), a finite float image with 0 <= alpha <= 1, and the valid
 // tetrahedra render exactly as they do alone (within 1e-6).
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkCamera.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkPointData.h"
 #include "vtkStringArray.h"
-#include "vtkTestErrorObserver.h"
+#include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <iostream>
 #include <limits>
+#include <string>
+#include <vector>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 namespace
 {
@@ -43,18 +50,11 @@ void LooseTetPoints(double p[4][3], double d)
 int TestBadInputCells(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  TF tf;
-  DefaultTF(tf);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
+  VolumeScene scene;
+  DefaultTF(scene.Tf);
   vtkNew<vtkCamera> cam;
   ObliqueCamera(cam);
   cam->SetViewAngle(40);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
 
   const int orders[2] = { vtkHighOrderVolumeMapper::PER_PIXEL_SORT,
     vtkHighOrderVolumeMapper::VISIBILITY_SORT };
@@ -62,11 +62,11 @@ int TestBadInputCells(int, char*[])
   // Render @p grid in one ordering; the grid is marked modified so the mapper
   // re-validates it and reports its problems again.
   auto render = [&](vtkUnstructuredGrid* grid, int order, int& status) {
-    mapper->SetCellOrdering(order);
-    mapper->SetInputData(grid);
+    scene.Mapper->SetCellOrdering(order);
+    scene.Mapper->SetInputData(grid);
     grid->Modified();
-    obs->Clear();
-    return Render(mapper, cam, volume, W, H, &status);
+    scene.Observer->Clear();
+    return Render(scene.Mapper, cam, scene.Volume, W, H, &status);
   };
 
   // ---- Reference: the valid block alone (48 tets), in both orderings.
@@ -80,16 +80,17 @@ int TestBadInputCells(int, char*[])
   {
     int status = 0;
     ref[o] = render(blockGrid, orders[o], status);
-    refWitness[o] = mapper->GetWitnessViolations();
+    refWitness[o] = scene.Mapper->GetWitnessViolations();
     const Sanity s = CheckImage(ref[o]);
     std::cout << "  " << OrderName(orders[o]) << ": " << s.Str()
               << " witness=" << refWitness[o] << "\n";
     ck.Check(status == 1, "valid block renders (RenderImage returns 1)");
-    ck.Check(!obs->GetError() && !obs->GetWarning(),
-      "no error or warning for a valid block; got: '" + Msg(obs->GetErrorMessage()) +
-        Msg(obs->GetWarningMessage()) + "'");
+    ck.Check(scene.NoMessages(),
+      "no error or warning for a valid block; got: '" + Msg(scene.Observer->GetErrorMessage()) +
+        Msg(scene.Observer->GetWarningMessage()) + "'");
     ck.Check(s.Ok() && s.Covered > 1000, "reference image is sane and covers > 1000 pixels");
-    ck.Check(mapper->GetNumberOfRenderedCells() == 48 && mapper->GetNumberOfSkippedCells() == 0,
+    ck.Check(scene.Mapper->GetNumberOfRenderedCells() == 48 &&
+        scene.Mapper->GetNumberOfSkippedCells() == 0,
       "48 rendered, 0 skipped");
   }
   const DiffStats refOrders = Diff(ref[0], ref[1]);
@@ -105,19 +106,21 @@ int TestBadInputCells(int, char*[])
       const Image img = render(grid, orders[o], status);
       const Sanity s = CheckImage(img);
       const DiffStats d = Diff(img, refs[o]);
-      std::cout << "  " << OrderName(orders[o]) << ": status=" << status << " rendered="
-                << mapper->GetNumberOfRenderedCells()
-                << " skipped=" << mapper->GetNumberOfSkippedCells()
-                << " witness=" << mapper->GetWitnessViolations() << "\n    " << s.Str()
+      std::cout << "  " << OrderName(orders[o]) << ": status=" << status
+                << " rendered=" << scene.Mapper->GetNumberOfRenderedCells()
+                << " skipped=" << scene.Mapper->GetNumberOfSkippedCells()
+                << " witness=" << scene.Mapper->GetWitnessViolations() << "\n    " << s.Str()
                 << "\n    vs valid cells alone: " << d.Str() << "\n    warning: '"
-                << Msg(obs->GetWarningMessage()) << "' error: '" << Msg(obs->GetErrorMessage()) << "'\n";
+                << Msg(scene.Observer->GetWarningMessage()) << "' error: '"
+                << Msg(scene.Observer->GetErrorMessage()) << "'\n";
       ck.Check(status == 1, name + ": RenderImage returns 1 (bad cells are not an error)");
-      ck.Check(!obs->GetError(), name + ": no error");
-      ck.Check(obs->GetWarning() && obs->GetWarningMessage().find(warnText) != std::string::npos,
+      ck.Check(!scene.Observer->GetError(), name + ": no error");
+      ck.Check(scene.Observer->GetWarning() &&
+          scene.Observer->GetWarningMessage().find(warnText) != std::string::npos,
         name + ": a warning containing '" + warnText + "'");
       ck.Check(s.Ok(), name + ": finite image, 0 <= alpha <= 1, 0 <= rgb <= alpha");
-      ck.Check(mapper->GetNumberOfRenderedCells() == rendered &&
-          mapper->GetNumberOfSkippedCells() == skipped,
+      ck.Check(scene.Mapper->GetNumberOfRenderedCells() == rendered &&
+          scene.Mapper->GetNumberOfSkippedCells() == skipped,
         name + ": " + std::to_string(rendered) + " rendered, " + std::to_string(skipped) +
           " skipped");
       ck.Check(d.Max <= 1e-6,
@@ -134,16 +137,17 @@ int TestBadInputCells(int, char*[])
     const Image img = render(grid, orders[0], status);
     const Sanity s = CheckImage(img);
     std::cout << "  status=" << status << " " << s.Str() << "\n  error: '"
-              << Msg(obs->GetErrorMessage()) << "'\n";
-    ck.Check(obs->GetError(), "no scalars: an error is reported");
+              << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+    ck.Check(scene.Observer->GetError(), "no scalars: an error is reported");
     ck.Check(img.W == W && img.H == H && s.Ok() && s.Covered == 0 && s.MaxRGB == 0.0,
       "no scalars: a zero image of the requested size");
     ck.Check(status == 0,
       "no scalars: RenderImage returns 0 (documented: '0 on error'; missing scalars are an error)");
     std::cout << "  diagnostics after the failed render: rendered="
-              << mapper->GetNumberOfRenderedCells() << " skipped="
-              << mapper->GetNumberOfSkippedCells() << " (the previous render had 48)\n";
-    ck.Check(mapper->GetNumberOfRenderedCells() == 0,
+              << scene.Mapper->GetNumberOfRenderedCells()
+              << " skipped=" << scene.Mapper->GetNumberOfSkippedCells()
+              << " (the previous render had 48)\n";
+    ck.Check(scene.Mapper->GetNumberOfRenderedCells() == 0,
       "no scalars: GetNumberOfRenderedCells() describes this render (0), not the previous one");
   }
 
@@ -164,42 +168,43 @@ int TestBadInputCells(int, char*[])
     Image img = render(only, orders[0], status);
     Sanity s = CheckImage(img);
     std::cout << "  status=" << status << " " << s.Str() << "\n  error: '"
-              << Msg(obs->GetErrorMessage()) << "'\n";
-    ck.Check(obs->GetError(), "string-only: an error is reported");
+              << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+    ck.Check(scene.Observer->GetError(), "string-only: an error is reported");
     ck.Check(s.Ok() && s.Covered == 0, "string-only: zero image");
 
     // (b) selected by name, next to a valid numeric array.
     auto both = block.Grid(true);
     both->GetPointData()->AddArray(names);
-    mapper->SetScalarModeToUsePointFieldData();
-    mapper->SelectScalarArray("names");
+    scene.Mapper->SetScalarModeToUsePointFieldData();
+    scene.Mapper->SelectScalarArray("names");
     std::cout << "== SelectScalarArray(\"names\") (a vtkStringArray) with numeric 's' present\n";
     img = render(both, orders[0], status);
     s = CheckImage(img);
     std::cout << "  status=" << status << " " << s.Str() << "\n  error: '"
-              << Msg(obs->GetErrorMessage()) << "'\n";
-    ck.Check(obs->GetError(), "selected string array: an error is reported");
+              << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+    ck.Check(scene.Observer->GetError(), "selected string array: an error is reported");
     ck.Check(s.Ok() && s.Covered == 0,
       "selected string array: zero image (the numeric array is not silently used)");
     ck.Check(status == 0, "selected string array: RenderImage returns 0 (documented: '0 on error')");
 
     // (c) a missing name.
-    mapper->SelectScalarArray("no_such_array");
+    scene.Mapper->SelectScalarArray("no_such_array");
     img = render(both, orders[0], status);
     s = CheckImage(img);
     std::cout << "== SelectScalarArray(\"no_such_array\"): status=" << status << " " << s.Str()
-              << " error: '" << Msg(obs->GetErrorMessage()) << "'\n";
-    ck.Check(obs->GetError() && s.Ok() && s.Covered == 0, "missing array: error and zero image");
+              << " error: '" << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+    ck.Check(scene.Observer->GetError() && s.Ok() && s.Covered == 0,
+      "missing array: error and zero image");
 
     // (d) the numeric array by name renders like the default scalars.
-    mapper->SelectScalarArray("s");
+    scene.Mapper->SelectScalarArray("s");
     img = render(both, orders[0], status);
     const DiffStats d = Diff(img, ref[0]);
     std::cout << "== SelectScalarArray(\"s\"): status=" << status << " vs default scalars "
               << d.Str() << "\n";
-    ck.Check(status == 1 && !obs->GetError() && !obs->GetWarning() && d.Max <= 1e-12,
+    ck.Check(status == 1 && scene.NoMessages() && d.Max <= 1e-12,
       "selecting the numeric array by name renders the reference");
-    mapper->SetScalarModeToDefault();
+    scene.Mapper->SetScalarModeToDefault();
   }
 
   // ---- 3a. NaN / +Inf / -Inf point scalars on loose tets overlapping the block.
@@ -229,7 +234,7 @@ int TestBadInputCells(int, char*[])
     const Image img = render(cg, orders[0], status);
     const DiffStats d = Diff(img, ref[0]);
     std::cout << "  control (same tets, finite scalars): vs block alone " << d.Str()
-              << " witness(overlap)=" << mapper->GetWitnessViolations() << "\n";
+              << " witness(overlap)=" << scene.Mapper->GetWitnessViolations() << "\n";
     ck.Check(d.Max > 1e-2, "control: the loose tets are visible when their scalars are finite");
   }
 
@@ -278,21 +283,21 @@ int TestBadInputCells(int, char*[])
     }
     auto valid = g.Grid();
     valid->GetCellData()->SetScalars(cellScalars(block, good));
-    mapper->SetScalarModeToUseCellData();
+    scene.Mapper->SetScalarModeToUseCellData();
     Image cellRef[2];
     for (int o = 0; o < 2; ++o)
     {
       int status;
       cellRef[o] = render(valid, orders[o], status);
       std::cout << "== cell-scalar reference (44 valid cells), " << OrderName(orders[o]) << ": "
-                << CheckImage(cellRef[o]).Str() << " witness=" << mapper->GetWitnessViolations()
-                << "\n";
-      ck.Check(status == 1 && !obs->GetWarning() && !obs->GetError() &&
+                << CheckImage(cellRef[o]).Str()
+                << " witness=" << scene.Mapper->GetWitnessViolations() << "\n";
+      ck.Check(status == 1 && !scene.Observer->GetWarning() && !scene.Observer->GetError() &&
           CheckImage(cellRef[o]).Covered > 1000,
         "cell-scalar reference renders without warnings");
     }
     badCase("NaN/Inf cell scalars on 4 of 48 cells", full, cellRef, "with NaN/Inf scalars", 44, 4);
-    mapper->SetScalarModeToDefault();
+    scene.Mapper->SetScalarModeToDefault();
   }
 
   // ---- 4. NaN / Inf point coordinates.
@@ -360,14 +365,15 @@ int TestBadInputCells(int, char*[])
     std::cout << "== empty vtkUnstructuredGrid (no points, no cells, no arrays)\n";
     vtkNew<vtkUnstructuredGrid> empty;
     int status = -1;
-    mapper->SetCellOrdering(orders[1]);
-    mapper->SetInputData(empty);
-    obs->Clear();
-    Image img = Render(mapper, cam, volume, W, H, &status);
+    scene.Mapper->SetCellOrdering(orders[1]);
+    scene.Mapper->SetInputData(empty);
+    scene.Observer->Clear();
+    Image img = Render(scene.Mapper, cam, scene.Volume, W, H, &status);
     Sanity s = CheckImage(img);
     std::cout << "  status=" << status << " " << s.Str() << " warning: '"
-              << Msg(obs->GetWarningMessage()) << "' error: '" << Msg(obs->GetErrorMessage()) << "'\n";
-    ck.Check(obs->GetWarning() || obs->GetError(), "empty grid: reported");
+              << Msg(scene.Observer->GetWarningMessage()) << "' error: '"
+              << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+    ck.Check(scene.Observer->GetWarning() || scene.Observer->GetError(), "empty grid: reported");
     ck.Check(img.W == W && img.H == H && s.Ok() && s.Covered == 0 && s.MaxRGB == 0,
       "empty grid: zero image of the requested size");
 
@@ -381,12 +387,12 @@ int TestBadInputCells(int, char*[])
       img = render(pointsOnly, orders[o], status);
       s = CheckImage(img);
       std::cout << "  " << OrderName(orders[o]) << ": status=" << status << " " << s.Str()
-                << " warning: '" << Msg(obs->GetWarningMessage()) << "' error: '"
-                << Msg(obs->GetErrorMessage()) << "'\n";
-      ck.Check(status == 1 && obs->GetWarning() && !obs->GetError(),
+                << " warning: '" << Msg(scene.Observer->GetWarningMessage()) << "' error: '"
+                << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+      ck.Check(status == 1 && scene.Observer->GetWarning() && !scene.Observer->GetError(),
         "0 cells: a warning, no error, RenderImage returns 1");
       ck.Check(s.Ok() && s.Covered == 0 && s.MaxRGB == 0, "0 cells: zero image");
-      ck.Check(mapper->GetNumberOfRenderedCells() == 0, "0 cells: 0 rendered");
+      ck.Check(scene.Mapper->GetNumberOfRenderedCells() == 0, "0 cells: 0 rendered");
     }
   }
 
@@ -438,9 +444,10 @@ int TestBadInputCells(int, char*[])
       const Image img = render(hg, orders[o], status);
       const Sanity s = CheckImage(img);
       std::cout << "== a single hexahedron, " << OrderName(orders[o]) << ": status=" << status
-                << " " << s.Str() << " warning: '" << Msg(obs->GetWarningMessage()) << "'\n";
-      ck.Check(status == 1 && !obs->GetError() &&
-          obs->GetWarningMessage().find("not linear tetrahedra") != std::string::npos,
+                << " " << s.Str() << " warning: '" << Msg(scene.Observer->GetWarningMessage())
+                << "'\n";
+      ck.Check(status == 1 && !scene.Observer->GetError() &&
+          scene.Observer->GetWarningMessage().find("not linear tetrahedra") != std::string::npos,
         "hexahedron only: a warning about non-tetrahedral cells, no error");
       ck.Check(s.Ok() && s.Covered == 0, "hexahedron only: zero image");
     }
@@ -454,11 +461,11 @@ int TestBadInputCells(int, char*[])
     auto g = m.Grid();
     int status;
     render(g, orders[0], status);
-    const bool first = obs->GetWarning();
-    obs->Clear();
-    Render(mapper, cam, volume, W, H, &status);
+    const bool first = scene.Observer->GetWarning();
+    scene.Observer->Clear();
+    Render(scene.Mapper, cam, scene.Volume, W, H, &status);
     std::cout << "== information: same bad grid rendered twice without Modified(): warning on "
-              << "render 1: " << first << ", on render 2: " << obs->GetWarning()
+              << "render 1: " << first << ", on render 2: " << scene.Observer->GetWarning()
               << " (class doc: 'skipped with one warning per render')\n";
   }
 
@@ -468,7 +475,8 @@ int TestBadInputCells(int, char*[])
     const Image again = render(blockGrid, orders[0], status);
     const DiffStats d = Diff(again, ref[0]);
     std::cout << "== the valid block after all bad inputs: " << d.Str() << "\n";
-    ck.Check(status == 1 && !obs->GetWarning() && !obs->GetError() && d.Max == 0.0,
+    ck.Check(
+      status == 1 && !scene.Observer->GetWarning() && !scene.Observer->GetError() && d.Max == 0.0,
       "the valid block renders bit-identically after the bad inputs, without messages");
   }
   return ck.Result();

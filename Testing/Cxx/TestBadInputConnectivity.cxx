@@ -7,29 +7,27 @@
 // (Kept apart from TestBadInputCells: a crash here must not hide the results
 // of the other bad-input checks. Progress is flushed before every step so a
 // crash shows where it happened; the step most likely to crash runs last.)
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkCamera.h"
 #include "vtkCellData.h"
-#include "vtkTestErrorObserver.h"
+#include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkPointData.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <iostream>
+#include <string>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 int TestBadInputConnectivity(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  TF tf;
-  DefaultTF(tf);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
+  VolumeScene scene;
+  DefaultTF(scene.Tf);
   vtkNew<vtkCamera> cam;
   ObliqueCamera(cam);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
   const int W = 64, H = 64;
 
   const MeshBuilder block = UnitBlock(2);
@@ -37,12 +35,26 @@ int TestBadInputConnectivity(int, char*[])
   Image ref[2];
   for (int o = 0; o < 2; ++o)
   {
-    mapper->SetCellOrdering(o);
-    mapper->SetInputData(blockGrid);
-    ref[o] = Render(mapper, cam, volume, W, H);
+    scene.Mapper->SetCellOrdering(o);
+    scene.Mapper->SetInputData(blockGrid);
+    ref[o] = Render(scene.Mapper, cam, scene.Volume, W, H);
   }
 
   // ---- Scalar arrays shorter than the points / cells they describe.
+  // Renders @p g (whose short array is set) and checks that @p what is reported.
+  auto renderShort = [&](vtkUnstructuredGrid* g, const std::string& what) {
+    scene.Mapper->SetInputData(g);
+    scene.Observer->Clear();
+    int status = -1;
+    const Image img = Render(scene.Mapper, cam, scene.Volume, W, H, &status);
+    const Sanity san = CheckImage(img);
+    std::cout << "  status=" << status << " rendered=" << scene.Mapper->GetNumberOfRenderedCells()
+              << " " << san.Str() << "\n  warning: '" << Msg(scene.Observer->GetWarningMessage())
+              << "' error: '" << Msg(scene.Observer->GetErrorMessage()) << "'" << std::endl;
+    ck.Check(scene.Observer->GetError() || scene.Observer->GetWarning(),
+      what + ": reported (not read past its end)");
+    ck.Check(san.Ok(), what + ": sane image");
+  };
   {
     std::cout << "== point scalars with 2 tuples for " << block.Points.size()
               << " points: rendering..." << std::endl;
@@ -53,18 +65,8 @@ int TestBadInputConnectivity(int, char*[])
     s->SetValue(0, 0.5);
     s->SetValue(1, 1.0);
     g->GetPointData()->SetScalars(s);
-    mapper->SetCellOrderingToPerPixelSort();
-    mapper->SetInputData(g);
-    obs->Clear();
-    int status = -1;
-    const Image img = Render(mapper, cam, volume, W, H, &status);
-    const Sanity san = CheckImage(img);
-    std::cout << "  status=" << status << " rendered=" << mapper->GetNumberOfRenderedCells() << " "
-              << san.Str() << "\n  warning: '" << Msg(obs->GetWarningMessage()) << "' error: '"
-              << Msg(obs->GetErrorMessage()) << "'" << std::endl;
-    ck.Check(obs->GetError() || obs->GetWarning(),
-      "short point-scalar array: reported (not read past its end)");
-    ck.Check(san.Ok(), "short point-scalar array: sane image");
+    scene.Mapper->SetCellOrderingToPerPixelSort();
+    renderShort(g, "short point-scalar array");
   }
   {
     std::cout << "== cell scalars with 3 tuples for 48 cells: rendering..." << std::endl;
@@ -77,19 +79,9 @@ int TestBadInputConnectivity(int, char*[])
       s->SetValue(i, 0.5 * i);
     }
     g->GetCellData()->SetScalars(s);
-    mapper->SetScalarModeToUseCellData();
-    mapper->SetInputData(g);
-    obs->Clear();
-    int status = -1;
-    const Image img = Render(mapper, cam, volume, W, H, &status);
-    const Sanity san = CheckImage(img);
-    std::cout << "  status=" << status << " rendered=" << mapper->GetNumberOfRenderedCells() << " "
-              << san.Str() << "\n  warning: '" << Msg(obs->GetWarningMessage()) << "' error: '"
-              << Msg(obs->GetErrorMessage()) << "'" << std::endl;
-    ck.Check(obs->GetError() || obs->GetWarning(),
-      "short cell-scalar array: reported (not read past its end)");
-    ck.Check(san.Ok(), "short cell-scalar array: sane image");
-    mapper->SetScalarModeToDefault();
+    scene.Mapper->SetScalarModeToUseCellData();
+    renderShort(g, "short cell-scalar array");
+    scene.Mapper->SetScalarModeToDefault();
   }
 
   // ---- A tetrahedron with point id 100000 (the grid has 27 points).
@@ -101,24 +93,25 @@ int TestBadInputConnectivity(int, char*[])
   {
     const char* name = o ? "PER_PIXEL_SORT" : "VISIBILITY_SORT";
     std::cout << "== point id out of range, " << name << ": rendering..." << std::endl;
-    mapper->SetCellOrdering(o);
-    mapper->SetInputData(brokenGrid);
+    scene.Mapper->SetCellOrdering(o);
+    scene.Mapper->SetInputData(brokenGrid);
     brokenGrid->Modified();
-    obs->Clear();
+    scene.Observer->Clear();
     int status = -1;
-    const Image img = Render(mapper, cam, volume, W, H, &status);
+    const Image img = Render(scene.Mapper, cam, scene.Volume, W, H, &status);
     const Sanity s = CheckImage(img);
     const DiffStats d = Diff(img, ref[o]);
-    std::cout << "  status=" << status << " rendered=" << mapper->GetNumberOfRenderedCells()
-              << " skipped=" << mapper->GetNumberOfSkippedCells() << " " << s.Str()
+    std::cout << "  status=" << status << " rendered=" << scene.Mapper->GetNumberOfRenderedCells()
+              << " skipped=" << scene.Mapper->GetNumberOfSkippedCells() << " " << s.Str()
               << "\n  vs block alone: " << d.Str() << "\n  warning: '"
-              << Msg(obs->GetWarningMessage()) << "' error: '" << Msg(obs->GetErrorMessage())
-              << "'" << std::endl;
+              << Msg(scene.Observer->GetWarningMessage()) << "' error: '"
+              << Msg(scene.Observer->GetErrorMessage()) << "'" << std::endl;
     ck.Check(true, std::string(name) + ": no crash");
-    ck.Check(obs->GetWarning() &&
-        obs->GetWarningMessage().find("bad connectivity") != std::string::npos,
+    ck.Check(scene.Observer->GetWarning() &&
+        scene.Observer->GetWarningMessage().find("bad connectivity") != std::string::npos,
       std::string(name) + ": the bad cell is reported");
-    ck.Check(mapper->GetNumberOfRenderedCells() == 48 && mapper->GetNumberOfSkippedCells() == 1,
+    ck.Check(scene.Mapper->GetNumberOfRenderedCells() == 48 &&
+        scene.Mapper->GetNumberOfSkippedCells() == 1,
       std::string(name) + ": 48 rendered, 1 skipped");
     ck.Check(s.Ok() && d.Max <= 1e-6, std::string(name) + ": the valid tets render as alone");
   }

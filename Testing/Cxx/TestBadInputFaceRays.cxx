@@ -5,33 +5,23 @@
 // tetrahedra, viewed along an axis). Each such ray must still cross the
 // medium once: with a constant transfer function every pixel inside the
 // cube's footprint has alpha = 1 - exp(-a L / u), L = 1 (VTK semantics).
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
-#include "vtkTestErrorObserver.h"
+#include "vtkCamera.h"
 
+#include <cmath>
 #include <iostream>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 int TestBadInputFaceRays(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  mapper->SetOpacitySemanticsToVTKUnstructured();
-  TF tf;
-  const double a = 0.5, u = 1.0;
-  tf.Color->AddRGBPoint(0.0, 1, 1, 1);
-  tf.Opacity->AddPoint(0.0, a);
-  tf.Property->SetScalarOpacityUnitDistance(u);
+  VolumeScene scene(UnitBlock(2).Grid());
+  scene.Mapper->SetOpacitySemanticsToVTKUnstructured();
+  const double a = 0.5, u = 1.0, white[3] = { 1, 1, 1 };
+  ConstantTF(scene.Tf, white, a, u);
   const double alphaIn = -std::expm1(-a / u);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
-  auto grid = UnitBlock(2).Grid();
-  mapper->SetInputData(grid);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
 
   for (const double shift : { AxisOrthoShift, 0.0 })
   {
@@ -45,9 +35,9 @@ int TestBadInputFaceRays(int, char*[])
       for (int order : { vtkHighOrderVolumeMapper::PER_PIXEL_SORT,
              vtkHighOrderVolumeMapper::VISIBILITY_SORT })
       {
-        mapper->SetCellOrdering(order);
-        obs->Clear();
-        const Image img = Render(mapper, cam, volume, n, n);
+        scene.Mapper->SetCellOrdering(order);
+        scene.Observer->Clear();
+        const Image img = Render(scene.Mapper, cam, scene.Volume, n, n);
         size_t inside = 0, bad = 0, onDiagonal = 0, badOnDiagonal = 0;
         double worst = 0, worstAlpha = alphaIn;
         int wi = -1, wj = -1;
@@ -86,12 +76,13 @@ int TestBadInputFaceRays(int, char*[])
         }
         std::cout << "== axis view, shift " << shift << ", " << n << "x" << n << ", "
                   << (order ? "PER_PIXEL_SORT" : "VISIBILITY_SORT") << ": pixels inside " << inside
-                  << ", with a ray in an interior face " << onDiagonal << "; pixels off by > 1e-6: "
-                  << bad << " (" << badOnDiagonal << " of them in a face); worst at (" << wi << ","
-                  << wj << "): alpha " << worstAlpha << " expected " << alphaIn
+                  << ", with a ray in an interior face " << onDiagonal
+                  << "; pixels off by > 1e-6: " << bad << " (" << badOnDiagonal
+                  << " of them in a face); worst at (" << wi << "," << wj << "): alpha "
+                  << worstAlpha << " expected " << alphaIn
                   << " (1-exp(-2a/u) = " << -std::expm1(-2 * a / u)
-                  << "); witness=" << mapper->GetWitnessViolations() << "\n";
-        ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
+                  << "); witness=" << scene.Mapper->GetWitnessViolations() << "\n";
+        ck.Check(scene.NoMessages(), "no messages");
         ck.Check(bad == 0,
           "every ray crosses thickness 1 exactly once (rays lying in shared faces are not "
           "composited twice)");

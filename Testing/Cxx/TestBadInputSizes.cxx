@@ -3,33 +3,31 @@
 // unit cube with a constant transfer function every pixel is known
 // analytically: inside the cube's footprint alpha = 1 - exp(-a/u) (VTK
 // semantics, thickness 1), outside 0.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTestErrorObserver.h"
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
+#include <utility>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 int TestBadInputSizes(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  mapper->SetOpacitySemanticsToVTKUnstructured();
-  TF tf;
+  VolumeScene scene(UnitBlock(2).Grid());
   const double color[3] = { 0.9, 0.5, 0.2 };
   const double a = 0.5, u = 0.5;
-  tf.Color->AddRGBPoint(0.0, color[0], color[1], color[2]);
-  tf.Opacity->AddPoint(0.0, a);
-  tf.Property->SetScalarOpacityUnitDistance(u);
+  ConstantTF(scene.Tf, color, a, u);
+  scene.Mapper->SetOpacitySemanticsToVTKUnstructured();
   const double alphaIn = -std::expm1(-a / u);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
-  auto grid = UnitBlock(2).Grid();
-  mapper->SetInputData(grid);
   // Shifted so that no pixel centre lies in an interior face of the block
   // (TestBadInputFaceRays covers those rays). With an odd size (1x1) the
   // centre row would lie in the face y = 1/2, so that view is shifted in y too.
@@ -39,15 +37,13 @@ int TestBadInputSizes(int, char*[])
   AxisOrthoCamera(cam1, 1.0, AxisOrthoShift);
   cam1->SetFocalPoint(0.5 + AxisOrthoShift, 0.5 + dy1, 0.5);
   cam1->SetPosition(0.5 + AxisOrthoShift, 0.5 + dy1, 5.0);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
 
   // Max error of an n x n axis image against the analytic one (read in place).
   auto axisError = [&](int n, size_t& inside, size_t& bad, double dy) {
-    auto* arr = vtkFloatArray::SafeDownCast(mapper->GetFloatImage()->GetPointData()->GetScalars());
+    auto* arr =
+      vtkFloatArray::SafeDownCast(scene.Mapper->GetFloatImage()->GetPointData()->GetScalars());
     int dims[3];
-    mapper->GetFloatImage()->GetDimensions(dims);
+    scene.Mapper->GetFloatImage()->GetDimensions(dims);
     inside = bad = 0;
     if (!arr || dims[0] != n || dims[1] != n || arr->GetNumberOfTuples() != vtkIdType(n) * n)
     {
@@ -83,33 +79,33 @@ int TestBadInputSizes(int, char*[])
 
   // ---- 1x1 through RenderImage: the one pixel centre is the view centre.
   {
-    obs->Clear();
-    const int st = mapper->RenderImage(cam1, volume, 1, 1);
+    scene.Observer->Clear();
+    const int st = scene.Mapper->RenderImage(cam1, scene.Volume, 1, 1);
     size_t inside, bad;
     const double err = axisError(1, inside, bad, dy1);
-    const Image img = FloatImage(mapper);
+    const Image img = FloatImage(scene.Mapper);
     std::cout << "== RenderImage 1x1: status=" << st << " rgba=(" << (img.W ? img.At(0, 0, 0) : -1)
               << "," << (img.W ? img.At(0, 0, 1) : -1) << "," << (img.W ? img.At(0, 0, 2) : -1)
               << "," << (img.W ? img.At(0, 0, 3) : -1) << ") expected alpha " << alphaIn
               << " max error " << err << "\n";
-    ck.Check(st == 1 && !obs->GetError() && !obs->GetWarning(), "1x1: renders without messages");
+    ck.Check(st == 1 && scene.NoMessages(), "1x1: renders without messages");
     ck.Check(inside == 1 && err <= 1e-6, "1x1: the pixel equals the analytic value within 1e-6");
   }
 
   // ---- 4096x4096 through RenderImage.
   {
-    obs->Clear();
+    scene.Observer->Clear();
     const auto t0 = std::chrono::steady_clock::now();
-    const int st = mapper->RenderImage(cam, volume, 4096, 4096);
+    const int st = scene.Mapper->RenderImage(cam, scene.Volume, 4096, 4096);
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     size_t inside, bad;
     const double err = axisError(4096, inside, bad, 0.0);
-    std::cout << "== RenderImage 4096x4096: status=" << st << " time " << seconds
-              << " s (image " << mapper->GetLastImageTime() << " s), pixels inside " << inside
+    std::cout << "== RenderImage 4096x4096: status=" << st << " time " << seconds << " s (image "
+              << scene.Mapper->GetLastImageTime() << " s), pixels inside " << inside
               << " (expected 2048^2 = " << 2048 * 2048 << "), pixels off by > 1e-6: " << bad
               << ", max error " << err << "\n";
-    ck.Check(st == 1 && !obs->GetError() && !obs->GetWarning(), "4096: renders without messages");
+    ck.Check(st == 1 && scene.NoMessages(), "4096: renders without messages");
     ck.Check(inside == size_t(2048) * 2048, "4096: footprint of 2048x2048 pixels");
     ck.Check(err <= 1e-6, "4096: every pixel equals the analytic value within 1e-6");
   }
@@ -117,33 +113,26 @@ int TestBadInputSizes(int, char*[])
   // ---- Invalid sizes: an error, status 0, an empty image, no crash.
   for (auto wh : { std::make_pair(0, 0), std::make_pair(-3, 5), std::make_pair(7, -1) })
   {
-    obs->Clear();
-    const int st = mapper->RenderImage(cam, volume, wh.first, wh.second);
+    scene.Observer->Clear();
+    const int st = scene.Mapper->RenderImage(cam, scene.Volume, wh.first, wh.second);
     int dims[3];
-    mapper->GetFloatImage()->GetDimensions(dims);
-    vtkDataArray* arr = mapper->GetFloatImage()->GetPointData()->GetScalars();
-    std::cout << "== RenderImage " << wh.first << "x" << wh.second << ": status=" << st
-              << " dims " << dims[0] << "x" << dims[1] << " tuples "
-              << (arr ? arr->GetNumberOfTuples() : -1) << " error: '"
-              << Msg(obs->GetErrorMessage()) << "'\n";
-    ck.Check(st == 0 && obs->GetError(), "invalid size: an error and status 0");
+    scene.Mapper->GetFloatImage()->GetDimensions(dims);
+    vtkDataArray* arr = scene.Mapper->GetFloatImage()->GetPointData()->GetScalars();
+    std::cout << "== RenderImage " << wh.first << "x" << wh.second << ": status=" << st << " dims "
+              << dims[0] << "x" << dims[1] << " tuples " << (arr ? arr->GetNumberOfTuples() : -1)
+              << " error: '" << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+    ck.Check(st == 0 && scene.Observer->GetError(), "invalid size: an error and status 0");
     ck.Check(!arr || arr->GetNumberOfTuples() == 0, "invalid size: an empty image");
   }
 
   // ---- 1x1 on screen: the screen pixel equals the float pixel.
   {
-    vtkNew<vtkRenderer> ren;
-    ren->SetBackground(0, 0, 0);
-    ren->AddVolume(volume);
-    ren->SetActiveCamera(cam1);
-    vtkNew<vtkRenderWindow> win;
-    win->SetOffScreenRendering(1);
-    win->SetMultiSamples(0);
-    win->AddRenderer(ren);
-    win->SetSize(1, 1);
-    obs->Clear();
+    vtkSmartPointer<vtkRenderer> ren = BlackRenderer(cam1);
+    ren->AddVolume(scene.Volume);
+    vtkSmartPointer<vtkRenderWindow> win = OffscreenWindow(ren, 1, 1, 0);
+    scene.Observer->Clear();
     win->Render();
-    const Image fl = FloatImage(mapper);
+    const Image fl = FloatImage(scene.Mapper);
     const Image sc = Capture(win);
     std::cout << "== on screen 1x1: float image " << fl.W << "x" << fl.H << ", screen " << sc.W
               << "x" << sc.H << "\n";
@@ -162,8 +151,8 @@ int TestBadInputSizes(int, char*[])
       ck.Check(std::abs(fl.At(0, 0, 3) - alphaIn) <= 1e-6, "1x1 window: float alpha is analytic");
       ck.Check(e <= 1.5 / 255, "1x1 window: screen = float image within 1.5/255");
     }
-    ck.Check(!obs->GetError() && !obs->GetWarning(), "1x1 window: no messages");
-    mapper->ReleaseGraphicsResources(win);
+    ck.Check(scene.NoMessages(), "1x1 window: no messages");
+    scene.Mapper->ReleaseGraphicsResources(win);
   }
   return ck.Result();
 }

@@ -7,15 +7,17 @@
 // orthographic view of the unit cube (every ray inside crosses thickness 1,
 // entering at z = 1 where s = x + y/2 + 1/4), or against the image of the
 // equivalent sane function.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
-#include "vtkTestErrorObserver.h"
+#include "vtkCamera.h"
 
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <string>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 namespace
 {
@@ -62,20 +64,15 @@ double AxisError(const Image& img, const Expectation& expect, std::string& where
 int TestBadInputTF(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
-  mapper->SetCellOrdering(vtkHighOrderVolumeMapper::PER_PIXEL_SORT);
+  VolumeScene scene; // every case sets its own property
+  scene.Mapper->SetCellOrdering(vtkHighOrderVolumeMapper::PER_PIXEL_SORT);
   vtkNew<vtkCamera> axis, oblique;
   AxisOrthoCamera(axis, 1.0, AxisOrthoShift);
   ObliqueCamera(oblique);
 
   const MeshBuilder block = UnitBlock(2);
   auto grid = block.Grid();
-  mapper->SetInputData(grid);
+  scene.Mapper->SetInputData(grid);
 
   const char* semName[3] = { "GPU_COMPATIBLE", "VTK_UNSTRUCTURED", "RAW_EXTINCTION" };
 
@@ -85,13 +82,14 @@ int TestBadInputTF(int, char*[])
   {
     TF tf;
     DefaultTF(tf);
-    volume->SetProperty(tf.Property);
-    mapper->SetOpacitySemantics(sem);
-    obs->Clear();
-    defaultImage[sem] = Render(mapper, oblique, volume, N, N);
+    scene.Volume->SetProperty(tf.Property);
+    scene.Mapper->SetOpacitySemantics(sem);
+    scene.Observer->Clear();
+    defaultImage[sem] = Render(scene.Mapper, oblique, scene.Volume, N, N);
     const Sanity s = CheckImage(defaultImage[sem]);
     std::cout << "== default TF, " << semName[sem] << ": " << s.Str() << "\n";
-    ck.Check(!obs->GetWarning() && !obs->GetError() && s.Ok() && s.Covered > 500,
+    ck.Check(
+      !scene.Observer->GetWarning() && !scene.Observer->GetError() && s.Ok() && s.Covered > 500,
       std::string("default TF renders cleanly in ") + semName[sem]);
   }
 
@@ -103,20 +101,20 @@ int TestBadInputTF(int, char*[])
                    double obliqueTol) {
     TF tf;
     configure(tf);
-    volume->SetProperty(tf.Property);
-    mapper->SetOpacitySemantics(sem);
-    obs->Clear();
+    scene.Volume->SetProperty(tf.Property);
+    scene.Mapper->SetOpacitySemantics(sem);
+    scene.Observer->Clear();
     int st1 = -1, st2 = -1;
-    const Image ax = Render(mapper, axis, volume, N, N, &st1);
-    const std::string warn1 = obs->GetWarningMessage();
-    const bool warned = obs->GetWarning();
-    const bool erred = obs->GetError();
-    const Image ob = Render(mapper, oblique, volume, N, N, &st2);
+    const Image ax = Render(scene.Mapper, axis, scene.Volume, N, N, &st1);
+    const std::string warn1 = scene.Observer->GetWarningMessage();
+    const bool warned = scene.Observer->GetWarning();
+    const bool erred = scene.Observer->GetError();
+    const Image ob = Render(scene.Mapper, oblique, scene.Volume, N, N, &st2);
     const Sanity sa = CheckImage(ax), so = CheckImage(ob);
     std::cout << "== " << name << " [" << semName[sem] << "]\n    axis:    " << sa.Str()
-              << "\n    oblique: " << so.Str() << "\n    warning: '" << Msg(warn1)
-              << "' error: '" << Msg(obs->GetErrorMessage()) << "'\n";
-    ck.Check(st1 == 1 && st2 == 1 && !erred && !obs->GetError(),
+              << "\n    oblique: " << so.Str() << "\n    warning: '" << Msg(warn1) << "' error: '"
+              << Msg(scene.Observer->GetErrorMessage()) << "'\n";
+    ck.Check(st1 == 1 && st2 == 1 && !erred && !scene.Observer->GetError(),
       name + ": renders (status 1), no error");
     ck.Check(sa.Ok() && so.Ok(), name + ": finite images, 0 <= alpha <= 1, 0 <= rgb <= alpha");
     if (expectWarning >= 0)
@@ -168,19 +166,23 @@ int TestBadInputTF(int, char*[])
     };
   };
 
-  // ---- Opacity 1 everywhere.
   const double u = 0.5;
+  // Constant colour, opacity a0 at s = 0 and a1 at s = 1.75, unit distance u.
+  auto constantColorRamp = [&](double a0, double a1) {
+    return [&, a0, a1](TF& tf) {
+      constantColor(tf);
+      tf.Opacity->AddPoint(0.0, a0);
+      tf.Opacity->AddPoint(1.75, a1);
+      tf.Property->SetScalarOpacityUnitDistance(u);
+    };
+  };
+
+  // ---- Opacity 1 everywhere.
   const double opaqueAlpha[3] = { 1.0, -std::expm1(-1.0 / u), -std::expm1(-1.0) };
   Image opaque[3];
   for (int sem = 0; sem < 3; ++sem)
   {
-    opaque[sem] = runCase("opacity 1 everywhere, constant colour", sem,
-      [&](TF& tf) {
-        constantColor(tf);
-        tf.Opacity->AddPoint(0.0, 1.0);
-        tf.Opacity->AddPoint(1.75, 1.0);
-        tf.Property->SetScalarOpacityUnitDistance(u);
-      },
+    opaque[sem] = runCase("opacity 1 everywhere, constant colour", sem, constantColorRamp(1.0, 1.0),
       0, uniform(opaqueAlpha[sem]), 1e-6, nullptr, 0);
   }
   runCase("opacity 1 everywhere, DefaultTF colours (GPU: the entry colour)", 0,
@@ -195,30 +197,12 @@ int TestBadInputTF(int, char*[])
   // ---- Opacity outside [0,1].
   for (int sem = 0; sem < 2; ++sem)
   {
-    runCase("opacity 5 everywhere (clamped to 1)", sem,
-      [&](TF& tf) {
-        constantColor(tf);
-        tf.Opacity->AddPoint(0.0, 5.0);
-        tf.Opacity->AddPoint(1.75, 5.0);
-        tf.Property->SetScalarOpacityUnitDistance(u);
-      },
-      1, uniform(opaqueAlpha[sem]), 1e-6, nullptr, 0);
-    runCase("opacity -0.5 everywhere (clamped to 0: invisible)", sem,
-      [&](TF& tf) {
-        constantColor(tf);
-        tf.Opacity->AddPoint(0.0, -0.5);
-        tf.Opacity->AddPoint(1.75, -0.5);
-        tf.Property->SetScalarOpacityUnitDistance(u);
-      },
+    runCase("opacity 5 everywhere (clamped to 1)", sem, constantColorRamp(5.0, 5.0), 1,
+      uniform(opaqueAlpha[sem]), 1e-6, nullptr, 0);
+    runCase("opacity -0.5 everywhere (clamped to 0: invisible)", sem, constantColorRamp(-0.5, -0.5),
       1, uniform(0.0), 0.0, nullptr, 0);
-    runCase("opacity ramp -0.5 -> 1.7", sem,
-      [&](TF& tf) {
-        constantColor(tf);
-        tf.Opacity->AddPoint(0.0, -0.5);
-        tf.Opacity->AddPoint(1.75, 1.7);
-        tf.Property->SetScalarOpacityUnitDistance(u);
-      },
-      1, nullptr, 0, nullptr, 0);
+    runCase(
+      "opacity ramp -0.5 -> 1.7", sem, constantColorRamp(-0.5, 1.7), 1, nullptr, 0, nullptr, 0);
   }
 
   // ---- A single node each: constant functions.
@@ -298,7 +282,7 @@ int TestBadInputTF(int, char*[])
       s *= scale;
     }
     auto sg = scaled.Grid();
-    mapper->SetInputData(sg);
+    scene.Mapper->SetInputData(sg);
     for (int sem = 0; sem < 3; sem += 1)
     {
       runCase("scalars and TF nodes scaled by " + Fmt(scale), sem,
@@ -324,7 +308,7 @@ int TestBadInputTF(int, char*[])
         0, nullptr, 0, &defaultImage[sem], 1e-6);
     }
   }
-  mapper->SetInputData(grid);
+  scene.Mapper->SetInputData(grid);
 
   // ---- Node positions +-1.5e308 (their distance overflows to +inf): VTK
   // evaluates such a function to its left node value (0.3, (0.2,0.4,0.6)).

@@ -23,21 +23,27 @@
 // linear there), where its integrator is exact again: our image of B must
 // match VTK's image of that equivalent function, and must change appreciably
 // when the peak is removed, while VTK's image of B does not.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
 #include "vtkPointData.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTestErrorObserver.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridLinearRayIntegrator.h"
 #include "vtkUnstructuredGridVolumeRayCastMapper.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
-#include <chrono>
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 namespace
 {
@@ -92,13 +98,9 @@ double MaxOf(const Row& r, double DiffStats::*m)
 int TestCompareVTK(int argc, char* argv[])
 {
   Checker ck;
-  const std::string file = ArgAfter(argc, argv, "-D", ".") + "/bracket_tet4_ccx.vtu";
+  std::string file;
+  vtkSmartPointer<vtkUnstructuredGrid> grid = LoadBracket(argc, argv, &file);
   const std::string tmp = ArgAfter(argc, argv, "-T", ".");
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
-  grid->GetPointData()->SetActiveScalars("von_mises");
   double range[2] = { 0, 0 };
   if (grid->GetPointData()->GetScalars())
   {
@@ -121,24 +123,14 @@ int TestCompareVTK(int argc, char* argv[])
   cam->SetClippingRange(50, 500);
 
   // Our mapper.
-  vtkNew<vtkHighOrderVolumeMapper> ours;
+  VolumeScene scene;
+  vtkHighOrderVolumeMapper* ours = scene.Mapper;
   ours->SetInputData(grid);
   ours->SetOpacitySemanticsToVTKUnstructured();
   ours->SetCellOrderingToPerPixelSort();
-  vtkNew<vtkTest::ErrorObserver> obs;
-  ours->AddObserver(vtkCommand::ErrorEvent, obs);
-  ours->AddObserver(vtkCommand::WarningEvent, obs);
-  vtkNew<vtkVolume> ourVolume;
-  ourVolume->SetMapper(ours);
-  vtkNew<vtkRenderer> ourRen;
-  ourRen->SetBackground(0, 0, 0);
-  ourRen->SetActiveCamera(cam);
-  ourRen->AddVolume(ourVolume);
-  vtkNew<vtkRenderWindow> ourWin;
-  ourWin->SetOffScreenRendering(1);
-  ourWin->SetMultiSamples(0);
-  ourWin->SetSize(size, size);
-  ourWin->AddRenderer(ourRen);
+  vtkSmartPointer<vtkRenderer> ourRen = BlackRenderer(cam);
+  ourRen->AddVolume(scene.Volume);
+  vtkSmartPointer<vtkRenderWindow> ourWin = OffscreenWindow(ourRen, size, size, 0);
 
   // VTK's ray caster with the linear integrator.
   vtkNew<vtkUnstructuredGridVolumeRayCastMapper> vtkMapper;
@@ -149,15 +141,9 @@ int TestCompareVTK(int argc, char* argv[])
   vtkMapper->SetImageSampleDistance(1.0);
   vtkNew<vtkVolume> vtkVol;
   vtkVol->SetMapper(vtkMapper);
-  vtkNew<vtkRenderer> vtkRen;
-  vtkRen->SetBackground(0, 0, 0);
-  vtkRen->SetActiveCamera(cam);
+  vtkSmartPointer<vtkRenderer> vtkRen = BlackRenderer(cam);
   vtkRen->AddVolume(vtkVol);
-  vtkNew<vtkRenderWindow> vtkWin;
-  vtkWin->SetOffScreenRendering(1);
-  vtkWin->SetMultiSamples(0);
-  vtkWin->SetSize(size, size);
-  vtkWin->AddRenderer(vtkRen);
+  vtkSmartPointer<vtkRenderWindow> vtkWin = OffscreenWindow(vtkRen, size, size, 0);
 
   const double u = 3.0;
   struct Result
@@ -167,9 +153,9 @@ int TestCompareVTK(int argc, char* argv[])
   };
   auto renderBoth = [&](const std::string& name, const std::string& tag, TF& tf) {
     Result r;
-    ourVolume->SetProperty(tf.Property);
+    scene.Volume->SetProperty(tf.Property);
     vtkVol->SetProperty(tf.Property);
-    obs->Clear();
+    scene.Observer->Clear();
     auto t0 = std::chrono::steady_clock::now();
     ourWin->Render();
     r.OurTime = Seconds(t0);
@@ -188,7 +174,7 @@ int TestCompareVTK(int argc, char* argv[])
               << "\n  mean intensity (r+g+b)/3: ours float " << MeanIntensity(r.OurFloat)
               << ", ours screen " << MeanIntensity(r.OurScreen) << ", VTK screen "
               << MeanIntensity(r.VtkScreen) << "\n";
-    ck.Check(!obs->GetError() && !obs->GetWarning(), name + ": no messages from our mapper");
+    ck.Check(scene.NoMessages(), name + ": no messages from our mapper");
     ck.Check(s.Ok() && s.Covered > 0.2 * size * size, name + ": our image is sane and covers > 20%");
     ck.Check(ours->GetWitnessViolations() == 0,
       name + ": no overlapping cells on any ray (per-pixel witness 0)");
@@ -197,15 +183,7 @@ int TestCompareVTK(int argc, char* argv[])
 
   // ---- Case A: opacity nodes = colour nodes.
   TF a;
-  const double nodesA[5][5] = { { 0.0, 0.10, 0.20, 0.90, 0.03 }, { 8.0, 0.10, 0.80, 0.80, 0.10 },
-    { 30.0, 0.30, 0.90, 0.20, 0.30 }, { 80.0, 0.95, 0.80, 0.10, 0.60 },
-    { 170.0, 0.90, 0.10, 0.10, 0.90 } };
-  for (const auto& nd : nodesA)
-  {
-    a.Color->AddRGBPoint(nd[0], nd[1], nd[2], nd[3]);
-    a.Opacity->AddPoint(nd[0], nd[4]);
-  }
-  a.Property->SetScalarOpacityUnitDistance(u);
+  BracketTF(a, u);
   const Result ra = renderBoth("Case A (opacity nodes are colour nodes)", "A", a);
 
   // ---- Case B: an opacity peak inside one colour interval.
@@ -253,8 +231,8 @@ int TestCompareVTK(int argc, char* argv[])
   auto shiftedImage = [&](TF& tf, double sx, double sy) {
     shifted->DeepCopy(cam);
     shifted->SetWindowCenter(2.0 * sx / size, 2.0 * sy / size);
-    ourVolume->SetProperty(tf.Property);
-    ours->RenderImage(shifted, ourVolume, size, size);
+    scene.Volume->SetProperty(tf.Property);
+    ours->RenderImage(shifted, scene.Volume, size, size);
     return FloatImage(ours);
   };
   std::cout << "\n  our float (rays shifted by (sx,sy) pixels) vs VTK screen, mean |diff| x255 R/G/B:\n";

@@ -14,44 +14,32 @@
 // A perspective oblique view with a slanted slab
 // through the volume: alpha never grows, is unchanged where the slab is
 // absent from the depth buffer, and drops where it cuts the rays.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTestErrorObserver.h"
 #include "vtkTransform.h"
 
+#include <cmath>
 #include <iostream>
+#include <vector>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 int TestOpenGLDepth(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  TF tf;
-  const double a = 0.5, u = 0.5;
-  tf.Color->AddRGBPoint(0.0, 0.9, 0.6, 0.3);
-  tf.Opacity->AddPoint(0.0, a);
-  tf.Property->SetScalarOpacityUnitDistance(u);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
-  auto grid = UnitBlock(2).Grid();
-  mapper->SetInputData(grid);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
+  VolumeScene scene(UnitBlock(2).Grid());
+  const double a = 0.5, u = 0.5, orange[3] = { 0.9, 0.6, 0.3 };
+  ConstantTF(scene.Tf, orange, a, u);
 
   const int n = 128;
   vtkNew<vtkCamera> cam;
   AxisOrthoCamera(cam, 1.0, AxisOrthoShift);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0, 0, 0);
-  ren->SetActiveCamera(cam);
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->AddRenderer(ren);
-  win->SetSize(n, n);
+  vtkSmartPointer<vtkRenderer> ren = BlackRenderer(cam);
+  vtkSmartPointer<vtkRenderWindow> win = OffscreenWindow(ren, n, n);
 
   const double green[3] = { 0.1, 0.7, 0.2 };
   const double plateF[6] = { -0.3, 0.25, -0.3, 1.3, 1.2, 1.4 };
@@ -74,29 +62,29 @@ int TestOpenGLDepth(int, char*[])
     const bool stretched = config == 2;
     const double cutThickness = stretched ? 0.475 : 0.45;
     win->SetMultiSamples(samples);
-    volume->SetScale(1, 1, stretched ? 2 : 1);
-    volume->SetPosition(0, 0, stretched ? -0.5 : 0);
+    scene.Volume->SetScale(1, 1, stretched ? 2 : 1);
+    scene.Volume->SetPosition(0, 0, stretched ? -0.5 : 0);
     vtkActor* F = stretched ? F2.Get() : F1.Get();
     vtkActor* B = stretched ? B2.Get() : B1.Get();
     ren->RemoveAllViewProps();
     std::cout << "== window multisamples " << samples
               << (stretched ? ", volume stretched x2 in z (world z in [-0.5, 1.5])" : "") << "\n";
     // References: volume alone (on screen and RenderImage), plates alone.
-    ren->AddVolume(volume);
-    obs->Clear();
+    ren->AddVolume(scene.Volume);
+    scene.Observer->Clear();
     win->Render();
-    const Image noPlates = FloatImage(mapper);
-    ren->RemoveVolume(volume);
+    const Image noPlates = FloatImage(scene.Mapper);
+    ren->RemoveVolume(scene.Volume);
     ren->AddActor(F);
     ren->AddActor(M);
     ren->AddActor(B);
     win->Render();
     const Image platesOnly = Capture(win);
-    ren->AddVolume(volume);
+    ren->AddVolume(scene.Volume);
     win->Render();
-    const Image withPlates = FloatImage(mapper);
+    const Image withPlates = FloatImage(scene.Mapper);
     const Image screen = Capture(win);
-    ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
+    ck.Check(scene.NoMessages(), "no messages");
 
     const double alphaFull = 1.0 - std::pow(1.0 - a, 1.0 / u);
     const double alphaCut = 1.0 - std::pow(1.0 - a, cutThickness / u);
@@ -174,34 +162,28 @@ int TestOpenGLDepth(int, char*[])
 
   // UseDepthBuffer off: the plates do not clip.
   win->SetMultiSamples(0);
-  volume->SetScale(1, 1, 1);
-  volume->SetPosition(0, 0, 0);
+  scene.Volume->SetScale(1, 1, 1);
+  scene.Volume->SetPosition(0, 0, 0);
   ren->RemoveAllViewProps();
-  ren->AddVolume(volume);
+  ren->AddVolume(scene.Volume);
   win->Render();
-  const Image noPlates = FloatImage(mapper);
+  const Image noPlates = FloatImage(scene.Mapper);
   ren->AddActor(F1);
   ren->AddActor(M);
   ren->AddActor(B1);
-  mapper->UseDepthBufferOff();
+  scene.Mapper->UseDepthBufferOff();
   win->Render();
-  const DiffStats off = Diff(FloatImage(mapper), noPlates);
+  const DiffStats off = Diff(FloatImage(scene.Mapper), noPlates);
   std::cout << "== UseDepthBuffer off, with plates vs no plates: " << off.Str() << "\n";
   ck.Check(off.Max == 0.0, "UseDepthBuffer off: the plates do not clip the float image");
-  mapper->UseDepthBufferOn();
+  scene.Mapper->UseDepthBufferOn();
 
   // Perspective oblique view, a slanted slab through the volume.
   {
-    vtkNew<vtkRenderer> pren;
-    pren->SetBackground(0, 0, 0);
     vtkNew<vtkCamera> pcam;
     ObliqueCamera(pcam);
-    pren->SetActiveCamera(pcam);
-    vtkNew<vtkRenderWindow> pwin;
-    pwin->SetOffScreenRendering(1);
-    pwin->SetMultiSamples(0);
-    pwin->AddRenderer(pren);
-    pwin->SetSize(200, 150);
+    vtkSmartPointer<vtkRenderer> pren = BlackRenderer(pcam);
+    vtkSmartPointer<vtkRenderWindow> pwin = OffscreenWindow(pren, 200, 150, 0);
     const double slabBounds[6] = { -0.5, 0.5, -0.5, 0.5, -0.04, 0.04 };
     auto slab = BoxActor(slabBounds, green);
     vtkNew<vtkTransform> t;
@@ -209,17 +191,17 @@ int TestOpenGLDepth(int, char*[])
     t->RotateX(35);
     t->RotateY(-20);
     slab->SetUserTransform(t);
-    pren->AddVolume(volume);
+    pren->AddVolume(scene.Volume);
     pwin->Render();
-    const Image free = FloatImage(mapper);
-    pren->RemoveVolume(volume);
+    const Image free = FloatImage(scene.Mapper);
+    pren->RemoveVolume(scene.Volume);
     pren->AddActor(slab);
     pwin->Render();
     std::vector<float> z(200 * 150);
     pwin->GetZbufferData(0, 0, 199, 149, z.data());
-    pren->AddVolume(volume);
+    pren->AddVolume(scene.Volume);
     pwin->Render();
-    const Image clipped = FloatImage(mapper);
+    const Image clipped = FloatImage(scene.Mapper);
     size_t slabPixels = 0, reduced = 0, grew = 0, changedNoSlab = 0;
     double maxDrop = 0;
     for (int j = 0; j < 150; ++j)
@@ -248,9 +230,9 @@ int TestOpenGLDepth(int, char*[])
     ck.Check(slabPixels > 1000 && reduced > 500, "the slab cuts the volume at many pixels");
     ck.Check(grew == 0, "opaque geometry never increases the volume's alpha");
     ck.Check(changedNoSlab == 0, "pixels without geometry are unchanged");
-    mapper->ReleaseGraphicsResources(pwin);
+    scene.Mapper->ReleaseGraphicsResources(pwin);
   }
-  ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
-  mapper->ReleaseGraphicsResources(win);
+  ck.Check(scene.NoMessages(), "no messages");
+  scene.Mapper->ReleaseGraphicsResources(win);
   return ck.Result();
 }

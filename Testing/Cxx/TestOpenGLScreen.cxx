@@ -3,14 +3,15 @@
 // float RGB) within 1.5/255 per channel; the on-screen float image equals
 // RenderImage's for the same camera and size; after a window resize (odd
 // sizes) both follow the new size.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkCamera.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTestErrorObserver.h"
 
 #include <iostream>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 namespace
 {
@@ -25,45 +26,32 @@ DiffStats ScreenVsFloat(const Image& screen, const Image& fl, int c1)
 int TestOpenGLScreen(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  TF tf;
-  DefaultTF(tf);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
-  auto grid = UnitBlock(3).Grid();
-  mapper->SetInputData(grid);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
+  VolumeScene scene(UnitBlock(3).Grid());
+  DefaultTF(scene.Tf);
 
   vtkNew<vtkCamera> cam;
   ObliqueCamera(cam);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0, 0, 0);
-  ren->SetActiveCamera(cam);
-  ren->AddVolume(volume);
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetAlphaBitPlanes(1);
-  win->AddRenderer(ren);
-
+  vtkSmartPointer<vtkRenderer> ren = BlackRenderer(cam);
+  ren->AddVolume(scene.Volume);
   const int sizes[3][2] = { { 240, 180 }, { 131, 97 }, { 180, 240 } };
+  vtkSmartPointer<vtkRenderWindow> win = OffscreenWindow(ren, sizes[0][0], sizes[0][1]);
+  win->SetAlphaBitPlanes(1);
+
   for (int semantics : { 0, 1 })
   {
-    mapper->SetOpacitySemantics(semantics);
+    scene.Mapper->SetOpacitySemantics(semantics);
     for (const auto& sz : sizes)
     {
       win->SetSize(sz[0], sz[1]);
-      obs->Clear();
+      scene.Observer->Clear();
       win->Render();
-      const Image fl = FloatImage(mapper);
+      const Image fl = FloatImage(scene.Mapper);
       const Image screen = Capture(win, true);
       const Sanity s = CheckImage(fl);
       std::cout << "== " << (semantics ? "VTK_UNSTRUCTURED" : "GPU_COMPATIBLE") << " window "
                 << sz[0] << "x" << sz[1] << ": float " << fl.W << "x" << fl.H << ", screen "
                 << screen.W << "x" << screen.H << "; " << s.Str() << "\n";
-      ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
+      ck.Check(scene.NoMessages(), "no messages");
       ck.Check(fl.W == sz[0] && fl.H == sz[1] && screen.W == sz[0] && screen.H == sz[1],
         "float image and screen have the window size");
       ck.Check(s.Ok() && s.Covered > 0.1 * sz[0] * sz[1], "float image is sane and covers > 10%");
@@ -87,14 +75,14 @@ int TestOpenGLScreen(int, char*[])
         ck.Check(alpha.Max <= 1.5 / 255, "framebuffer alpha = float alpha within 1.5/255");
       }
       // RenderImage with the same camera and size: the same float image.
-      const int st = mapper->RenderImage(cam, volume, sz[0], sz[1]);
-      const Image offline = FloatImage(mapper);
+      const int st = scene.Mapper->RenderImage(cam, scene.Volume, sz[0], sz[1]);
+      const Image offline = FloatImage(scene.Mapper);
       const DiffStats d = Diff(offline, fl);
       std::cout << "  RenderImage vs on-screen float image: " << d.Str() << "\n";
       ck.Check(st == 1 && d.Max <= 1e-7,
         "on-screen float image = RenderImage's for the same camera and size");
     }
   }
-  mapper->ReleaseGraphicsResources(win);
+  scene.Mapper->ReleaseGraphicsResources(win);
   return ck.Result();
 }

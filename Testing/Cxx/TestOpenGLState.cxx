@@ -7,18 +7,26 @@
 // the volume again restores the original frame exactly. Then render ->
 // mapper->ReleaseGraphicsResources(win) -> render gives identical screen and
 // float images.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkActor.h"
 #include "vtkActor2D.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCoordinate.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper2D.h"
 #include "vtkProperty2D.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTestErrorObserver.h"
 
+#include <cmath>
 #include <iostream>
+#include <string>
+#include <vector>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 namespace
 {
@@ -56,17 +64,8 @@ size_t CountDiff(const Image& a, const Image& b, const Image* fl, size_t& consid
 int TestOpenGLState(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  TF tf;
-  DefaultTF(tf);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
-  auto grid = UnitBlock(2).Grid();
-  mapper->SetInputData(grid);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
+  VolumeScene scene(UnitBlock(2).Grid());
+  DefaultTF(scene.Tf);
 
   vtkNew<vtkCamera> cam;
   cam->SetFocalPoint(1.0, 0.5, 0.5);
@@ -77,11 +76,7 @@ int TestOpenGLState(int, char*[])
   vtkNew<vtkRenderer> ren;
   ren->SetBackground(0.1, 0.15, 0.2);
   ren->SetActiveCamera(cam);
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->AddRenderer(ren);
-  win->SetSize(220, 160);
+  vtkSmartPointer<vtkRenderWindow> win = OffscreenWindow(ren, 220, 160, 0);
 
   // Geometry to the right of the volume (x > 1.2), overlapping on screen.
   const double red[3] = { 0.9, 0.1, 0.1 }, blue[3] = { 0.1, 0.2, 0.9 },
@@ -122,19 +117,19 @@ int TestOpenGLState(int, char*[])
   std::cout << "== scene without the volume rendered twice: " << selfDiff << " pixels differ\n";
   ck.Check(selfDiff == 0, "(the scene alone is deterministic)");
 
-  ren->AddVolume(volume);
-  obs->Clear();
+  ren->AddVolume(scene.Volume);
+  scene.Observer->Clear();
   Image fl;
   std::vector<Image> frames;
   for (int f = 0; f < 3; ++f)
   {
     win->Render();
     frames.push_back(Capture(win));
-    fl = FloatImage(mapper);
+    fl = FloatImage(scene.Mapper);
   }
   const Sanity s = CheckImage(fl);
   std::cout << "== with the volume: " << s.Str() << "\n";
-  ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
+  ck.Check(scene.NoMessages(), "no messages");
   ck.Check(s.Ok() && s.Covered > 2000, "the volume is drawn");
   for (int f = 0; f < 3; ++f)
   {
@@ -166,34 +161,34 @@ int TestOpenGLState(int, char*[])
             << changed << "\n";
   ck.Check(covered > 1000 && changed > 0.95 * covered, "covered pixels show the volume");
 
-  ren->RemoveVolume(volume);
+  ren->RemoveVolume(scene.Volume);
   win->Render();
   n = CountDiff(Capture(win), a1, nullptr, considered, maxd);
   std::cout << "== volume removed again: " << n << " pixels differ from the original frame\n";
   ck.Check(n == 0, "removing the volume restores the original frame exactly");
 
   // Render -> ReleaseGraphicsResources -> render.
-  ren->AddVolume(volume);
+  ren->AddVolume(scene.Volume);
   win->Render();
   const Image r1 = Capture(win);
-  const Image f1 = FloatImage(mapper);
-  mapper->ReleaseGraphicsResources(win);
+  const Image f1 = FloatImage(scene.Mapper);
+  scene.Mapper->ReleaseGraphicsResources(win);
   win->Render();
   const Image r2 = Capture(win);
-  const Image f2 = FloatImage(mapper);
+  const Image f2 = FloatImage(scene.Mapper);
   n = CountDiff(r1, r2, nullptr, considered, maxd);
   const DiffStats fd = Diff(f1, f2);
   std::cout << "== render / ReleaseGraphicsResources / render: screen pixels differing " << n
             << " (max " << maxd * 255 << "/255), float " << fd.Str() << "\n";
   ck.Check(n == 0 && fd.Max == 0.0, "identical screen and float images after releasing resources");
   // Twice in a row, and once more after the window's own release.
-  mapper->ReleaseGraphicsResources(win);
-  mapper->ReleaseGraphicsResources(win);
+  scene.Mapper->ReleaseGraphicsResources(win);
+  scene.Mapper->ReleaseGraphicsResources(win);
   win->Render();
   n = CountDiff(r1, Capture(win), nullptr, considered, maxd);
   std::cout << "  after two releases in a row: " << n << " pixels differ\n";
   ck.Check(n == 0, "identical after releasing twice");
-  ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
-  mapper->ReleaseGraphicsResources(win);
+  ck.Check(scene.NoMessages(), "no messages");
+  scene.Mapper->ReleaseGraphicsResources(win);
   return ck.Result();
 }

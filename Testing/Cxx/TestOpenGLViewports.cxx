@@ -13,40 +13,28 @@
 // (2) The same volume in two side-by-side renderers with different cameras:
 // each half of the screen equals RenderImage for that camera and viewport
 // size within 1.5/255.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkCamera.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkTestErrorObserver.h"
 
+#include <cmath>
 #include <iostream>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 int TestOpenGLViewports(int, char*[])
 {
   Checker ck;
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  TF tf;
-  const double a = 0.5, u = 0.5;
-  tf.Color->AddRGBPoint(0.0, 0.9, 0.6, 0.3);
-  tf.Opacity->AddPoint(0.0, a);
-  tf.Property->SetScalarOpacityUnitDistance(u);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
-  auto grid = UnitBlock(2).Grid();
-  mapper->SetInputData(grid);
-  vtkNew<vtkTest::ErrorObserver> obs;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
+  VolumeScene scene(UnitBlock(2).Grid());
+  const double a = 0.5, u = 0.5, orange[3] = { 0.9, 0.6, 0.3 };
+  ConstantTF(scene.Tf, orange, a, u);
 
   // ---- (1) 2x2 grid.
   {
     const int W = 300, H = 200, w = 150, h = 100;
-    vtkNew<vtkRenderWindow> win;
-    win->SetOffScreenRendering(1);
-    win->SetMultiSamples(0);
-    win->SetSize(W, H);
+    vtkSmartPointer<vtkRenderWindow> win = OffscreenWindow(nullptr, W, H, 0);
     const double green[3] = { 0.1, 0.7, 0.2 }, grey[3] = { 0.5, 0.5, 0.5 };
 
     vtkNew<vtkRenderer> bl, br, tl, tr;
@@ -83,14 +71,14 @@ int TestOpenGLViewports(int, char*[])
 
     win->Render();
     const Image without = Capture(win);
-    tr->AddVolume(volume);
-    obs->Clear();
+    tr->AddVolume(scene.Volume);
+    scene.Observer->Clear();
     win->Render();
     const Image with = Capture(win);
-    const Image fl = FloatImage(mapper);
+    const Image fl = FloatImage(scene.Mapper);
     std::cout << "== 2x2 viewports " << W << "x" << H << ": float image " << fl.W << "x" << fl.H
               << " (expected " << w << "x" << h << ") " << CheckImage(fl).Str() << "\n";
-    ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
+    ck.Check(scene.NoMessages(), "no messages");
     ck.Check(fl.W == w && fl.H == h, "the float image has the top-right viewport's size");
     if (fl.W == w && fl.H == h)
     {
@@ -168,16 +156,13 @@ int TestOpenGLViewports(int, char*[])
         "the plate in the same viewport clips at z = 0.55 (depth read from the right viewport)");
       ck.Check(nOut > 1000 && errOut == 0, "nothing outside the cube's footprint");
     }
-    mapper->ReleaseGraphicsResources(win);
+    scene.Mapper->ReleaseGraphicsResources(win);
   }
 
   // ---- (2) One volume, two renderers, two cameras.
   {
     const int W = 320, H = 200, w = 160;
-    vtkNew<vtkRenderWindow> win;
-    win->SetOffScreenRendering(1);
-    win->SetMultiSamples(0);
-    win->SetSize(W, H);
+    vtkSmartPointer<vtkRenderWindow> win = OffscreenWindow(nullptr, W, H, 0);
     vtkNew<vtkRenderer> left, right;
     left->SetViewport(0, 0, 0.5, 1);
     right->SetViewport(0.5, 0, 1, 1);
@@ -188,18 +173,18 @@ int TestOpenGLViewports(int, char*[])
     AxisOrthoCamera(rc, 0.8, AxisOrthoShift);
     left->SetActiveCamera(lc);
     right->SetActiveCamera(rc);
-    left->AddVolume(volume);
-    right->AddVolume(volume);
+    left->AddVolume(scene.Volume);
+    right->AddVolume(scene.Volume);
     win->AddRenderer(left);
     win->AddRenderer(right);
-    obs->Clear();
+    scene.Observer->Clear();
     win->Render();
     const Image screen = Capture(win);
-    ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
-    mapper->RenderImage(lc, volume, w, H);
-    const Image fl = FloatImage(mapper);
-    mapper->RenderImage(rc, volume, w, H);
-    const Image fr = FloatImage(mapper);
+    ck.Check(scene.NoMessages(), "no messages");
+    scene.Mapper->RenderImage(lc, scene.Volume, w, H);
+    const Image fl = FloatImage(scene.Mapper);
+    scene.Mapper->RenderImage(rc, scene.Volume, w, H);
+    const Image fr = FloatImage(scene.Mapper);
     Image sl = Crop(screen, 0, 0, w, H), sr = Crop(screen, w, 0, w, H);
     const DiffStats dl = Diff(sl, fl, 0, 3, 1.5 / 255), dr = Diff(sr, fr, 0, 3, 1.5 / 255);
     // Swapped halves must not match (the test sees which view is where).
@@ -213,7 +198,7 @@ int TestOpenGLViewports(int, char*[])
     ck.Check(dl.Max <= 1.5 / 255, "left viewport = RenderImage(left camera, 160x200) within 1.5/255");
     ck.Check(dr.Max <= 1.5 / 255, "right viewport = RenderImage(right camera, 160x200) within 1.5/255");
     ck.Check(swapped.Max > 0.1, "(the two views differ)");
-    mapper->ReleaseGraphicsResources(win);
+    scene.Mapper->ReleaseGraphicsResources(win);
   }
   return ck.Result();
 }

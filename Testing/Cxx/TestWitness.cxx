@@ -17,17 +17,23 @@
 //    their max and mean are reported.
 // On a convex block of tets (vtkImageData -> vtkDataSetTriangleFilter) the
 // same quantities are reported for axis-aligned and oblique views.
-#include "hovTestMeshes2.h"
+#include "hovTestScenes.h"
 
+#include "vtkCamera.h"
 #include "vtkDataSetTriangleFilter.h"
-#include "vtkTestErrorObserver.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkUnstructuredGrid.h"
 
-#include <chrono>
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
+#include <string>
 
-using namespace hovTest2;
+using namespace hovTest;
 
 namespace
 {
@@ -99,36 +105,15 @@ void PrintRow(const std::string& name, const OrderResult& r)
 int TestWitness(int argc, char* argv[])
 {
   Checker ck;
-  vtkNew<vtkTest::ErrorObserver> obs;
 
   // ---- The bracket.
-  const std::string file = ArgAfter(argc, argv, "-D", ".") + "/bracket_tet4_ccx.vtu";
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkUnstructuredGrid* bracket = reader->GetOutput();
-  bracket->GetPointData()->SetActiveScalars("von_mises");
+  vtkSmartPointer<vtkUnstructuredGrid> bracket = LoadBracket(argc, argv);
   if (!ck.Check(bracket->GetNumberOfCells() == 56071, "bracket loaded (56071 cells)"))
   {
     return ck.Result();
   }
-  vtkNew<vtkHighOrderVolumeMapper> mapper;
-  mapper->AddObserver(vtkCommand::ErrorEvent, obs);
-  mapper->AddObserver(vtkCommand::WarningEvent, obs);
-  mapper->SetInputData(bracket);
-  TF tf;
-  const double nodes[5][5] = { { 0.0, 0.10, 0.20, 0.90, 0.03 }, { 8.0, 0.10, 0.80, 0.80, 0.10 },
-    { 30.0, 0.30, 0.90, 0.20, 0.30 }, { 80.0, 0.95, 0.80, 0.10, 0.60 },
-    { 170.0, 0.90, 0.10, 0.10, 0.90 } };
-  for (const auto& nd : nodes)
-  {
-    tf.Color->AddRGBPoint(nd[0], nd[1], nd[2], nd[3]);
-    tf.Opacity->AddPoint(nd[0], nd[4]);
-  }
-  tf.Property->SetScalarOpacityUnitDistance(3.0);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(tf.Property);
+  VolumeScene scene(bracket);
+  BracketTF(scene.Tf, 3.0);
 
   struct View
   {
@@ -146,7 +131,7 @@ int TestWitness(int argc, char* argv[])
   PrintHeader();
   vtkIdType maxObliqueWitness = 0;
   int obliqueWithViolations = 0;
-  obs->Clear();
+  scene.Observer->Clear();
   for (const View& v : views)
   {
     vtkNew<vtkCamera> cam;
@@ -155,7 +140,7 @@ int TestWitness(int argc, char* argv[])
     cam->SetViewUp(v.Up);
     cam->SetViewAngle(40);
     cam->SetClippingRange(20, 600);
-    const OrderResult r = CompareOrders(mapper, cam, volume, size, size);
+    const OrderResult r = CompareOrders(scene.Mapper, cam, scene.Volume, size, size);
     PrintRow(v.Name, r);
     const bool oblique = std::string(v.Name).rfind("oblique", 0) == 0;
     if (oblique)
@@ -175,7 +160,7 @@ int TestWitness(int argc, char* argv[])
     "VISIBILITY_SORT (cell centres) is wrong somewhere in some oblique view: witness > 0 in " +
       std::to_string(obliqueWithViolations) + " of 4 oblique views (max " +
       std::to_string(maxObliqueWitness) + ")");
-  ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages: '" + Msg(obs->GetWarningMessage()) + "'");
+  ck.Check(scene.NoMessages(), "no messages: '" + Msg(scene.Observer->GetWarningMessage()) + "'");
 
   // ---- A convex block: 12x12x12 voxels split by vtkDataSetTriangleFilter.
   vtkNew<vtkImageData> voxels;
@@ -194,10 +179,10 @@ int TestWitness(int argc, char* argv[])
   tri->SetInputData(voxels);
   tri->Update();
   vtkUnstructuredGrid* block = tri->GetOutput();
-  mapper->SetInputData(block);
+  scene.Mapper->SetInputData(block);
   TF btf;
   DefaultTF(btf, 0.3);
-  volume->SetProperty(btf.Property);
+  scene.Volume->SetProperty(btf.Property);
   std::cout << "\n== convex block: " << block->GetNumberOfCells()
             << " tets (vtkDataSetTriangleFilter of 12^3 voxels), " << 240 << "x" << 240 << "\n";
   PrintHeader();
@@ -216,7 +201,7 @@ int TestWitness(int argc, char* argv[])
     { "axis -x, perspective", false, { 3.2, 0.5 + e, 0.5 + f }, { 0.5, 0.5 + e, 0.5 + f } },
     { "oblique, perspective", false, { 2.6, 1.9, 3.1 }, { 0.5, 0.5, 0.5 } },
     { "oblique, orthographic", true, { 2.6, 1.9, 3.1 }, { 0.5, 0.5, 0.5 } } };
-  obs->Clear();
+  scene.Observer->Clear();
   for (const BlockView& v : bviews)
   {
     vtkNew<vtkCamera> cam;
@@ -228,7 +213,7 @@ int TestWitness(int argc, char* argv[])
     cam->SetParallelScale(0.9);
     cam->SetClippingRange(0.5, 10);
     Image sortImage;
-    const OrderResult r = CompareOrders(mapper, cam, volume, 240, 240, &sortImage);
+    const OrderResult r = CompareOrders(scene.Mapper, cam, scene.Volume, 240, 240, &sortImage);
     PrintRow(v.Name, r);
     ck.Check(r.WitnessPixel == 0, std::string(v.Name) + ": PER_PIXEL_SORT witness is 0");
     ck.Check(r.AlphaMax <= 1e-6, std::string(v.Name) + ": alpha is the same in both orderings");
@@ -240,6 +225,6 @@ int TestWitness(int argc, char* argv[])
         std::string(v.Name) + ": no violation -> the two orderings give the same image");
     }
   }
-  ck.Check(!obs->GetError() && !obs->GetWarning(), "no messages");
+  ck.Check(scene.NoMessages(), "no messages");
   return ck.Result();
 }

@@ -30,6 +30,10 @@
  * Semantics / emission codes are the mapper's enum values
  * (0 GPU_COMPATIBLE, 1 VTK_UNSTRUCTURED, 2 RAW_EXTINCTION; 0 WILLIAMS_MAX,
  * 1 WILHELMS_VAN_GELDER). GPU-compatible semantics requires a(s) < 1.
+ *
+ * Sources: hovTestReference.cxx (the ray integral), hovTestReferenceGeometry.cxx
+ * (cameras, rays, intersections), hovTestReferenceMeshes.cxx (meshes, float
+ * image access); hovTestReferenceVector.h is their 3-vector arithmetic.
  */
 #ifndef hovTestReference_h
 #define hovTestReference_h

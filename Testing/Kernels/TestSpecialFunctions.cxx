@@ -80,6 +80,18 @@ const std::vector<double>& Arguments()
     1.0, 1.5, 2.0, 3.0, 5.0, 7.5, 10.0, 26.0, 50.0, 100.0, 1e3, 9999.0, 1e5, 1e8, 1e150, 1e300 };
   return v;
 }
+
+/// @p f (called @p name) against its reference @p ref at x: the relative error
+/// is recorded in @p worst and must be within SpecialFunctionRel.
+void ExpectMatchesReference(
+  const char* name, double (*f)(double), Mp (*ref)(double), double x, Worst& worst)
+{
+  SCOPED_TRACE("x=" + Str(x));
+  const double got = f(x);
+  const double e = hovtest::RelErr(got, ref(x));
+  worst.Add(e, "x=" + Str(x));
+  EXPECT_LE(e, Tolerances.SpecialFunctionRel) << name << "(" << Str(x) << ") = " << Str(got);
+}
 }
 
 TEST(SpecialFunctions, ErfcxMatchesReference)
@@ -93,11 +105,7 @@ TEST(SpecialFunctions, ErfcxMatchesReference)
       {
         continue; // erfcx(x) ~ 2 exp(x^2) overflows: not used by the kernels
       }
-      SCOPED_TRACE("x=" + Str(x));
-      const double got = hov::Erfcx(x);
-      const double e = hovtest::RelErr(got, ReferenceErfcx(x));
-      worst.Add(e, "x=" + Str(x));
-      EXPECT_LE(e, Tolerances.SpecialFunctionRel) << "Erfcx(" << Str(x) << ") = " << Str(got);
+      ExpectMatchesReference("Erfcx", hov::Erfcx, ReferenceErfcx, x, worst);
     }
   }
   hovtest::ReportMeasured("Erfcx relative error", worst);
@@ -110,11 +118,7 @@ TEST(SpecialFunctions, DawsonMatchesReference)
   {
     for (double x : { x0, -x0 })
     {
-      SCOPED_TRACE("x=" + Str(x));
-      const double got = hov::Dawson(x);
-      const double e = hovtest::RelErr(got, ReferenceDawson(x));
-      worst.Add(e, "x=" + Str(x));
-      EXPECT_LE(e, Tolerances.SpecialFunctionRel) << "Dawson(" << Str(x) << ") = " << Str(got);
+      ExpectMatchesReference("Dawson", hov::Dawson, ReferenceDawson, x, worst);
     }
   }
   hovtest::ReportMeasured("Dawson relative error", worst);

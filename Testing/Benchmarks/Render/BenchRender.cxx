@@ -20,408 +20,32 @@
 //                       [--mesh bracket|rt|all] [--skip-raycast-large] [--out DIR]
 // Run under xvfb-run -a -s "-screen 0 1280x1024x24" (Debian's VTK renders only via GLX).
 // Exit status: 0 if every render succeeded without VTK errors and gave a non-black image.
+//
+// Sources: this file (options, main), BenchRenderScene.cxx (meshes, transfer function,
+// camera), BenchRenderRun.cxx (one timed run), BenchRenderTable.cxx (the table).
+
+#include "BenchRender.h"
 
 #include "vtkHighOrderVolumeMapper.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkCamera.h"
-#include "vtkCellType.h"
-#include "vtkColorTransferFunction.h"
-#include "vtkCommand.h"
-#include "vtkDataArray.h"
-#include "vtkDataSetTriangleFilter.h"
-#include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
-#include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
 #include "vtkProjectedTetrahedraMapper.h"
-#include "vtkRTAnalyticSource.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 #include "vtkSMPTools.h"
-#include "vtkSmartPointer.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkUnstructuredGrid.h"
 #include "vtkUnstructuredGridLinearRayIntegrator.h"
 #include "vtkUnstructuredGridVolumeRayCastMapper.h"
 #include "vtkVersion.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <functional>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#ifndef HOV_BENCH_DATA_DIR
-#define HOV_BENCH_DATA_DIR "."
-#endif
+using namespace hovBench;
 
 namespace
 {
-
-struct Options
-{
-  std::string DataDir = HOV_BENCH_DATA_DIR;
-  std::string OutDir; // empty: no images written
-  std::string Meshes = "all";
-  int Frames = 3;
-  int Size = 512;
-  int Extent = 24;
-  double AzimuthStep = 7.0;
-  bool SkipRayCastLarge = false;
-};
-
-struct Mesh
-{
-  std::string Name;
-  vtkSmartPointer<vtkUnstructuredGrid> Grid;
-  std::string Array;
-  double Range[2] = { 0, 1 };
-  double UnitDistance = 1.0;
-  vtkIdType Tetras = 0;
-};
-
-struct Row
-{
-  std::string Mesh;
-  std::string Mapper;
-  std::string Key; // hov_vis, hov_pix, pt, rc
-  bool Ran = false;
-  bool Ok = true;
-  std::string Problem;
-  double First = 0, Rotating = 0, Same = 0;
-  double CpuRotating = -1; // our mapper: median GetLastImageTime() of the rotating frames
-  vtkIdType Witness = -1;  // our mapper: witness violations of the last rotating frame
-  double Coverage = 0;     // fraction of non-black pixels of the last frame
-};
-
-/// Collects VTK errors of the objects it observes (the message is not printed twice).
-class ErrorCounter
-{
-public:
-  ErrorCounter() { this->Callback->SetClientData(this); this->Callback->SetCallback(&ErrorCounter::OnEvent); }
-  void Watch(vtkObject* obj) { obj->AddObserver(vtkCommand::ErrorEvent, this->Callback); }
-  std::vector<std::string> Messages;
-
-private:
-  static void OnEvent(vtkObject* caller, unsigned long, void* clientData, void* callData)
-  {
-    auto* self = static_cast<ErrorCounter*>(clientData);
-    std::string msg = callData ? static_cast<const char*>(callData) : "";
-    while (!msg.empty() && (msg.back() == '\n' || msg.back() == '\r'))
-    {
-      msg.pop_back();
-    }
-    self->Messages.push_back(std::string(caller->GetClassName()) + ": " + msg);
-    std::cerr << "VTK ERROR (" << caller->GetClassName() << "): " << msg << "\n";
-  }
-  vtkNew<vtkCallbackCommand> Callback;
-};
-
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-double Seconds(const std::function<void()>& f)
-{
-  const auto t0 = std::chrono::steady_clock::now();
-  f();
-  const auto t1 = std::chrono::steady_clock::now();
-  return std::chrono::duration<double>(t1 - t0).count();
-}
-
-vtkIdType CountTetras(vtkUnstructuredGrid* grid)
-{
-  vtkIdType n = 0;
-  for (vtkIdType i = 0; i < grid->GetNumberOfCells(); ++i)
-  {
-    n += grid->GetCellType(i) == VTK_TETRA ? 1 : 0;
-  }
-  return n;
-}
-
-/// The demo's transfer function (Utilities/hov_demo.py): 7 colour and opacity nodes at the
-/// same scalars, low faint blue -> cyan -> green -> yellow -> orange -> red, opacity rising.
-vtkSmartPointer<vtkVolumeProperty> MakeProperty(const double range[2], double unitDistance)
-{
-  static const double nodes[7][5] = {
-    { 0.00, 0.15, 0.25, 0.90, 0.02 },
-    { 0.03, 0.20, 0.50, 1.00, 0.04 },
-    { 0.09, 0.10, 0.90, 0.90, 0.10 },
-    { 0.20, 0.30, 1.00, 0.30, 0.25 },
-    { 0.35, 1.00, 1.00, 0.10, 0.50 },
-    { 0.60, 1.00, 0.50, 0.00, 0.80 },
-    { 1.00, 1.00, 0.05, 0.05, 1.00 },
-  };
-  vtkNew<vtkColorTransferFunction> ctf;
-  vtkNew<vtkPiecewiseFunction> otf;
-  const double span = range[1] - range[0];
-  for (const auto& n : nodes)
-  {
-    const double s = range[0] + n[0] * span;
-    ctf->AddRGBPoint(s, n[1], n[2], n[3]);
-    otf->AddPoint(s, n[4]);
-  }
-  auto prop = vtkSmartPointer<vtkVolumeProperty>::New();
-  prop->SetColor(ctf);
-  prop->SetScalarOpacity(otf);
-  prop->SetScalarOpacityUnitDistance(unitDistance);
-  prop->SetInterpolationTypeToLinear();
-  prop->ShadeOff();
-  return prop;
-}
-
-/// Oblique view (azimuth 35, elevation 30 from +z) of the bounding box, fitted like
-/// vtkRenderer::ResetCamera, with a fixed clipping range enclosing the bounding sphere.
-void SetupCamera(vtkCamera* cam, const double b[6])
-{
-  const double c[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
-  const double r = 0.5 *
-    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-      (b[5] - b[4]) * (b[5] - b[4]));
-  cam->SetViewAngle(30.0);
-  cam->SetFocalPoint(c);
-  cam->SetPosition(c[0], c[1], c[2] + 1.0);
-  cam->SetViewUp(0.0, 1.0, 0.0);
-  cam->Azimuth(35.0);
-  cam->Elevation(30.0);
-  cam->OrthogonalizeViewUp();
-  const double d = r / std::sin(0.5 * 30.0 * 3.14159265358979323846 / 180.0);
-  double dir[3];
-  cam->GetDirectionOfProjection(dir);
-  cam->SetPosition(c[0] - d * dir[0], c[1] - d * dir[1], c[2] - d * dir[2]);
-  cam->SetClippingRange(std::max(0.01 * d, d - 1.5 * r), d + 1.5 * r);
-}
-
-bool LoadBracket(const Options& opt, Mesh& mesh)
-{
-  const std::string file = opt.DataDir + "/bracket_tet4_ccx.vtu";
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  if (!reader->CanReadFile(file.c_str()))
-  {
-    std::cerr << "Cannot read " << file << " (use --data DIR)\n";
-    return false;
-  }
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  mesh.Name = "bracket";
-  mesh.Grid = reader->GetOutput();
-  mesh.Array = "von_mises";
-  vtkDataArray* a = mesh.Grid->GetPointData()->GetArray(mesh.Array.c_str());
-  if (!a)
-  {
-    std::cerr << file << " has no point array von_mises\n";
-    return false;
-  }
-  mesh.Grid->GetPointData()->SetActiveScalars(mesh.Array.c_str());
-  a->GetRange(mesh.Range, 0);
-  mesh.UnitDistance = 2.5; // as in the demo; the bracket is 100 x 60 x 80
-  mesh.Tetras = CountTetras(mesh.Grid);
-  return true;
-}
-
-bool MakeRTMesh(const Options& opt, Mesh& mesh)
-{
-  const int e = opt.Extent;
-  vtkNew<vtkRTAnalyticSource> source;
-  source->SetWholeExtent(-e, e, -e, e, -e, e);
-  source->SetCenter(0.0, 0.0, 0.0);
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputConnection(source->GetOutputPort());
-  tets->TetrahedraOnlyOn();
-  tets->Update();
-  std::ostringstream name;
-  name << "RTAnalytic [-" << e << "," << e << "]^3";
-  mesh.Name = name.str();
-  mesh.Grid = tets->GetOutput();
-  mesh.Array = "RTData";
-  vtkDataArray* a = mesh.Grid->GetPointData()->GetArray(mesh.Array.c_str());
-  if (!a)
-  {
-    std::cerr << "vtkRTAnalyticSource gave no RTData\n";
-    return false;
-  }
-  mesh.Grid->GetPointData()->SetActiveScalars(mesh.Array.c_str());
-  a->GetRange(mesh.Range, 0);
-  mesh.UnitDistance = e; // semi-transparent over the 2e-wide cube
-  mesh.Tetras = CountTetras(mesh.Grid);
-  std::cout << "Generated mesh: " << mesh.Name << ", " << (2 * e) * (2 * e) * (2 * e)
-            << " voxels -> " << mesh.Tetras << " tetrahedra, " << mesh.Grid->GetNumberOfPoints()
-            << " points, RTData range [" << mesh.Range[0] << ", " << mesh.Range[1] << "]\n";
-  return true;
-}
-
-/// Fraction of non-black pixels in the window (RGB read back).
-double Coverage(vtkRenderWindow* win, const std::string& png)
-{
-  vtkNew<vtkWindowToImageFilter> w2i;
-  w2i->SetInput(win);
-  w2i->SetInputBufferTypeToRGB();
-  w2i->ReadFrontBufferOff();
-  w2i->ShouldRerenderOff();
-  w2i->Update();
-  vtkUnsignedCharArray* rgb =
-    vtkUnsignedCharArray::SafeDownCast(w2i->GetOutput()->GetPointData()->GetScalars());
-  if (!rgb)
-  {
-    return 0.0;
-  }
-  const vtkIdType n = rgb->GetNumberOfTuples();
-  const unsigned char* p = rgb->GetPointer(0);
-  vtkIdType lit = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    lit += (p[3 * i] | p[3 * i + 1] | p[3 * i + 2]) ? 1 : 0;
-  }
-  if (!png.empty())
-  {
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(png.c_str());
-    writer->SetInputConnection(w2i->GetOutputPort());
-    writer->Write();
-  }
-  return n ? static_cast<double>(lit) / n : 0.0;
-}
-
-std::string FileSafe(std::string s)
-{
-  for (char& c : s)
-  {
-    if (!std::isalnum(static_cast<unsigned char>(c)))
-    {
-      c = '_';
-    }
-  }
-  return s;
-}
-
-Row RunOne(const Options& opt, const Mesh& mesh, const std::string& key, const std::string& label,
-  vtkAbstractVolumeMapper* mapper, ErrorCounter& errors)
-{
-  Row row;
-  row.Mesh = mesh.Name;
-  row.Mapper = label;
-  row.Key = key;
-  row.Ran = true;
-  const size_t errorsBefore = errors.Messages.size();
-  std::cout << "  " << label << " ..." << std::flush;
-
-  auto* hov = vtkHighOrderVolumeMapper::SafeDownCast(mapper);
-  errors.Watch(mapper);
-  mapper->SetInputDataObject(mesh.Grid);
-  vtkSmartPointer<vtkVolumeProperty> prop = MakeProperty(mesh.Range, mesh.UnitDistance);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(prop);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.0, 0.0, 0.0);
-  ren->AddVolume(volume);
-  vtkNew<vtkCamera> cam;
-  SetupCamera(cam, mesh.Grid->GetBounds());
-  ren->SetActiveCamera(cam);
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->SetSize(opt.Size, opt.Size);
-  win->AddRenderer(ren);
-  errors.Watch(win);
-  errors.Watch(ren);
-
-  // Create the OpenGL context first, without the volume, so the first frame measures the
-  // mapper (its setup, sort, shaders, integrator tables), not window creation.
-  volume->VisibilityOff();
-  win->Render();
-  win->WaitForCompletion();
-  volume->VisibilityOn();
-
-  auto frame = [&]() {
-    win->Render();
-    win->WaitForCompletion();
-  };
-  row.First = Seconds(frame);
-
-  std::vector<double> same, rotating, cpu;
-  for (int i = 0; i < opt.Frames; ++i)
-  {
-    same.push_back(Seconds(frame));
-  }
-  for (int i = 0; i < opt.Frames; ++i)
-  {
-    cam->Azimuth(opt.AzimuthStep);
-    cam->OrthogonalizeViewUp();
-    rotating.push_back(Seconds(frame));
-    if (hov)
-    {
-      cpu.push_back(hov->GetLastImageTime());
-    }
-  }
-  row.Same = Median(same);
-  row.Rotating = Median(rotating);
-  if (hov)
-  {
-    row.CpuRotating = Median(cpu);
-    row.Witness = hov->GetWitnessViolations();
-  }
-  std::string png;
-  if (!opt.OutDir.empty())
-  {
-    png = opt.OutDir + "/bench_" + FileSafe(mesh.Name) + "_" + key + ".png";
-  }
-  row.Coverage = Coverage(win, png);
-  if (errors.Messages.size() != errorsBefore)
-  {
-    row.Ok = false;
-    row.Problem = errors.Messages[errorsBefore];
-  }
-  else if (row.Coverage <= 0.0)
-  {
-    row.Ok = false;
-    row.Problem = "all-black image";
-  }
-  std::cout << " first " << row.First << " s, rotating median " << row.Rotating
-            << " s, same-view median " << row.Same << " s" << (row.Ok ? "" : "  FAILED: ")
-            << row.Problem << "\n";
-  win->Finalize();
-  return row;
-}
-
-std::string Fmt(double v, int prec = 3)
-{
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", prec, v);
-  return buf;
-}
-
-std::string Ratio(double a, double b)
-{
-  if (!(b > 0.0) || !(a > 0.0))
-  {
-    return "-";
-  }
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.2fx", a / b);
-  return buf;
-}
-
 void Usage(const char* argv0)
 {
   std::cout
@@ -440,7 +64,6 @@ void Usage(const char* argv0)
        "  --out DIR             write the last frame of every run as PNG into DIR\n"
        "Run under xvfb-run -a -s \"-screen 0 1280x1024x24\".\n";
 }
-
 } // namespace
 
 int main(int argc, char* argv[])
@@ -543,21 +166,17 @@ int main(int argc, char* argv[])
   for (const Mesh& mesh : meshes)
   {
     std::cout << mesh.Name << " (" << mesh.Tetras << " tets):\n";
+    for (const bool perPixel : { false, true })
     {
       vtkNew<vtkHighOrderVolumeMapper> m;
       m->SetIntegrationMethodToExact();
       m->SetOpacitySemanticsToVTKUnstructured();
-      m->SetCellOrderingToVisibilitySort();
-      rows.push_back(RunOne(opt, mesh, "hov_vis",
-        "vtkHighOrderVolumeMapper (exact, VTK-unstructured, visibility sort)", m, errors));
-    }
-    {
-      vtkNew<vtkHighOrderVolumeMapper> m;
-      m->SetIntegrationMethodToExact();
-      m->SetOpacitySemanticsToVTKUnstructured();
-      m->SetCellOrderingToPerPixelSort();
-      rows.push_back(RunOne(opt, mesh, "hov_pix",
-        "vtkHighOrderVolumeMapper (exact, VTK-unstructured, per-pixel sort)", m, errors));
+      m->SetCellOrdering(perPixel ? vtkHighOrderVolumeMapper::PER_PIXEL_SORT
+                                  : vtkHighOrderVolumeMapper::VISIBILITY_SORT);
+      rows.push_back(RunOne(opt, mesh, perPixel ? "hov_pix" : "hov_vis",
+        std::string("vtkHighOrderVolumeMapper (exact, VTK-unstructured, ") +
+          (perPixel ? "per-pixel" : "visibility") + " sort)",
+        m, errors));
     }
     {
       vtkNew<vtkProjectedTetrahedraMapper> m;
@@ -585,61 +204,6 @@ int main(int argc, char* argv[])
     }
   }
 
-  // The table.
-  std::ostringstream t;
-  t << "\n## hovBenchRender: " << opt.Size << "x" << opt.Size << ", N = " << opt.Frames
-    << " frames per median, azimuth step " << opt.AzimuthStep
-    << " deg; opacity semantics: VTK-unstructured (extinction a(s)/u) for every mapper\n\n";
-  t << "Times in seconds, wall clock of renderWindow->Render() + WaitForCompletion(). "
-       "First: first frame of a fresh mapper (window already created). Rotating: median of N "
-       "frames, each after a camera azimuth step. Same view: median of N frames without a camera "
-       "change. CPU image: our mapper's GetLastImageTime() (median, rotating). Ratios: this "
-       "mapper's time / our mapper's time (>1: ours is faster); 'vis' = our visibility sort, "
-       "'pix' = our per-pixel sort.\n\n";
-  t << "| mesh | tets | mapper | first | rotating median | same-view median | CPU image "
-       "| first / vis | rotating / vis | same-view / vis | rotating / pix | witness | covered px "
-       "| status |\n";
-  t << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  bool allOk = true;
-  for (const Mesh& mesh : meshes)
-  {
-    const Row* vis = nullptr;
-    const Row* pix = nullptr;
-    for (const Row& r : rows)
-    {
-      if (r.Mesh == mesh.Name && r.Key == "hov_vis" && r.Ran)
-      {
-        vis = &r;
-      }
-      if (r.Mesh == mesh.Name && r.Key == "hov_pix" && r.Ran)
-      {
-        pix = &r;
-      }
-    }
-    for (const Row& r : rows)
-    {
-      if (r.Mesh != mesh.Name)
-      {
-        continue;
-      }
-      t << "| " << r.Mesh << " | " << mesh.Tetras << " | " << r.Mapper << " | ";
-      if (!r.Ran)
-      {
-        t << "- | - | - | - | - | - | - | - | - | - | - | " << r.Problem << " |\n";
-        continue;
-      }
-      allOk = allOk && r.Ok;
-      t << Fmt(r.First) << " | " << Fmt(r.Rotating) << " | " << Fmt(r.Same) << " | "
-        << (r.CpuRotating >= 0 ? Fmt(r.CpuRotating) : std::string("-")) << " | "
-        << (vis ? Ratio(r.First, vis->First) : "-") << " | "
-        << (vis ? Ratio(r.Rotating, vis->Rotating) : "-") << " | "
-        << (vis ? Ratio(r.Same, vis->Same) : "-") << " | "
-        << (pix ? Ratio(r.Rotating, pix->Rotating) : "-") << " | "
-        << (r.Witness >= 0 ? std::to_string(r.Witness) : std::string("-")) << " | "
-        << Fmt(100.0 * r.Coverage, 1) << "% | " << (r.Ok ? "ok" : "FAILED: " + r.Problem)
-        << " |\n";
-    }
-  }
-  std::cout << t.str() << std::flush;
+  const bool allOk = PrintTable(opt, meshes, rows);
   return allOk ? 0 : 1;
 }
