@@ -258,19 +258,22 @@ struct Frame
   const std::vector<glm::dvec2>& Window;           ///< projected points (window coordinates)
   const std::vector<unsigned char>& Projectable;   ///< in front of the eye plane
   const std::vector<float>& DepthKey;              ///< per ordered cell: centroid depth
+  const std::vector<int>& CellInterval; ///< per ordered cell: its transfer-function interval, or -2
 
   /// Witness, integral and compositing of one segment at tile pixel p.
   void Integrate(Tile& tile, size_t p, double tIn, double tOut, double sIn, double sOut,
-    vtkHighOrderCellProjector::Statistics& st) const
+    int interval, vtkHighOrderCellProjector::Statistics& st) const
   {
     if (tIn < tile.MaxExit[p] - this->WitnessTol)
     {
       tile.Violated[p] = 1;
     }
     tile.MaxExit[p] = std::max(tile.MaxExit[p], tOut);
-    int pieces = 0;
-    const hov::RGBA seg =
-      hov::IntegrateLinearScalar(this->TF, sIn, sOut, tOut - tIn, this->Settings.Integration, &pieces);
+    int pieces = 1;
+    const hov::RGBA seg = interval >= -1
+      ? hov::IntegrateLinearScalarInInterval(
+          this->TF, interval, sIn, sOut, tOut - tIn, this->Settings.Integration)
+      : hov::IntegrateLinearScalar(this->TF, sIn, sOut, tOut - tIn, this->Settings.Integration, &pieces);
     hov::CompositeBehind(tile.Accum[p], seg);
     ++st.Segments;
     st.Pieces += pieces;
@@ -366,8 +369,8 @@ struct Frame
     if (!this->Settings.PerPixelSort)
     {
       this->ForSegments(tile, cells, count, true,
-        [&](size_t p, vtkIdType, double tIn, double tOut, double sIn, double sOut) {
-          this->Integrate(tile, p, tIn, tOut, sIn, sOut, st);
+        [&](size_t p, vtkIdType k, double tIn, double tOut, double sIn, double sOut) {
+          this->Integrate(tile, p, tIn, tOut, sIn, sOut, this->CellInterval[k], st);
         });
       return;
     }
@@ -410,7 +413,7 @@ struct Frame
       InsertionSort(first, last);
       for (const Fragment* f = first; f != last && !tile.Done[p]; ++f)
       {
-        this->Integrate(tile, p, f->TIn, f->TOut, f->SIn, f->SOut, st);
+        this->Integrate(tile, p, f->TIn, f->TOut, f->SIn, f->SOut, this->CellInterval[f->Order], st);
       }
     }
   }
@@ -453,6 +456,17 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   });
   bins.Build(bins.Boxes, width, height, std::max(4, settings.TileSize));
 
+  // Per cell: the transfer-function interval holding its whole scalar range
+  // (most cells of a fine mesh), so that its segments skip the search.
+  std::vector<int> cellInterval(frontToBack.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      const Tetra& tet = tets[frontToBack[k]];
+      cellInterval[k] = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
+    }
+  });
+
   // Centroid depth along the central ray, to presort cells (per-pixel mode).
   std::vector<float> depthKey;
   if (settings.PerPixelSort)
@@ -474,7 +488,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   const int numTiles = bins.TilesX * bins.TilesY;
   const Frame frame{ tets, frontToBack, bins, tf, settings,
     WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY(), window,
-    projectable, depthKey };
+    projectable, depthKey, cellInterval };
   std::vector<Statistics> tileStats(numTiles);
   // One Tile per thread, reused from tile to tile so that its buffers keep
   // their capacity (the result does not depend on which thread runs a tile).

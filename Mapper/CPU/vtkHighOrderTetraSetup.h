@@ -48,6 +48,8 @@ public:
     glm::dvec3 Gradient;  ///< scalar gradient (0 for cell scalars)
     glm::dvec3 RefPoint;  ///< vertex 0
     double RefScalar;     ///< scalar at vertex 0 (the cell value for cell scalars)
+    double ScalarMin;     ///< smallest vertex scalar
+    double ScalarMax;     ///< largest vertex scalar
     vtkIdType Points[4];
     vtkIdType CellId;
   };

@@ -96,4 +96,32 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
   }
   return accum;
 }
+
+int IntervalOfRange(const TransferFunction& tf, double sMin, double sMax)
+{
+  const std::vector<double>& nodes = tf.GetNodes();
+  const int n = static_cast<int>(nodes.size());
+  if (n == 0 || !std::isfinite(sMin) || !std::isfinite(sMax) || sMin > sMax)
+  {
+    return -2;
+  }
+  const int k = tf.FindIntervalUpward(sMin);
+  const bool lowerOk = k < 0 || nodes[k] < sMin;      // strictly inside: no jump at the end
+  const bool upperOk = k + 1 >= n || sMax < nodes[k + 1];
+  return lowerOk && upperOk ? k : -2;
+}
+
+RGBA IntegrateLinearScalarInInterval(const TransferFunction& tf, int interval, double sFront,
+  double sBack, double length, const IntegrationSettings& settings)
+{
+  if (!(length > 0.0) || !std::isfinite(sFront) || !std::isfinite(sBack))
+  {
+    return RGBA();
+  }
+  const bool emission = settings.Emission == EmissionModel::WilhelmsVanGelder;
+  SegmentEnd front, back;
+  tf.Evaluate(interval, sFront, emission, front);
+  tf.Evaluate(interval, sBack, emission, back);
+  return IntegrateSegment(length, front, back, settings.Emission, settings.Method);
+}
 }

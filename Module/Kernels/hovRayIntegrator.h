@@ -38,6 +38,19 @@ struct IntegrationSettings
  */
 HOV_EXPORT RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBack,
   double length, const IntegrationSettings& settings, int* pieces = nullptr);
+
+/**
+ * The interval of @p tf that holds the whole scalar range [sMin, sMax] in its
+ * interior (so that colour and extinction are linear over it), or -2 if the
+ * range meets a node. Cells whose range fits one interval can integrate every
+ * segment with IntegrateLinearScalarInInterval(), skipping the search.
+ */
+HOV_EXPORT int IntervalOfRange(const TransferFunction& tf, double sMin, double sMax);
+
+/// IntegrateLinearScalar() for a segment known to lie in interval @p interval
+/// (from IntervalOfRange()): one piece, no search.
+HOV_EXPORT RGBA IntegrateLinearScalarInInterval(const TransferFunction& tf, int interval,
+  double sFront, double sBack, double length, const IntegrationSettings& settings);
 }
 
 #endif
