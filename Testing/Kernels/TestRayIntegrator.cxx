@@ -358,3 +358,50 @@ TEST(RayIntegrator, HugeScalarRange)
       << "got " << hovtest::ToString(got) << " expected " << hovtest::ToString(expected);
   }
 }
+
+// IntervalOfRange: the interval that holds a scalar range strictly inside;
+// -2 as soon as the range reaches a node (where a jump may sit). And the
+// search-free integral agrees bit for bit with the general one there.
+TEST(RayIntegrator, IntervalOfRangeAndSearchFreeIntegral)
+{
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = hov::OpacitySemantics::VTKUnstructured;
+  spec.Color = { { 0.0, 1, 0, 0 }, { 1.0, 0, 1, 0 }, { 1.0, 0, 0, 1 }, { 2.0, 1, 1, 1 } }; // jump at 1
+  spec.Opacity = { { 0.0, 0.1 }, { 0.5, 0.8 }, { 2.0, 0.3 } };
+  hov::TransferFunction tf;
+  ASSERT_TRUE(tf.Build(spec));
+  const std::vector<double>& x = tf.GetNodes();
+  EXPECT_EQ(hov::IntervalOfRange(tf, 0.1, 0.4), 0);
+  EXPECT_EQ(hov::IntervalOfRange(tf, 0.6, 0.9), tf.FindIntervalUpward(0.6));
+  EXPECT_EQ(hov::IntervalOfRange(tf, -3.0, -1.0), -1);              // clamped region below
+  EXPECT_EQ(hov::IntervalOfRange(tf, 2.5, 7.0), static_cast<int>(x.size()) - 1); // above
+  EXPECT_EQ(hov::IntervalOfRange(tf, 0.1, 0.5), -2);                // touches a node
+  EXPECT_EQ(hov::IntervalOfRange(tf, 0.9, 1.0), -2);                // touches the jump
+  EXPECT_EQ(hov::IntervalOfRange(tf, 0.4, 0.6), -2);                // contains a node
+  EXPECT_EQ(hov::IntervalOfRange(tf, 0.6, 0.4), -2);                // empty range
+  EXPECT_EQ(hov::IntervalOfRange(tf, std::nan(""), 0.4), -2);
+
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 2000; ++i)
+  {
+    const double lo = hovtest::Uniform(rng, -1.0, 3.0);
+    const double hi = lo + hovtest::LogUniform(rng, 1e-9, 0.3);
+    const int k = hov::IntervalOfRange(tf, lo, hi);
+    if (k < -1)
+    {
+      continue;
+    }
+    const double s0 = hovtest::Uniform(rng, lo, hi), s1 = hovtest::Uniform(rng, lo, hi);
+    const double length = hovtest::LogUniform(rng, 1e-3, 10.0);
+    for (auto model : { hov::EmissionModel::WilliamsMax, hov::EmissionModel::WilhelmsVanGelder })
+    {
+      SCOPED_TRACE("k=" + Str(k) + " s0=" + Str(s0) + " s1=" + Str(s1) + " L=" + Str(length));
+      const hov::RGBA general = hov::IntegrateLinearScalar(tf, s0, s1, length, Settings(model));
+      const hov::RGBA direct = hov::IntegrateLinearScalarInInterval(tf, k, s0, s1, length, Settings(model));
+      EXPECT_EQ(general.R, direct.R);
+      EXPECT_EQ(general.G, direct.G);
+      EXPECT_EQ(general.B, direct.B);
+      EXPECT_EQ(general.A, direct.A);
+    }
+  }
+}
