@@ -133,9 +133,10 @@ Pwl<3> SanitizeColor(const std::vector<ColorNode>& in, std::vector<std::string>*
   return out;
 }
 
-/// Sorted opacity nodes clamped to [0,1].
+/// Sorted opacity nodes clamped to [0, maxValue] (1 for opacities; +inf for
+/// raw extinction, whose values are extinction per unit length).
 std::vector<OpacityNode> SanitizeOpacity(
-  const std::vector<OpacityNode>& in, std::vector<std::string>* messages)
+  const std::vector<OpacityNode>& in, double maxValue, std::vector<std::string>* messages)
 {
   std::vector<OpacityNode> nodes;
   int dropped = 0, clamped = 0;
@@ -147,10 +148,10 @@ std::vector<OpacityNode> SanitizeOpacity(
       continue;
     }
     OpacityNode o = n;
-    if (o.Opacity < 0.0 || o.Opacity > 1.0)
+    if (o.Opacity < 0.0 || o.Opacity > maxValue)
     {
       ++clamped;
-      o.Opacity = std::min(std::max(o.Opacity, 0.0), 1.0);
+      o.Opacity = std::min(std::max(o.Opacity, 0.0), maxValue);
     }
     nodes.push_back(o);
   }
@@ -160,7 +161,7 @@ std::vector<OpacityNode> SanitizeOpacity(
   }
   if (clamped)
   {
-    Note(messages, std::to_string(clamped) + " opacity value(s) outside [0,1] clamped");
+    Note(messages, std::to_string(clamped) + " opacity value(s) outside [0," + (std::isinf(maxValue) ? std::string("inf") : std::to_string(maxValue)) + "] clamped");
   }
   std::stable_sort(nodes.begin(), nodes.end(),
     [](const OpacityNode& p, const OpacityNode& q) { return p.X < q.X; });
@@ -196,7 +197,9 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
   this->EmissionFactor = (std::isfinite(spec.EmissionScale) ? spec.EmissionScale : 1.0) / unit;
 
   const Pwl<3> color = SanitizeColor(spec.Color, messages);
-  const std::vector<OpacityNode> opacity = SanitizeOpacity(spec.Opacity, messages);
+  const bool raw = spec.Semantics == OpacitySemantics::RawExtinction;
+  const std::vector<OpacityNode> opacity =
+    SanitizeOpacity(spec.Opacity, raw ? Infinity : 1.0, messages);
 
   // Extinction nodes, refined where the semantics is not linear in a.
   const bool gpuSemantics = spec.Semantics == OpacitySemantics::GPUCompatible;

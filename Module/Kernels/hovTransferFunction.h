@@ -30,7 +30,8 @@
  *    OpaqueClamp = 1e-12 (tau <= 27.6/u), which changes the optical depth of a
  *    ray by at most 1e-12 / (|da/ds| |ds/dt| u).
  *  - VTKUnstructured: tau(s) = a(s) / u, what VTK's unstructured mappers use.
- *  - RawExtinction (HIAC): tau(s) = a(s), extinction per unit length.
+ *  - RawExtinction (HIAC): tau(s) = a(s), extinction per unit length (values
+ *    above 1 are kept; opacities in the other semantics are clamped to [0,1]).
  *
  * Wilhelms-Van Gelder emission per unit length is g(s) = EmissionScale c(s) / u:
  * a non-absorbing layer of thickness u/EmissionScale glows with colour c(s).

@@ -197,3 +197,26 @@ TEST(TransferFunction, LinearSemanticsValues)
   }
   hovtest::ReportMeasured("table tau, linear semantics (relative)", worst);
 }
+
+// Raw extinction values are extinction per unit length: values above 1 are
+// kept (only negative values are clamped), unlike opacities.
+TEST(TransferFunction, RawExtinctionKeepsValuesAboveOne)
+{
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = hov::OpacitySemantics::RawExtinction;
+  spec.Color = { { 0.0, 1, 1, 1 } };
+  spec.Opacity = { { 0.0, 3.5 }, { 1.0, -2.0 } };
+  hov::TransferFunction tf;
+  std::vector<std::string> messages;
+  ASSERT_TRUE(tf.Build(spec, &messages));
+  EXPECT_EQ(messages.size(), 1u) << "the negative value is reported";
+  hov::SegmentEnd end;
+  tf.Evaluate(tf.FindIntervalUpward(0.0), 0.0, false, end);
+  EXPECT_EQ(end.Tau, 3.5);
+  tf.Evaluate(tf.FindIntervalUpward(0.5), 0.5, false, end);
+  EXPECT_NEAR(end.Tau, 1.75, 1e-15);
+  spec.Semantics = hov::OpacitySemantics::VTKUnstructured;
+  ASSERT_TRUE(tf.Build(spec, &messages));
+  tf.Evaluate(tf.FindIntervalUpward(0.0), 0.0, false, end);
+  EXPECT_EQ(end.Tau, 1.0) << "an opacity is clamped to 1 (u = 1)";
+}
