@@ -59,7 +59,7 @@ public:
   {
     hov::IntegrationSettings Integration;
     double TerminationTransmittance = 1e-9;
-    int TileSize = 32;
+    int TileSize = 16;
     /// Order each pixel's segments by entry distance instead of trusting the
     /// cell order (exact for any set of non-overlapping cells).
     bool PerPixelSort = false;
