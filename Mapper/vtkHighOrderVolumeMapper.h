@@ -175,8 +175,8 @@ public:
   ///@{
   /**
    * Side in pixels of the square image tiles the CPU path distributes over
-   * threads (default 16: a tile's segment list then stays in the L2 cache). A performance knob only: the image does not
-   * depend on it.
+   * threads (default 16: a tile's segment list then stays in the L2 cache).
+   * A performance knob only: the image does not depend on it.
    */
   vtkSetClampMacro(TileSize, int, 4, 256);
   vtkGetMacro(TileSize, int);
