@@ -171,14 +171,27 @@ inline void ThinWilliamsMax(double a, double d1, double& wFront, double& wBack, 
     }
     q[n] = h;
   }
-  double w = 0.0, alpha = 0.0;
+  // Outer sums by Horner's rule in d1^2 on odd and even terms separately:
+  // two independent chains of half the length (the chain latency dominates).
+  const double d2 = d1 * d1;
+  double wOdd = 0.0, wEven = 0.0, aOdd = 0.0, aEven = 0.0;
 #pragma GCC unroll 16
   for (int n = N; n >= 1; --n)
   {
-    const double sign = (n % 2) ? 1.0 : -1.0;
-    w = (w + sign * q[n]) * d1;
-    alpha = (alpha + sign * Thin.InvFactorial[n]) * d1;
+    if (n % 2)
+    {
+      wOdd = wOdd * d2 + q[n];
+      aOdd = aOdd * d2 + Thin.InvFactorial[n];
+    }
+    else
+    {
+      wEven = wEven * d2 + q[n];
+      aEven = aEven * d2 + Thin.InvFactorial[n];
+    }
   }
+  // sum_n (-1)^(n+1) c_n d^n = d (odd part in d^2) - d^2 (even part in d^2).
+  const double w = d1 * wOdd - d2 * wEven;
+  const double alpha = d1 * aOdd - d2 * aEven;
   wFront = w;
   wBack = alpha - w;
   alphaOut = alpha; // a function of D1 only: symmetric under reversal
