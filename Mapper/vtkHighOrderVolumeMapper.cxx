@@ -224,6 +224,78 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
   return true;
 }
 
+bool vtkHighOrderVolumeMapper::ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height)
+{
+  if (!camera || !volume || width <= 0 || height <= 0)
+  {
+    vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
+    return false;
+  }
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update(); // RenderImage may run before any render
+  }
+  if (!this->GetInput())
+  {
+    vtkErrorMacro("No input.");
+    return false;
+  }
+  if (!volume->GetProperty())
+  {
+    vtkErrorMacro("The volume has no vtkVolumeProperty.");
+    return false;
+  }
+  if (!this->PrepareCells(volume))
+  {
+    return false; // the error was reported
+  }
+  const vtkHighOrderTetraSetup::Statistics& st = this->Impl->Setup.GetStatistics();
+  this->NumberOfRenderedCells = st.Rendered;
+  this->NumberOfSkippedCells = st.Cells - st.Rendered;
+  return true;
+}
+
+bool vtkHighOrderVolumeMapper::PrepareTransferFunction(vtkVolumeProperty* property)
+{
+  Internals& impl = *this->Impl;
+  vtkHighOrderTransferFunction* tf = impl.TransferFunction;
+  tf->SetOpacitySemantics(this->OpacitySemantics);
+  tf->SetGPUTolerance(this->GPUOpacityTolerance);
+  tf->SetEmissionScale(this->EmissionScale);
+  // One component of a multi-component array with independent components
+  // uses that component's functions; everything else uses component 0's.
+  const bool independent = impl.SetupComponent > 0 && property->GetIndependentComponents();
+  tf->SetComponent(independent ? std::min(impl.SetupComponent, 3) : 0);
+  const int buildsBefore = tf->GetBuildCount();
+  tf->Update(property);
+  if (tf->GetBuildCount() != buildsBefore)
+  {
+    for (int i = 0; i < tf->GetNumberOfMessages(); ++i)
+    {
+      vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
+    }
+  }
+  // Nothing absorbs: nothing to see, unless the glow does not need extinction.
+  return tf->GetTable().HasExtinction() || this->EmissionModel == WILHELMS_VAN_GELDER;
+}
+
+void vtkHighOrderVolumeMapper::PublishImage(int width, int height)
+{
+  Internals& impl = *this->Impl;
+  vtkImageData* image = impl.FloatImage;
+  image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
+  vtkNew<vtkFloatArray> array;
+  array->SetName("RGBA");
+  array->SetNumberOfComponents(4);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(impl.RGBA.size() / 4));
+  float* out = array->GetPointer(0);
+  for (size_t i = 0; i < impl.RGBA.size(); ++i)
+  {
+    out[i] = static_cast<float>(impl.RGBA[i]);
+  }
+  image->GetPointData()->SetScalars(array);
+}
+
 int vtkHighOrderVolumeMapper::ComputeImage(
   vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect, const float* depth)
 {
@@ -231,65 +303,12 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
   impl.RGBA.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
 
-  bool ok = camera && volume && width > 0 && height > 0;
-  if (!ok)
-  {
-    vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
-  }
-  this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
-  if (ok && this->GetNumberOfInputConnections(0) > 0)
-  {
-    this->GetInputAlgorithm()->Update(); // RenderImage may run before any render
-  }
-  vtkUnstructuredGridBase* input = ok ? this->GetInput() : nullptr;
-  if (ok && !input)
-  {
-    vtkErrorMacro("No input.");
-    ok = false;
-  }
-  vtkVolumeProperty* property = volume ? volume->GetProperty() : nullptr;
-  if (ok && !property)
-  {
-    vtkErrorMacro("The volume has no vtkVolumeProperty.");
-    ok = false;
-  }
-  if (ok && !this->PrepareCells(volume))
-  {
-    ok = false; // the error was reported
-  }
-  if (ok)
-  {
-    const vtkHighOrderTetraSetup::Statistics& st = impl.Setup.GetStatistics();
-    this->NumberOfRenderedCells = st.Rendered;
-    this->NumberOfSkippedCells = st.Cells - st.Rendered;
-  }
-  bool render = ok && !impl.Setup.GetTetras().empty();
-
-  if (render)
-  {
-    vtkHighOrderTransferFunction* tf = impl.TransferFunction;
-    tf->SetOpacitySemantics(this->OpacitySemantics);
-    tf->SetGPUTolerance(this->GPUOpacityTolerance);
-    tf->SetEmissionScale(this->EmissionScale);
-    // One component of a multi-component array with independent components
-    // uses that component's functions; everything else uses component 0's.
-    const bool independent = impl.SetupComponent > 0 && property->GetIndependentComponents();
-    tf->SetComponent(independent ? std::min(impl.SetupComponent, 3) : 0);
-    const int buildsBefore = tf->GetBuildCount();
-    tf->Update(property);
-    if (tf->GetBuildCount() != buildsBefore)
-    {
-      for (int i = 0; i < tf->GetNumberOfMessages(); ++i)
-      {
-        vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
-      }
-    }
-    const bool wvg = this->EmissionModel == WILHELMS_VAN_GELDER;
-    render = tf->GetTable().HasExtinction() || wvg;
-  }
-
+  const bool ok = this->ValidateInputs(camera, volume, width, height);
+  bool render = ok && !impl.Setup.GetTetras().empty() &&
+    this->PrepareTransferFunction(volume->GetProperty());
   vtkHighOrderViewRays rays;
   if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
   {
@@ -310,20 +329,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     this->NumberOfSegments = st.Segments;
     this->NumberOfPieces = st.Pieces;
   }
-
-  // Publish the float image.
-  vtkImageData* image = impl.FloatImage;
-  image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
-  vtkNew<vtkFloatArray> array;
-  array->SetName("RGBA");
-  array->SetNumberOfComponents(4);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(impl.RGBA.size() / 4));
-  float* out = array->GetPointer(0);
-  for (size_t i = 0; i < impl.RGBA.size(); ++i)
-  {
-    out[i] = static_cast<float>(impl.RGBA[i]);
-  }
-  image->GetPointData()->SetScalars(array);
+  this->PublishImage(width, height);
   timer->StopTimer();
   this->LastImageTime = timer->GetElapsedTime();
   return ok ? 1 : 0;

@@ -55,6 +55,7 @@ class vtkDataArray;
 class vtkHighOrderTransferFunction;
 class vtkImageData;
 class vtkVisibilitySort;
+class vtkVolumeProperty;
 
 class VTKRENDERINGHIGHORDERVOLUME_EXPORT vtkHighOrderVolumeMapper
   : public vtkUnstructuredGridVolumeMapper
@@ -247,8 +248,11 @@ private:
 
   int ComputeImage(vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect,
     const float* depth);
+  bool ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height);
   bool PrepareCells(vtkVolume* volume);
+  bool PrepareTransferFunction(vtkVolumeProperty* property);
   bool PrepareOrder(vtkCamera* camera, vtkVolume* volume);
+  void PublishImage(int width, int height);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;
