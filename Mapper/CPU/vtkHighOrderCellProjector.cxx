@@ -446,43 +446,31 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
       window[i] = glm::dvec2(x, y);
     }
   });
+  // Per cell, in one pass: its pixel box; the transfer-function interval
+  // holding its whole scalar range (most cells of a fine mesh: their segments
+  // skip the search); its centroid depth along the central ray, to presort
+  // cells in per-pixel mode.
+  const size_t numCells = frontToBack.size();
   TileBins bins;
-  bins.Boxes.resize(frontToBack.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType k = b; k < e; ++k)
-    {
-      bins.Boxes[k] = PixelBox(tets[frontToBack[k]], window, projectable, width, height);
-    }
-  });
-  bins.Build(bins.Boxes, width, height, std::max(4, settings.TileSize));
-
-  // Per cell: the transfer-function interval holding its whole scalar range
-  // (most cells of a fine mesh), so that its segments skip the search.
-  std::vector<int> cellInterval(frontToBack.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
+  bins.Boxes.resize(numCells);
+  std::vector<int> cellInterval(numCells);
+  std::vector<float> depthKey(settings.PerPixelSort ? numCells : 0);
+  const vtkHighOrderViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType k = b; k < e; ++k)
     {
       const Tetra& tet = tets[frontToBack[k]];
+      bins.Boxes[k] = PixelBox(tet, window, projectable, width, height);
       cellInterval[k] = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
-    }
-  });
-
-  // Centroid depth along the central ray, to presort cells (per-pixel mode).
-  std::vector<float> depthKey;
-  if (settings.PerPixelSort)
-  {
-    const vtkHighOrderViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
-    depthKey.resize(frontToBack.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
-      for (vtkIdType k = b; k < e; ++k)
+      if (settings.PerPixelSort)
       {
-        const Tetra& tet = tets[frontToBack[k]];
         const glm::dvec3 c = 0.25 * (points[tet.Points[0]] + points[tet.Points[1]] +
                                 points[tet.Points[2]] + points[tet.Points[3]]);
         depthKey[k] = static_cast<float>(glm::dot(c - centre.Origin, centre.Direction));
       }
-    });
-  }
+    }
+  });
+  bins.Build(bins.Boxes, width, height, std::max(4, settings.TileSize));
 
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;
