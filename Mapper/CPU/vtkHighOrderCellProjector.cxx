@@ -22,6 +22,14 @@ namespace
 constexpr double WitnessRelativeTolerance = 1e-9;
 
 using Box = std::array<int, 4>; // i0, i1, j0, j1 inclusive; i0 > i1 means empty
+
+/// A cell's projected vertices, stored per ordered cell so that the tile
+/// loop reads one cache line instead of four scattered points.
+struct CellScreen
+{
+  glm::dvec2 Vertex[4];
+  bool Projectable; ///< every vertex in front of the eye plane
+};
 using Tetra = vtkHighOrderTetraSetup::Tetra;
 using Ray = vtkHighOrderViewRays::Ray;
 
@@ -255,8 +263,7 @@ struct Frame
   const vtkHighOrderCellProjector::Settings& Settings;
   double WitnessTol;
   glm::dvec3 PerturbX, PerturbY;
-  const std::vector<glm::dvec2>& Window;           ///< projected points (window coordinates)
-  const std::vector<unsigned char>& Projectable;   ///< in front of the eye plane
+  const std::vector<CellScreen>& Screen;           ///< per ordered cell: projected vertices
   const std::vector<float>& DepthKey;              ///< per ordered cell: centroid depth
   const std::vector<int>& CellInterval; ///< per ordered cell: its transfer-function interval, or -2
 
@@ -290,16 +297,16 @@ struct Frame
    * a convex hull of points in the span of its crossings with all segments
    * between them (the six projected edges). False if the row misses it.
    */
-  bool RowSpan(const Tetra& tet, double y, double& xMin, double& xMax) const
+  static bool RowSpan(const CellScreen& cell, double y, double& xMin, double& xMax)
   {
     xMin = 1e300;
     xMax = -1e300;
     for (int a = 0; a < 4; ++a)
     {
-      const glm::dvec2& p = this->Window[tet.Points[a]];
+      const glm::dvec2& p = cell.Vertex[a];
       for (int b = a + 1; b < 4; ++b)
       {
-        const glm::dvec2& q = this->Window[tet.Points[b]];
+        const glm::dvec2& q = cell.Vertex[b];
         if ((p.y - y) * (q.y - y) > 0.0)
         {
           continue; // the edge is entirely above or below the row
@@ -326,18 +333,17 @@ struct Frame
     {
       const vtkIdType k = cells[c];
       const Tetra& tet = this->Tets[this->Order[k]];
-      const bool spans = this->Projectable[tet.Points[0]] && this->Projectable[tet.Points[1]] &&
-        this->Projectable[tet.Points[2]] && this->Projectable[tet.Points[3]];
+      const CellScreen& screen = this->Screen[k];
       int i0, i1, j0, j1;
       tile.Clamp(this->Bins.Boxes[k], i0, i1, j0, j1);
       for (int j = j0; j <= j1; ++j)
       {
         int r0 = i0, r1 = i1;
         double xMin, xMax;
-        if (spans)
+        if (screen.Projectable)
         {
           // Only the pixel centres inside the projection (BoxMargin of slack).
-          if (!this->RowSpan(tet, tile.Y0 + j + 0.5, xMin, xMax))
+          if (!RowSpan(screen, tile.Y0 + j + 0.5, xMin, xMax))
           {
             continue;
           }
@@ -454,6 +460,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   TileBins bins;
   bins.Boxes.resize(numCells);
   std::vector<int> cellInterval(numCells);
+  std::vector<CellScreen> screen(numCells);
   std::vector<float> depthKey(settings.PerPixelSort ? numCells : 0);
   const vtkHighOrderViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
@@ -461,6 +468,13 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
     {
       const Tetra& tet = tets[frontToBack[k]];
       bins.Boxes[k] = PixelBox(tet, window, projectable, width, height);
+      CellScreen& cs = screen[k];
+      cs.Projectable = true;
+      for (int v = 0; v < 4; ++v)
+      {
+        cs.Vertex[v] = window[tet.Points[v]];
+        cs.Projectable = cs.Projectable && projectable[tet.Points[v]];
+      }
       cellInterval[k] = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
       if (settings.PerPixelSort)
       {
@@ -475,8 +489,8 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;
   const Frame frame{ tets, frontToBack, bins, tf, settings,
-    WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY(), window,
-    projectable, depthKey, cellInterval };
+    WitnessRelativeTolerance * rays.GetDepthScale(), rays.GetPerturbX(), rays.GetPerturbY(), screen,
+    depthKey, cellInterval };
   std::vector<Statistics> tileStats(numTiles);
   // One Tile per thread, reused from tile to tile so that its buffers keep
   // their capacity (the result does not depend on which thread runs a tile).
