@@ -30,13 +30,11 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
     const int k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
     if (up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack))
     {
-      tf.Evaluate(k, sFront, emission, front);
-      tf.Evaluate(k, sBack, emission, back);
       if (pieces)
       {
         *pieces = 1;
       }
-      return IntegrateSegment(length, front, back, settings.Emission, settings.Method);
+      return IntegrateLinearScalarInInterval(tf, k, sFront, sBack, length, settings);
     }
   }
   {
