@@ -49,6 +49,150 @@ int Det3Sign(const Rational m[3][3])
     m[2][2] * (m[0][0] * m[1][1] - m[1][0] * m[0][1]);
   return Sign(det);
 }
+
+// ---- Stage 2: expansion arithmetic (Shewchuk) when the differences are exact.
+/// Exact a - b as x + y (y = 0 iff the difference was exact).
+inline double DiffTail(double a, double b, double x)
+{
+  const double bvirt = a - x;
+  const double avirt = x + bvirt;
+  return (a - avirt) + (bvirt - b);
+}
+
+inline void TwoSum(double a, double b, double& x, double& y)
+{
+  x = a + b;
+  const double bvirt = x - a;
+  const double avirt = x - bvirt;
+  y = (a - avirt) + (b - bvirt);
+}
+
+/// h = e + b (nonoverlapping, increasing magnitude, zeros eliminated).
+int Grow(const double* e, int n, double b, double* h)
+{
+  double q = b;
+  int k = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    double qn, hh;
+    TwoSum(q, e[i], qn, hh);
+    q = qn;
+    if (hh != 0)
+    {
+      h[k++] = hh;
+    }
+  }
+  if (q != 0 || k == 0)
+  {
+    h[k++] = q;
+  }
+  return k;
+}
+
+/// h = e * b (exact with fma, no underflow assumed).
+int Scale(const double* e, int n, double b, double* h)
+{
+  double q = e[0] * b;
+  double hh = std::fma(e[0], b, -q);
+  int k = 0;
+  if (hh != 0)
+  {
+    h[k++] = hh;
+  }
+  for (int i = 1; i < n; ++i)
+  {
+    const double p1 = e[i] * b;
+    const double p0 = std::fma(e[i], b, -p1);
+    double sum;
+    TwoSum(q, p0, sum, hh);
+    if (hh != 0)
+    {
+      h[k++] = hh;
+    }
+    q = p1 + sum; // Fast_Two_Sum(p1, sum)
+    hh = sum - (q - p1);
+    if (hh != 0)
+    {
+      h[k++] = hh;
+    }
+  }
+  if (q != 0 || k == 0)
+  {
+    h[k++] = q;
+  }
+  return k;
+}
+
+int Add(const double* e, int ne, const double* f, int nf, double* h)
+{
+  double tmp[64];
+  int n = ne;
+  std::copy(e, e + ne, tmp);
+  for (int i = 0; i < nf; ++i)
+  {
+    n = Grow(tmp, n, f[i], h);
+    std::copy(h, h + n, tmp);
+  }
+  return n;
+}
+
+/// Exact sign of x*y - z*w (2-term products, exact doubles).
+int Minor(double x, double y, double z, double w, double* m)
+{
+  const double p = x * y, q = z * w;
+  const double e[2] = { std::fma(x, y, -p), p };
+  const double f[2] = { -std::fma(z, w, -q), -q };
+  double a[2], b[2];
+  const int na = Grow(e, 1, e[1], a);
+  const int nb = Grow(f, 1, f[1], b);
+  return Add(a, na, b, nb, m);
+}
+
+/// Exact sign of det[r0; r1; r2] for exact double entries (no under/overflow).
+int ExpansionDet3(const double* r0, const double* r1, const double* r2)
+{
+  const double* r[3] = { r0, r1, r2 };
+  double acc[64];
+  int nacc = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double* u = r[(i + 1) % 3];
+    const double* v = r[(i + 2) % 3];
+    double m[8], t[16], sum[64];
+    const int nm = Minor(u[0], v[1], v[0], u[1], m); // u_x v_y - v_x u_y
+    const int nt = Scale(m, nm, r[i][2], t);
+    nacc = nacc == 0 ? (std::copy(t, t + nt, acc), nt) : Add(acc, nacc, t, nt, sum);
+    if (i > 0)
+    {
+      std::copy(sum, sum + nacc, acc);
+    }
+  }
+  const double top = acc[nacc - 1];
+  return top > 0 ? 1 : (top < 0 ? -1 : 0);
+}
+
+/// Rows r = x - y computed exactly (tails zero) with entries safe from under/overflow.
+bool ExactRows(const double* x[3], const double* y[3], double r[3][3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const double v = y[i] ? x[i][j] - y[i][j] : x[i][j];
+      if (y[i] && DiffTail(x[i][j], y[i][j], v) != 0)
+      {
+        return false;
+      }
+      const double m = std::fabs(v);
+      if (m != 0 && !(m > 1e-75 && m < 1e75))
+      {
+        return false;
+      }
+      r[i][j] = v;
+    }
+  }
+  return true;
+}
 }
 
 int Orient2dExact(const double a[2], const double b[2], const double c[2])
@@ -71,6 +215,21 @@ int Orient2d(const double a[2], const double b[2], const double c[2])
   if (Decided(det, std::fabs(detLeft) + std::fabs(detRight), ErrBound2))
   {
     return det > 0 ? 1 : -1;
+  }
+  const double* x[3] = { a, b, nullptr };
+  const double* y[3] = { c, c, nullptr };
+  const double zero[3] = { 0, 0, 0 };
+  x[2] = zero;
+  double r[3][3];
+  const double ac[3] = { a[0], a[1], 0 }, bc[3] = { b[0], b[1], 0 }, cc[3] = { c[0], c[1], 0 };
+  x[0] = ac;
+  x[1] = bc;
+  y[0] = y[1] = cc;
+  if (ExactRows(x, y, r))
+  {
+    double m[8];
+    const int n = Minor(r[0][0], r[1][1], r[0][1], r[1][0], m);
+    return m[n - 1] > 0 ? 1 : (m[n - 1] < 0 ? -1 : 0);
   }
   return Orient2dExact(a, b, c);
 }
@@ -120,6 +279,13 @@ int Orient3d(const double a[3], const double b[3], const double c[3], const doub
   {
     return det > 0 ? 1 : -1;
   }
+  const double* x[3] = { a, b, c };
+  const double* y[3] = { d, d, d };
+  double r[3][3];
+  if (ExactRows(x, y, r))
+  {
+    return ExpansionDet3(r[0], r[1], r[2]);
+  }
   return Orient3dExact(a, b, c, d);
 }
 
@@ -150,6 +316,13 @@ int Orient3dDirection(const double a[3], const double b[3], const double c[3], c
   if (Decided(det, permanent, ErrBound3))
   {
     return det > 0 ? -1 : 1;
+  }
+  const double* x[3] = { b, c, w };
+  const double* y[3] = { a, a, nullptr };
+  double r[3][3];
+  if (ExactRows(x, y, r))
+  {
+    return -ExpansionDet3(r[0], r[1], r[2]);
   }
   return Orient3dDirectionExact(a, b, c, w);
 }

@@ -208,3 +208,35 @@ TEST(GeometricPredicates, SharedFacePlanes)
     EXPECT_EQ(hov::Orient3d(p[2], p[0], p[1], p[0]), 0);
   }
 }
+
+TEST(GeometricPredicates, LargeIntegerNearDegenerate)
+{
+  // Integer coordinates up to 2^40 (differences exact, products far beyond 53
+  // bits): exactly coplanar/collinear points and points moved by one unit,
+  // where the double filter fails and the expansion stage decides.
+  std::mt19937_64 rng(4242);
+  std::uniform_int_distribution<long long> u(-(1LL << 40), 1LL << 40);
+  std::uniform_int_distribution<int> small(-3, 3);
+  int zero = 0, nonzero = 0;
+  for (int n = 0; n < 3000; ++n)
+  {
+    double p[4][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        p[i][j] = static_cast<double>(u(rng) >> (n % 3 == 0 ? 20 : 0));
+    const int s = small(rng), t = small(rng);
+    for (int j = 0; j < 3; ++j)
+      p[3][j] = p[0][j] + s * (p[1][j] - p[0][j]) + t * (p[2][j] - p[0][j]);
+    p[3][n % 3] += n % 4 == 0 ? 0.0 : (n % 2 ? 1.0 : -1.0);
+    Check3(p[0], p[1], p[2], p[3]);
+    ASSERT_EQ(hov::Orient3dDirection(p[0], p[1], p[2], p[3]), Ref3Dir(p[0], p[1], p[2], p[3]));
+    (Ref3(p[0], p[1], p[2], p[3]) == 0 ? zero : nonzero)++;
+    double q[3][2] = { { p[0][0], p[0][1] }, { p[1][0], p[1][1] }, { 0, 0 } };
+    for (int j = 0; j < 2; ++j)
+      q[2][j] = q[0][j] + s * (q[1][j] - q[0][j]);
+    q[2][n % 2] += n % 3 == 0 ? 0.0 : 1.0;
+    Check2(q[0], q[1], q[2]);
+  }
+  EXPECT_GT(zero, 300);
+  EXPECT_GT(nonzero, 1000);
+}
