@@ -161,22 +161,7 @@ std::uint8_t QuadCode(const double* p[4], const double* centre, Plane& plane)
 }
 }
 
-const Shape& GetShape(int kind)
-{
-  switch (kind)
-  {
-    case KindTet:
-      return TetShape;
-    case KindHex:
-      return HexShape;
-    case KindWedge:
-      return WedgeShape;
-    case KindPyramid:
-      return PyramidShape;
-    default:
-      return NoShape;
-  }
-}
+const Shape* const ShapeTable[5] = { &NoShape, &TetShape, &HexShape, &WedgeShape, &PyramidShape };
 
 int Geometry::OrientedFace(vtkIdType c, int f, vtkIdType ids[4]) const
 {
@@ -191,30 +176,6 @@ int Geometry::OrientedFace(vtkIdType c, int f, vtkIdType ids[4]) const
   return n;
 }
 
-void Geometry::ExactTriple(vtkIdType c, int f, vtkIdType ids[3]) const
-{
-  const Shape& s = GetShape(this->Kinds[c]);
-  const vtkIdType* corners = this->CellCorners(c);
-  const std::uint8_t code = this->FaceCode(c, f);
-  const int n = s.FaceSize[f];
-  const int omit = n == 4 ? (code >> 3) & 3 : n; // triangles: nothing omitted
-  const int* loc = s.Faces[f];
-  int t[3] = { loc[(omit + 1) % n], loc[(omit + 2) % n], loc[(omit + 3) % n] };
-  if (n == 3)
-  {
-    t[0] = loc[0];
-    t[1] = loc[1];
-    t[2] = loc[2];
-  }
-  if (code & 4)
-  {
-    std::swap(t[1], t[2]);
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    ids[i] = corners[t[i]];
-  }
-}
 }
 
 namespace hovStein

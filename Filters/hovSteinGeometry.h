@@ -50,7 +50,11 @@ struct Shape
   int Faces[6][4];
   int Edges[12][2];
 };
-const Shape& GetShape(int kind);
+extern const Shape* const ShapeTable[5];
+inline const Shape& GetShape(int kind)
+{
+  return *ShapeTable[kind];
+}
 
 /// Face codes: bits 0-1 mode, bit 2 reversed orientation, bits 3-4 omitted quad corner.
 enum FaceMode : std::uint8_t
@@ -92,7 +96,24 @@ struct Geometry
   }
   std::uint8_t FaceCode(vtkIdType c, int f) const { return FaceCodes[MaxFaces * c + f]; }
   /// The three corners (point ids, outward counterclockwise) of an exact face.
-  void ExactTriple(vtkIdType c, int f, vtkIdType ids[3]) const;
+  void ExactTriple(vtkIdType c, int f, vtkIdType ids[3]) const
+  {
+    const Shape& s = GetShape(this->Kinds[c]);
+    const vtkIdType* corners = this->CellCorners(c);
+    const std::uint8_t code = this->FaceCode(c, f);
+    const int* loc = s.Faces[f];
+    int t0 = loc[0], t1 = loc[1], t2 = loc[2];
+    if (s.FaceSize[f] == 4)
+    {
+      const int omit = (code >> 3) & 3;
+      t0 = loc[(omit + 1) & 3];
+      t1 = loc[(omit + 2) & 3];
+      t2 = loc[(omit + 3) & 3];
+    }
+    ids[0] = corners[t0];
+    ids[1] = corners[(code & 4) ? t2 : t1];
+    ids[2] = corners[(code & 4) ? t1 : t2];
+  }
   /// The corners of face f in outward counterclockwise order; returns their number.
   int OrientedFace(vtkIdType c, int f, vtkIdType ids[4]) const;
   const Plane& FacePlane(vtkIdType c, int f) const { return Planes[PlaneOffsets[c] + f]; }
