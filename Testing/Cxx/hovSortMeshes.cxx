@@ -505,6 +505,29 @@ vtkSmartPointer<vtkUnstructuredGrid> SlidingInterface(unsigned seed)
   return a.Grid();
 }
 
+vtkSmartPointer<vtkUnstructuredGrid> CyclicTripleTets()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> wedges = CyclicTriple();
+  MeshBuilder m;
+  for (vtkIdType i = 0; i < wedges->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    wedges->GetPoint(i, p);
+    AddP(m, { p[0], p[1], p[2] });
+  }
+  for (vtkIdType c = 0; c < wedges->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType* v;
+    vtkIdType n;
+    wedges->GetCellPoints(c, n, v);
+    // Prism a0 a1 a2 / b0 b1 b2 = [a0 a1 a2 b0] + [a1 a2 b0 b1] + [a2 b0 b1 b2].
+    m.AddTet(v[0], v[1], v[2], v[3]);
+    m.AddTet(v[1], v[2], v[3], v[4]);
+    m.AddTet(v[2], v[3], v[4], v[5]);
+  }
+  return m.Grid();
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> CyclicTriple()
 {
   MeshBuilder m;

@@ -83,6 +83,9 @@ vtkSmartPointer<vtkUnstructuredGrid> SlidingInterface(unsigned seed);
 /// Three long thin wedges each lying over the next around a triangle (a
 /// visibility cycle when seen along -z), not intersecting.
 vtkSmartPointer<vtkUnstructuredGrid> CyclicTriple();
+/// The same three sticks, each split into 3 tetrahedra (for the mapper,
+/// which renders tetrahedra only).
+vtkSmartPointer<vtkUnstructuredGrid> CyclicTripleTets();
 
 /// A named camera for the property tests.
 struct SortView
