@@ -130,6 +130,12 @@ public:
   vtkGetMacro(LastSetupSeconds, double);
   ///@}
 
+  /**
+   * Tiles used by the last sort (the default or the settings, reduced if the
+   * tile lists would not fit 32-bit links).
+   */
+  vtkGetVector2Macro(UsedTiles, int);
+
 protected:
   vtkSteinVisibilitySort();
   ~vtkSteinVisibilitySort() override;
@@ -142,6 +148,7 @@ protected:
   vtkIdType NumberOfMoves = 0;
   double LastSortSeconds = 0.0;
   double LastSetupSeconds = 0.0;
+  int UsedTiles[2] = { 0, 0 };
 
 private:
   vtkSteinVisibilitySort(const vtkSteinVisibilitySort&) = delete;

@@ -1,0 +1,398 @@
+// View-independent data of vtkSteinVisibilitySort (see hovSteinGeometry.h).
+#include "hovSteinGeometry.h"
+
+#include "hovGeometricPredicates.h" // exact Orient3d
+
+#include "vtkCellArray.h"
+#include "vtkCellType.h"
+#include "vtkDataSet.h"
+#include "vtkIdList.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkSMPThreadLocalObject.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hovStein
+{
+namespace
+{
+// Faces in any orientation (oriented per cell from the centroid).
+const Shape TetShape = { 4, 4, 6, { 3, 3, 3, 3 }, { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } },
+  { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 0, 3 }, { 1, 3 }, { 2, 3 } } };
+const Shape HexShape = { 8, 6, 12, { 4, 4, 4, 4, 4, 4 },
+  { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 } },
+  { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 }, { 0, 4 },
+    { 1, 5 }, { 2, 6 }, { 3, 7 } } };
+const Shape WedgeShape = { 6, 5, 9, { 3, 3, 4, 4, 4 },
+  { { 0, 1, 2 }, { 3, 5, 4 }, { 0, 3, 4, 1 }, { 1, 4, 5, 2 }, { 2, 5, 3, 0 } },
+  { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 3, 4 }, { 4, 5 }, { 5, 3 }, { 0, 3 }, { 1, 4 }, { 2, 5 } } };
+const Shape PyramidShape = { 5, 5, 8, { 4, 3, 3, 3, 3 },
+  { { 0, 3, 2, 1 }, { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 } },
+  { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 0, 4 }, { 1, 4 }, { 2, 4 }, { 3, 4 } } };
+const Shape NoShape = { 0, 0, 0, {}, {}, {} };
+
+/// Kind and number of corners of a VTK cell type with @p npts points (KindBad if unsupported).
+Kind KindOf(int type, vtkIdType npts, int& corners)
+{
+  struct Entry
+  {
+    int Type, Points;
+    Kind K;
+  };
+  static const Entry table[] = { { VTK_TETRA, 4, KindTet }, { VTK_QUADRATIC_TETRA, 10, KindTet },
+    { VTK_HEXAHEDRON, 8, KindHex }, { VTK_VOXEL, 8, KindHex },
+    { VTK_QUADRATIC_HEXAHEDRON, 20, KindHex }, { VTK_TRIQUADRATIC_HEXAHEDRON, 27, KindHex },
+    { VTK_WEDGE, 6, KindWedge }, { VTK_QUADRATIC_WEDGE, 15, KindWedge },
+    { VTK_PYRAMID, 5, KindPyramid }, { VTK_QUADRATIC_PYRAMID, 13, KindPyramid } };
+  for (const Entry& e : table)
+  {
+    if (e.Type == type)
+    {
+      if (npts != e.Points)
+      {
+        break;
+      }
+      corners = GetShape(e.K).NumCorners;
+      return e.K;
+    }
+  }
+  corners = static_cast<int>(npts);
+  return KindBad;
+}
+
+/// Point ids of cells, thread-safe: unstructured grids in parallel, others pre-extracted.
+struct CellSource
+{
+  vtkDataSet* Input;
+  vtkUnstructuredGrid* Grid;
+  vtkSMPThreadLocalObject<vtkIdList> Lists;
+  explicit CellSource(vtkDataSet* input)
+    : Input(input)
+    , Grid(vtkUnstructuredGrid::SafeDownCast(input))
+  {
+  }
+  int Type(vtkIdType c) { return this->Grid ? this->Grid->GetCellTypesArray()->GetValue(c) : this->Input->GetCellType(c); }
+  vtkIdList* Ids(vtkIdType c)
+  {
+    vtkIdList* ids = this->Lists.Local();
+    if (this->Grid)
+    {
+      this->Grid->GetCells()->GetCellAtId(c, ids);
+    }
+    else
+    {
+      this->Input->GetCellPoints(c, ids);
+    }
+    return ids;
+  }
+};
+
+inline void Sub(const double* a, const double* b, double* r)
+{
+  r[0] = a[0] - b[0];
+  r[1] = a[1] - b[1];
+  r[2] = a[2] - b[2];
+}
+
+/// Code of a triangle face (a, b, c): exact, reversed if the centroid is outside.
+std::uint8_t TriangleCode(const double* a, const double* b, const double* c, const double* centre)
+{
+  const int s = hov::Orient3d(a, b, c, centre);
+  if (s == 0)
+  {
+    return FaceSkip;
+  }
+  return static_cast<std::uint8_t>(FaceExact | (s < 0 ? 4 : 0));
+}
+
+/// Code of a quadrilateral face: exact if its corners are coplanar, else Newell.
+std::uint8_t QuadCode(const double* p[4], const double* centre, Plane& plane)
+{
+  for (int omit = 3; omit >= 0; --omit)
+  {
+    const double* t[3] = { p[(omit + 1) % 4], p[(omit + 2) % 4], p[(omit + 3) % 4] };
+    const int s = hov::Orient3d(t[0], t[1], t[2], centre);
+    if (s != 0 && hov::Orient3d(t[0], t[1], t[2], p[omit]) == 0)
+    {
+      return static_cast<std::uint8_t>(FaceExact | (s < 0 ? 4 : 0) | (omit << 3));
+    }
+  }
+  double n[3] = { 0, 0, 0 }, m[3] = { 0, 0, 0 };
+  for (int i = 0; i < 4; ++i)
+  {
+    const double* u = p[i];
+    const double* v = p[(i + 1) % 4];
+    n[0] += (u[1] - v[1]) * (u[2] + v[2]);
+    n[1] += (u[2] - v[2]) * (u[0] + v[0]);
+    n[2] += (u[0] - v[0]) * (u[1] + v[1]);
+    for (int k = 0; k < 3; ++k)
+    {
+      m[k] += 0.25 * u[k];
+    }
+  }
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(len > 0) || !std::isfinite(len))
+  {
+    return FaceSkip;
+  }
+  for (double& v : n)
+  {
+    v /= len;
+  }
+  double d = -(n[0] * m[0] + n[1] * m[1] + n[2] * m[2]);
+  double dev = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    dev = std::max(dev, std::fabs(n[0] * p[i][0] + n[1] * p[i][1] + n[2] * p[i][2] + d));
+  }
+  const double side = n[0] * centre[0] + n[1] * centre[1] + n[2] * centre[2] + d;
+  if (std::fabs(side) <= dev)
+  {
+    return FaceSkip; // centroid within the face's slab: flat cell
+  }
+  const double sign = side > 0 ? -1.0 : 1.0; // outward: the centroid on the negative side
+  plane = { { sign * n[0], sign * n[1], sign * n[2] }, sign * d, dev };
+  return FaceNewell;
+}
+}
+
+const Shape& GetShape(int kind)
+{
+  switch (kind)
+  {
+    case KindTet:
+      return TetShape;
+    case KindHex:
+      return HexShape;
+    case KindWedge:
+      return WedgeShape;
+    case KindPyramid:
+      return PyramidShape;
+    default:
+      return NoShape;
+  }
+}
+
+int Geometry::OrientedFace(vtkIdType c, int f, vtkIdType ids[4]) const
+{
+  const Shape& s = GetShape(this->Kinds[c]);
+  const vtkIdType* corners = this->CellCorners(c);
+  const int n = s.FaceSize[f];
+  const bool reversed = (this->FaceCode(c, f) & 4) != 0;
+  for (int i = 0; i < n; ++i)
+  {
+    ids[i] = corners[s.Faces[f][reversed ? (n - i) % n : i]];
+  }
+  return n;
+}
+
+void Geometry::ExactTriple(vtkIdType c, int f, vtkIdType ids[3]) const
+{
+  const Shape& s = GetShape(this->Kinds[c]);
+  const vtkIdType* corners = this->CellCorners(c);
+  const std::uint8_t code = this->FaceCode(c, f);
+  const int n = s.FaceSize[f];
+  const int omit = n == 4 ? (code >> 3) & 3 : n; // triangles: nothing omitted
+  const int* loc = s.Faces[f];
+  int t[3] = { loc[(omit + 1) % n], loc[(omit + 2) % n], loc[(omit + 3) % n] };
+  if (n == 3)
+  {
+    t[0] = loc[0];
+    t[1] = loc[1];
+    t[2] = loc[2];
+  }
+  if (code & 4)
+  {
+    std::swap(t[1], t[2]);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    ids[i] = corners[t[i]];
+  }
+}
+}
+
+namespace hovStein
+{
+namespace
+{
+/// Corners and faces of one supported cell; false if it is invalid.
+bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, vtkIdList* ids, vtkIdType numPoints)
+{
+  const Shape& s = GetShape(kind);
+  vtkIdType* corners = g.Corners.data() + g.CornerOffsets[c];
+  static const int voxelToHex[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+  double centre[3] = { 0, 0, 0 };
+  for (int i = 0; i < s.NumCorners; ++i)
+  {
+    const vtkIdType id = ids->GetId(type == VTK_VOXEL ? voxelToHex[i] : i);
+    if (id < 0 || id >= numPoints)
+    {
+      return false;
+    }
+    corners[i] = id;
+    const double* x = g.Point(id);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      return false;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] += x[k] / s.NumCorners;
+    }
+  }
+  std::uint8_t* codes = g.FaceCodes.data() + MaxFaces * c;
+  if (kind == KindTet)
+  {
+    // One exact test orients all four faces (centroid-free, exact for every tet).
+    const int o = hov::Orient3d(g.Point(corners[0]), g.Point(corners[2]), g.Point(corners[1]),
+      g.Point(corners[3]));
+    for (int f = 0; f < 4; ++f)
+    {
+      codes[f] = o == 0 ? FaceSkip : static_cast<std::uint8_t>(FaceExact | (o < 0 ? 4 : 0));
+    }
+    return true;
+  }
+  for (int f = 0; f < s.NumFaces; ++f)
+  {
+    const double* p[4];
+    for (int i = 0; i < s.FaceSize[f]; ++i)
+    {
+      p[i] = g.Point(corners[s.Faces[f][i]]);
+    }
+    codes[f] = s.FaceSize[f] == 3 ? TriangleCode(p[0], p[1], p[2], centre)
+                                  : QuadCode(p, centre, g.Planes[g.PlaneOffsets[c] + f]);
+  }
+  return true;
+}
+}
+
+void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  const vtkIdType n = input->GetNumberOfCells();
+  this->NumberOfCells = n;
+  this->Points.resize(3 * numPoints);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    input->GetPoint(i, this->Points.data() + 3 * i);
+  }
+  double m[16];
+  const bool identity = !model || model->IsIdentity();
+  if (!identity)
+  {
+    vtkMatrix4x4::DeepCopy(m, model);
+  }
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[3] = { -VTK_DOUBLE_MAX,
+    -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    double* x = this->Points.data() + 3 * i;
+    if (!identity)
+    {
+      double y[3], w = m[12] * x[0] + m[13] * x[1] + m[14] * x[2] + m[15];
+      for (int k = 0; k < 3; ++k)
+      {
+        y[k] = (m[4 * k] * x[0] + m[4 * k + 1] * x[1] + m[4 * k + 2] * x[2] + m[4 * k + 3]) / w;
+      }
+      std::copy(y, y + 3, x);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      if (std::isfinite(x[k]))
+      {
+        lo[k] = std::min(lo[k], x[k]);
+        hi[k] = std::max(hi[k], x[k]);
+      }
+    }
+  }
+  this->Diagonal = lo[0] <= hi[0] ? std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+                                      (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]))
+                                  : 0.0;
+
+  // Pass 1: kinds and corner counts.
+  CellSource source(input);
+  if (!source.Grid && n > 0)
+  {
+    vtkNew<vtkIdList> warm; // initialise lazy cell structures before threading
+    input->GetCellPoints(0, warm);
+  }
+  this->Kinds.assign(n, KindBad);
+  this->CornerOffsets.assign(n + 1, 0);
+  auto pass1 = [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      const vtkIdType npts = source.Grid ? source.Grid->GetCells()->GetCellSize(c)
+                                         : source.Ids(c)->GetNumberOfIds();
+      int corners = 0;
+      this->Kinds[c] = KindOf(source.Type(c), npts, corners);
+      this->CornerOffsets[c + 1] = corners;
+    }
+  };
+  if (source.Grid)
+  {
+    vtkSMPTools::For(0, n, pass1);
+  }
+  else
+  {
+    pass1(0, n);
+  }
+  this->PlaneOffsets.assign(n, -1);
+  vtkIdType planes = 0;
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    this->CornerOffsets[c + 1] += this->CornerOffsets[c];
+    if (this->Kinds[c] != KindBad && this->Kinds[c] != KindTet)
+    {
+      this->PlaneOffsets[c] = planes;
+      planes += MaxFaces;
+    }
+  }
+  this->Corners.assign(this->CornerOffsets[n], 0);
+  this->FaceCodes.assign(MaxFaces * n, FaceSkip);
+  this->Planes.assign(planes, Plane{});
+
+  // Pass 2: corners, face orientation and planes.
+  auto pass2 = [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      vtkIdList* ids = source.Ids(c);
+      const Kind kind = static_cast<Kind>(this->Kinds[c]);
+      if (kind != KindBad && FillCell(*this, c, kind, source.Type(c), ids, numPoints))
+      {
+        continue;
+      }
+      this->Kinds[c] = KindBad;
+      vtkIdType* corners = this->Corners.data() + this->CornerOffsets[c];
+      const vtkIdType count = this->CornerOffsets[c + 1] - this->CornerOffsets[c];
+      for (vtkIdType i = 0; i < count && i < ids->GetNumberOfIds(); ++i)
+      {
+        const vtkIdType id = ids->GetId(i);
+        corners[i] = (id >= 0 && id < numPoints) ? id : -1;
+      }
+    }
+  };
+  if (source.Grid)
+  {
+    vtkSMPTools::For(0, n, pass2);
+  }
+  else
+  {
+    pass2(0, n);
+  }
+  this->NumberOfBadCells = 0;
+  this->FirstBadCell = -1;
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    if (this->Kinds[c] == KindBad)
+    {
+      this->FirstBadCell = this->NumberOfBadCells++ == 0 ? c : this->FirstBadCell;
+    }
+  }
+}
+}

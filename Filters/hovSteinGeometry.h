@@ -1,0 +1,102 @@
+/**
+ * @file hovSteinGeometry.h
+ * @brief View-independent data of vtkSteinVisibilitySort: world-space points,
+ *        cell corners and outward-oriented faces with their planes.
+ *
+ * Cells are reduced to convex polyhedra on their corner vertices (quadratic
+ * cells by their corners, voxels renumbered to hexahedron order). Each face is
+ * oriented outward independently from the cell centroid (so inverted cells
+ * work) and classified:
+ * - Exact: a triangle, or a quadrilateral whose four corners are exactly
+ *   coplanar; side tests use the exact Orient3d on three of its corners, so
+ *   faces shared by two cells give exact zeros.
+ * - Newell: a non-planar quadrilateral; plane from Newell's method plus the
+ *   maximum deviation of its corners (HIAC 6). A point counts as on the outer
+ *   side when value + deviation >= 0: tolerant, so the corners of the face
+ *   itself (and of a neighbour sharing it) always count as outside.
+ * - Skip: degenerate (collinear corners, or the centroid on the face plane,
+ *   i.e. a flat cell); never used in plane tests.
+ *
+ * Thread safety: Build() is not re-entrant; the built data are read-only.
+ */
+#ifndef hovSteinGeometry_h
+#define hovSteinGeometry_h
+
+#include "vtkType.h" // vtkIdType
+
+#include <cstdint> // std::uint8_t
+#include <vector>  // storage
+
+class vtkDataSet;
+class vtkMatrix4x4;
+
+namespace hovStein
+{
+/// Convex cell shapes (corner topology of the supported VTK types).
+enum Kind : std::uint8_t
+{
+  KindBad = 0, ///< unsupported type, invalid ids or non-finite coordinates
+  KindTet,
+  KindHex, ///< hexahedra, voxels (renumbered), quadratic and triquadratic hexahedra
+  KindWedge,
+  KindPyramid
+};
+
+/// Local corner topology of a Kind (faces in any orientation).
+struct Shape
+{
+  int NumCorners, NumFaces, NumEdges;
+  int FaceSize[6];
+  int Faces[6][4];
+  int Edges[12][2];
+};
+const Shape& GetShape(int kind);
+
+/// Face codes: bits 0-1 mode, bit 2 reversed orientation, bits 3-4 omitted quad corner.
+enum FaceMode : std::uint8_t
+{
+  FaceSkip = 0,
+  FaceExact = 1,
+  FaceNewell = 2
+};
+constexpr int MaxFaces = 6;
+
+/// Newell plane n.x + d with the maximum deviation of the face corners.
+struct Plane
+{
+  double N[3], D, Deviation;
+};
+
+struct Geometry
+{
+  vtkIdType NumberOfCells = 0;
+  std::vector<double> Points;          ///< world coordinates, 3 per input point
+  std::vector<std::uint8_t> Kinds;     ///< per cell
+  std::vector<vtkIdType> CornerOffsets; ///< per cell + 1
+  std::vector<vtkIdType> Corners;      ///< corner point ids (bad cells: all their points)
+  std::vector<std::uint8_t> FaceCodes; ///< MaxFaces per cell
+  std::vector<Plane> Planes;           ///< MaxFaces per cell with a Newell face
+  std::vector<vtkIdType> PlaneOffsets; ///< per cell: first plane, or -1
+  vtkIdType NumberOfBadCells = 0;
+  vtkIdType FirstBadCell = -1;
+  double Diagonal = 0; ///< of the world bounding box of the points
+
+  /// Build from @p input with points mapped by @p model (object to world; may be null).
+  void Build(vtkDataSet* input, vtkMatrix4x4* model);
+
+  const double* Point(vtkIdType id) const { return Points.data() + 3 * id; }
+  const vtkIdType* CellCorners(vtkIdType c) const { return Corners.data() + CornerOffsets[c]; }
+  int NumberOfCorners(vtkIdType c) const
+  {
+    return static_cast<int>(CornerOffsets[c + 1] - CornerOffsets[c]);
+  }
+  std::uint8_t FaceCode(vtkIdType c, int f) const { return FaceCodes[MaxFaces * c + f]; }
+  /// The three corners (point ids, outward counterclockwise) of an exact face.
+  void ExactTriple(vtkIdType c, int f, vtkIdType ids[3]) const;
+  /// The corners of face f in outward counterclockwise order; returns their number.
+  int OrientedFace(vtkIdType c, int f, vtkIdType ids[4]) const;
+  const Plane& FacePlane(vtkIdType c, int f) const { return Planes[PlaneOffsets[c] + f]; }
+};
+}
+
+#endif

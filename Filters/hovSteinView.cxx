@@ -1,0 +1,238 @@
+// Per-view data of vtkSteinVisibilitySort (see hovSteinView.h).
+#include "hovSteinView.h"
+
+#include "vtkCamera.h"
+#include "vtkMath.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hovStein
+{
+namespace
+{
+/// Largest float <= x and smallest float >= x.
+inline float FloatDown(double x)
+{
+  float f = static_cast<float>(x);
+  return f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+inline float FloatUp(double x)
+{
+  float f = static_cast<float>(x);
+  return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+inline double Dot(const double* a, const double* b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+}
+
+void ViewFrame::FromCamera(vtkCamera* camera, double diagonal)
+{
+  this->Parallel = camera->GetParallelProjection() != 0;
+  camera->GetPosition(this->Eye);
+  camera->GetDirectionOfProjection(this->Dop);
+  vtkMath::Normalize(this->Dop);
+  double up[3];
+  camera->GetViewUp(up);
+  vtkMath::Cross(this->Dop, up, this->Right);
+  if (vtkMath::Normalize(this->Right) == 0)
+  {
+    // View-up parallel to the view direction: any perpendicular will do.
+    vtkMath::Perpendiculars(this->Dop, this->Right, nullptr, 0);
+  }
+  vtkMath::Cross(this->Right, this->Dop, this->Up);
+  vtkMath::Normalize(this->Up);
+  this->Near = 1e-6 * std::max(diagonal, 1e-300);
+  if (this->Parallel)
+  {
+    double fp[3];
+    camera->GetFocalPoint(fp);
+    const double cx = Dot(fp, this->Right), cy = Dot(fp, this->Up);
+    const double s = 4 * std::max(camera->GetParallelScale(), 1e-300);
+    this->Window[0] = cx - 2 * s; // unknown aspect: allow up to 2:1
+    this->Window[1] = cx + 2 * s;
+    this->Window[2] = cy - s;
+    this->Window[3] = cy + s;
+  }
+  else
+  {
+    const double t = 4 * std::tan(vtkMath::RadiansFromDegrees(
+                           std::min(std::max(camera->GetViewAngle(), 1e-3), 179.0)) / 2);
+    this->Window[0] = -2 * t;
+    this->Window[1] = 2 * t;
+    this->Window[2] = -t;
+    this->Window[3] = t;
+  }
+}
+
+double View::Depth(const double* x) const
+{
+  const ViewFrame& f = this->Frame;
+  if (f.Parallel)
+  {
+    return Dot(x, f.Dop);
+  }
+  const double v[3] = { x[0] - f.Eye[0], x[1] - f.Eye[1], x[2] - f.Eye[2] };
+  return Dot(v, f.Dop);
+}
+
+int View::VisiblePoints(const Geometry& g, vtkIdType c, double* xyz) const
+{
+  if (this->ClipIndex[c] >= 0)
+  {
+    const std::vector<double>& pts = this->Clipped[this->ClipIndex[c]];
+    std::copy(pts.begin(), pts.end(), xyz);
+    return static_cast<int>(pts.size() / 3);
+  }
+  const int n = g.NumberOfCorners(c);
+  const vtkIdType* ids = g.CellCorners(c);
+  for (int i = 0; i < n; ++i)
+  {
+    std::copy(this->Proj.data() + 3 * ids[i], this->Proj.data() + 3 * ids[i] + 3, xyz + 3 * i);
+  }
+  return n;
+}
+
+namespace
+{
+/// The visible part of a straddling cell: visible corners and edge/near-plane crossings.
+std::vector<double> ClipCell(const Geometry& g, const View& v, vtkIdType c)
+{
+  const ViewFrame& f = v.Frame;
+  const Shape& s = GetShape(g.Kinds[c]);
+  const vtkIdType* ids = g.CellCorners(c);
+  std::vector<double> out;
+  for (int i = 0; i < s.NumCorners; ++i)
+  {
+    if (v.Valid[ids[i]])
+    {
+      out.insert(out.end(), v.Proj.begin() + 3 * ids[i], v.Proj.begin() + 3 * ids[i] + 3);
+    }
+  }
+  for (int e = 0; e < s.NumEdges; ++e)
+  {
+    const double* a = g.Point(ids[s.Edges[e][0]]);
+    const double* b = g.Point(ids[s.Edges[e][1]]);
+    const double za = v.Depth(a), zb = v.Depth(b);
+    if ((za > f.Near) == (zb > f.Near))
+    {
+      continue;
+    }
+    const double t = (f.Near - za) / (zb - za);
+    double p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = a[k] + t * (b[k] - a[k]) - f.Eye[k];
+    }
+    out.push_back(Dot(p, f.Right) / f.Near);
+    out.push_back(Dot(p, f.Up) / f.Near);
+    out.push_back(f.Near);
+  }
+  return out;
+}
+}
+
+void View::Setup(const Geometry& g, vtkCamera* camera)
+{
+  this->Frame.FromCamera(camera, g.Diagonal);
+  const ViewFrame& f = this->Frame;
+  const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
+  const vtkIdType n = g.NumberOfCells;
+  this->Proj.resize(3 * numPoints);
+  this->Valid.resize(numPoints);
+  vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const double* x = g.Point(i);
+      double* p = this->Proj.data() + 3 * i;
+      if (f.Parallel)
+      {
+        p[0] = Dot(x, f.Right);
+        p[1] = Dot(x, f.Up);
+        p[2] = Dot(x, f.Dop);
+        this->Valid[i] = 1;
+        continue;
+      }
+      const double v[3] = { x[0] - f.Eye[0], x[1] - f.Eye[1], x[2] - f.Eye[2] };
+      const double z = Dot(v, f.Dop);
+      p[2] = z;
+      this->Valid[i] = z > f.Near;
+      p[0] = this->Valid[i] ? Dot(v, f.Right) / z : 0.0;
+      p[1] = this->Valid[i] ? Dot(v, f.Up) / z : 0.0;
+    }
+  });
+  this->Status.resize(n);
+  this->Front.resize(n);
+  this->Rear.resize(n);
+  this->Box.resize(4 * n);
+  this->ClipIndex.assign(n, -1);
+  this->Clipped.clear();
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      const int m = g.NumberOfCorners(c);
+      const vtkIdType* ids = g.CellCorners(c);
+      double zmin = VTK_DOUBLE_MAX, zmax = -VTK_DOUBLE_MAX;
+      double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+      int valid = 0;
+      for (int i = 0; i < m; ++i)
+      {
+        if (ids[i] < 0)
+        {
+          continue;
+        }
+        const double* p = this->Proj.data() + 3 * ids[i];
+        zmin = std::min(zmin, p[2]);
+        zmax = std::max(zmax, p[2]);
+        if (this->Valid[ids[i]])
+        {
+          ++valid;
+          box[0] = std::min(box[0], p[0]);
+          box[1] = std::max(box[1], p[0]);
+          box[2] = std::min(box[2], p[1]);
+          box[3] = std::max(box[3], p[1]);
+        }
+      }
+      this->Front[c] = zmin;
+      this->Rear[c] = std::isnan(zmax) ? VTK_DOUBLE_MAX : zmax;
+      this->Status[c] = g.Kinds[c] == KindBad ? StatusBad
+        : valid == m                          ? StatusVisible
+        : valid == 0                          ? StatusHidden
+                                              : StatusStraddle;
+      float* b = this->Box.data() + 4 * c;
+      b[0] = FloatDown(box[0]);
+      b[1] = FloatUp(box[1]);
+      b[2] = FloatDown(box[2]);
+      b[3] = FloatUp(box[3]);
+    }
+  });
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    if (this->Status[c] != StatusStraddle)
+    {
+      continue;
+    }
+    this->ClipIndex[c] = static_cast<int>(this->Clipped.size());
+    this->Clipped.push_back(ClipCell(g, *this, c));
+    const std::vector<double>& pts = this->Clipped.back();
+    double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    for (size_t i = 0; i < pts.size(); i += 3)
+    {
+      box[0] = std::min(box[0], pts[i]);
+      box[1] = std::max(box[1], pts[i]);
+      box[2] = std::min(box[2], pts[i + 1]);
+      box[3] = std::max(box[3], pts[i + 1]);
+    }
+    float* b = this->Box.data() + 4 * c;
+    b[0] = FloatDown(box[0]);
+    b[1] = FloatUp(box[1]);
+    b[2] = FloatDown(box[2]);
+    b[3] = FloatUp(box[3]);
+    this->Front[c] = f.Near;
+  }
+}
+}

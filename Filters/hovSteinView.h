@@ -1,0 +1,65 @@
+/**
+ * @file hovSteinView.h
+ * @brief Per-view data of vtkSteinVisibilitySort: projected points, each cell's
+ *        visible part, screen extents and depth range.
+ *
+ * Depth z = (x - E).dop for perspective (E the eye, dop the unit direction of
+ * projection), x.dop for parallel projection. Screen coordinates: perspective
+ * ((x-E).right / z, (x-E).up / z), parallel (x.right, x.up). Perspective
+ * views clip at the near plane z = Near (a tiny distance in front of the eye):
+ * a cell straddling it is represented by its visible part (visible corners and
+ * the intersections of its edges with the near plane); a cell entirely behind
+ * it is hidden. Screen extents are rounded outward to float.
+ *
+ * Thread safety: Setup() runs in parallel internally; not re-entrant.
+ */
+#ifndef hovSteinView_h
+#define hovSteinView_h
+
+#include "hovSteinGeometry.h" // Geometry
+
+#include <cstdint> // std::uint8_t
+#include <vector>  // storage
+
+class vtkCamera;
+
+namespace hovStein
+{
+enum Status : std::uint8_t
+{
+  StatusVisible = 0, ///< entirely in front of the near plane
+  StatusStraddle,    ///< partly behind the near plane (clipped)
+  StatusHidden,      ///< entirely behind the near plane
+  StatusBad          ///< not ordered (Geometry KindBad)
+};
+
+struct ViewFrame
+{
+  bool Parallel = false;
+  double Eye[3] = { 0, 0, 0 }; ///< perspective only
+  double Dop[3] = { 0, 0, 1 }, Right[3] = { 1, 0, 0 }, Up[3] = { 0, 1, 0 };
+  double Near = 0;        ///< perspective only
+  double Window[4] = {};  ///< sane screen region for tiling: xmin, xmax, ymin, ymax
+  void FromCamera(vtkCamera* camera, double diagonal);
+};
+
+struct View
+{
+  ViewFrame Frame;
+  std::vector<double> Proj;            ///< per point: screen x, y, depth z
+  std::vector<std::uint8_t> Valid;     ///< per point: in front of the near plane
+  std::vector<std::uint8_t> Status;    ///< per cell
+  std::vector<double> Front, Rear;     ///< per cell: depth range of the visible part
+  std::vector<float> Box;              ///< per cell: xmin, xmax, ymin, ymax (outward)
+  std::vector<int> ClipIndex;          ///< per cell: index in Clipped, or -1
+  std::vector<std::vector<double>> Clipped; ///< visible parts: x, y, z per point
+
+  void Setup(const Geometry& g, vtkCamera* camera);
+  /// Screen points (x, y, z triples) of the visible part of a cell; returns their number.
+  int VisiblePoints(const Geometry& g, vtkIdType c, double* xyz) const;
+  /// Depth of a world point.
+  double Depth(const double* x) const;
+};
+}
+
+#endif
