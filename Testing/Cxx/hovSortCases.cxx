@@ -27,7 +27,7 @@ std::vector<vtkIdType> FullOrder(vtkVisibilitySort* sort, vtkUnstructuredGrid* g
   vtkNew<vtkMatrix4x4> identity;
   sort->SetInput(grid);
   sort->SetCamera(cam);
-  sort->SetModelTransform(model ? model : identity.Get());
+  sort->SetModelTransform(model ? model : identity.Get()); // copies the values
   sort->SetDirection(direction);
   sort->SetMaxCellsReturned(97); // several chunks: GetNextCells() is exercised too
   std::vector<vtkIdType> order;
@@ -72,6 +72,17 @@ SortCase RunSortCase(const std::string& mesh, vtkUnstructuredGrid* grid, const S
   c.Cells = grid->GetNumberOfCells();
   vtkNew<vtkCamera> cam;
   view.Apply(cam);
+  {
+    std::ostringstream s;
+    s.precision(17);
+    const double* p = cam->GetPosition();
+    const double* f = cam->GetFocalPoint();
+    const double* u = cam->GetViewUp();
+    s << "position (" << p[0] << ", " << p[1] << ", " << p[2] << "), focal point (" << f[0] << ", "
+      << f[1] << ", " << f[2] << "), view up (" << u[0] << ", " << u[1] << ", " << u[2] << "), "
+      << (view.Parallel ? "parallel" : "perspective") << ", view angle " << view.ViewAngle;
+    c.Camera = s.str();
+  }
 
   vtkNew<vtkSteinVisibilitySort> stein;
   auto t0 = std::chrono::steady_clock::now();
@@ -82,12 +93,12 @@ SortCase RunSortCase(const std::string& mesh, vtkUnstructuredGrid* grid, const S
   vtkNew<vtkIdList> cycleCells;
   stein->GetCycleCells(cycleCells);
   c.CycleCells = cycleCells->GetNumberOfIds();
+  c.FilterViolationsStein = FilterViolations(grid, cam, model, stein);
   std::vector<vtkIdType> ftb = FullOrder(stein, grid, cam, model, vtkVisibilitySort::FRONT_TO_BACK);
   c.Stein = CheckVisibilityOrder(grid, cam, model, btf, options);
   std::vector<vtkIdType> ftbReversed(ftb.rbegin(), ftb.rend());
   c.FrontToBackIsReverse = ftbReversed == btf;
   c.SteinFrontToBack = CheckVisibilityOrder(grid, cam, model, ftbReversed, options);
-  c.FilterViolationsStein = FilterViolations(grid, cam, model, stein);
 
   vtkNew<vtkCellCenterDepthSort> center;
   t0 = std::chrono::steady_clock::now();
@@ -134,7 +145,8 @@ bool CheckExactCase(Checker& ck, const SortCase& c)
   {
     what << "\n      BTF: " << c.Stein.Str() << "\n      FTB: " << c.SteinFrontToBack.Str()
          << "\n      FTB is reverse: " << c.FrontToBackIsReverse << ", cycles " << c.Cycles
-         << ", unordered " << c.Unordered << ", filter violations " << c.FilterViolationsStein;
+         << ", unordered " << c.Unordered << ", filter violations " << c.FilterViolationsStein
+         << "\n      camera: " << c.Camera;
     for (const auto& p : c.Stein.Examples)
     {
       what << "\n      wrong pair: cell " << p.first << " is in front of cell " << p.second

@@ -32,6 +32,7 @@ std::vector<vtkIdType> FullOrder(vtkVisibilitySort* sort, vtkUnstructuredGrid* g
 struct SortCase
 {
   std::string Mesh, View;
+  std::string Camera; // position, focal point, view up, projection (for reproductions)
   vtkIdType Cells = 0;
   OracleResult Stein, SteinFrontToBack, Center;
   bool FrontToBackIsReverse = false;
