@@ -95,21 +95,8 @@ def main():
     sorter.Update()
     ftb = vtk_to_numpy(sorter.GetOutput().GetCellData().GetArray("vtkOriginalCellIds"))
     check(np.array_equal(ftb, orig[::-1]), "FRONT_TO_BACK is the reverse of BACK_TO_FRONT")
-    sorter.SetDirectionToBackToFront()
-
-    # A camera change re-executes (MTime includes the camera's).
-    sorter.Update()
-    before = sorter.GetOutput().GetMTime()
-    sorter.Update()
-    check(sorter.GetOutput().GetMTime() == before, "no re-execution without a change")
-    camera.Azimuth(60)
-    sorter.Update()
-    moved = vtk_to_numpy(sorter.GetOutput().GetCellData().GetArray("vtkOriginalCellIds"))
-    check(sorter.GetOutput().GetMTime() > before and not np.array_equal(moved, orig),
-          "a camera change re-executes the filter with a new order")
     check(int(field(sorter.GetOutput(), "NumberOfViolations")[0]) == 0,
-          "Stein: 0 violations after the camera moved")
-
+          "Stein, front to back: 0 violations")
     # VTK's cell-centre sort through the same filter.
     sorter.SetVisibilitySort(vtkCellCenterDepthSort())
     sorter.Update()
@@ -120,6 +107,20 @@ def main():
     check(center >= 0, "vtkCellCenterDepthSort: violations reported (>= 0)")
     check(int(field(sorter.GetOutput(), "NumberOfCycles")[0]) == -1,
           "vtkCellCenterDepthSort: cycles not reported (-1)")
+
+    # A camera change re-executes (MTime includes the camera's); checked with
+    # the cheap cell-centre sort to keep the test short.
+    sorter.SetDirectionToBackToFront()
+    sorter.Update()
+    first = vtk_to_numpy(sorter.GetOutput().GetCellData().GetArray("vtkOriginalCellIds")).copy()
+    before = sorter.GetOutput().GetMTime()
+    sorter.Update()
+    check(sorter.GetOutput().GetMTime() == before, "no re-execution without a change")
+    camera.Azimuth(60)
+    sorter.Update()
+    moved = vtk_to_numpy(sorter.GetOutput().GetCellData().GetArray("vtkOriginalCellIds"))
+    check(sorter.GetOutput().GetMTime() > before and not np.array_equal(moved, first),
+          "a camera change re-executes the filter with a new order")
 
     print(f"{len(FAILURES)} failures")
     return 1 if FAILURES else 0
