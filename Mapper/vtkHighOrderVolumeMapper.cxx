@@ -8,8 +8,9 @@
 
 #include "hovTransferFunction.h" // the kernel table
 
+#include "vtkSteinVisibilitySort.h" // the default (exact) visibility sort
+
 #include "vtkCamera.h"
-#include "vtkCellCenterDepthSort.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -48,6 +49,9 @@ struct vtkHighOrderVolumeMapper::Internals
   vtkMTimeType OrderMatrixTime = 0;
   vtkMTimeType OrderSortTime = 0;
   unsigned long OrderGeneration = ~0ul;
+  // The Stein sort found a cycle in the current order: composite per pixel.
+  bool OrderHasCycles = false;
+  unsigned long CycleWarningGeneration = ~0ul;
 
   vtkNew<vtkHighOrderTransferFunction> TransferFunction;
   vtkHighOrderCellProjector Projector;
@@ -60,7 +64,7 @@ struct vtkHighOrderVolumeMapper::Internals
 vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
   : Impl(new Internals)
 {
-  vtkCellCenterDepthSort* sort = vtkCellCenterDepthSort::New();
+  vtkSteinVisibilitySort* sort = vtkSteinVisibilitySort::New();
   this->SetVisibilitySort(sort);
   sort->Delete();
 }
@@ -174,6 +178,7 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
       impl.OrderGeneration = impl.SetupGeneration;
       impl.OrderCamera = nullptr;
     }
+    impl.OrderHasCycles = false;
     return true;
   }
   vtkMatrix4x4* matrix = volume->GetMatrix();
@@ -211,6 +216,15 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
     }
   }
   std::reverse(impl.FrontToBack.begin(), impl.FrontToBack.end());
+  vtkSteinVisibilitySort* stein = vtkSteinVisibilitySort::SafeDownCast(sort);
+  impl.OrderHasCycles = stein && stein->GetNumberOfCycles() > 0;
+  if (impl.OrderHasCycles && impl.CycleWarningGeneration != impl.SetupGeneration)
+  {
+    impl.CycleWarningGeneration = impl.SetupGeneration; // once per input
+    vtkWarningMacro("The visibility order of this view has " << stein->GetNumberOfCycles()
+                                                          << " cycle(s); frames with cycles are "
+                                                             "composited with PER_PIXEL_SORT.");
+  }
   if (impl.FrontToBack.size() != impl.Setup.GetTetras().size())
   {
     vtkWarningMacro("The visibility sort returned " << impl.FrontToBack.size() << " of "
@@ -321,7 +335,8 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     settings.Integration.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
     settings.Integration.Method = static_cast<hov::SegmentMethod>(this->IntegrationMethod);
     settings.TerminationTransmittance = this->TerminationTransmittance;
-    settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT;
+    // A cyclic order cannot be exact: fall back to the per-pixel order.
+    settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT || impl.OrderHasCycles;
     settings.TileSize = this->TileSize;
     const vtkHighOrderCellProjector::Statistics st = impl.Projector.Render(impl.Setup,
       impl.FrontToBack, rays, impl.TransferFunction->GetTable(), settings, depth, impl.RGBA);

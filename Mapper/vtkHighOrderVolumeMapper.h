@@ -4,8 +4,9 @@
  *
  * A vtkUnstructuredGridVolumeMapper that reads the same vtkVolumeProperty as
  * VTK's volume mappers. Render mode implemented so far: the accurate CPU path
- * (HIAC, Williams, Max & Stein 1998, sections 4-5.1): linear tetrahedra in
- * visibility order (per pixel, or from a vtkVisibilitySort), exact ray
+ * (HIAC, Williams, Max & Stein 1998, sections 4-6): linear tetrahedra in
+ * visibility order (by default from the exact vtkSteinVisibilitySort, or
+ * from any vtkVisibilitySort, or per pixel), exact ray
  * entry/exit per OpenGL pixel centre, the scalar split at every
  * transfer-function breakpoint (colour and opacity nodes alike), the exact
  * emission-absorption integral per piece (closed form with libcerf's
@@ -39,7 +40,8 @@
  *
  * Thread safety: rendering uses vtkSMPTools internally; the float image is
  * bit-identical for any number of threads.
- * @sa vtkHighOrderTransferFunction, vtkUnstructuredGridVolumeRayCastMapper,
+ * @sa vtkHighOrderTransferFunction, vtkSteinVisibilitySort, vtkCellVisibilitySortFilter,
+ * vtkUnstructuredGridVolumeRayCastMapper,
  * vtkProjectedTetrahedraMapper
  */
 #ifndef vtkHighOrderVolumeMapper_h
@@ -138,15 +140,18 @@ public:
   };
   ///@{
   /**
-   * PER_PIXEL_SORT (default): each pixel's ray segments are sorted by entry
-   * distance; exact for any set of non-overlapping cells, convex or not, with
-   * no global sort (the witness then counts pixels where cells overlap).
-   * VISIBILITY_SORT (HIAC): cells are composited in the order of the
-   * vtkVisibilitySort set with SetVisibilitySort(); exact only where that
-   * order is, and the z-buffer witness counts the pixels where it was not.
-   * VTK's only sort, vtkCellCenterDepthSort, is approximate (measured: wrong
-   * on about half the pixels of a convex block of tetrahedra in an axis
-   * perspective view), which is why it is not the default.
+   * VISIBILITY_SORT (default, HIAC): cells are composited in the order of
+   * the vtkVisibilitySort set with SetVisibilitySort(), by default a
+   * vtkSteinVisibilitySort (exact for any acyclic set of non-intersecting
+   * convex cells, HIAC section 6): the z-buffer witness then reads 0. If the
+   * Stein sort reports a cycle for a frame, the mapper warns (once per input)
+   * and composites that frame with PER_PIXEL_SORT, which is exact anyway.
+   * With another sort (e.g. VTK's approximate vtkCellCenterDepthSort) the
+   * order is exact only where that sort is, and the witness counts the pixels
+   * where it was not.
+   * PER_PIXEL_SORT: each pixel's ray segments are sorted by entry distance;
+   * exact for any set of non-overlapping cells, convex or not, with no global
+   * sort (the witness then counts pixels where cells overlap).
    */
   vtkSetClampMacro(CellOrdering, int, VISIBILITY_SORT, PER_PIXEL_SORT);
   vtkGetMacro(CellOrdering, int);
@@ -156,9 +161,9 @@ public:
 
   ///@{
   /**
-   * Visibility sort used with CellOrdering VISIBILITY_SORT (default:
-   * vtkCellCenterDepthSort, approximate; the z-buffer witness counts the
-   * pixels where it was wrong). It is given the valid tetrahedra only.
+   * Visibility sort used with CellOrdering VISIBILITY_SORT (default: a
+   * vtkSteinVisibilitySort, exact; vtkCellCenterDepthSort is VTK's
+   * approximate alternative). It is given the valid tetrahedra only.
    */
   void SetVisibilitySort(vtkVisibilitySort* sort);
   vtkGetObjectMacro(VisibilitySort, vtkVisibilitySort);
@@ -223,7 +228,7 @@ protected:
   ~vtkHighOrderVolumeMapper() override;
 
   int OpacitySemantics = GPU_COMPATIBLE;
-  int CellOrdering = PER_PIXEL_SORT;
+  int CellOrdering = VISIBILITY_SORT;
   double GPUOpacityTolerance = 1e-4;
   int EmissionModel = WILLIAMS_MAX;
   double EmissionScale = 1.0;
