@@ -108,13 +108,19 @@ void QuadraticRoots(double a, double b, double c, RootList& list)
 }
 
 /// Root of p - level between @p a and @p b, where the values @p fa and @p fb
-/// have opposite signs (rtsafe-style safeguarded Newton).
+/// have opposite signs (rtsafe-style safeguarded Newton). Starts from the
+/// regula falsi point; stops when the Newton step is below an ulp of x (the
+/// root is then within ~1 ulp plus the evaluation error over |p'|), the
+/// bracket is 2 ulp wide, or p - level is zero within its evaluation error.
 double Bracketed(const Polynomial& p, double level, double a, double b, double fa, double fb)
 {
   double xNeg = fa < 0.0 ? a : b; // where p - level < 0
   double xPos = fa < 0.0 ? b : a;
-  (void)fb;
-  double x = 0.5 * a + 0.5 * b;
+  double x = a + (b - a) * (fa / (fa - fb)); // |fa/(fa-fb)| <= 1: inside [a, b]
+  if (!(x > std::min(a, b) && x < std::max(a, b)))
+  {
+    x = 0.5 * a + 0.5 * b;
+  }
   double fPrev = std::numeric_limits<double>::infinity();
   for (int iter = 0; iter < MaxSolveIterations; ++iter)
   {
@@ -133,7 +139,12 @@ double Bracketed(const Polynomial& p, double level, double a, double b, double f
     }
     double value = 0.0, slope = 0.0;
     EvaluateWithDerivative(p, x, value, slope);
-    double next = x - f / slope;
+    const double step = f / slope;
+    double next = x - step;
+    if (std::fabs(step) <= Eps * std::fabs(x) && next >= lo && next <= hi)
+    {
+      return next; // converged: the correction is below an ulp
+    }
     // Bisect when Newton leaves the bracket or stalls (|f| not halved).
     if (!(next > lo && next < hi) || std::fabs(f) > 0.5 * std::fabs(fPrev))
     {
@@ -389,6 +400,15 @@ double SolveMonotone(const Polynomial& p, double level, double lo, double hi)
   if ((fLo < 0.0) == (fHi < 0.0))
   {
     return std::fabs(fLo) <= std::fabs(fHi) ? lo : hi; // not bracketed
+  }
+  if (EffectiveDegree(p) <= 2)
+  {
+    // Closed form (cheaper than Newton): exactly one root in a sign change.
+    double roots[Polynomial::MaxDegree];
+    if (FindRoots(p, level, lo, hi, roots) == 1)
+    {
+      return roots[0];
+    }
   }
   return Bracketed(p, level, lo, hi, fLo, fHi);
 }
