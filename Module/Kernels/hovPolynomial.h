@@ -113,7 +113,9 @@ HOV_EXPORT int FindRoots(const Polynomial& p, double level, double lo, double hi
 
 /**
  * The root of p(t) = @p level in [@p lo, @p hi] for p monotone there:
- * safeguarded Newton/bisection on a sign change. If the level is not
+ * the closed form for degree <= 2, else safeguarded Newton/bisection on the
+ * sign change (regula falsi start; stops at a step below 1 ulp, a 2-ulp
+ * bracket, or a residual within the evaluation bound). If the level is not
  * bracketed, the end where |p - level| is smaller is returned (an end within
  * the evaluation error of the level counts as the root).
  */

@@ -10,9 +10,10 @@ namespace hov
 {
 namespace
 {
-// Gauss-Kronrod 7-15 on [-1, 1] (QUADPACK qk15; a typo would show in the reference
-// tests of TestPolynomialSegment). Nodes +-XGK[i]; XGK[1], XGK[3], XGK[5], XGK[7] = 0
-// are the 7 Gauss nodes with weights WG.
+// Gauss-Kronrod 7-15 on [-1, 1] (QUADPACK qk15; a typo would show in the
+// reference tests of TestPolynomialSegment). Nodes +-XGK[i], Kronrod weights
+// WGK[i]; the odd entries XGK[1], XGK[3], XGK[5] and XGK[7] = 0 are the 7
+// Gauss nodes, with Gauss weights WG[0..3].
 constexpr double XGK[8] = { 0.991455371120812639206854697526329,
   0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
   0.741531185599394439863864773280788, 0.586087235467691130294144845693013,

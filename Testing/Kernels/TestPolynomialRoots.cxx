@@ -287,3 +287,32 @@ TEST(PolynomialRoots, RandomSweepResidualsCompletenessNoNaN)
   EXPECT_EQ(found, checked) << "worst at " << condRatio.Where;
   EXPECT_GT(checked, 3000);
 }
+
+TEST(PolynomialRoots, SolveMonotoneBracketsAndEnds)
+{
+  // Monotone cubic t^3 + t on [-1, 2] (Newton path) and quadratic t^2 on
+  // [0.5, 3] (closed-form path): roots against 50 digits.
+  const hov::Polynomial cubic = hov::Polynomial::FromCoefficients({ 0.0, 1.0, 0.0, 1.0 });
+  const hov::Polynomial square = hov::Polynomial::FromCoefficients({ 0.0, 0.0, 1.0 });
+  Worst w;
+  for (double level : { -1.5, 0.0, 0.3, 1.0, 2.0, 9.0 })
+  {
+    const double r = hov::SolveMonotone(cubic, level, -1.0, 2.0);
+    const Mp res = hovtest::EvalMp(cubic, r) - Mp(level);
+    // |p(r)| / p'(r): distance to the true root to first order.
+    const double dist = std::fabs(static_cast<double>(res)) / (3 * r * r + 1);
+    w.Add(dist, Str(level));
+    EXPECT_LE(dist, 2.3e-16 * std::max(1.0, std::fabs(r))) << level;
+  }
+  for (double level : { 0.25, 1.0, 2.0, 8.99 })
+  {
+    const double r = hov::SolveMonotone(square, level, 0.5, 3.0);
+    EXPECT_LE(hovtest::AbsErr(r, sqrt(Mp(level))), 4.5e-16) << level;
+  }
+  // Not bracketed: the end nearer the level.
+  EXPECT_EQ(hov::SolveMonotone(cubic, 100.0, -1.0, 2.0), 2.0);
+  EXPECT_EQ(hov::SolveMonotone(cubic, -100.0, -1.0, 2.0), -1.0);
+  // Degenerate interval.
+  EXPECT_EQ(hov::SolveMonotone(cubic, 0.5, 0.25, 0.25), 0.25);
+  hovtest::ReportMeasured("PolynomialRoots.SolveMonotoneDistance", w);
+}
