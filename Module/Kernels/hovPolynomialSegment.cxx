@@ -250,6 +250,64 @@ PieceOutput IntegratePiece(const TransferFunction& tf, int k, const Polynomial& 
   }
   return out;
 }
+
+/// Integrates the monotone runs of s front to back into Accum and Result.
+struct RunWalker
+{
+  const TransferFunction& Table;
+  const Polynomial& Field;
+  bool Emission;
+  double BudgetPerLength;
+  int PanelsLeft;
+  RGBA Accum;
+  PolynomialSegmentResult& Result;
+
+  /**
+   * Run [t0, t1] on which s goes monotonically from @p sStart to @p sEnd:
+   * walk the table's intervals (as IntegrateLinearScalar does), each node in
+   * between crossed once. Returns false once the accumulation is opaque.
+   */
+  bool Walk(double t0, double t1, double sStart, double sEnd)
+  {
+    const std::vector<double>& nodes = this->Table.GetNodes();
+    const int n = static_cast<int>(nodes.size());
+    const bool up = sEnd > sStart;
+    int k = up ? this->Table.FindIntervalUpward(sStart) : this->Table.FindIntervalDownward(sStart);
+    double tPrev = t0, sPrev = sStart;
+    while (true)
+    {
+      double sNext = sEnd, tNext = t1;
+      const bool last = !(up ? (k + 1 < n && nodes[k + 1] < sEnd) : (k >= 0 && nodes[k] > sEnd));
+      if (!last)
+      {
+        sNext = up ? nodes[k + 1] : nodes[k];
+        tNext = std::min(std::max(SolveMonotone(this->Field, sNext, tPrev, t1), tPrev), t1);
+      }
+      if (tNext > tPrev)
+      {
+        const double transmit = 1.0 - this->Accum.A;
+        const PieceOutput piece = IntegratePiece(this->Table, k, this->Field, tPrev, tNext - tPrev,
+          sPrev, sNext, transmit, this->BudgetPerLength, this->Emission, this->PanelsLeft);
+        this->Result.ErrorEstimate += transmit * piece.Error;
+        this->Result.Panels += piece.Panels;
+        this->Result.Converged = this->Result.Converged && piece.Converged;
+        ++this->Result.Pieces;
+        CompositeBehind(this->Accum, piece.Color);
+        if (this->Accum.A >= 1.0)
+        {
+          return false;
+        }
+      }
+      if (last)
+      {
+        return true;
+      }
+      tPrev = tNext;
+      sPrev = sNext;
+      k += up ? 1 : -1;
+    }
+  }
+};
 }
 
 PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, const Polynomial& s,
@@ -283,9 +341,8 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
   }
   Polynomial field = s;
   field.Degree = degree;
-  const bool emission = settings.Emission == EmissionModel::WilhelmsVanGelder;
-  const std::vector<double>& nodes = tf.GetNodes();
-  const int n = static_cast<int>(nodes.size());
+  RunWalker walker{ tf, field, settings.Emission == EmissionModel::WilhelmsVanGelder,
+    std::max(settings.Tolerance, 0.0) / length, std::max(settings.MaxPanels, 1), RGBA(), result };
 
   // Runs where s is monotone: [0, L] cut at the extrema of s.
   double ends[Polynomial::MaxDegree + 2];
@@ -302,64 +359,17 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
   }
   ends[nEnds++] = length;
 
-  const double budgetPerLength = std::max(settings.Tolerance, 0.0) / length;
-  int panelsLeft = std::max(settings.MaxPanels, 1);
-  RGBA accum;
   double sRunStart = field.C[0];
   for (int run = 0; run + 1 < nEnds; ++run)
   {
-    const double t0 = ends[run], t1 = ends[run + 1];
-    const double sRunEnd = EvaluateCompensated(field, t1);
-    // Walk the table's intervals from sRunStart toward sRunEnd (as
-    // IntegrateLinearScalar does); each node between is crossed once.
-    const bool up = sRunEnd > sRunStart;
-    int k = up ? tf.FindIntervalUpward(sRunStart) : tf.FindIntervalDownward(sRunStart);
-    double tPrev = t0, sPrev = sRunStart;
-    while (true)
+    const double sRunEnd = EvaluateCompensated(field, ends[run + 1]);
+    if (!walker.Walk(ends[run], ends[run + 1], sRunStart, sRunEnd))
     {
-      double sNext = sRunEnd, tNext = t1;
-      bool last = true;
-      if (up && k + 1 < n && nodes[k + 1] < sRunEnd)
-      {
-        sNext = nodes[k + 1];
-        last = false;
-      }
-      else if (!up && k >= 0 && nodes[k] > sRunEnd)
-      {
-        sNext = nodes[k];
-        last = false;
-      }
-      if (!last)
-      {
-        tNext = std::min(std::max(SolveMonotone(field, sNext, tPrev, t1), tPrev), t1);
-      }
-      if (tNext > tPrev)
-      {
-        const double transmit = 1.0 - accum.A;
-        const PieceOutput piece = IntegratePiece(tf, k, field, tPrev, tNext - tPrev, sPrev, sNext,
-          transmit, budgetPerLength, emission, panelsLeft);
-        result.ErrorEstimate += transmit * piece.Error;
-        result.Panels += piece.Panels;
-        result.Converged = result.Converged && piece.Converged;
-        ++result.Pieces;
-        CompositeBehind(accum, piece.Color);
-        if (accum.A >= 1.0)
-        {
-          result.Color = accum;
-          return result; // opaque: nothing behind is visible
-        }
-      }
-      if (last)
-      {
-        break;
-      }
-      tPrev = tNext;
-      sPrev = sNext;
-      k += up ? 1 : -1;
+      break; // opaque: nothing behind is visible
     }
     sRunStart = sRunEnd;
   }
-  result.Color = accum;
+  result.Color = walker.Accum;
   return result;
 }
 
