@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 
 namespace hovStein
@@ -140,104 +141,134 @@ bool RayTriangle(const double* o, const double* d, const double* a, const double
   t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
   return std::isfinite(t);
 }
+
+/// Largest absolute coordinate of the corners of cells @p a and @p b.
+double CoordinateScale(const Geometry& g, vtkIdType a, vtkIdType b)
+{
+  double m = 0;
+  for (vtkIdType c : { a, b })
+  {
+    const vtkIdType* ids = g.CellCorners(c);
+    for (int i = 0; i < g.NumberOfCorners(c); ++i)
+    {
+      const double* x = g.Point(ids[i]);
+      m = std::max({ m, std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
+    }
+  }
+  return m;
+}
 }
 
 Obstruction::Obstruction(const Geometry& g, const View& v)
   : G(g)
   , V(v)
-  , Facing(g.NumberOfCells, 0)
 {
 }
 
-std::uint8_t Obstruction::FrontFaces(vtkIdType c)
+int Obstruction::FaceSeparates(vtkIdType x, int f, vtkIdType y, double tol) const
 {
-  std::uint8_t& cached = this->Facing[c];
-  if (cached & 0x80)
+  const ViewFrame& fr = this->V.Frame;
+  const double back[3] = { -fr.Dop[0], -fr.Dop[1], -fr.Dop[2] };
+  const int n = this->G.NumberOfCorners(y);
+  const vtkIdType* ids = this->G.CellCorners(y);
+  const int mode = this->G.FaceCode(x, f) & 3;
+  if (mode == FaceNewell)
   {
-    return cached & 0x3f;
-  }
-  const ViewFrame& f = this->V.Frame;
-  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
-  std::uint8_t mask = 0;
-  const int nf = GetShape(this->G.Kinds[c]).NumFaces;
-  for (int i = 0; i < nf; ++i)
-  {
-    const int mode = this->G.FaceCode(c, i) & 3;
-    bool front = false;
-    if (mode == FaceExact)
+    if (tol > 0)
     {
-      vtkIdType t[3];
-      this->G.ExactTriple(c, i, t);
-      const double *a = this->G.Point(t[0]), *b = this->G.Point(t[1]), *cc = this->G.Point(t[2]);
-      front = (f.Parallel ? hov::Orient3dDirection(a, b, cc, back) : hov::Orient3d(a, b, cc, f.Eye)) < 0;
+      return NotSeparated; // already tolerant: decided in the first pass
     }
-    else if (mode == FaceNewell)
+    const Plane& pl = this->G.FacePlane(x, f);
+    for (int i = 0; i < n; ++i)
     {
-      const Plane& pl = this->G.FacePlane(c, i);
-      const double* x = f.Parallel ? back : f.Eye;
-      const double v = pl.N[0] * x[0] + pl.N[1] * x[1] + pl.N[2] * x[2] + (f.Parallel ? 0 : pl.D);
-      front = v > 0;
+      const double* p = this->G.Point(ids[i]);
+      if (pl.N[0] * p[0] + pl.N[1] * p[1] + pl.N[2] * p[2] + pl.D + pl.Deviation < 0)
+      {
+        return NotSeparated;
+      }
     }
-    mask |= front ? (1 << i) : 0;
+    const double* e = fr.Parallel ? back : fr.Eye;
+    const double side = pl.N[0] * e[0] + pl.N[1] * e[1] + pl.N[2] * e[2] + (fr.Parallel ? 0 : pl.D);
+    // Not a true separation (the face is warped): only "y not behind x" is
+    // decided; "x in front" must be confirmed by the other tests.
+    return side > 0 ? -WeakFront : WeakFront;
   }
-  cached = static_cast<std::uint8_t>(0x80 | mask);
-  return mask;
-}
-
-bool Obstruction::AllOuter(vtkIdType faceCell, int f, vtkIdType other) const
-{
-  const int n = this->G.NumberOfCorners(other);
-  const vtkIdType* ids = this->G.CellCorners(other);
-  if ((this->G.FaceCode(faceCell, f) & 3) == FaceExact)
+  if (mode != FaceExact)
   {
-    vtkIdType t[3];
-    this->G.ExactTriple(faceCell, f, t);
-    const double *a = this->G.Point(t[0]), *b = this->G.Point(t[1]), *c = this->G.Point(t[2]);
+    return NotSeparated;
+  }
+  vtkIdType t[3];
+  this->G.ExactTriple(x, f, t);
+  const double *a = this->G.Point(t[0]), *b = this->G.Point(t[1]), *c = this->G.Point(t[2]);
+  if (tol == 0)
+  {
+    // Exact: every corner of y on the closed outer side of the plane.
     for (int i = 0; i < n; ++i)
     {
       if (ids[i] != t[0] && ids[i] != t[1] && ids[i] != t[2] &&
         hov::Orient3d(a, b, c, this->G.Point(ids[i])) > 0)
       {
-        return false;
+        return NotSeparated;
       }
     }
-    return true;
+    const int eye = fr.Parallel ? hov::Orient3dDirection(a, b, c, back) : hov::Orient3d(a, b, c, fr.Eye);
+    return eye; // < 0: eye outside, y in front; > 0: x in front; 0: edge-on, no common ray
   }
-  const Plane& pl = this->G.FacePlane(faceCell, f);
+  // Tolerant: y outside up to tol (rounding of touching cells), the eye clearly on one side.
+  double nrm[3];
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  nrm[0] = u[1] * w[2] - u[2] * w[1];
+  nrm[1] = u[2] * w[0] - u[0] * w[2];
+  nrm[2] = u[0] * w[1] - u[1] * w[0];
+  const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+  if (!(len > 0) || !std::isfinite(len))
+  {
+    return NotSeparated;
+  }
+  auto dist = [&](const double* p) {
+    return ((p[0] - a[0]) * nrm[0] + (p[1] - a[1]) * nrm[1] + (p[2] - a[2]) * nrm[2]) / len;
+  };
   for (int i = 0; i < n; ++i)
   {
-    const double* x = this->G.Point(ids[i]);
-    if (pl.N[0] * x[0] + pl.N[1] * x[1] + pl.N[2] * x[2] + pl.D + pl.Deviation < 0)
+    if (dist(this->G.Point(ids[i])) < -tol)
     {
-      return false;
+      return NotSeparated;
     }
   }
-  return true;
+  const double eye = fr.Parallel
+    ? (back[0] * nrm[0] + back[1] * nrm[1] + back[2] * nrm[2]) / len
+    : dist(fr.Eye);
+  const double eyeTol = fr.Parallel ? 1e-12 : tol;
+  return eye > eyeTol ? -1 : (eye < -eyeTol ? 1 : 0);
 }
 
-bool Obstruction::SeparatedByFace(vtkIdType p, vtkIdType q)
+int Obstruction::PlaneRelation(vtkIdType a, vtkIdType b) const
 {
-  const std::uint8_t frontQ = this->FrontFaces(q);
-  const int nq = GetShape(this->G.Kinds[q]).NumFaces;
-  for (int f = 0; f < nq; ++f)
+  double tol = 0;
+  int weak = NotSeparated;
+  for (int pass = 0; pass < 2; ++pass)
   {
-    // P behind a back face of Q.
-    if ((this->G.FaceCode(q, f) & 3) != FaceSkip && !(frontQ & (1 << f)) && this->AllOuter(q, f, p))
+    for (int side = 0; side < 2; ++side)
     {
-      return true;
+      const vtkIdType x = side ? b : a, y = side ? a : b;
+      const int nf = GetShape(this->G.Kinds[x]).NumFaces;
+      for (int f = 0; f < nf; ++f)
+      {
+        const int r = this->FaceSeparates(x, f, y, tol);
+        if (r == -1 || r == 0 || r == 1)
+        {
+          return side ? -r : r;
+        }
+        if ((r == WeakFront || r == -WeakFront) && weak == NotSeparated)
+        {
+          weak = side ? -r : r; // kept unless a true separating plane follows
+        }
+      }
     }
+    tol = 1e-11 * std::max(CoordinateScale(this->G, a, b), 1e-300);
   }
-  const std::uint8_t frontP = this->FrontFaces(p);
-  const int np = GetShape(this->G.Kinds[p]).NumFaces;
-  for (int f = 0; f < np; ++f)
-  {
-    // Q in front of a front face of P.
-    if ((this->G.FaceCode(p, f) & 3) != FaceSkip && (frontP & (1 << f)) && this->AllOuter(p, f, q))
-    {
-      return true;
-    }
-  }
-  return false;
+  return weak;
 }
 
 int Obstruction::EdgeCrossings(vtkIdType p, vtkIdType q, bool& crossed) const
@@ -247,7 +278,6 @@ int Obstruction::EdgeCrossings(vtkIdType p, vtkIdType q, bool& crossed) const
   const vtkIdType* ip = this->G.CellCorners(p);
   const vtkIdType* iq = this->G.CellCorners(q);
   const double* proj = this->V.Proj.data();
-  const bool parallel = this->V.Frame.Parallel;
   crossed = false;
   for (int e = 0; e < sp.NumEdges; ++e)
   {
@@ -277,22 +307,56 @@ int Obstruction::EdgeCrossings(vtkIdType p, vtkIdType q, bool& crossed) const
         continue;
       }
       crossed = true;
-      // Screen parameters of the crossing on both edges, then the depths there.
-      const double r[2] = { b[0] - a[0], b[1] - a[1] }, s[2] = { d[0] - c[0], d[1] - c[1] };
-      const double w[2] = { c[0] - a[0], c[1] - a[1] };
-      const double den = r[0] * s[1] - r[1] * s[0];
-      const double lam = std::min(1.0, std::max(0.0, (w[0] * s[1] - w[1] * s[0]) / den));
-      const double mu = std::min(1.0, std::max(0.0, (w[0] * r[1] - w[1] * r[0]) / den));
-      const double zp = parallel ? a[2] + lam * (b[2] - a[2]) : 1 / ((1 - lam) / a[2] + lam / b[2]);
-      const double zq = parallel ? c[2] + mu * (d[2] - c[2]) : 1 / ((1 - mu) / c[2] + mu / d[2]);
-      const double tol = 1e-9 * (std::fabs(zp) + std::fabs(zq)) + 1e-12 * this->G.Diagonal;
-      if (std::fabs(zp - zq) > tol)
+      const int r = this->CrossingOrder(a, b, c, d);
+      if (r != 0)
       {
-        return zp < zq ? 1 : -1;
+        return r;
       }
     }
   }
   return 0;
+}
+
+int Obstruction::CrossingOrder(const double* a, const double* b, const double* c, const double* d) const
+{
+  // Screen parameters of the crossing on both edges, with their rounding error
+  // bounds: nearly parallel (e.g. collinear edges on a shared plane, "crossing"
+  // only by rounding) give huge bounds and stay inconclusive.
+  const double r[2] = { b[0] - a[0], b[1] - a[1] }, s[2] = { d[0] - c[0], d[1] - c[1] };
+  const double w[2] = { c[0] - a[0], c[1] - a[1] };
+  const double den = r[0] * s[1] - r[1] * s[0];
+  const double lr = std::hypot(r[0], r[1]), ls = std::hypot(s[0], s[1]), lw = std::hypot(w[0], w[1]);
+  if (!(std::fabs(den) > 1e-9 * lr * ls))
+  {
+    return 0;
+  }
+  const double m = std::max({ std::fabs(a[0]), std::fabs(a[1]), std::fabs(b[0]), std::fabs(b[1]),
+    std::fabs(c[0]), std::fabs(c[1]), std::fabs(d[0]), std::fabs(d[1]) });
+  const double err = 64 * DBL_EPSILON * m * (lr + ls + lw) / std::fabs(den); // of lam and mu
+  const double lam = std::min(1.0, std::max(0.0, (w[0] * s[1] - w[1] * s[0]) / den));
+  const double mu = std::min(1.0, std::max(0.0, (w[0] * r[1] - w[1] * r[0]) / den));
+  double zp, zq, slopeP, slopeQ; // depths and |dz/dparameter| there
+  if (this->V.Frame.Parallel)
+  {
+    zp = a[2] + lam * (b[2] - a[2]);
+    zq = c[2] + mu * (d[2] - c[2]);
+    slopeP = std::fabs(b[2] - a[2]);
+    slopeQ = std::fabs(d[2] - c[2]);
+  }
+  else
+  {
+    zp = 1 / ((1 - lam) / a[2] + lam / b[2]);
+    zq = 1 / ((1 - mu) / c[2] + mu / d[2]);
+    slopeP = zp * zp * std::fabs(1 / b[2] - 1 / a[2]);
+    slopeQ = zq * zq * std::fabs(1 / d[2] - 1 / c[2]);
+  }
+  const double tol = 1e-9 * (std::fabs(zp) + std::fabs(zq)) + 1e-12 * this->G.Diagonal +
+    err * (slopeP + slopeQ);
+  if (!(std::fabs(zp - zq) > tol))
+  {
+    return 0; // touching at the crossing (or too ill-conditioned): inconclusive
+  }
+  return zp < zq ? 1 : -1;
 }
 
 bool Obstruction::ProjectionsTouchOnly(vtkIdType p, vtkIdType q) const
@@ -315,6 +379,35 @@ bool Obstruction::ProjectionsTouchOnly(vtkIdType p, vtkIdType q) const
       return false;
     }
   }
+  return true;
+}
+
+bool Obstruction::Overlap(vtkIdType p, vtkIdType q, double centre[2]) const
+{
+  double xp[3 * MaxPts], xq[3 * MaxPts], hp[2 * MaxPts + 2][2], hq[2 * MaxPts + 2][2];
+  const int mp = Hull2d(xp, this->V.VisiblePoints(this->G, p, xp), hp);
+  const int mq = Hull2d(xq, this->V.VisiblePoints(this->G, q, xq), hq);
+  if (mp < 3 || mq < 3)
+  {
+    return false; // a projection without area hides nothing
+  }
+  const double areaP = Area(hp, mp), areaQ = Area(hq, mq);
+  const int m = ClipPolygon(hp, mp, hq, mq);
+  const double area = m >= 3 ? Area(hp, m) : 0.0;
+  if (!(area > 1e-10 * std::min(areaP, areaQ)))
+  {
+    return false;
+  }
+  double cx = 0, cy = 0; // area centroid of the overlap: strictly inside both
+  for (int i = 0; i < m; ++i)
+  {
+    const int j = (i + 1) % m;
+    const double w = hp[i][0] * hp[j][1] - hp[j][0] * hp[i][1];
+    cx += (hp[i][0] + hp[j][0]) * w;
+    cy += (hp[i][1] + hp[j][1]) * w;
+  }
+  centre[0] = cx / (6 * area);
+  centre[1] = cy / (6 * area);
   return true;
 }
 
@@ -351,38 +444,19 @@ bool Obstruction::RayInterval(
   return true;
 }
 
-bool Obstruction::RayTest(vtkIdType p, vtkIdType q) const
+int Obstruction::RayTest(vtkIdType p, vtkIdType q) const
 {
-  double xp[3 * MaxPts], xq[3 * MaxPts], hp[2 * MaxPts + 2][2], hq[2 * MaxPts + 2][2];
-  const int mp = Hull2d(xp, this->V.VisiblePoints(this->G, p, xp), hp);
-  const int mq = Hull2d(xq, this->V.VisiblePoints(this->G, q, xq), hq);
-  if (mp < 3 || mq < 3)
+  double centre[2];
+  if (!this->Overlap(p, q, centre))
   {
-    return false; // a projection without area hides nothing
+    return 0;
   }
-  const double areaP = Area(hp, mp), areaQ = Area(hq, mq);
-  const int m = ClipPolygon(hp, mp, hq, mq);
-  const double area = m >= 3 ? Area(hp, m) : 0.0;
-  if (!(area > 1e-10 * std::min(areaP, areaQ)))
-  {
-    return false;
-  }
-  double cx = 0, cy = 0; // area centroid of the overlap
-  for (int i = 0; i < m; ++i)
-  {
-    const int j = (i + 1) % m;
-    const double w = hp[i][0] * hp[j][1] - hp[j][0] * hp[i][1];
-    cx += (hp[i][0] + hp[j][0]) * w;
-    cy += (hp[i][1] + hp[j][1]) * w;
-  }
-  cx /= 6 * area;
-  cy /= 6 * area;
   const ViewFrame& f = this->V.Frame;
   double origin[3], dir[3];
   for (int k = 0; k < 3; ++k)
   {
-    origin[k] = f.Parallel ? cx * f.Right[k] + cy * f.Up[k] : f.Eye[k];
-    dir[k] = f.Parallel ? f.Dop[k] : f.Dop[k] + cx * f.Right[k] + cy * f.Up[k];
+    origin[k] = f.Parallel ? centre[0] * f.Right[k] + centre[1] * f.Up[k] : f.Eye[k];
+    dir[k] = f.Parallel ? f.Dop[k] : f.Dop[k] + centre[0] * f.Right[k] + centre[1] * f.Up[k];
   }
   double tp[2], tq[2];
   if (!this->RayInterval(p, origin, dir, tp))
@@ -393,29 +467,49 @@ bool Obstruction::RayTest(vtkIdType p, vtkIdType q) const
   {
     tq[0] = tq[1] = 0.5 * (this->V.Front[q] + this->V.Rear[q]);
   }
-  return tp[0] + tp[1] < tq[0] + tq[1];
+  const double mp = tp[0] + tp[1], mq = tq[0] + tq[1];
+  return mp < mq ? 1 : (mq < mp ? -1 : 0);
+}
+
+int Obstruction::Evidence(vtkIdType a, vtkIdType b) const
+{
+  const bool clipped = this->V.ClipIndex[a] >= 0 || this->V.ClipIndex[b] >= 0;
+  if (!clipped)
+  {
+    bool crossed = false;
+    const int decided = this->EdgeCrossings(a, b, crossed);
+    if (decided != 0)
+    {
+      return 2 * decided; // a clear crossing: the projections overlap
+    }
+    if (!crossed && this->ProjectionsTouchOnly(a, b))
+    {
+      return 0;
+    }
+  }
+  return 2 * this->RayTest(a, b); // the ray test has checked the overlap
 }
 
 bool Obstruction::Obstructs(vtkIdType p, vtkIdType q)
 {
-  if (this->SeparatedByFace(p, q))
+  // Decided for the ordered pair (min, max) so that Obstructs(p, q) and
+  // Obstructs(q, p) come from one decision and are never both true.
+  const bool swapped = q < p;
+  int r = swapped ? this->PlaneRelation(q, p) : this->PlaneRelation(p, q);
+  if (r == NotSeparated)
   {
-    return false;
+    r = swapped ? this->Evidence(q, p) : this->Evidence(p, q);
   }
-  const bool clipped = this->V.ClipIndex[p] >= 0 || this->V.ClipIndex[q] >= 0;
-  if (!clipped)
+  r = swapped ? -r : r;
+  if (r == 1)
   {
-    bool crossed = false;
-    const int decided = this->EdgeCrossings(p, q, crossed);
-    if (decided != 0)
-    {
-      return decided > 0;
-    }
-    if (!crossed && this->ProjectionsTouchOnly(p, q))
-    {
-      return false;
-    }
+    double centre[2];
+    return this->Overlap(p, q, centre); // separated with p in front: do they overlap?
   }
-  return this->RayTest(p, q);
+  if (r == WeakFront)
+  {
+    return this->Evidence(p, q) > 0; // Obstructs(q, p) is false without evaluation
+  }
+  return r > 0;
 }
 }
