@@ -87,9 +87,27 @@ public:
   vtkIdTypeArray* GetNextCells() override;
   ///@}
 
+  /// The ordering algorithms (see the class doc).
+  enum Algorithms
+  {
+    ADJACENCY_GRAPH = 0, ///< default: face adjacency DAG + Obstructs() on boundary cells
+    MULTITILED_MERGE = 1 ///< HIAC 6.2 as published
+  };
+
   ///@{
   /**
-   * Tiles of the multitiled merge (HIAC 6.2). 0 (default) means
+   * The ordering algorithm (default ADJACENCY_GRAPH). Both are exact for
+   * acyclic sets of non-intersecting convex cells.
+   */
+  vtkSetClampMacro(Algorithm, int, ADJACENCY_GRAPH, MULTITILED_MERGE);
+  vtkGetMacro(Algorithm, int);
+  void SetAlgorithmToAdjacencyGraph() { this->SetAlgorithm(ADJACENCY_GRAPH); }
+  void SetAlgorithmToMultitiledMerge() { this->SetAlgorithm(MULTITILED_MERGE); }
+  ///@}
+
+  ///@{
+  /**
+   * Tiles of the multitiled merge (HIAC 6.2; MULTITILED_MERGE only). 0 (default) means
    * ceil(n^(1/6)) in each direction for n cells.
    */
   vtkSetClampMacro(NumberOfTilesX, int, 0, 4096);
@@ -117,7 +135,9 @@ public:
    * - NumberOfUnorderedCells: unsupported or invalid cells output first.
    * - NumberOfObstructsTests: pairs tested with Obstructs() (full tests,
    *   not counting pairs skipped by depth or by last-comparison marks).
-   * - NumberOfMoves: cells moved to the head of the global list.
+   * - NumberOfMoves: cells moved to the head of the global list (merge).
+   * - NumberOfGraphEdges: edges of the visibility DAG (adjacency graph),
+   *   NumberOfBoundaryCells: cells with a boundary face (adjacency graph).
    * - LastSortSeconds / LastSetupSeconds: wall time of the last sort and of
    *   the view-independent set-up it needed (0 when it was reused).
    */
@@ -126,6 +146,8 @@ public:
   vtkGetMacro(NumberOfUnorderedCells, vtkIdType);
   vtkGetMacro(NumberOfObstructsTests, vtkIdType);
   vtkGetMacro(NumberOfMoves, vtkIdType);
+  vtkGetMacro(NumberOfGraphEdges, vtkIdType);
+  vtkGetMacro(NumberOfBoundaryCells, vtkIdType);
   vtkGetMacro(LastSortSeconds, double);
   vtkGetMacro(LastSetupSeconds, double);
   ///@}
@@ -140,12 +162,15 @@ protected:
   vtkSteinVisibilitySort();
   ~vtkSteinVisibilitySort() override;
 
+  int Algorithm = ADJACENCY_GRAPH;
   int NumberOfTilesX = 0;
   int NumberOfTilesY = 0;
   vtkIdType NumberOfCycles = 0;
   vtkIdType NumberOfUnorderedCells = 0;
   vtkIdType NumberOfObstructsTests = 0;
   vtkIdType NumberOfMoves = 0;
+  vtkIdType NumberOfGraphEdges = 0;
+  vtkIdType NumberOfBoundaryCells = 0;
   double LastSortSeconds = 0.0;
   double LastSetupSeconds = 0.0;
   int UsedTiles[2] = { 0, 0 };
@@ -153,6 +178,9 @@ protected:
 private:
   vtkSteinVisibilitySort(const vtkSteinVisibilitySort&) = delete;
   void operator=(const vtkSteinVisibilitySort&) = delete;
+
+  void SortMerge();
+  void SortGraph();
 
   struct Internals;
   std::unique_ptr<Internals> Impl;
