@@ -351,22 +351,19 @@ void BuildDigraph(const Topology& t, const std::vector<std::int8_t>& dir,
   }
 }
 
-/// Cells by rearmost depth, back to front, split into ordered and not ordered.
-void RoughOrder(const View& v, vtkIdType n, std::vector<vtkIdType>& first, std::vector<vtkIdType>& rough)
+/// Cells split into ordered ones (by id) and the others (back to front by rearmost depth).
+void SplitCells(const View& v, vtkIdType n, std::vector<vtkIdType>& first, std::vector<vtkIdType>& rough)
 {
   for (vtkIdType c = 0; c < n; ++c)
   {
     (Ordered(v, c) ? rough : first).push_back(c);
   }
-  for (std::vector<vtkIdType>* list : { &first, &rough })
+  std::vector<float> keys(first.size());
+  for (size_t i = 0; i < first.size(); ++i)
   {
-    std::vector<float> keys(list->size());
-    for (size_t i = 0; i < list->size(); ++i)
-    {
-      keys[i] = static_cast<float>(v.Rear[(*list)[i]]);
-    }
-    RadixSortDescending(*list, keys);
+    keys[i] = static_cast<float>(v.Rear[first[i]]);
   }
+  RadixSortDescending(first, keys);
 }
 }
 
@@ -378,7 +375,7 @@ void SortByGraph(const Geometry& g, const Topology& t, const View& v,
   order.clear();
   order.reserve(n);
   std::vector<vtkIdType> first, rough;
-  RoughOrder(v, n, first, rough);
+  SplitCells(v, n, first, rough);
   order.insert(order.end(), first.begin(), first.end());
   if (rough.empty())
   {
@@ -398,6 +395,6 @@ void SortByGraph(const Geometry& g, const Topology& t, const View& v,
   stats.ObstructEdges = static_cast<vtkIdType>(extra.size());
   Digraph d;
   BuildDigraph(t, dir, extra, n, d);
-  TopologicalOrder(d, rough, order, stats);
+  TopologicalOrder(d, rough, v.Rear, order, stats);
 }
 }

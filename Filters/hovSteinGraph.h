@@ -21,8 +21,9 @@
  *    intersection of the extents), Obstructs(a, b) adds the edge b -> a.
  *    Runs in parallel over blocks of tiles, one Obstruction per thread; edges
  *    are concatenated in block order, so the result is deterministic.
- * 3. Kahn's algorithm on the DAG, the initial sources in rough order (rearmost
- *    depth, back to front), FIFO. If it stalls, the strongly connected
+ * 3. Kahn's algorithm on the DAG, FIFO, the initial sources sorted back to
+ *    front by rearmost depth (a full rough sort of all cells measured ~15% of
+ *    the re-sort time at 1M cells and is not needed for exactness). If it stalls, the strongly connected
  *    components of the rest are found (iterative Tarjan) and output in
  *    topological order of the condensation, each component's cells by
  *    rearmost depth; nontrivial components are reported as cycles.
@@ -60,12 +61,13 @@ struct Digraph
 };
 
 /**
- * Topological order of the nodes listed in @p rough (the others are ignored
- * and must have no edges), ties in the order of @p rough; appends to @p order.
+ * Topological order of the nodes listed in @p cells (the others are ignored
+ * and must have no edges); the initial sources, and the cells of each cyclic
+ * component, back to front by @p rear (ties by id); appends to @p order.
  * Cycles: see the file doc.
  */
-void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& rough,
-  std::vector<vtkIdType>& order, GraphStats& stats);
+void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& cells,
+  const std::vector<double>& rear, std::vector<vtkIdType>& order, GraphStats& stats);
 }
 
 #endif

@@ -83,9 +83,11 @@ void Tarjan(const Digraph& d, const std::vector<vtkIdType>& rough,
 }
 
 void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& rough,
-  std::vector<vtkIdType>& order, GraphStats& stats)
+  const std::vector<double>& rear, std::vector<vtkIdType>& order, GraphStats& stats)
 {
   const vtkIdType n = static_cast<vtkIdType>(d.Offsets.size()) - 1;
+  // Back to front by rearmost depth, ties by id.
+  auto behind = [&](vtkIdType a, vtkIdType b) { return rear[a] > rear[b] || (rear[a] == rear[b] && a < b); };
   std::vector<std::int32_t> indeg(n, 0);
   for (vtkIdType t : d.Targets)
   {
@@ -100,6 +102,7 @@ void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& rough,
       queue.push_back(c);
     }
   }
+  std::sort(queue.begin(), queue.end(), behind);
   for (size_t head = 0; head < queue.size(); ++head)
   {
     const vtkIdType u = queue[head];
@@ -117,13 +120,11 @@ void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& rough,
     return;
   }
   // Kahn stalled: the rest contains cycles. Output the strongly connected
-  // components in topological order of the condensation, each by rough rank.
+  // components in topological order of the condensation, each by rearmost depth.
   std::vector<std::uint8_t> done(n, 1);
-  std::vector<vtkIdType> rank(n, 0);
-  for (size_t i = 0; i < rough.size(); ++i)
+  for (vtkIdType c : rough)
   {
-    done[rough[i]] = 0;
-    rank[rough[i]] = static_cast<vtkIdType>(i);
+    done[c] = 0;
   }
   for (vtkIdType c : queue)
   {
@@ -134,7 +135,7 @@ void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& rough,
   for (size_t k = compStart.size() - 1; k-- > 0;)
   {
     auto first = comps.begin() + compStart[k], last = comps.begin() + compStart[k + 1];
-    std::sort(first, last, [&](vtkIdType a, vtkIdType b) { return rank[a] < rank[b]; });
+    std::sort(first, last, behind);
     order.insert(order.end(), first, last);
     if (last - first > 1)
     {

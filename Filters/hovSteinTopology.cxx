@@ -23,11 +23,35 @@ std::array<vtkIdType, 4> FaceKey(const Geometry& g, vtkIdType c, int f)
   {
     k[i] = corners[s.Faces[f][i]];
   }
-  std::sort(k.begin(), k.begin() + m);
+  auto order = [&](int i, int j) {
+    if (k[j] < k[i])
+    {
+      std::swap(k[i], k[j]);
+    }
+  };
+  if (m == 3)
+  {
+    order(0, 1);
+    order(1, 2);
+    order(0, 1);
+  }
+  else
+  {
+    order(0, 1);
+    order(2, 3);
+    order(0, 2);
+    order(1, 3);
+    order(1, 2);
+  }
   return k;
 }
 
-/// True when every corner of cell @p other lies on the outer side of face f of cell c.
+/**
+ * True when every corner of cell @p other lies on the closed outer side of
+ * face f of cell c, one strictly (Newell faces: all corners off the face
+ * strictly outside the deviation slab). Cell c lies on the inner side by
+ * construction, so the plane separates the two cells.
+ */
 bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
 {
   const std::uint8_t mode = g.FaceCode(c, f) & 3;
@@ -41,6 +65,10 @@ bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
     g.ExactTriple(c, f, t);
     for (int i = 0; i < n; ++i)
     {
+      if (std::find(key.begin(), key.end(), ids[i]) != key.end())
+      {
+        continue; // on the face (exactly coplanar): no test needed
+      }
       const int s = hov::Orient3d(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]), g.Point(ids[i]));
       if (s > 0)
       {
@@ -71,9 +99,10 @@ bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
 }
 
 /// Match the faces of one bucket (entries c*8+f with the same smallest id) in place.
-void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* flag)
+void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* flag,
+  std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>>& keyed)
 {
-  std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed(m);
+  keyed.resize(m);
   for (vtkIdType i = 0; i < m; ++i)
   {
     keyed[i] = { FaceKey(g, e[i] >> 3, static_cast<int>(e[i] & 7)), e[i] };
@@ -96,7 +125,7 @@ void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* fla
       const vtkIdType a = e[i] >> 3, b = e[i + 1] >> 3;
       const int fa = static_cast<int>(e[i] & 7), fb = static_cast<int>(e[i + 1] & 7);
       if (a != b && (g.FaceCode(a, fa) & 3) != FaceSkip && (g.FaceCode(b, fb) & 3) != FaceSkip &&
-        OtherOutside(g, a, fa, b) && OtherOutside(g, b, fb, a))
+        OtherOutside(g, a, fa, b))
       {
         flag[i] = 1; // interior face: entry i + 1 is its partner
         flag[i + 1] = 2;
@@ -147,9 +176,11 @@ void Topology::Build(const Geometry& g)
   }
   std::vector<std::uint8_t> flags(entries.size());
   vtkSMPTools::For(0, numPoints, 1024, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
     for (vtkIdType p = begin; p < end; ++p)
     {
-      MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], flags.data() + start[p]);
+      MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], flags.data() + start[p],
+        keyed);
     }
   });
   // Collect in bucket order (deterministic).
