@@ -47,11 +47,13 @@
  * (it stays in front of P's point); unsupported cells act as empty space (their
  * neighbours have boundary faces there).
  * Measured (hovBenchSort, 2 cores, loaded machine; re-sort after a 5 degree
- * rotation, vtkCellCenterDepthSort = CCD in the same process): RT tetrahedra
- * 196k cells 0.038 s (1.9x CCD), 625k 0.16 s (2.3x), 976k 0.26 s (1.9-2.6x
- * CCD); the view-independent set-up 0.53 s at 976k. The merge below took 20 s
- * at 976k (100-270x CCD). Work per view is O(n) plus the Obstructs tests
- * among boundary cells (352k at 976k cells: ~9 per EXIT/ENTRY cell).
+ * rotation, vtkCellCenterDepthSort = CCD in the same process; RT = tetrahedra
+ * of vtkRTAnalyticSource): RT 13.7k cells 0.006 s (5x CCD), 197k 0.063 s
+ * (1.9x), 625k 0.13 s (2.1x), 976k 0.19 s (1.9x; 1.8-2.6x over runs), with a
+ * view-independent set-up of 0.38 s at 976k. The bracket (56k cells, a quarter
+ * of them on the boundary) takes 0.06-0.11 s (10-18x CCD): the Obstructs tests
+ * among boundary cells dominate there. MULTITILED_MERGE took 0.26 s at 13.7k,
+ * 4.6 s at 197k and about 20 s at 976k (130-270x CCD).
  *
  * MULTITILED_MERGE (HIAC 6, 6.1, 6.2 as published):
  * 1. Rough sort by each cell's rearmost depth (the Global Sorting List).
