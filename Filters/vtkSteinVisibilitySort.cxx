@@ -1,6 +1,7 @@
 // Exact visibility ordering (Stein et al., HIAC 6); see vtkSteinVisibilitySort.h.
 #include "vtkSteinVisibilitySort.h"
 
+#include "hovSteinGraph.h" // SortByGraph, Topology
 #include "hovSteinMerge.h" // SortBackToFront, Geometry, View
 
 #include "vtkCamera.h"
@@ -20,6 +21,8 @@ struct vtkSteinVisibilitySort::Internals
 {
   hovStein::Geometry Geometry;
   hovStein::View View;
+  hovStein::Topology Topology;
+  bool TopologyValid = false;
   std::vector<vtkIdType> Order; ///< back to front
   std::vector<vtkIdType> CycleCells;
   vtkNew<vtkIdTypeArray> Chunk;
@@ -32,6 +35,7 @@ struct vtkSteinVisibilitySort::Internals
   vtkCamera* SortCamera = nullptr;
   vtkMTimeType SortCameraTime = 0;
   int SortTiles[2] = { -1, -1 };
+  int SortAlgorithm = -1;
   bool SortValid = false;
 };
 
@@ -80,32 +84,44 @@ void vtkSteinVisibilitySort::InitTraversal()
     im.GeometryInputTime = this->Input->GetMTime();
     im.GeometryModelTime = this->ModelTransform->GetMTime();
     im.GeometryValid = true;
+    im.TopologyValid = false;
     im.SortValid = false;
+  }
+  bool built = rebuild;
+  if (this->Algorithm == ADJACENCY_GRAPH && !im.TopologyValid)
+  {
+    built = true;
+    im.Topology.Build(im.Geometry);
+    im.TopologyValid = true;
+    im.SortValid = false;
+  }
+  if (built)
+  {
     this->LastSetupSeconds = Seconds(t0);
   }
   if (im.SortValid && im.SortCamera == this->Camera &&
     im.SortCameraTime == this->Camera->GetMTime() && im.SortTiles[0] == this->NumberOfTilesX &&
-    im.SortTiles[1] == this->NumberOfTilesY)
+    im.SortTiles[1] == this->NumberOfTilesY &&
+    im.SortAlgorithm == this->Algorithm)
   {
     this->LastSortSeconds = Seconds(t0);
     return; // nothing changed: hand out the same order again
   }
   im.View.Setup(im.Geometry, this->Camera);
-  hovStein::MergeStats stats;
-  hovStein::SortBackToFront(im.Geometry, im.View, this->NumberOfTilesX, this->NumberOfTilesY,
-    im.Order, stats);
+  if (this->Algorithm == ADJACENCY_GRAPH)
+  {
+    this->SortGraph();
+  }
+  else
+  {
+    this->SortMerge();
+  }
   if (static_cast<vtkIdType>(im.Order.size()) != im.Geometry.NumberOfCells)
   {
     vtkErrorMacro("Internal error: " << im.Order.size() << " cells ordered out of "
                                      << im.Geometry.NumberOfCells << ".");
   }
-  this->NumberOfCycles = stats.Cycles;
-  this->NumberOfObstructsTests = stats.Tests;
-  this->NumberOfMoves = stats.Moves;
-  im.CycleCells = stats.CycleCells;
   this->NumberOfUnorderedCells = im.Geometry.NumberOfBadCells;
-  this->UsedTiles[0] = stats.TilesX;
-  this->UsedTiles[1] = stats.TilesY;
   if (im.Geometry.NumberOfBadCells > 0)
   {
     vtkWarningMacro(<< im.Geometry.NumberOfBadCells
@@ -117,9 +133,40 @@ void vtkSteinVisibilitySort::InitTraversal()
   im.SortCameraTime = this->Camera->GetMTime();
   im.SortTiles[0] = this->NumberOfTilesX;
   im.SortTiles[1] = this->NumberOfTilesY;
+  im.SortAlgorithm = this->Algorithm;
   im.SortValid = true;
   this->LastSortTime.Modified();
   this->LastSortSeconds = Seconds(t0);
+}
+
+void vtkSteinVisibilitySort::SortMerge()
+{
+  Internals& im = *this->Impl;
+  hovStein::MergeStats stats;
+  hovStein::SortBackToFront(im.Geometry, im.View, this->NumberOfTilesX, this->NumberOfTilesY,
+    im.Order, stats);
+  this->NumberOfCycles = stats.Cycles;
+  this->NumberOfObstructsTests = stats.Tests;
+  this->NumberOfMoves = stats.Moves;
+  this->NumberOfGraphEdges = 0;
+  this->NumberOfBoundaryCells = 0;
+  im.CycleCells = stats.CycleCells;
+  this->UsedTiles[0] = stats.TilesX;
+  this->UsedTiles[1] = stats.TilesY;
+}
+
+void vtkSteinVisibilitySort::SortGraph()
+{
+  Internals& im = *this->Impl;
+  hovStein::GraphStats stats;
+  hovStein::SortByGraph(im.Geometry, im.Topology, im.View, im.Order, stats);
+  this->NumberOfCycles = stats.Cycles;
+  this->NumberOfObstructsTests = stats.Tests;
+  this->NumberOfMoves = 0;
+  this->NumberOfGraphEdges = stats.FaceEdges + stats.ObstructEdges;
+  this->NumberOfBoundaryCells = im.Topology.NumberOfBoundaryCells;
+  im.CycleCells = stats.CycleCells;
+  this->UsedTiles[0] = this->UsedTiles[1] = 0;
 }
 
 vtkIdTypeArray* vtkSteinVisibilitySort::GetNextCells()
@@ -167,6 +214,10 @@ void vtkSteinVisibilitySort::GetCycleCells(vtkIdList* ids)
 void vtkSteinVisibilitySort::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Algorithm: "
+     << (this->Algorithm == ADJACENCY_GRAPH ? "ADJACENCY_GRAPH" : "MULTITILED_MERGE") << "\n";
+  os << indent << "NumberOfGraphEdges: " << this->NumberOfGraphEdges << "\n";
+  os << indent << "NumberOfBoundaryCells: " << this->NumberOfBoundaryCells << "\n";
   os << indent << "NumberOfTiles: " << this->NumberOfTilesX << " x " << this->NumberOfTilesY
      << " (used " << this->UsedTiles[0] << " x " << this->UsedTiles[1] << ")\n";
   os << indent << "NumberOfCycles: " << this->NumberOfCycles << "\n";

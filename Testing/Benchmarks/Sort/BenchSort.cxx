@@ -1,7 +1,8 @@
 // hovBenchSort: vtkSteinVisibilitySort vs vtkCellCenterDepthSort (see CMakeLists.txt).
 // Per mesh: the first sort of each (cell centres / view-independent set-up
-// included), a re-sort after a 5 degree azimuth, Stein with the default tiles
-// (ceil(n^(1/6))^2) and with tuned tiles, and the merge statistics.
+// included) and a re-sort after a 5 degree azimuth, for CCD, the Stein sort's
+// ADJACENCY_GRAPH algorithm (default) and its published MULTITILED_MERGE
+// (tuned tiles; by default only up to 200k cells, --published for all).
 #include "vtkCamera.h"
 #include "vtkCellCenterDepthSort.h"
 #include "vtkDataSetTriangleFilter.h"
@@ -72,11 +73,11 @@ void FixedView(vtkDataSet* d, vtkCamera* cam)
 struct SteinRun
 {
   double First = 0, Resort = 0, Setup = 0;
-  vtkIdType Tests = 0, Moves = 0, Cycles = 0;
+  vtkIdType Tests = 0, Moves = 0, Cycles = 0, Edges = 0, Boundary = 0;
   int Tiles[2] = { 0, 0 };
 };
 
-SteinRun RunStein(vtkDataSet* d, int tiles)
+SteinRun RunStein(vtkDataSet* d, int algorithm, int tiles)
 {
   vtkNew<vtkCamera> cam;
   FixedView(d, cam);
@@ -84,16 +85,19 @@ SteinRun RunStein(vtkDataSet* d, int tiles)
   s->SetInput(d);
   s->SetCamera(cam);
   s->SetMaxCellsReturned(1000);
+  s->SetAlgorithm(algorithm);
   s->SetNumberOfTiles(tiles, tiles);
   SteinRun r;
   r.First = Traverse(s);
   r.Setup = s->GetLastSetupSeconds();
+  cam->Azimuth(5);
+  r.Resort = Traverse(s);
   r.Tests = s->GetNumberOfObstructsTests();
   r.Moves = s->GetNumberOfMoves();
   r.Cycles = s->GetNumberOfCycles();
+  r.Edges = s->GetNumberOfGraphEdges();
+  r.Boundary = s->GetNumberOfBoundaryCells();
   s->GetUsedTiles(r.Tiles);
-  cam->Azimuth(5);
-  r.Resort = Traverse(s);
   return r;
 }
 }
@@ -102,16 +106,23 @@ int main(int argc, char* argv[])
 {
   std::string data = HOV_BENCH_DATA_DIR;
   vtkIdType maxCells = 2000000;
-  int tuned = -1; // -1: n^(1/3)/2 per direction
-  for (int i = 1; i + 1 < argc; i += 2)
+  vtkIdType publishedMax = 200000; // the published merge takes minutes beyond this
+  int tuned = -1;                  // -1: n^(1/3)/2 per direction
+  for (int i = 1; i < argc; ++i)
   {
-    if (!std::strcmp(argv[i], "--data"))
-      data = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--max-cells"))
-      maxCells = std::atoll(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--tiles"))
-      tuned = std::atoi(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--published"))
+      publishedMax = maxCells;
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--data"))
+      data = argv[++i];
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--max-cells"))
+      maxCells = std::atoll(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--published-max-cells"))
+      publishedMax = std::atoll(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--tiles"))
+      tuned = std::atoi(argv[++i]);
   }
+  if (publishedMax > maxCells)
+    publishedMax = maxCells;
   struct Mesh
   {
     std::string Name;
@@ -127,9 +138,15 @@ int main(int argc, char* argv[])
     if (5.0 * std::pow(2 * e, 3) <= maxCells)
       meshes.push_back({ "RT [-" + std::to_string(e) + "," + std::to_string(e) + "]^3", RTMesh(e) });
   }
-  std::printf("| mesh | cells | CCD first s | CCD 5deg s | Stein first s (setup) | Stein 5deg s | "
-              "ratio 5deg | tiles | Stein tuned 5deg s | tuned tiles | ratio tuned | tests | moves "
-              "| cycles |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("Graph = ADJACENCY_GRAPH (default), merge = MULTITILED_MERGE (published, tuned "
+              "tiles; only up to %lld cells, --published for all). 'first' includes the "
+              "view-independent set-up (in parentheses); '5deg' is the re-sort after a 5 degree "
+              "azimuth; ratios are re-sort times over CCD's re-sort.\n\n",
+    static_cast<long long>(publishedMax));
+  std::printf("| mesh | cells | CCD first s | CCD 5deg s | graph first s (setup) | graph 5deg s | "
+              "graph/CCD | boundary cells | tests | edges | cycles | merge first s | merge 5deg s "
+              "| merge/CCD | merge tests |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+              "---|\n");
   for (const Mesh& m : meshes)
   {
     vtkUnstructuredGrid* g = m.Grid;
@@ -143,15 +160,22 @@ int main(int argc, char* argv[])
     const double ccdFirst = Traverse(ccd);
     cam->Azimuth(5);
     const double ccdResort = Traverse(ccd);
-    const SteinRun def = RunStein(g, 0);
-    const int t = tuned > 0 ? tuned : std::max(1, static_cast<int>(std::cbrt(double(n)) / 2));
-    const SteinRun tun = RunStein(g, t);
-    std::printf("| %s | %lld | %.4f | %.4f | %.4f (%.4f) | %.4f | %.2f | %dx%d | %.4f | %dx%d | %.2f | "
-                "%lld | %lld | %lld |\n",
-      m.Name.c_str(), static_cast<long long>(n), ccdFirst, ccdResort, def.First, def.Setup,
-      def.Resort, def.Resort / ccdResort, def.Tiles[0], def.Tiles[1], tun.Resort, tun.Tiles[0],
-      tun.Tiles[1], tun.Resort / ccdResort, static_cast<long long>(tun.Tests),
-      static_cast<long long>(tun.Moves), static_cast<long long>(tun.Cycles));
+    const SteinRun gr = RunStein(g, vtkSteinVisibilitySort::ADJACENCY_GRAPH, 0);
+    std::printf("| %s | %lld | %.4f | %.4f | %.4f (%.4f) | %.4f | %.2f | %lld | %lld | %lld | %lld |",
+      m.Name.c_str(), static_cast<long long>(n), ccdFirst, ccdResort, gr.First, gr.Setup, gr.Resort,
+      gr.Resort / ccdResort, static_cast<long long>(gr.Boundary), static_cast<long long>(gr.Tests),
+      static_cast<long long>(gr.Edges), static_cast<long long>(gr.Cycles));
+    if (n <= publishedMax)
+    {
+      const int t = tuned > 0 ? tuned : std::max(1, static_cast<int>(std::cbrt(double(n)) / 2));
+      const SteinRun mg = RunStein(g, vtkSteinVisibilitySort::MULTITILED_MERGE, t);
+      std::printf(" %.4f | %.4f | %.2f | %lld |\n", mg.First, mg.Resort, mg.Resort / ccdResort,
+        static_cast<long long>(mg.Tests));
+    }
+    else
+    {
+      std::printf(" - | - | - | - |\n");
+    }
     std::fflush(stdout);
   }
   return 0;

@@ -1,0 +1,43 @@
+/**
+ * @file hovSteinTopology.h
+ * @brief View-independent face adjacency of vtkSteinVisibilitySort's
+ *        ADJACENCY_GRAPH algorithm: interior faces and boundary faces.
+ *
+ * The faces of all supported cells are matched by their sorted corner point ids
+ * (triangles by 3 ids, quadrilaterals by their 4 corners): the faces are
+ * bucketed by their smallest point id (a counting sort, O(faces)) and each
+ * bucket is sorted and scanned in parallel. A face is INTERIOR when exactly two
+ * cells A and B share it, both have a usable face code there (not FaceSkip), and
+ * B lies on the outer side of A's face: exact faces need every corner of B on
+ * the closed outer side (exact Orient3d) and one strictly outside; Newell faces
+ * need B's corners off the face outside its deviation slab. Every other face
+ * (mesh boundary, sliding interfaces, hanging nodes, duplicated points or cells,
+ * flat cells) is a BOUNDARY face; a cell with at least one is a boundary cell.
+ *
+ * Thread safety: Build() is not re-entrant; the built data are read-only.
+ */
+#ifndef hovSteinTopology_h
+#define hovSteinTopology_h
+
+#include "hovSteinGeometry.h" // Geometry
+
+#include <cstdint> // std::uint8_t
+#include <vector>  // storage
+
+namespace hovStein
+{
+struct Topology
+{
+  /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
+  std::vector<vtkIdType> A, B;
+  std::vector<std::uint8_t> FaceA;
+  /// Per cell: bit f set when face f is a boundary face.
+  std::vector<std::uint8_t> BoundaryFaces;
+  vtkIdType NumberOfBoundaryCells = 0;
+
+  vtkIdType NumberOfInteriorFaces() const { return static_cast<vtkIdType>(this->A.size()); }
+  void Build(const Geometry& g);
+};
+}
+
+#endif
