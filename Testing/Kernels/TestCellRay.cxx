@@ -159,6 +159,42 @@ TEST(CellRay, FaceCrossingsAreOrderIndependent)
   std::cout << "[measured] quads crossed twice: " << twice << " of 2000" << std::endl;
 }
 
+TEST(CellRay, SaddlePatchIsCrossedTwice)
+{
+  // Hyperbolic paraboloid z = u + v - 2uv over the unit square; on the line
+  // x + y = 1 it is z = 1 - 2u(1 - u), which z = 0.7 meets at
+  // u = 1/2 +- sqrt(0.1).
+  const double p[4][3] = { { 0, 0, 0 }, { 1, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 } };
+  const double* c[4] = { p[0], p[1], p[2], p[3] };
+  const std::int64_t ids[4] = { 4, 1, 9, 2 };
+  const double o[3] = { -1.0, 2.0, 0.7 }, d[3] = { 1.0, -1.0, 0.0 };
+  double t[2];
+  ASSERT_EQ(hov::FaceRayCrossings(4, c, ids, o, d, t), 2);
+  const double r = std::sqrt(0.1);
+  EXPECT_NEAR(t[0], 1.5 - r, 1e-14);
+  EXPECT_NEAR(t[1], 1.5 + r, 1e-14);
+  // A cube whose top face is that saddle lifted by 1 (z = 1 + u + v - 2uv):
+  // the ray z = 1.7 along x + y = 1 is inside, leaves, and re-enters.
+  hovtest::TestCell cube;
+  cube.Shape = CellShape::Hexahedron;
+  const double corners[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+    { 1, 0, 2 }, { 1, 1, 1 }, { 0, 1, 2 } };
+  for (int i = 0; i < 8; ++i)
+  {
+    cube.Points.insert(cube.Points.end(), corners[i], corners[i] + 3);
+    cube.Ids.push_back(i);
+  }
+  const double o2[3] = { 0.0, 1.0, 1.7 };
+  hov::RayCellInterval iv[hov::MaxRayCellIntervals];
+  ASSERT_EQ(hov::RayCellIntervals(
+              CellShape::Hexahedron, cube.Points.data(), cube.Ids.data(), o2, d, -1.0, 2.0, iv),
+    2);
+  EXPECT_EQ(iv[0].T0, 0.0); // enters through the face x = 0 at t = 0
+  EXPECT_NEAR(iv[0].T1, 0.5 - r, 1e-14);
+  EXPECT_NEAR(iv[1].T0, 0.5 + r, 1e-14);
+  EXPECT_NEAR(iv[1].T1, 1.0, 1e-14);
+}
+
 /// Two hexahedra of a 3x2x2 perturbed grid sharing the non-planar face x ~ 1.
 struct TwoHexes
 {
