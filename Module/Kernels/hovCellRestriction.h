@@ -37,8 +37,13 @@
  * the pieces are returned with their bounds). S is converted from the
  * Chebyshev basis in x in [-1, 1] to monomials in x (|coefficients| grow
  * at most 2^(m-1)) and then to tau (ComposeAffine, long double).
- * Measured (TestCellRestriction): the true error was always below the bound
- * and at most ~1e3 times smaller than it (or both below 1e-13 of the scale).
+ * Measured (TestCellRestriction, GCC 12 Release, random cells of every
+ * type): affine path max error 5.5e-15 of the scalar range (triquadratic
+ * hexahedron); non-affine path (corners perturbed by 0.2 of the size) max
+ * error 5.0e-11 of the range at the default tolerance, actual/bound <= 0.50
+ * and bound/max(actual, 1e-13 range) <= 2.9 (the test requires <= 1e3),
+ * <= 13 pieces per chord (pyramids; 11 on a chord ending 1e-3 below the
+ * apex).
  *
  * Domain: finite points and scalars, d != 0, t0 <= t1 finite, the ray inside
  * the cell on [t0, t1] (outside, Newton may fail: NewtonFailures counts it;
