@@ -1,0 +1,300 @@
+#include "hovCellRestriction.h"
+
+#include <algorithm> // std::max, std::min
+#include <cmath>     // fabs, cos, isfinite
+#include <limits>    // epsilon
+
+namespace hov
+{
+namespace
+{
+constexpr double Eps = std::numeric_limits<double>::epsilon();
+/// Chebyshev sample count - 1 (degree of the interpolant before truncation).
+constexpr int ChebN = 16;
+/// Largest degree of a returned piece on the non-affine path.
+constexpr int MaxPieceDegree = 8;
+/// Newton's parametric tolerance (1e-14) times gradients of a few times the
+/// range: the sample error floor, relative to the scalar range.
+constexpr double NewtonFloor = 1e-13;
+/// Bisection depth limit (the piece count limit usually acts first).
+constexpr int MaxDepth = 24;
+constexpr double Pi = 3.141592653589793238462643383279502884;
+
+bool Inverse3(const double j[9], double inv[9])
+{
+  const double c00 = j[4] * j[8] - j[5] * j[7], c01 = j[5] * j[6] - j[3] * j[8],
+               c02 = j[3] * j[7] - j[4] * j[6];
+  const double det = j[0] * c00 + j[1] * c01 + j[2] * c02;
+  if (!(std::fabs(det) > 0.0) || !std::isfinite(det))
+  {
+    return false;
+  }
+  const double r = 1.0 / det;
+  inv[0] = c00 * r;
+  inv[1] = (j[2] * j[7] - j[1] * j[8]) * r;
+  inv[2] = (j[1] * j[5] - j[2] * j[4]) * r;
+  inv[3] = c01 * r;
+  inv[4] = (j[0] * j[8] - j[2] * j[6]) * r;
+  inv[5] = (j[2] * j[3] - j[0] * j[5]) * r;
+  inv[6] = c02 * r;
+  inv[7] = (j[1] * j[6] - j[0] * j[7]) * r;
+  inv[8] = (j[0] * j[4] - j[1] * j[3]) * r;
+  return std::isfinite(inv[0] + inv[1] + inv[2] + inv[3] + inv[4] + inv[5] + inv[6] + inv[7] +
+    inv[8]);
+}
+
+void MatVec(const double m[9], const double v[3], double r[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    r[i] = m[3 * i] * v[0] + m[3 * i + 1] * v[1] + m[3 * i + 2] * v[2];
+  }
+}
+
+/// Exact path: one piece by expansion of the shape functions along the line.
+bool RestrictAffine(CellShape shape, const double* points, const double* scalars,
+  const double o[3], const double d[3], double t0, double t1, RestrictedPiece& piece)
+{
+  double pcCenter[3], xc[3], jac[9], inv[9];
+  CellParametricCenter(shape, pcCenter);
+  EvaluateGeometry(shape, points, pcCenter, xc, jac);
+  if (!Inverse3(jac, inv))
+  {
+    return false;
+  }
+  // Base at corner 0 (its pcoords are exact): pc(T0) = pc0 + A (o + T0 d - x0).
+  double pc0[3], rel[3], pcStart[3], step[3];
+  CellNodeParametricCoords(shape, 0, pc0);
+  for (int k = 0; k < 3; ++k)
+  {
+    rel[k] = (o[k] - points[k]) + t0 * d[k];
+  }
+  MatVec(inv, rel, pcStart);
+  MatVec(inv, d, step);
+  for (int k = 0; k < 3; ++k)
+  {
+    pcStart[k] += pc0[k];
+  }
+  Polynomial w[MaxCellNodes];
+  CellShapeFunctionsAlongLine(shape, pcStart, step, w);
+  piece.S = Polynomial();
+  piece.S.Degree = Polynomial::MaxDegree;
+  double sumAbs = 0.0;
+  for (int i = 0, n = CellNodeCount(shape); i < n; ++i)
+  {
+    for (int k = 0; k <= w[i].Degree; ++k)
+    {
+      piece.S.C[k] += scalars[i] * w[i].C[k];
+    }
+    sumAbs += std::fabs(scalars[i]);
+  }
+  piece.S.Degree = EffectiveDegree(piece.S);
+  piece.T0 = t0;
+  piece.T1 = t1;
+  piece.ErrorBound = 32.0 * Eps * sumAbs;
+  return true;
+}
+
+struct FitContext
+{
+  CellShape Shape;
+  const double* Points;
+  const double* Scalars;
+  const double* O;
+  const double* D;
+  double TolAbs;
+  double Floor;
+  int MaxPieces;
+  std::vector<RestrictedPiece>* Out;
+  CellRestrictionStatus* Status;
+};
+
+/// Chebyshev coefficients of the degree-ChebN interpolant of s on [a, b].
+void SampleChebyshev(const FitContext& ctx, double a, double b, double c[ChebN + 1])
+{
+  const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+  double f[ChebN + 1];
+  double pc[3];
+  CellParametricCenter(ctx.Shape, pc);
+  for (int j = 0; j <= ChebN; ++j)
+  {
+    const double t = (j == 0) ? b : (j == ChebN) ? a : mid + half * std::cos(Pi * j / ChebN);
+    const double x[3] = { ctx.O[0] + t * ctx.D[0], ctx.O[1] + t * ctx.D[1],
+      ctx.O[2] + t * ctx.D[2] };
+    if (!InvertGeometry(ctx.Shape, ctx.Points, x, pc)) // warm start from the previous sample
+    {
+      ++ctx.Status->NewtonFailures;
+    }
+    f[j] = InterpolateCellScalar(ctx.Shape, ctx.Scalars, pc);
+  }
+  for (int k = 0; k <= ChebN; ++k)
+  {
+    double sum = 0.5 * (f[0] + ((k % 2) ? -f[ChebN] : f[ChebN]));
+    for (int j = 1; j < ChebN; ++j)
+    {
+      sum += f[j] * std::cos(Pi * ((j * k) % (2 * ChebN)) / ChebN);
+    }
+    c[k] = sum * 2.0 / ChebN;
+  }
+  c[0] *= 0.5;
+  c[ChebN] *= 0.5;
+}
+
+/// Monomial polynomial in tau = t - a from Chebyshev coefficients c[0..m] on [a, b].
+Polynomial ChebyshevToLocal(const double* c, int m, double a, double b)
+{
+  double tPrev[MaxPieceDegree + 1] = { 1.0 }, tCur[MaxPieceDegree + 1] = { 0.0, 1.0 };
+  Polynomial mono;
+  mono.Degree = m;
+  mono.C[0] = c[0];
+  if (m >= 1)
+  {
+    mono.C[1] += c[1];
+  }
+  for (int k = 2; k <= m; ++k)
+  {
+    double tNext[MaxPieceDegree + 1] = {};
+    for (int j = 0; j <= k; ++j)
+    {
+      tNext[j] = (j > 0 ? 2.0 * tCur[j - 1] : 0.0) - tPrev[j];
+    }
+    for (int j = 0; j <= k; ++j)
+    {
+      tPrev[j] = tCur[j];
+      tCur[j] = tNext[j];
+      mono.C[j] += c[k] * tNext[j];
+    }
+  }
+  // x = -1 + tau / half.
+  Polynomial local = ComposeAffine(mono, -1.0, 2.0 / (b - a));
+  local.Degree = EffectiveDegree(local);
+  return local;
+}
+
+void Fit(const FitContext& ctx, double a, double b, int depth)
+{
+  double c[ChebN + 1];
+  SampleChebyshev(ctx, a, b, c);
+  double sumAbs = 0.0, tail[ChebN + 2] = {};
+  for (int k = ChebN; k >= 0; --k)
+  {
+    tail[k] = tail[k + 1] + std::fabs(c[k]); // tail[k] = sum_{j >= k} |c_j|
+  }
+  sumAbs = tail[0];
+  const double rounding = 64.0 * Eps * sumAbs + ctx.Floor;
+  int m = 0;
+  while (m < MaxPieceDegree && 2.0 * tail[m + 1] + rounding > ctx.TolAbs)
+  {
+    ++m;
+  }
+  const double bound = 2.0 * tail[m + 1] + rounding;
+  const bool canSplit = depth < MaxDepth && static_cast<int>(ctx.Out->size()) + 2 <= ctx.MaxPieces &&
+    0.5 * (a + b) > a && 0.5 * (a + b) < b;
+  if (bound > ctx.TolAbs && canSplit)
+  {
+    const double mid = 0.5 * (a + b);
+    Fit(ctx, a, mid, depth + 1);
+    Fit(ctx, mid, b, depth + 1);
+    return;
+  }
+  if (bound > ctx.TolAbs)
+  {
+    ctx.Status->Converged = false;
+  }
+  RestrictedPiece piece;
+  piece.T0 = a;
+  piece.T1 = b;
+  piece.S = ChebyshevToLocal(c, m, a, b);
+  piece.ErrorBound = bound;
+  ctx.Out->push_back(piece);
+}
+}
+
+bool IsGeometryAffine(CellShape shape, const double* points, double relativeTolerance)
+{
+  if (GeometryShape(shape) == CellShape::Pyramid)
+  {
+    return false;
+  }
+  if (GeometryShape(shape) == CellShape::Tetra)
+  {
+    return true;
+  }
+  double pcCenter[3], xc[3], jac[9];
+  CellParametricCenter(shape, pcCenter);
+  EvaluateGeometry(shape, points, pcCenter, xc, jac);
+  double extent = 0.0, deviation = 0.0;
+  for (int i = 0, n = CellCornerCount(shape); i < n; ++i)
+  {
+    double pc[3], dpc[3], lin[3];
+    CellNodeParametricCoords(shape, i, pc);
+    for (int k = 0; k < 3; ++k)
+    {
+      dpc[k] = pc[k] - pcCenter[k];
+    }
+    MatVec(jac, dpc, lin);
+    for (int k = 0; k < 3; ++k)
+    {
+      extent = std::max(extent, std::fabs(points[3 * i + k] - points[k]));
+      deviation = std::max(deviation, std::fabs(points[3 * i + k] - (xc[k] + lin[k])));
+    }
+  }
+  return deviation <= relativeTolerance * extent;
+}
+
+int RestrictCellScalar(CellShape shape, const double* points, const double* scalars,
+  const double origin[3], const double direction[3], double t0, double t1,
+  const CellRestrictionSettings& settings, std::vector<RestrictedPiece>& out,
+  CellRestrictionStatus* status)
+{
+  out.clear();
+  CellRestrictionStatus localStatus;
+  CellRestrictionStatus& st = status ? *status : localStatus;
+  st = CellRestrictionStatus();
+  if (!(t0 <= t1) || !std::isfinite(t0) || !std::isfinite(t1))
+  {
+    st.Converged = false;
+    return 0;
+  }
+  if (t1 == t0)
+  {
+    // Zero length: the constant s(t0) (no interval to fit on).
+    const double x[3] = { origin[0] + t0 * direction[0], origin[1] + t0 * direction[1],
+      origin[2] + t0 * direction[2] };
+    double pc[3];
+    CellParametricCenter(shape, pc);
+    if (!InvertGeometry(shape, points, x, pc))
+    {
+      ++st.NewtonFailures;
+    }
+    RestrictedPiece piece;
+    piece.T0 = piece.T1 = t0;
+    piece.S.C[0] = InterpolateCellScalar(shape, scalars, pc);
+    out.push_back(piece);
+    return 1;
+  }
+  if (IsGeometryAffine(shape, points))
+  {
+    RestrictedPiece piece;
+    if (RestrictAffine(shape, points, scalars, origin, direction, t0, t1, piece))
+    {
+      st.Affine = true;
+      out.push_back(piece);
+      return 1;
+    }
+  }
+  double lo = scalars[0], hi = scalars[0], maxAbs = 0.0;
+  for (int i = 0, n = CellNodeCount(shape); i < n; ++i)
+  {
+    lo = std::min(lo, scalars[i]);
+    hi = std::max(hi, scalars[i]);
+    maxAbs = std::max(maxAbs, std::fabs(scalars[i]));
+  }
+  double scale = hi - lo > 0.0 ? hi - lo : (maxAbs > 0.0 ? maxAbs : 1.0);
+  FitContext ctx{ shape, points, scalars, origin, direction,
+    settings.RelativeTolerance * scale, NewtonFloor * scale, std::max(settings.MaxPieces, 1),
+    &out, &st };
+  Fit(ctx, t0, t1, 0);
+  return static_cast<int>(out.size());
+}
+}
