@@ -5,6 +5,7 @@
 
 #include <algorithm> // std::max, std::min
 #include <cmath>     // std::isfinite
+#include <cstring>   // memcpy into vector registers
 
 namespace hov
 {
@@ -16,71 +17,82 @@ using detail::Thin;
 /// compiler vectorises the lane loops to: 2 for SSE2, 4 for AVX).
 constexpr int Lanes = 4;
 
+// With GCC or Clang on x86-64 the lane loops are also compiled for AVX2 (four
+// lanes per instruction) and the variant is chosen at load time; both variants
+// perform the same IEEE operations (no contraction into fused multiply-adds
+// under -std=c++17), so the result does not depend on the CPU.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
+#define HOV_LANES_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HOV_LANES_TARGET_CLONES
+#endif
+
 /**
  * The thin Williams-Max series of hovSegmentIntegral.cxx (ThinWilliamsMax)
  * for Lanes segments with the same number of terms: the same operations in
  * the same order per lane, so each lane's w = WFront (before clamping) and
  * alpha equal the scalar kernel's bit for bit.
  */
+HOV_LANES_TARGET_CLONES
 void ThinWilliamsMaxLanes(int terms, const double* a, const double* d1, double* w, double* alpha)
 {
-  double r[Lanes], d2[Lanes];
-  double wOdd[Lanes] = {}, wEven[Lanes] = {}, aOdd[Lanes] = {}, aEven[Lanes] = {};
-  for (int l = 0; l < Lanes; ++l)
-  {
-    r[l] = a[l] / d1[l];
-    d2[l] = d1[l] * d1[l];
-  }
+  // Four lanes in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
+  typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
+  static_assert(Lanes == 4, "one V4 per block");
+  V4 va, vd1;
+  std::memcpy(&va, a, sizeof(V4));
+  std::memcpy(&vd1, d1, sizeof(V4));
+  const V4 r = va / vd1;
+  const V4 d2 = vd1 * vd1;
+  V4 wOdd = {}, wEven = {}, aOdd = {}, aEven = {};
   for (int n = terms; n >= 1; --n)
   {
     // q_n(r) = sum_j P0[n][n-j] r^j by Horner's rule (the scalar kernel's q[n]).
     const double* p = Thin.P0[n];
-    double h[Lanes];
-    for (int l = 0; l < Lanes; ++l)
-    {
-      h[l] = p[0];
-    }
+    V4 h = V4{} + p[0];
     for (int j = 1; j <= n; ++j)
     {
-      for (int l = 0; l < Lanes; ++l)
-      {
-        h[l] = h[l] * r[l] + p[j];
-      }
+      h = h * r + p[j];
     }
     // Outer Horner chains in d1^2 on odd and even terms.
     const double f = Thin.InvFactorial[n];
     if (n % 2)
     {
-      for (int l = 0; l < Lanes; ++l)
-      {
-        wOdd[l] = wOdd[l] * d2[l] + h[l];
-        aOdd[l] = aOdd[l] * d2[l] + f;
-      }
+      wOdd = wOdd * d2 + h;
+      aOdd = aOdd * d2 + f;
     }
     else
     {
-      for (int l = 0; l < Lanes; ++l)
-      {
-        wEven[l] = wEven[l] * d2[l] + h[l];
-        aEven[l] = aEven[l] * d2[l] + f;
-      }
+      wEven = wEven * d2 + h;
+      aEven = aEven * d2 + f;
     }
   }
-  for (int l = 0; l < Lanes; ++l)
-  {
-    w[l] = d1[l] * wOdd[l] - d2[l] * wEven[l];
-    alpha[l] = d1[l] * aOdd[l] - d2[l] * aEven[l];
-  }
+  const V4 vw = vd1 * wOdd - d2 * wEven;
+  const V4 valpha = vd1 * aOdd - d2 * aEven;
+  std::memcpy(w, &vw, sizeof(V4));
+  std::memcpy(alpha, &valpha, sizeof(V4));
 }
 }
 
 long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
-  const SegmentJob* jobs, int count, RGBA* out)
+  const SegmentJob* jobs, int count, RGBA* out, int* piecesOut)
 {
   const bool batched =
     settings.Emission == EmissionModel::WilliamsMax && settings.Method == SegmentMethod::Exact;
-  long long pieces = 0;
-  this->Items.clear();
+  long long total = 0;
+  auto count1 = [&](int i, int p) {
+    total += p;
+    if (piecesOut)
+    {
+      piecesOut[i] = p;
+    }
+  };
+  if (this->Items.size() < static_cast<size_t>(count))
+  {
+    this->Items.resize(count); // grows only: no allocation in steady state
+    this->Order.resize(count);
+  }
+  int numItems = 0;
   int perTerms[detail::MaxThinOrder + 2] = {};
   for (int i = 0; i < count; ++i)
   {
@@ -94,6 +106,7 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
         tf.GetNumberOfNodes() == 0)
       {
         out[i] = RGBA();
+        count1(i, 0);
         continue;
       }
       k = OnePieceInterval(tf, job.SFront, job.SBack);
@@ -101,11 +114,11 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
       {
         int p = 0;
         out[i] = IntegrateLinearScalar(tf, job.SFront, job.SBack, job.Length, settings, &p);
-        pieces += p;
+        count1(i, p);
         continue;
       }
     }
-    ++pieces;
+    count1(i, 1);
     if (!batched || !(job.Length > 0.0) || !std::isfinite(job.SFront) || !std::isfinite(job.SBack))
     {
       out[i] = IntegrateLinearScalarInInterval(tf, k, job.SFront, job.SBack, job.Length, settings);
@@ -127,7 +140,7 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
       out[i] = IntegrateSegment(job.Length, front, back, settings.Emission, settings.Method);
       continue;
     }
-    ThinItem item;
+    ThinItem& item = this->Items[numItems++];
     item.A = a;
     item.D1 = d1;
     for (int ch = 0; ch < 3; ++ch)
@@ -138,16 +151,13 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
     item.Index = i;
     item.Terms = detail::ThinTerms()(d1);
     ++perTerms[item.Terms + 1];
-    this->Items.push_back(item);
   }
 
   // Group the thin segments by number of terms (counting sort), Lanes at a time.
-  const int numItems = static_cast<int>(this->Items.size());
   for (int t = 0; t <= detail::MaxThinOrder; ++t)
   {
     perTerms[t + 1] += perTerms[t];
   }
-  this->Order.resize(numItems);
   for (int n = 0; n < numItems; ++n)
   {
     this->Order[perTerms[this->Items[n].Terms]++] = n;
@@ -189,6 +199,6 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
       done += lanes;
     }
   }
-  return pieces;
+  return total;
 }
 }

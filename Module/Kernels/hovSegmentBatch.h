@@ -50,10 +50,11 @@ public:
   /**
    * out[i] = the premultiplied RGBA of jobs[i]: IntegrateLinearScalarInInterval()
    * if jobs[i].Interval >= -1, else IntegrateLinearScalar(). Returns the number
-   * of linear pieces integrated (1 per segment with a known interval).
+   * of linear pieces integrated (1 per segment with a known interval);
+   * @p pieces, if given, receives that number per segment.
    */
   long long Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
-    const SegmentJob* jobs, int count, RGBA* out);
+    const SegmentJob* jobs, int count, RGBA* out, int* pieces = nullptr);
 
 private:
   /// A thin Williams-Max segment waiting for its block.

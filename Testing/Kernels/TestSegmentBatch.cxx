@@ -75,24 +75,26 @@ void ExpectSameAsScalar(const hov::TransferFunction& tf, const hov::IntegrationS
   for (int count : { 1, 2, 3, 4, 5, 7, 8, 9, 31, static_cast<int>(jobs.size()) })
   {
     std::vector<hov::RGBA> out(count);
-    const long long pieces = batch.Integrate(tf, settings, jobs.data(), count, out.data());
+    std::vector<int> perJob(count, -1);
+    const long long pieces =
+      batch.Integrate(tf, settings, jobs.data(), count, out.data(), perJob.data());
     long long expectedPieces = 0;
     for (int i = 0; i < count; ++i)
     {
       const hov::SegmentJob& job = jobs[i];
       hov::RGBA ref;
+      int p = 1;
       if (job.Interval >= -1)
       {
         ref = hov::IntegrateLinearScalarInInterval(
           tf, job.Interval, job.SFront, job.SBack, job.Length, settings);
-        ++expectedPieces;
       }
       else
       {
-        int p = 0;
         ref = hov::IntegrateLinearScalar(tf, job.SFront, job.SBack, job.Length, settings, &p);
-        expectedPieces += p;
       }
+      expectedPieces += p;
+      ASSERT_EQ(perJob[i], p) << "segment " << i;
       // Bit for bit: the batch promises exactly the scalar kernels' operations.
       ASSERT_EQ(out[i].R, ref.R) << "segment " << i << " of " << count << ": s " << job.SFront
                                  << " -> " << job.SBack << ", L " << job.Length;

@@ -1,0 +1,416 @@
+#include "vtkHighOrderProjectorTile.h"
+
+#include "hovCompositing.h" // CompositeBehind
+
+#include <algorithm> // std::min, std::max, std::sort
+#include <cmath>     // std::ceil, std::floor
+
+namespace
+{
+using Tetra = vtkHighOrderTetraSetup::Tetra;
+using Ray = vtkHighOrderViewRays::Ray;
+using CellScreen = vtkHighOrderProjectorTile::CellScreen;
+
+/// Exact clip of a ray against the four face planes; false if it misses.
+/// A ray parallel to a face and exactly in its plane (num == 0) is resolved
+/// by the symbolic displacement e px + e^2 py of vtkHighOrderViewRays: inside
+/// iff n.px < 0, or n.px == 0 and n.py < 0. The two cells sharing a face hold
+/// opposite canonical normals, so exactly one of them takes such a ray.
+inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& px,
+  const glm::dvec3& py, double& tIn, double& tOut)
+{
+  tIn = 0.0;
+  tOut = tMax;
+  for (int k = 0; k < 4; ++k)
+  {
+    const double denom = glm::dot(tet.Normal[k], ray.Direction);
+    const double num = tet.Offset[k] - glm::dot(tet.Normal[k], ray.Origin);
+    if (denom > 0.0)
+    {
+      tOut = std::min(tOut, num / denom);
+    }
+    else if (denom < 0.0)
+    {
+      tIn = std::max(tIn, num / denom);
+    }
+    else if (num < 0.0)
+    {
+      return false;
+    }
+    else if (num == 0.0)
+    {
+      const double nx = glm::dot(tet.Normal[k], px);
+      if (nx > 0.0 || (nx == 0.0 && glm::dot(tet.Normal[k], py) >= 0.0))
+      {
+        return false;
+      }
+    }
+  }
+  return tIn < tOut;
+}
+
+/**
+ * Window-x range of the projected cell on the row at height y: the
+ * projection is the convex hull of the projected vertices, and a line meets
+ * a convex hull of points in the span of its crossings with all segments
+ * between them (the six projected edges). False if the row misses it.
+ */
+bool RowSpan(const CellScreen& cell, double y, double& xMin, double& xMax)
+{
+  xMin = 1e300;
+  xMax = -1e300;
+  for (int a = 0; a < 4; ++a)
+  {
+    const glm::dvec2& p = cell.Vertex[a];
+    for (int b = a + 1; b < 4; ++b)
+    {
+      const glm::dvec2& q = cell.Vertex[b];
+      if ((p.y - y) * (q.y - y) > 0.0)
+      {
+        continue; // the edge is entirely above or below the row
+      }
+      if (p.y == q.y)
+      {
+        xMin = std::min(xMin, std::min(p.x, q.x));
+        xMax = std::max(xMax, std::max(p.x, q.x));
+        continue;
+      }
+      const double x = p.x + (q.x - p.x) * ((y - p.y) / (q.y - p.y));
+      xMin = std::min(xMin, x);
+      xMax = std::max(xMax, x);
+    }
+  }
+  return xMin <= xMax;
+}
+
+/// Distance, in cells of a tile's list, at which the per-cell data is
+/// prefetched: cells come in visibility (or depth) order, scattered in memory,
+/// and each one's few pixels take less time than a cache miss.
+constexpr vtkIdType PrefetchDistance = 4;
+
+/// Prefetch what ForCellSegments reads of ordered cell k.
+inline void PrefetchCell(const vtkHighOrderProjectorTile::Frame& frame, vtkIdType k)
+{
+  const char* tet = reinterpret_cast<const char*>(&(*frame.Tets)[(*frame.Order)[k]]);
+  for (size_t offset = 0; offset < sizeof(Tetra); offset += 64)
+  {
+    __builtin_prefetch(tet + offset);
+  }
+  __builtin_prefetch(&(*frame.Screen)[k]);
+  __builtin_prefetch(reinterpret_cast<const char*>(&(*frame.Screen)[k]) + 63);
+  __builtin_prefetch(&frame.TileBins->Boxes[k]);
+  __builtin_prefetch(&(*frame.CellInterval)[k]);
+}
+
+/// Insertion sort: linear on the nearly sorted per-pixel lists.
+template <typename T>
+void InsertionSort(T* first, T* last)
+{
+  for (T* i = first + 1; i < last; ++i)
+  {
+    if (!(*i < *(i - 1)))
+    {
+      continue;
+    }
+    const T v = *i;
+    T* j = i;
+    do
+    {
+      *j = *(j - 1);
+      --j;
+    } while (j > first && v < *(j - 1));
+    *j = v;
+  }
+}
+}
+
+void vtkHighOrderProjectorTile::Bins::Build(int width, int height, int tileSize)
+{
+  this->Size = tileSize;
+  this->TilesX = (width + tileSize - 1) / tileSize;
+  this->TilesY = (height + tileSize - 1) / tileSize;
+  const int numTiles = this->TilesX * this->TilesY;
+  this->Start.assign(numTiles + 1, 0);
+  auto forTiles = [&](const Box& b, auto&& f) {
+    if (b[0] > b[1] || b[2] > b[3])
+    {
+      return;
+    }
+    for (int ty = b[2] / tileSize; ty <= b[3] / tileSize; ++ty)
+    {
+      for (int tx = b[0] / tileSize; tx <= b[1] / tileSize; ++tx)
+      {
+        f(ty * this->TilesX + tx);
+      }
+    }
+  };
+  for (const Box& b : this->Boxes)
+  {
+    forTiles(b, [&](int t) { ++this->Start[t + 1]; });
+  }
+  for (int t = 0; t < numTiles; ++t)
+  {
+    this->Start[t + 1] += this->Start[t];
+  }
+  this->Cells.resize(this->Start[numTiles]);
+  std::vector<vtkIdType> fill(this->Start.begin(), this->Start.end() - 1);
+  for (size_t k = 0; k < this->Boxes.size(); ++k)
+  {
+    forTiles(this->Boxes[k], [&](int t) { this->Cells[fill[t]++] = static_cast<vtkIdType>(k); });
+  }
+}
+
+void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
+{
+  const vtkHighOrderViewRays& rays = *frame.Rays;
+  const Bins& bins = *frame.TileBins;
+  const int width = rays.GetWidth();
+  this->X0 = (tileIndex % bins.TilesX) * bins.Size;
+  this->Y0 = (tileIndex / bins.TilesX) * bins.Size;
+  this->W = std::min(bins.Size, width - this->X0);
+  this->H = std::min(bins.Size, rays.GetHeight() - this->Y0);
+  const size_t n = static_cast<size_t>(this->W) * this->H;
+  this->Rays.resize(n);
+  this->TMax.resize(n);
+  this->Accum.assign(n, hov::RGBA());
+  this->MaxExit.assign(n, -1e300);
+  this->Violated.assign(n, 0);
+  this->Done.assign(n, 0);
+  this->Fragments.clear();
+  for (int j = 0; j < this->H; ++j)
+  {
+    for (int i = 0; i < this->W; ++i)
+    {
+      const int pi = this->X0 + i, pj = this->Y0 + j;
+      const size_t p = static_cast<size_t>(j) * this->W + i;
+      this->Rays[p] = rays.PixelRay(pi, pj);
+      double tMax = this->Rays[p].TFar;
+      const double z = frame.Depth ? frame.Depth[static_cast<size_t>(pj) * width + pi] : 1.0;
+      if (z < 1.0)
+      {
+        tMax = std::min(tMax, rays.DepthToT(pi, pj, this->Rays[p], z));
+      }
+      this->TMax[p] = tMax;
+    }
+  }
+}
+
+void vtkHighOrderProjectorTile::Write(
+  std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const
+{
+  for (int j = 0; j < this->H; ++j)
+  {
+    for (int i = 0; i < this->W; ++i)
+    {
+      const size_t p = static_cast<size_t>(j) * this->W + i;
+      double* out = &rgba[4 * (static_cast<size_t>(this->Y0 + j) * width + this->X0 + i)];
+      out[0] = this->Accum[p].R;
+      out[1] = this->Accum[p].G;
+      out[2] = this->Accum[p].B;
+      out[3] = this->Accum[p].A;
+      st.WitnessViolations += this->Violated[p];
+    }
+  }
+}
+
+inline void vtkHighOrderProjectorTile::Witness(const Frame& frame, size_t p, double tIn, double tOut)
+{
+  if (tIn < this->MaxExit[p] - frame.WitnessTol)
+  {
+    this->Violated[p] = 1;
+  }
+  this->MaxExit[p] = std::max(this->MaxExit[p], tOut);
+}
+
+inline void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
+{
+  hov::CompositeBehind(this->Accum[p], seg);
+  if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance)
+  {
+    this->Done[p] = 1;
+  }
+}
+
+/// Visit every (pixel, segment) of ordered cell k in this tile.
+template <typename Visit>
+void vtkHighOrderProjectorTile::ForCellSegments(
+  const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit)
+{
+  const Tetra& tet = (*frame.Tets)[(*frame.Order)[k]];
+  const CellScreen& screen = (*frame.Screen)[k];
+  const Box& b = frame.TileBins->Boxes[k];
+  const int i0 = std::max(b[0], this->X0) - this->X0;
+  const int i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
+  const int j0 = std::max(b[2], this->Y0) - this->Y0;
+  const int j1 = std::min(b[3], this->Y0 + this->H - 1) - this->Y0;
+  for (int j = j0; j <= j1; ++j)
+  {
+    int r0 = i0, r1 = i1;
+    if (screen.Projectable)
+    {
+      // Only the pixel centres inside the projection (BoxMargin of slack).
+      double xMin, xMax;
+      if (!RowSpan(screen, this->Y0 + j + 0.5, xMin, xMax))
+      {
+        continue;
+      }
+      r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - this->X0);
+      r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - this->X0);
+    }
+    for (int i = r0; i <= r1; ++i)
+    {
+      const size_t p = static_cast<size_t>(j) * this->W + i;
+      double tIn, tOut;
+      if ((skipDone && this->Done[p]) ||
+        !ClipRay(tet, this->Rays[p], this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
+      {
+        continue;
+      }
+      const Ray& ray = this->Rays[p];
+      const double sAtOrigin = tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - tet.RefPoint);
+      const double slope = glm::dot(tet.Gradient, ray.Direction);
+      visit(p, tIn, tOut, sAtOrigin + tIn * slope, sAtOrigin + tOut * slope);
+    }
+  }
+}
+
+void vtkHighOrderProjectorTile::Queue(
+  size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
+{
+  this->Jobs.push_back(hov::SegmentJob{ sIn, sOut, tOut - tIn, interval });
+  this->Pending.push_back(PendingSegment{ tIn, tOut, static_cast<int>(p) });
+}
+
+void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st)
+{
+  const int n = static_cast<int>(this->Jobs.size());
+  if (n == 0)
+  {
+    return;
+  }
+  this->Results.resize(n);
+  this->Pieces.resize(n);
+  this->Batch.Integrate(*frame.TF, frame.Settings->Integration, this->Jobs.data(), n,
+    this->Results.data(), this->Pieces.data());
+  // In queue order, skipping pixels that turned opaque meanwhile: exactly
+  // what compositing one segment at a time does.
+  for (int m = 0; m < n; ++m)
+  {
+    const PendingSegment& seg = this->Pending[m];
+    if (this->Done[seg.Pixel])
+    {
+      continue;
+    }
+    this->Witness(frame, seg.Pixel, seg.TIn, seg.TOut);
+    this->Composite(frame, seg.Pixel, this->Results[m]);
+    ++st.Segments;
+    st.Pieces += this->Pieces[m];
+  }
+  this->Jobs.clear();
+  this->Pending.clear();
+}
+
+void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkIdType* cells,
+  vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
+{
+  this->Jobs.clear();
+  this->Pending.clear();
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    if (c + PrefetchDistance < count)
+    {
+      PrefetchCell(frame, cells[c + PrefetchDistance]);
+    }
+    const vtkIdType k = cells[c];
+    const int interval = (*frame.CellInterval)[k];
+    this->ForCellSegments(frame, k, true,
+      [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
+        this->Queue(p, tIn, tOut, sIn, sOut, interval);
+      });
+    if (static_cast<int>(this->Jobs.size()) >= BatchSize)
+    {
+      this->Flush(frame, st);
+    }
+  }
+  this->Flush(frame, st);
+}
+
+void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdType* cells,
+  vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
+{
+  // Cells by centroid depth first: each pixel's fragments then arrive nearly
+  // in order and the insertion sort below has little to do. (Any order
+  // gives the same image; this one only makes sorting cheap.)
+  this->CellOrder.assign(cells, cells + count);
+  const std::vector<float>& key = *frame.DepthKey;
+  std::sort(this->CellOrder.begin(), this->CellOrder.end(),
+    [&key](vtkIdType p, vtkIdType q) { return key[p] != key[q] ? key[p] < key[q] : p < q; });
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    const vtkIdType k = this->CellOrder[c];
+    if (c + PrefetchDistance < count)
+    {
+      PrefetchCell(frame, this->CellOrder[c + PrefetchDistance]);
+    }
+    this->ForCellSegments(frame, k, false,
+      [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
+        this->Fragments.push_back(
+          Fragment{ tIn, tOut, sIn, sOut, static_cast<int>(p), static_cast<int>(k) });
+      });
+  }
+  // Counting sort by pixel (stable), then each pixel's list by entry.
+  const size_t n = this->Accum.size();
+  this->PixelStart.assign(n + 1, 0);
+  for (const Fragment& f : this->Fragments)
+  {
+    ++this->PixelStart[f.Pixel + 1];
+  }
+  for (size_t p = 0; p < n; ++p)
+  {
+    this->PixelStart[p + 1] += this->PixelStart[p];
+  }
+  this->ByPixel.resize(this->Fragments.size());
+  this->Fill.assign(this->PixelStart.begin(), this->PixelStart.end() - 1);
+  for (const Fragment& f : this->Fragments)
+  {
+    this->ByPixel[this->Fill[f.Pixel]++] = f;
+  }
+  // Each pixel's list by entry; the segments of consecutive pixels are
+  // integrated together and composited pixel by pixel in that order.
+  const std::vector<int>& interval = *frame.CellInterval;
+  this->Jobs.clear();
+  this->Pending.clear();
+  for (size_t p = 0; p < n; ++p)
+  {
+    Fragment* first = this->ByPixel.data() + this->PixelStart[p];
+    Fragment* last = this->ByPixel.data() + this->PixelStart[p + 1];
+    InsertionSort(first, last);
+    for (const Fragment* f = first; f != last; ++f)
+    {
+      this->Queue(p, f->TIn, f->TOut, f->SIn, f->SOut, interval[f->Order]);
+    }
+    if (static_cast<int>(this->Jobs.size()) >= BatchSize)
+    {
+      this->Flush(frame, st);
+    }
+  }
+  this->Flush(frame, st);
+}
+
+void vtkHighOrderProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
+  vtkHighOrderCellProjector::Statistics& stats)
+{
+  this->Init(frame, tileIndex);
+  const Bins& bins = *frame.TileBins;
+  const vtkIdType* cells = bins.Cells.data() + bins.Start[tileIndex];
+  const vtkIdType count = bins.Start[tileIndex + 1] - bins.Start[tileIndex];
+  if (frame.Settings->PerPixelSort)
+  {
+    this->RenderPerPixel(frame, cells, count, stats);
+  }
+  else
+  {
+    this->RenderInCellOrder(frame, cells, count, stats);
+  }
+  this->Write(rgba, frame.Rays->GetWidth(), stats);
+}
