@@ -13,6 +13,17 @@
 #include <array>     // pixel boxes
 #include <cmath>     // std::ceil, std::floor
 
+/// Per-frame arrays kept across frames.
+struct vtkHighOrderCellProjector::Buffers
+{
+  std::vector<glm::dvec2> Window;
+  std::vector<unsigned char> Projectable;
+  std::vector<vtkHighOrderProjectorTile::CellRecord> Cells;
+  std::vector<float> DepthKey;
+  vtkHighOrderProjectorTile::Bins TileBins;
+  vtkSMPThreadLocal<vtkHighOrderProjectorTile> Tiles;
+};
+
 namespace
 {
 // Witness tolerance: a later cell may start this much (relative to the view
@@ -22,7 +33,7 @@ namespace
 constexpr double WitnessRelativeTolerance = 1e-9;
 
 using Box = vtkHighOrderProjectorTile::Box;
-using CellScreen = vtkHighOrderProjectorTile::CellScreen;
+using CellRecord = vtkHighOrderProjectorTile::CellRecord;
 using Tetra = vtkHighOrderTetraSetup::Tetra;
 
 /// Pixel box of a tetrahedron: the pixel centres inside its projected
@@ -71,9 +82,18 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   const auto& tets = setup.GetTetras();
   const auto& points = setup.GetPoints();
 
-  // Project every point once, then box every cell (in visibility order).
-  std::vector<glm::dvec2> window(points.size());
-  std::vector<unsigned char> projectable(points.size());
+  // Per-frame arrays live across frames: no allocation, no page faults.
+  if (!this->Scratch)
+  {
+    this->Scratch = std::make_shared<Buffers>();
+  }
+  Buffers& buf = *this->Scratch;
+
+  // Project every point once.
+  std::vector<glm::dvec2>& window = buf.Window;
+  std::vector<unsigned char>& projectable = buf.Projectable;
+  window.resize(points.size());
+  projectable.resize(points.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()), [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType i = b; i < e; ++i)
     {
@@ -82,30 +102,40 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
       window[i] = glm::dvec2(x, y);
     }
   });
-  // Per cell, in one pass: its pixel box; the transfer-function interval
-  // holding its whole scalar range (most cells of a fine mesh: their segments
-  // skip the search); its centroid depth along the central ray, to presort
-  // cells in per-pixel mode.
+  // Per cell, in visibility order and in one pass, its record for the tile
+  // loop: face planes and field, projected vertices, pixel box, the
+  // transfer-function interval holding its whole scalar range (most cells of
+  // a fine mesh: their segments skip the search); and its centroid depth
+  // along the central ray, to presort cells in per-pixel mode.
   const size_t numCells = frontToBack.size();
-  vtkHighOrderProjectorTile::Bins bins;
-  bins.Boxes.resize(numCells);
-  std::vector<int> cellInterval(numCells);
-  std::vector<CellScreen> screen(numCells);
-  std::vector<float> depthKey(settings.PerPixelSort ? numCells : 0);
+  std::vector<CellRecord>& records = buf.Cells;
+  records.resize(numCells);
+  std::vector<float>& depthKey = buf.DepthKey;
+  depthKey.resize(settings.PerPixelSort ? numCells : 0);
   const vtkHighOrderViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType k = b; k < e; ++k)
     {
       const Tetra& tet = tets[frontToBack[k]];
-      bins.Boxes[k] = PixelBox(tet, window, projectable, width, height);
-      CellScreen& cs = screen[k];
-      cs.Projectable = true;
+      CellRecord& cell = records[k];
+      for (int f = 0; f < 4; ++f)
+      {
+        cell.NX[f] = tet.Normal[f].x;
+        cell.NY[f] = tet.Normal[f].y;
+        cell.NZ[f] = tet.Normal[f].z;
+        cell.Offset[f] = tet.Offset[f];
+      }
+      cell.Gradient = tet.Gradient;
+      cell.RefPoint = tet.RefPoint;
+      cell.RefScalar = tet.RefScalar;
+      cell.PixelBox = PixelBox(tet, window, projectable, width, height);
+      cell.Projectable = true;
       for (int v = 0; v < 4; ++v)
       {
-        cs.Vertex[v] = window[tet.Points[v]];
-        cs.Projectable = cs.Projectable && projectable[tet.Points[v]];
+        cell.Vertex[v] = window[tet.Points[v]];
+        cell.Projectable = cell.Projectable && projectable[tet.Points[v]];
       }
-      cellInterval[k] = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
+      cell.Interval = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
       if (settings.PerPixelSort)
       {
         const glm::dvec3 c = 0.25 * (points[tet.Points[0]] + points[tet.Points[1]] +
@@ -114,14 +144,14 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
       }
     }
   });
-  bins.Build(width, height, std::max(4, settings.TileSize));
+  vtkHighOrderProjectorTile::Bins& bins = buf.TileBins;
+  bins.Build(records, width, height, std::max(4, settings.TileSize));
 
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;
   vtkHighOrderProjectorTile::Frame frame;
-  frame.Tets = &tets;
-  frame.Order = &frontToBack;
   frame.TileBins = &bins;
+  frame.Cells = &records;
   frame.TF = &tf;
   frame.Settings = &settings;
   frame.Rays = &rays;
@@ -129,13 +159,12 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   frame.WitnessTol = WitnessRelativeTolerance * rays.GetDepthScale();
   frame.PerturbX = rays.GetPerturbX();
   frame.PerturbY = rays.GetPerturbY();
-  frame.Screen = &screen;
   frame.DepthKey = &depthKey;
-  frame.CellInterval = &cellInterval;
   std::vector<Statistics> tileStats(numTiles);
-  // One tile object per thread, reused from tile to tile so that its buffers
-  // keep their capacity (the result does not depend on which thread runs a tile).
-  vtkSMPThreadLocal<vtkHighOrderProjectorTile> tiles;
+  // One tile object per thread, kept across tiles and frames so that its
+  // buffers keep their capacity (the result does not depend on which thread
+  // runs a tile).
+  vtkSMPThreadLocal<vtkHighOrderProjectorTile>& tiles = buf.Tiles;
   vtkSMPTools::For(0, numTiles, 1, [&](vtkIdType tBegin, vtkIdType tEnd) {
     vtkHighOrderProjectorTile& tile = tiles.Local();
     for (vtkIdType t = tBegin; t < tEnd; ++t)

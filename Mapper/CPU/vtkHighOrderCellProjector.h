@@ -43,6 +43,7 @@
 
 #include "vtkType.h" // vtkIdType
 
+#include <memory> // scratch buffers
 #include <vector> // image, order
 
 class vtkHighOrderTetraSetup;
@@ -82,6 +83,10 @@ public:
   Statistics Render(const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& frontToBack,
     const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf, const Settings& settings,
     const float* depth, std::vector<double>& rgba) const;
+
+private:
+  struct Buffers; // per-frame arrays kept across frames (see the .cxx)
+  mutable std::shared_ptr<Buffers> Scratch;
 };
 
 #endif

@@ -4,27 +4,28 @@
 
 #include <algorithm> // std::min, std::max, std::sort
 #include <cmath>     // std::ceil, std::floor
+#include <cstring>   // memcpy into vector registers
 
 namespace
 {
-using Tetra = vtkHighOrderTetraSetup::Tetra;
 using Ray = vtkHighOrderViewRays::Ray;
-using CellScreen = vtkHighOrderProjectorTile::CellScreen;
+using CellRecord = vtkHighOrderProjectorTile::CellRecord;
 
 /// Exact clip of a ray against the four face planes; false if it misses.
 /// A ray parallel to a face and exactly in its plane (num == 0) is resolved
 /// by the symbolic displacement e px + e^2 py of vtkHighOrderViewRays: inside
 /// iff n.px < 0, or n.px == 0 and n.py < 0. The two cells sharing a face hold
 /// opposite canonical normals, so exactly one of them takes such a ray.
-inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& px,
+inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const glm::dvec3& px,
   const glm::dvec3& py, double& tIn, double& tOut)
 {
   tIn = 0.0;
   tOut = tMax;
   for (int k = 0; k < 4; ++k)
   {
-    const double denom = glm::dot(tet.Normal[k], ray.Direction);
-    const double num = tet.Offset[k] - glm::dot(tet.Normal[k], ray.Origin);
+    const glm::dvec3 normal(cell.NX[k], cell.NY[k], cell.NZ[k]);
+    const double denom = glm::dot(normal, ray.Direction);
+    const double num = cell.Offset[k] - glm::dot(normal, ray.Origin);
     if (denom > 0.0)
     {
       tOut = std::min(tOut, num / denom);
@@ -39,8 +40,8 @@ inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, const glm::dv
     }
     else if (num == 0.0)
     {
-      const double nx = glm::dot(tet.Normal[k], px);
-      if (nx > 0.0 || (nx == 0.0 && glm::dot(tet.Normal[k], py) >= 0.0))
+      const double nx = glm::dot(normal, px);
+      if (nx > 0.0 || (nx == 0.0 && glm::dot(normal, py) >= 0.0))
       {
         return false;
       }
@@ -49,13 +50,56 @@ inline bool ClipRay(const Tetra& tet, const Ray& ray, double tMax, const glm::dv
   return tIn < tOut;
 }
 
+#if defined(__GNUC__) // GCC and Clang: vector extensions
+#define HOV_CLIP_LANES 1
+/// The four face planes of a cell, one per lane (a GCC/Clang vector: two SSE2
+/// or one AVX instruction per operation).
+typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
+struct FacePlanes
+{
+  V4 NX, NY, NZ, Offset;
+  explicit FacePlanes(const CellRecord& cell)
+  {
+    std::memcpy(&this->NX, cell.NX, sizeof(V4));
+    std::memcpy(&this->NY, cell.NY, sizeof(V4));
+    std::memcpy(&this->NZ, cell.NZ, sizeof(V4));
+    std::memcpy(&this->Offset, cell.Offset, sizeof(V4));
+  }
+};
+
+/**
+ * ClipRay() for the four planes at once, branch free: the same products,
+ * sums and quotients in the same order (dot products as glm::dot computes
+ * them), and min/max, which do not depend on the order, so the result is
+ * bit-identical. Returns -1 (undecided: call ClipRay) if a ray is parallel to
+ * a face (denominator exactly 0), where ClipRay's tie rules apply.
+ */
+inline int ClipRayLanes(const FacePlanes& f, const Ray& ray, double tMax, double& tIn, double& tOut)
+{
+  const V4 denom = (f.NX * ray.Direction.x + f.NY * ray.Direction.y) + f.NZ * ray.Direction.z;
+  const V4 num = f.Offset - ((f.NX * ray.Origin.x + f.NY * ray.Origin.y) + f.NZ * ray.Origin.z);
+  if (denom[0] == 0.0 || denom[1] == 0.0 || denom[2] == 0.0 || denom[3] == 0.0)
+  {
+    return -1;
+  }
+  const V4 t = num / denom;
+  const V4 zero = {};
+  const V4 big = zero + 1e300 * 1e300; // +inf: no constraint
+  const V4 enter = denom < zero ? t : -big;
+  const V4 leave = denom > zero ? t : big;
+  tIn = std::max(std::max(std::max(0.0, enter[0]), std::max(enter[1], enter[2])), enter[3]);
+  tOut = std::min(std::min(std::min(tMax, leave[0]), std::min(leave[1], leave[2])), leave[3]);
+  return tIn < tOut ? 1 : 0;
+}
+#endif
+
 /**
  * Window-x range of the projected cell on the row at height y: the
  * projection is the convex hull of the projected vertices, and a line meets
  * a convex hull of points in the span of its crossings with all segments
  * between them (the six projected edges). False if the row misses it.
  */
-bool RowSpan(const CellScreen& cell, double y, double& xMin, double& xMax)
+bool RowSpan(const CellRecord& cell, double y, double& xMin, double& xMax)
 {
   xMin = 1e300;
   xMax = -1e300;
@@ -91,15 +135,11 @@ constexpr vtkIdType PrefetchDistance = 4;
 /// Prefetch what ForCellSegments reads of ordered cell k.
 inline void PrefetchCell(const vtkHighOrderProjectorTile::Frame& frame, vtkIdType k)
 {
-  const char* tet = reinterpret_cast<const char*>(&(*frame.Tets)[(*frame.Order)[k]]);
-  for (size_t offset = 0; offset < sizeof(Tetra); offset += 64)
+  const char* cell = reinterpret_cast<const char*>(&(*frame.Cells)[k]);
+  for (size_t offset = 0; offset < sizeof(CellRecord); offset += 64)
   {
-    __builtin_prefetch(tet + offset);
+    __builtin_prefetch(cell + offset);
   }
-  __builtin_prefetch(&(*frame.Screen)[k]);
-  __builtin_prefetch(reinterpret_cast<const char*>(&(*frame.Screen)[k]) + 63);
-  __builtin_prefetch(&frame.TileBins->Boxes[k]);
-  __builtin_prefetch(&(*frame.CellInterval)[k]);
 }
 
 /// Insertion sort: linear on the nearly sorted per-pixel lists.
@@ -124,7 +164,8 @@ void InsertionSort(T* first, T* last)
 }
 }
 
-void vtkHighOrderProjectorTile::Bins::Build(int width, int height, int tileSize)
+void vtkHighOrderProjectorTile::Bins::Build(
+  const std::vector<CellRecord>& cells, int width, int height, int tileSize)
 {
   this->Size = tileSize;
   this->TilesX = (width + tileSize - 1) / tileSize;
@@ -144,19 +185,20 @@ void vtkHighOrderProjectorTile::Bins::Build(int width, int height, int tileSize)
       }
     }
   };
-  for (const Box& b : this->Boxes)
+  for (const CellRecord& cell : cells)
   {
-    forTiles(b, [&](int t) { ++this->Start[t + 1]; });
+    forTiles(cell.PixelBox, [&](int t) { ++this->Start[t + 1]; });
   }
   for (int t = 0; t < numTiles; ++t)
   {
     this->Start[t + 1] += this->Start[t];
   }
   this->Cells.resize(this->Start[numTiles]);
-  std::vector<vtkIdType> fill(this->Start.begin(), this->Start.end() - 1);
-  for (size_t k = 0; k < this->Boxes.size(); ++k)
+  this->Fill.assign(this->Start.begin(), this->Start.end() - 1);
+  for (size_t k = 0; k < cells.size(); ++k)
   {
-    forTiles(this->Boxes[k], [&](int t) { this->Cells[fill[t]++] = static_cast<vtkIdType>(k); });
+    forTiles(cells[k].PixelBox,
+      [&](int t) { this->Cells[this->Fill[t]++] = static_cast<vtkIdType>(k); });
   }
 }
 
@@ -236,9 +278,11 @@ template <typename Visit>
 void vtkHighOrderProjectorTile::ForCellSegments(
   const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit)
 {
-  const Tetra& tet = (*frame.Tets)[(*frame.Order)[k]];
-  const CellScreen& screen = (*frame.Screen)[k];
-  const Box& b = frame.TileBins->Boxes[k];
+  const CellRecord& cell = (*frame.Cells)[k];
+#ifdef HOV_CLIP_LANES
+  const FacePlanes planes(cell);
+#endif
+  const Box& b = cell.PixelBox;
   const int i0 = std::max(b[0], this->X0) - this->X0;
   const int i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
   const int j0 = std::max(b[2], this->Y0) - this->Y0;
@@ -246,11 +290,11 @@ void vtkHighOrderProjectorTile::ForCellSegments(
   for (int j = j0; j <= j1; ++j)
   {
     int r0 = i0, r1 = i1;
-    if (screen.Projectable)
+    if (cell.Projectable)
     {
       // Only the pixel centres inside the projection (BoxMargin of slack).
       double xMin, xMax;
-      if (!RowSpan(screen, this->Y0 + j + 0.5, xMin, xMax))
+      if (!RowSpan(cell, this->Y0 + j + 0.5, xMin, xMax))
       {
         continue;
       }
@@ -260,21 +304,32 @@ void vtkHighOrderProjectorTile::ForCellSegments(
     for (int i = r0; i <= r1; ++i)
     {
       const size_t p = static_cast<size_t>(j) * this->W + i;
-      double tIn, tOut;
-      if ((skipDone && this->Done[p]) ||
-        !ClipRay(tet, this->Rays[p], this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
+      if (skipDone && this->Done[p])
       {
         continue;
       }
       const Ray& ray = this->Rays[p];
-      const double sAtOrigin = tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - tet.RefPoint);
-      const double slope = glm::dot(tet.Gradient, ray.Direction);
+      double tIn, tOut;
+#ifdef HOV_CLIP_LANES
+      const int hit = ClipRayLanes(planes, ray, this->TMax[p], tIn, tOut);
+      if (hit == 0 ||
+        (hit < 0 &&
+          !ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut)))
+#else
+      if (!ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
+#endif
+      {
+        continue;
+      }
+      const double sAtOrigin =
+        cell.RefScalar + glm::dot(cell.Gradient, ray.Origin - cell.RefPoint);
+      const double slope = glm::dot(cell.Gradient, ray.Direction);
       visit(p, tIn, tOut, sAtOrigin + tIn * slope, sAtOrigin + tOut * slope);
     }
   }
 }
 
-void vtkHighOrderProjectorTile::Queue(
+inline void vtkHighOrderProjectorTile::Queue(
   size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
 {
   this->Jobs.push_back(hov::SegmentJob{ sIn, sOut, tOut - tIn, interval });
@@ -322,7 +377,7 @@ void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkI
       PrefetchCell(frame, cells[c + PrefetchDistance]);
     }
     const vtkIdType k = cells[c];
-    const int interval = (*frame.CellInterval)[k];
+    const int interval = (*frame.Cells)[k].Interval;
     this->ForCellSegments(frame, k, true,
       [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
         this->Queue(p, tIn, tOut, sIn, sOut, interval);
@@ -377,7 +432,7 @@ void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdTy
   }
   // Each pixel's list by entry; the segments of consecutive pixels are
   // integrated together and composited pixel by pixel in that order.
-  const std::vector<int>& interval = *frame.CellInterval;
+  const std::vector<CellRecord>& records = *frame.Cells;
   this->Jobs.clear();
   this->Pending.clear();
   for (size_t p = 0; p < n; ++p)
@@ -387,7 +442,7 @@ void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdTy
     InsertionSort(first, last);
     for (const Fragment* f = first; f != last; ++f)
     {
-      this->Queue(p, f->TIn, f->TOut, f->SIn, f->SOut, interval[f->Order]);
+      this->Queue(p, f->TIn, f->TOut, f->SIn, f->SOut, records[f->Order].Interval);
     }
     if (static_cast<int>(this->Jobs.size()) >= BatchSize)
     {

@@ -30,7 +30,6 @@
 #define vtkHighOrderProjectorTile_h
 
 #include "vtkHighOrderCellProjector.h" // Settings, Statistics
-#include "vtkHighOrderTetraSetup.h"    // Tetra
 #include "vtkHighOrderViewRays.h"      // Ray
 
 #include "hovSegmentBatch.h" // batched integrals
@@ -43,39 +42,46 @@ class vtkHighOrderProjectorTile
 public:
   using Box = std::array<int, 4>; ///< i0, i1, j0, j1 inclusive; i0 > i1 means empty
 
-  /// A cell's projected vertices, stored per ordered cell so that the tile
-  /// loop reads one cache line instead of four scattered points.
-  struct CellScreen
+  /**
+   * Everything the tile loop reads of a cell, stored per ordered cell (built
+   * each frame by the projector in one parallel pass): the tile loop then
+   * reads a few consecutive cache lines per cell instead of a scattered
+   * tetrahedron, four scattered points and several per-cell arrays.
+   */
+  struct CellRecord
   {
-    glm::dvec2 Vertex[4];
-    bool Projectable; ///< every vertex in front of the eye plane
+    double NX[4], NY[4], NZ[4], Offset[4]; ///< face k: (NX,NY,NZ)[k] . x <= Offset[k]
+    glm::dvec3 Gradient;                   ///< as vtkHighOrderTetraSetup::Tetra
+    glm::dvec3 RefPoint;
+    double RefScalar;
+    glm::dvec2 Vertex[4]; ///< projected vertices (window coordinates)
+    Box PixelBox;         ///< pixel centres of the projected bounding box
+    int Interval;         ///< transfer-function interval of the whole cell, or -2
+    bool Projectable;     ///< every vertex in front of the eye plane
   };
 
   /// Cells binned into image tiles, each tile's list in visibility order.
   struct Bins
   {
     int Size = 16, TilesX = 0, TilesY = 0;
-    std::vector<Box> Boxes;       ///< per ordered cell
     std::vector<vtkIdType> Start; ///< per tile, into Cells
     std::vector<vtkIdType> Cells; ///< ordered-cell indices
-    void Build(int width, int height, int tileSize);
+    std::vector<vtkIdType> Fill;  ///< scratch
+    void Build(const std::vector<CellRecord>& cells, int width, int height, int tileSize);
   };
 
   /// Everything the tiles of one frame read.
   struct Frame
   {
-    const std::vector<vtkHighOrderTetraSetup::Tetra>* Tets;
-    const std::vector<vtkIdType>* Order;
     const Bins* TileBins;
+    const std::vector<CellRecord>* Cells; ///< per ordered cell
     const hov::TransferFunction* TF;
     const vtkHighOrderCellProjector::Settings* Settings;
     const vtkHighOrderViewRays* Rays;
     const float* Depth;
     double WitnessTol;
     glm::dvec3 PerturbX, PerturbY;
-    const std::vector<CellScreen>* Screen;    ///< per ordered cell: projected vertices
-    const std::vector<float>* DepthKey;       ///< per ordered cell: centroid depth
-    const std::vector<int>* CellInterval;     ///< per ordered cell: its interval, or -2
+    const std::vector<float>* DepthKey; ///< per ordered cell: centroid depth (per-pixel sort)
   };
 
   /// Pixel centres inside the projection are those within BoxMargin pixels
@@ -95,7 +101,7 @@ private:
   template <typename Visit>
   void ForCellSegments(const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit);
   /// Queue a segment of pixel p for the next Flush().
-  void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
+  inline void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
   /// Integrate the queued segments together, then composite them in queue order.
   void Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
   /// Witness update of pixel p for a segment [tIn, tOut] composited next.
