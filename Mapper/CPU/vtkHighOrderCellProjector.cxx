@@ -11,6 +11,7 @@
 
 #include <algorithm> // std::min, std::max, std::sort
 #include <array>     // pixel boxes
+#include <utility>   // pair
 #include <cmath>     // std::ceil, std::floor
 
 /// Per-frame arrays kept across frames.
@@ -19,7 +20,8 @@ struct vtkHighOrderCellProjector::Buffers
   std::vector<glm::dvec2> Window;
   std::vector<unsigned char> Projectable;
   std::vector<vtkHighOrderProjectorTile::CellRecord> Cells;
-  std::vector<float> DepthKey;
+  std::vector<std::pair<float, vtkIdType>> DepthOrder; ///< per-pixel mode: (depth, tetra)
+  std::vector<vtkIdType> Order;                        ///< per-pixel mode: tetras by depth
   vtkHighOrderProjectorTile::Bins TileBins;
   vtkSMPThreadLocal<vtkHighOrderProjectorTile> Tiles;
 };
@@ -102,21 +104,45 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
       window[i] = glm::dvec2(x, y);
     }
   });
-  // Per cell, in visibility order and in one pass, its record for the tile
-  // loop: face planes and field, projected vertices, pixel box, the
+  // Per-pixel mode: any cell order gives the same image, since each pixel
+  // sorts its own segments; cells by centroid depth along the central ray
+  // make each pixel's list arrive nearly sorted (cheap insertion sort), and
+  // sorting them once here keeps every tile's list in depth order and in
+  // memory order at the same time.
+  const std::vector<vtkIdType>* order = &frontToBack;
+  if (settings.PerPixelSort)
+  {
+    const vtkHighOrderViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
+    buf.DepthOrder.resize(frontToBack.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
+      for (vtkIdType k = b; k < e; ++k)
+      {
+        const Tetra& tet = tets[frontToBack[k]];
+        const glm::dvec3 c = 0.25 * (points[tet.Points[0]] + points[tet.Points[1]] +
+                                points[tet.Points[2]] + points[tet.Points[3]]);
+        buf.DepthOrder[k] = { static_cast<float>(glm::dot(c - centre.Origin, centre.Direction)),
+          frontToBack[k] };
+      }
+    });
+    vtkSMPTools::Sort(buf.DepthOrder.begin(), buf.DepthOrder.end()); // (depth, id): deterministic
+    buf.Order.resize(buf.DepthOrder.size());
+    for (size_t k = 0; k < buf.Order.size(); ++k)
+    {
+      buf.Order[k] = buf.DepthOrder[k].second;
+    }
+    order = &buf.Order;
+  }
+  // Per cell, in that order and in one pass, its record for the tile loop:
+  // face planes and field, projected vertices, pixel box, and the
   // transfer-function interval holding its whole scalar range (most cells of
-  // a fine mesh: their segments skip the search); and its centroid depth
-  // along the central ray, to presort cells in per-pixel mode.
-  const size_t numCells = frontToBack.size();
+  // a fine mesh: their segments skip the search).
+  const size_t numCells = order->size();
   std::vector<CellRecord>& records = buf.Cells;
   records.resize(numCells);
-  std::vector<float>& depthKey = buf.DepthKey;
-  depthKey.resize(settings.PerPixelSort ? numCells : 0);
-  const vtkHighOrderViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType k = b; k < e; ++k)
     {
-      const Tetra& tet = tets[frontToBack[k]];
+      const Tetra& tet = tets[(*order)[k]];
       CellRecord& cell = records[k];
       for (int f = 0; f < 4; ++f)
       {
@@ -136,12 +162,6 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
         cell.Projectable = cell.Projectable && projectable[tet.Points[v]];
       }
       cell.Interval = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
-      if (settings.PerPixelSort)
-      {
-        const glm::dvec3 c = 0.25 * (points[tet.Points[0]] + points[tet.Points[1]] +
-                                points[tet.Points[2]] + points[tet.Points[3]]);
-        depthKey[k] = static_cast<float>(glm::dot(c - centre.Origin, centre.Direction));
-      }
     }
   });
   vtkHighOrderProjectorTile::Bins& bins = buf.TileBins;
@@ -159,7 +179,6 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   frame.WitnessTol = WitnessRelativeTolerance * rays.GetDepthScale();
   frame.PerturbX = rays.GetPerturbX();
   frame.PerturbY = rays.GetPerturbY();
-  frame.DepthKey = &depthKey;
   std::vector<Statistics> tileStats(numTiles);
   // One tile object per thread, kept across tiles and frames so that its
   // buffers keep their capacity (the result does not depend on which thread

@@ -218,7 +218,9 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
   this->MaxExit.assign(n, -1e300);
   this->Violated.assign(n, 0);
   this->Done.assign(n, 0);
-  this->Fragments.clear();
+  this->NumFragments = 0;
+  this->RowBegin = 0;
+  this->RowEnd = this->H;
   for (int j = 0; j < this->H; ++j)
   {
     for (int i = 0; i < this->W; ++i)
@@ -285,8 +287,8 @@ void vtkHighOrderProjectorTile::ForCellSegments(
   const Box& b = cell.PixelBox;
   const int i0 = std::max(b[0], this->X0) - this->X0;
   const int i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
-  const int j0 = std::max(b[2], this->Y0) - this->Y0;
-  const int j1 = std::min(b[3], this->Y0 + this->H - 1) - this->Y0;
+  const int j0 = std::max(b[2] - this->Y0, this->RowBegin);
+  const int j1 = std::min(b[3] - this->Y0, this->RowEnd - 1);
   for (int j = j0; j <= j1; ++j)
   {
     int r0 = i0, r1 = i1;
@@ -332,13 +334,28 @@ void vtkHighOrderProjectorTile::ForCellSegments(
 inline void vtkHighOrderProjectorTile::Queue(
   size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
 {
-  this->Jobs.push_back(hov::SegmentJob{ sIn, sOut, tOut - tIn, interval });
-  this->Pending.push_back(PendingSegment{ tIn, tOut, static_cast<int>(p) });
+  // Field by field into preallocated slots (no temporary: building a struct
+  // on the stack and copying it stalled on store forwarding).
+  if (this->NumQueued == static_cast<int>(this->Jobs.size()))
+  {
+    this->Jobs.resize(2 * this->Jobs.size() + BatchSize);
+    this->Pending.resize(this->Jobs.size());
+  }
+  hov::SegmentJob& job = this->Jobs[this->NumQueued];
+  job.SFront = sIn;
+  job.SBack = sOut;
+  job.Length = tOut - tIn;
+  job.Interval = interval;
+  PendingSegment& seg = this->Pending[this->NumQueued];
+  seg.TIn = tIn;
+  seg.TOut = tOut;
+  seg.Pixel = static_cast<int>(p);
+  ++this->NumQueued;
 }
 
 void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st)
 {
-  const int n = static_cast<int>(this->Jobs.size());
+  const int n = this->NumQueued;
   if (n == 0)
   {
     return;
@@ -361,15 +378,13 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
     ++st.Segments;
     st.Pieces += this->Pieces[m];
   }
-  this->Jobs.clear();
-  this->Pending.clear();
+  this->NumQueued = 0;
 }
 
 void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkIdType* cells,
   vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
 {
-  this->Jobs.clear();
-  this->Pending.clear();
+  this->NumQueued = 0;
   for (vtkIdType c = 0; c < count; ++c)
   {
     if (c + PrefetchDistance < count)
@@ -382,7 +397,7 @@ void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkI
       [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
         this->Queue(p, tIn, tOut, sIn, sOut, interval);
       });
-    if (static_cast<int>(this->Jobs.size()) >= BatchSize)
+    if (this->NumQueued >= BatchSize)
     {
       this->Flush(frame, st);
     }
@@ -393,63 +408,98 @@ void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkI
 void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdType* cells,
   vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
 {
-  // Cells by centroid depth first: each pixel's fragments then arrive nearly
-  // in order and the insertion sort below has little to do. (Any order
-  // gives the same image; this one only makes sorting cheap.)
-  this->CellOrder.assign(cells, cells + count);
-  const std::vector<float>& key = *frame.DepthKey;
-  std::sort(this->CellOrder.begin(), this->CellOrder.end(),
-    [&key](vtkIdType p, vtkIdType q) { return key[p] != key[q] ? key[p] < key[q] : p < q; });
+  // Band by band (BandRows rows of the tile), so that a band's fragments stay
+  // in the cache while they are bucketed and sorted.
+  this->NumQueued = 0;
+  for (int band = 0; band < this->H; band += BandRows)
+  {
+    this->RowBegin = band;
+    this->RowEnd = std::min(band + BandRows, this->H);
+    this->CollectFragments(frame, cells, count);
+    this->CompositeFragments(frame, st);
+  }
+  this->Flush(frame, st);
+  this->RowBegin = 0;
+  this->RowEnd = this->H;
+}
+
+void vtkHighOrderProjectorTile::CollectFragments(
+  const Frame& frame, const vtkIdType* cells, vtkIdType count)
+{
+  // The projector ordered the cells by depth: fragments arrive nearly sorted.
+  this->NumFragments = 0;
+  const std::vector<CellRecord>& records = *frame.Cells;
+  const int y0 = this->Y0 + this->RowBegin, y1 = this->Y0 + this->RowEnd - 1;
   for (vtkIdType c = 0; c < count; ++c)
   {
-    const vtkIdType k = this->CellOrder[c];
+    const vtkIdType k = cells[c];
     if (c + PrefetchDistance < count)
     {
-      PrefetchCell(frame, this->CellOrder[c + PrefetchDistance]);
+      PrefetchCell(frame, cells[c + PrefetchDistance]);
+    }
+    if (records[k].PixelBox[3] < y0 || records[k].PixelBox[2] > y1)
+    {
+      continue; // not in this band
     }
     this->ForCellSegments(frame, k, false,
       [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
-        this->Fragments.push_back(
-          Fragment{ tIn, tOut, sIn, sOut, static_cast<int>(p), static_cast<int>(k) });
+        if (this->NumFragments == static_cast<int>(this->Fragments.size()))
+        {
+          this->Fragments.resize(2 * this->Fragments.size() + 1024);
+        }
+        Fragment& f = this->Fragments[this->NumFragments++];
+        f.TIn = tIn;
+        f.TOut = tOut;
+        f.SIn = sIn;
+        f.SOut = sOut;
+        f.Pixel = static_cast<int>(p);
+        f.Order = static_cast<int>(k);
       });
   }
-  // Counting sort by pixel (stable), then each pixel's list by entry.
-  const size_t n = this->Accum.size();
+}
+
+void vtkHighOrderProjectorTile::CompositeFragments(
+  const Frame& frame, vtkHighOrderCellProjector::Statistics& st)
+{
+  // Counting sort of the band's fragments by pixel (stable).
+  const int first = this->RowBegin * this->W;
+  const int n = (this->RowEnd - this->RowBegin) * this->W;
   this->PixelStart.assign(n + 1, 0);
-  for (const Fragment& f : this->Fragments)
+  const Fragment* fragments = this->Fragments.data();
+  for (int m = 0; m < this->NumFragments; ++m)
   {
-    ++this->PixelStart[f.Pixel + 1];
+    ++this->PixelStart[fragments[m].Pixel - first + 1];
   }
-  for (size_t p = 0; p < n; ++p)
+  for (int p = 0; p < n; ++p)
   {
     this->PixelStart[p + 1] += this->PixelStart[p];
   }
-  this->ByPixel.resize(this->Fragments.size());
-  this->Fill.assign(this->PixelStart.begin(), this->PixelStart.end() - 1);
-  for (const Fragment& f : this->Fragments)
+  if (this->ByPixel.size() < static_cast<size_t>(this->NumFragments))
   {
-    this->ByPixel[this->Fill[f.Pixel]++] = f;
+    this->ByPixel.resize(this->Fragments.size());
+  }
+  this->Fill.assign(this->PixelStart.begin(), this->PixelStart.end() - 1);
+  for (int m = 0; m < this->NumFragments; ++m)
+  {
+    this->ByPixel[this->Fill[fragments[m].Pixel - first]++] = fragments[m];
   }
   // Each pixel's list by entry; the segments of consecutive pixels are
   // integrated together and composited pixel by pixel in that order.
   const std::vector<CellRecord>& records = *frame.Cells;
-  this->Jobs.clear();
-  this->Pending.clear();
-  for (size_t p = 0; p < n; ++p)
+  for (int p = 0; p < n; ++p)
   {
-    Fragment* first = this->ByPixel.data() + this->PixelStart[p];
-    Fragment* last = this->ByPixel.data() + this->PixelStart[p + 1];
-    InsertionSort(first, last);
-    for (const Fragment* f = first; f != last; ++f)
+    Fragment* begin = this->ByPixel.data() + this->PixelStart[p];
+    Fragment* end = this->ByPixel.data() + this->PixelStart[p + 1];
+    InsertionSort(begin, end);
+    for (const Fragment* f = begin; f != end; ++f)
     {
-      this->Queue(p, f->TIn, f->TOut, f->SIn, f->SOut, records[f->Order].Interval);
+      this->Queue(first + p, f->TIn, f->TOut, f->SIn, f->SOut, records[f->Order].Interval);
     }
-    if (static_cast<int>(this->Jobs.size()) >= BatchSize)
+    if (this->NumQueued >= BatchSize)
     {
       this->Flush(frame, st);
     }
   }
-  this->Flush(frame, st);
 }
 
 void vtkHighOrderProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,

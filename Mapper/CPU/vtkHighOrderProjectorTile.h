@@ -14,8 +14,9 @@
  * series) and composited behind what each pixel holds. A pixel receives its
  * segments in exactly the cell order, as when integrating one at a time.
  *
- * Per-pixel order (RenderPerPixel): every segment of the tile becomes a
- * fragment; fragments are bucketed by pixel, sorted by entry distance,
+ * Per-pixel order (RenderPerPixel; the projector then orders the cells by
+ * centroid depth, so fragments arrive nearly sorted): every segment of the
+ * tile becomes a fragment; fragments are bucketed by pixel, sorted by entry distance,
  * integrated in one batch and composited pixel by pixel in that order,
  * stopping where the pixel becomes opaque.
  *
@@ -81,7 +82,6 @@ public:
     const float* Depth;
     double WitnessTol;
     glm::dvec3 PerturbX, PerturbY;
-    const std::vector<float>* DepthKey; ///< per ordered cell: centroid depth (per-pixel sort)
   };
 
   /// Pixel centres inside the projection are those within BoxMargin pixels
@@ -98,6 +98,9 @@ private:
     vtkHighOrderCellProjector::Statistics& st);
   void RenderPerPixel(const Frame& frame, const vtkIdType* cells, vtkIdType count,
     vtkHighOrderCellProjector::Statistics& st);
+  void CollectFragments(const Frame& frame, const vtkIdType* cells, vtkIdType count);
+  void CompositeFragments(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
+  /// Visit the segments of ordered cell k in rows [RowBegin, RowEnd) of the tile.
   template <typename Visit>
   void ForCellSegments(const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit);
   /// Queue a segment of pixel p for the next Flush().
@@ -123,17 +126,20 @@ private:
   };
 
   int X0 = 0, Y0 = 0, W = 0, H = 0;
+  int RowBegin = 0, RowEnd = 0; ///< rows ForCellSegments visits
+  /// Per-pixel mode: rows per band (a band's fragments stay in the cache).
+  static constexpr int BandRows = 4;
   std::vector<vtkHighOrderViewRays::Ray> Rays;
   std::vector<double> TMax;
   std::vector<hov::RGBA> Accum;
   std::vector<double> MaxExit;
   std::vector<unsigned char> Violated;
   std::vector<unsigned char> Done;
-  std::vector<Fragment> Fragments; ///< in cell order
+  std::vector<Fragment> Fragments; ///< in cell order (NumFragments used)
+  int NumFragments = 0;
   std::vector<Fragment> ByPixel;   ///< bucketed by pixel, then sorted by entry
   std::vector<int> PixelStart;
   std::vector<int> Fill;
-  std::vector<vtkIdType> CellOrder;
   /// Segments queued per Flush(): enough for full four-lane blocks of every
   /// term count, few enough to stay in the L1/L2 cache.
   static constexpr int BatchSize = 256;
@@ -144,6 +150,7 @@ private:
   };
   std::vector<hov::SegmentJob> Jobs;
   std::vector<PendingSegment> Pending;
+  int NumQueued = 0; ///< used entries of Jobs and Pending
   std::vector<hov::RGBA> Results;
   std::vector<int> Pieces;
   hov::SegmentBatch Batch;
