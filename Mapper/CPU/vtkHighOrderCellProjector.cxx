@@ -76,11 +76,13 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
 {
   Statistics stats;
   const int width = rays.GetWidth(), height = rays.GetHeight();
-  rgba.assign(static_cast<size_t>(width) * height * 4, 0.0);
   if (width <= 0 || height <= 0 || frontToBack.empty() || tf.GetNumberOfNodes() == 0)
   {
+    rgba.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
     return stats;
   }
+  // The tiles cover the image and write every pixel: no need to clear it.
+  rgba.resize(static_cast<size_t>(width) * height * 4);
   const auto& tets = setup.GetTetras();
   const auto& points = setup.GetPoints();
 

@@ -4,6 +4,8 @@
 
 #include "hovCompositing.h" // CompositeBehind
 
+#include "vtkSMPTools.h" // parallel binning
+
 #include <algorithm> // std::min, std::max
 #include <cmath>     // std::ceil, std::floor
 
@@ -57,7 +59,6 @@ void vtkHighOrderProjectorTile::Bins::Build(
   this->TilesX = (width + tileSize - 1) / tileSize;
   this->TilesY = (height + tileSize - 1) / tileSize;
   const int numTiles = this->TilesX * this->TilesY;
-  this->Start.assign(numTiles + 1, 0);
   auto forTiles = [&](const Box& b, auto&& f) {
     if (b[0] > b[1] || b[2] > b[3])
     {
@@ -71,21 +72,47 @@ void vtkHighOrderProjectorTile::Bins::Build(
       }
     }
   };
-  for (const CellRecord& cell : cells)
-  {
-    forTiles(cell.PixelBox, [&](int t) { ++this->Start[t + 1]; });
-  }
+  // In parallel over a fixed number of cell chunks (the result does not
+  // depend on the threads): count per chunk and tile, offsets per tile in
+  // chunk order, then each chunk fills its slots; every tile's list stays in
+  // cell order.
+  const vtkIdType numCells = static_cast<vtkIdType>(cells.size());
+  const vtkIdType chunk = (numCells + Chunks - 1) / Chunks;
+  this->Fill.assign(static_cast<size_t>(Chunks) * numTiles, 0);
+  vtkSMPTools::For(0, Chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
+    for (vtkIdType c = c0; c < c1; ++c)
+    {
+      vtkIdType* count = this->Fill.data() + c * numTiles;
+      for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
+      {
+        forTiles(cells[k].PixelBox, [&](int t) { ++count[t]; });
+      }
+    }
+  });
+  this->Start.assign(numTiles + 1, 0);
+  vtkIdType next = 0;
   for (int t = 0; t < numTiles; ++t)
   {
-    this->Start[t + 1] += this->Start[t];
+    this->Start[t] = next;
+    for (int c = 0; c < Chunks; ++c)
+    {
+      const vtkIdType n = this->Fill[static_cast<size_t>(c) * numTiles + t];
+      this->Fill[static_cast<size_t>(c) * numTiles + t] = next; // becomes the write position
+      next += n;
+    }
   }
-  this->Cells.resize(this->Start[numTiles]);
-  this->Fill.assign(this->Start.begin(), this->Start.end() - 1);
-  for (size_t k = 0; k < cells.size(); ++k)
-  {
-    forTiles(cells[k].PixelBox,
-      [&](int t) { this->Cells[this->Fill[t]++] = static_cast<vtkIdType>(k); });
-  }
+  this->Start[numTiles] = next;
+  this->Cells.resize(next);
+  vtkSMPTools::For(0, Chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
+    for (vtkIdType c = c0; c < c1; ++c)
+    {
+      vtkIdType* fill = this->Fill.data() + c * numTiles;
+      for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
+      {
+        forTiles(cells[k].PixelBox, [&](int t) { this->Cells[fill[t]++] = k; });
+      }
+    }
+  });
 }
 
 void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)

@@ -67,7 +67,8 @@ public:
     int Size = 16, TilesX = 0, TilesY = 0;
     std::vector<vtkIdType> Start; ///< per tile, into Cells
     std::vector<vtkIdType> Cells; ///< ordered-cell indices
-    std::vector<vtkIdType> Fill;  ///< scratch
+    std::vector<vtkIdType> Fill;  ///< scratch: per chunk and tile
+    static constexpr int Chunks = 16; ///< cell chunks binned in parallel
     void Build(const std::vector<CellRecord>& cells, int width, int height, int tileSize);
   };
 
