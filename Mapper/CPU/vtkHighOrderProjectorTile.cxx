@@ -322,13 +322,14 @@ void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkI
 void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdType* cells,
   vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
 {
-  // Band by band (BandRows rows of the tile), so that a band's fragments stay
+  // Band by band (about BandPixels pixels: whole rows of the tile), so that a band's fragments stay
   // in the cache while they are bucketed and sorted.
   this->NumQueued = 0;
-  for (int band = 0; band < this->H; band += BandRows)
+  const int rows = std::max(1, BandPixels / std::max(this->W, 1));
+  for (int band = 0; band < this->H; band += rows)
   {
     this->RowBegin = band;
-    this->RowEnd = std::min(band + BandRows, this->H);
+    this->RowEnd = std::min(band + rows, this->H);
     this->CollectFragments(frame, cells, count);
     this->CompositeFragments(frame, st);
   }

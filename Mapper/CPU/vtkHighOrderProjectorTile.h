@@ -128,8 +128,9 @@ private:
 
   int X0 = 0, Y0 = 0, W = 0, H = 0;
   int RowBegin = 0, RowEnd = 0; ///< rows ForCellSegments visits
-  /// Per-pixel mode: rows per band (a band's fragments stay in the cache).
-  static constexpr int BandRows = 4;
+  /// Per-pixel mode: pixels per band of rows (a band's fragments, some
+  /// thousands, stay in the L1/L2 cache while they are bucketed and sorted).
+  static constexpr int BandPixels = 64;
   std::vector<vtkHighOrderViewRays::Ray> Rays;
   std::vector<double> TMax;
   std::vector<hov::RGBA> Accum;

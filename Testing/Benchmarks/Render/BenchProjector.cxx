@@ -12,7 +12,7 @@
 //
 // Usage: hovBenchProjector [--data DIR] [--frames N] [--size S] [--extent E]
 //                          [--mesh bracket|rt|all] [--order vis|pix|all]
-//                          [--dump DIR | --compare DIR]
+//                          [--tile PIXELS] [--dump DIR | --compare DIR]
 #include "BenchRender.h"
 
 #include "vtkHighOrderVolumeMapper.h"
@@ -50,6 +50,7 @@ struct Args
   Options Opt;
   std::string Order = "all";
   std::string Dump, Compare;
+  int TileSize = 0; // 0: the mapper's default
 };
 
 /// Max |difference| between @p img and the file @p path (or -1 if unreadable).
@@ -77,6 +78,10 @@ void RunMesh(const Args& args, const Mesh& mesh, bool perPixel)
   mapper->SetOpacitySemanticsToVTKUnstructured();
   mapper->SetCellOrdering(
     perPixel ? vtkHighOrderVolumeMapper::PER_PIXEL_SORT : vtkHighOrderVolumeMapper::VISIBILITY_SORT);
+  if (args.TileSize > 0)
+  {
+    mapper->SetTileSize(args.TileSize);
+  }
   mapper->SetInputDataObject(mesh.Grid);
   vtkSmartPointer<vtkVolumeProperty> prop = MakeProperty(mesh.Range, mesh.UnitDistance);
   vtkNew<vtkVolume> volume;
@@ -144,11 +149,12 @@ int main(int argc, char* argv[])
     else if (a == "--order") args.Order = argv[++i];
     else if (a == "--dump") args.Dump = argv[++i];
     else if (a == "--compare") args.Compare = argv[++i];
+    else if (a == "--tile") args.TileSize = std::atoi(argv[++i]);
     else
     {
       std::cout << "Usage: " << argv[0]
                 << " [--data DIR] [--frames N] [--size S] [--extent E] [--mesh bracket|rt|all]\n"
-                   "          [--order vis|pix|all] [--dump DIR | --compare DIR]\n";
+                   "          [--order vis|pix|all] [--tile PIXELS] [--dump DIR | --compare DIR]\n";
       return a == "--help" ? 0 : 2;
     }
   }
