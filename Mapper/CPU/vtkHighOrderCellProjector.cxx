@@ -167,7 +167,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
     }
   });
   vtkHighOrderProjectorTile::Bins& bins = buf.TileBins;
-  bins.Build(records, width, height, std::max(4, settings.TileSize));
+  bins.Build(records, width, height, std::min(std::max(4, settings.TileSize), vtkHighOrderProjectorTile::MaxTileSize));
 
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;

@@ -15,6 +15,30 @@ using Ray = vtkHighOrderViewRays::Ray;
 using CellRecord = vtkHighOrderProjectorTile::CellRecord;
 using namespace hovTileGeometry;
 
+#ifdef HOV_CLIP_LANES
+#if defined(__x86_64__) && !defined(__APPLE__)
+#define HOV_SPAN_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HOV_SPAN_TARGET_CLONES
+#endif
+/**
+ * ClipRayLanes() for the pixels [first, first + count) of a row (rays and
+ * limits consecutive in memory): hit[i] is its result (1 hit, 0 miss, -1
+ * undecided). Compiled also for AVX2 (one instruction per four-plane
+ * operation), chosen at load time; the operations, hence the results, are the
+ * same on every CPU.
+ */
+HOV_SPAN_TARGET_CLONES
+void ClipSpan(const FacePlanes& planes, const Ray* rays, const double* tMax, int count,
+  double* tIn, double* tOut, signed char* hit)
+{
+  for (int i = 0; i < count; ++i)
+  {
+    hit[i] = static_cast<signed char>(ClipRayLanes(planes, rays[i], tMax[i], tIn[i], tOut[i]));
+  }
+}
+#endif
+
 /// Distance, in cells of a tile's list, at which the per-cell data is
 /// prefetched: cells come in visibility (or depth) order, scattered in memory,
 /// and each one's few pixels take less time than a cache miss.
@@ -217,6 +241,16 @@ void vtkHighOrderProjectorTile::ForCellSegments(
       r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - this->X0);
       r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - this->X0);
     }
+#ifdef HOV_CLIP_LANES
+    double spanIn[MaxTileSize], spanOut[MaxTileSize];
+    signed char spanHit[MaxTileSize];
+    const size_t rowStart = static_cast<size_t>(j) * this->W;
+    if (r1 >= r0)
+    {
+      ClipSpan(planes, this->Rays.data() + rowStart + r0, this->TMax.data() + rowStart + r0,
+        r1 - r0 + 1, spanIn, spanOut, spanHit);
+    }
+#endif
     for (int i = r0; i <= r1; ++i)
     {
       const size_t p = static_cast<size_t>(j) * this->W + i;
@@ -227,7 +261,9 @@ void vtkHighOrderProjectorTile::ForCellSegments(
       const Ray& ray = this->Rays[p];
       double tIn, tOut;
 #ifdef HOV_CLIP_LANES
-      const int hit = ClipRayLanes(planes, ray, this->TMax[p], tIn, tOut);
+      const int hit = spanHit[i - r0];
+      tIn = spanIn[i - r0];
+      tOut = spanOut[i - r0];
       if (hit == 0 ||
         (hit < 0 &&
           !ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut)))

@@ -88,6 +88,8 @@ public:
   /// Pixel centres inside the projection are those within BoxMargin pixels
   /// of it (slack against round-off; the per-pixel ray test is exact).
   static constexpr double BoxMargin = 1e-6;
+  /// Largest tile side (vtkHighOrderVolumeMapper clamps TileSize to it).
+  static constexpr int MaxTileSize = 256;
 
   /// Render tile @p tileIndex of @p frame and write it into @p rgba.
   void Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
