@@ -22,6 +22,13 @@
  * pixel is composited by exactly one thread in exactly the visibility order,
  * so the image is bit-identical for any number of threads.
  *
+ * Speed (what keeps a frame fast, see vtkHighOrderProjectorTile): one
+ * parallel pass per frame writes a record per cell in processing order (face
+ * planes, field, projected vertices, pixel box, transfer-function interval),
+ * so the tile loop reads memory in order; segments are integrated in batches
+ * (hov::SegmentBatch, bit-identical to the scalar kernels); per-frame arrays
+ * are kept across frames. None of this changes a bit of the image.
+ *
  * HIAC's z-buffer witness: a pixel counts as a violation if a cell composited
  * later enters the ray in front of the farthest exit composited so far there
  * (by more than 1e-9 of the view depth), i.e. the visibility order was wrong
@@ -30,7 +37,9 @@
  * Per-pixel ordering (Settings::PerPixelSort): instead of trusting the cell
  * order, each tile collects its pixels' segments, sorts them by entry
  * distance and composites them in that order; exact for any set of
- * non-overlapping cells, convex or not. The witness then counts pixels where
+ * non-overlapping cells, convex or not. The cells are then processed by
+ * centroid depth along the central ray (sorted once per frame), so that each
+ * pixel's segments arrive nearly sorted. The witness then counts pixels where
  * cells overlap (a mesh defect).
  *
  * Thread safety: Render() is not re-entrant.
@@ -43,6 +52,7 @@
 
 #include "vtkType.h" // vtkIdType
 
+#include <memory> // scratch buffers
 #include <vector> // image, order
 
 class vtkHighOrderTetraSetup;
@@ -82,6 +92,10 @@ public:
   Statistics Render(const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& frontToBack,
     const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf, const Settings& settings,
     const float* depth, std::vector<double>& rgba) const;
+
+private:
+  struct Buffers; // per-frame arrays kept across frames (see the .cxx)
+  mutable std::shared_ptr<Buffers> Scratch;
 };
 
 #endif

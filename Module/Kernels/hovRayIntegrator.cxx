@@ -26,9 +26,8 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
   SegmentEnd front, back;
   {
     // Fast path (most segments): both ends in one interval, one piece.
-    const bool up = ds >= 0.0;
-    const int k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
-    if (up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack))
+    const int k = OnePieceInterval(tf, sFront, sBack);
+    if (k >= -1)
     {
       if (pieces)
       {
@@ -93,6 +92,15 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
     *pieces = count;
   }
   return accum;
+}
+
+int OnePieceInterval(const TransferFunction& tf, double sFront, double sBack)
+{
+  const std::vector<double>& nodes = tf.GetNodes();
+  const int n = static_cast<int>(nodes.size());
+  const bool up = sBack - sFront >= 0.0;
+  const int k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
+  return (up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack)) ? k : -2;
 }
 
 int IntervalOfRange(const TransferFunction& tf, double sMin, double sMax)

@@ -47,6 +47,13 @@ HOV_EXPORT RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront,
  */
 HOV_EXPORT int IntervalOfRange(const TransferFunction& tf, double sMin, double sMax);
 
+/**
+ * The interval of @p tf in which a segment from @p sFront to @p sBack lies
+ * entirely (both finite): the one IntegrateLinearScalar() integrates it in as a
+ * single piece; -2 if the segment crosses a node (several pieces).
+ */
+HOV_EXPORT int OnePieceInterval(const TransferFunction& tf, double sFront, double sBack);
+
 /// IntegrateLinearScalar() for a segment known to lie in interval @p interval
 /// (from IntervalOfRange()): one piece, no search.
 HOV_EXPORT RGBA IntegrateLinearScalarInInterval(const TransferFunction& tf, int interval,

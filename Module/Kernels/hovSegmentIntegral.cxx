@@ -1,6 +1,7 @@
 #include "hovSegmentIntegral.h"
 
 #include "hovSpecialFunctions.h" // Erfcx, Dawson (libcerf)
+#include "hovThinSeries.h"       // thin-segment series tables
 
 #include <algorithm> // std::max, std::min
 #include <array>     // coefficient tables
@@ -13,15 +14,12 @@ namespace hov
 {
 namespace
 {
-constexpr double SqrtPi = 1.7724538509055160273;
+using detail::MaxThinOrder;
+using detail::Thin;
+using detail::ThinDepth;
+using detail::DepthCap;
 
-// Below this total depth D(1) the closed form K0 = sqrt(pi)/(2s)(...) loses
-// digits in 1 - K0 (absolute error ~ eps / D(1), measured 3e-14 relative just
-// above 1/8); the Taylor series in D converges like D^n/n! and needs at most
-// 14 terms for 2^-56 relative at 1/4, which by Horner's rule costs less than
-// the two erfcx calls of the closed form.
-constexpr double ThinDepth = 0.25;
-constexpr int MaxThinOrder = 16;
+constexpr double SqrtPi = 1.7724538509055160273;
 
 // Wilhelms-Van Gelder only: K1 = (A - a K0)/(2b) has absolute error
 // ~ eps (A + a K0) / (2|b|), relative ~ eps a^2 / |b| where K1 ~ 1/a^2. It is
@@ -42,49 +40,6 @@ constexpr double ZeroSlopeRelative = 1e-15;
 // when a > 2k); below it from a positive series and the downward recurrence.
 constexpr double MomentUpwardFrom = 40.0;
 
-// Depth rates are capped here: a+b stays finite, T(1) underflows to 0, and
-// every weight is already exact in double precision.
-constexpr double DepthCap = 1e300;
-
-/**
- * Coefficients of the thin-segment series. With D(x) = x (a (1-x) + D1 x),
- *   integral_0^1 x^m D^n dx / n! = sum_k P[m][n][k] a^(n-k) D1^k,
- *     P[m][n][k] = (n+k+m)! / (k! (2n+m+1)!),            m = 0, 1
- *   integral_0^1 (1-x) D^n dx / n! = sum_k Q[n][k] a^(n-k) D1^k,
- *     Q[n][k] = (n+k)! (n-k+1) / (k! (2n+2)!).
- * All terms are positive for a >= 0, D1 >= 0.
- */
-struct ThinTables
-{
-  double P0[MaxThinOrder + 1][MaxThinOrder + 1] = {};
-  double P1[MaxThinOrder + 1][MaxThinOrder + 1] = {};
-  double Q[MaxThinOrder + 1][MaxThinOrder + 1] = {};
-  double InvFactorial[MaxThinOrder + 1] = {};
-};
-
-constexpr ThinTables MakeThinTables()
-{
-  ThinTables t{};
-  double fact[2 * MaxThinOrder + 4] = {};
-  fact[0] = 1.0;
-  for (int i = 1; i < 2 * MaxThinOrder + 4; ++i)
-  {
-    fact[i] = fact[i - 1] * i;
-  }
-  for (int n = 0; n <= MaxThinOrder; ++n)
-  {
-    t.InvFactorial[n] = 1.0 / fact[n];
-    for (int k = 0; k <= n; ++k)
-    {
-      t.P0[n][k] = fact[n + k] / (fact[k] * fact[2 * n + 1]);
-      t.P1[n][k] = fact[n + k + 1] / (fact[k] * fact[2 * n + 2]);
-      t.Q[n][k] = fact[n + k] * (n - k + 1) / (fact[k] * fact[2 * n + 2]);
-    }
-  }
-  return t;
-}
-
-constexpr ThinTables Thin = MakeThinTables();
 
 /// sum_k coef[k] a^(n-k) d^k with precomputed powers.
 inline double BernsteinSum(const double* coef, int n, const double* powA, const double* powD)
@@ -96,59 +51,6 @@ inline double BernsteinSum(const double* coef, int n, const double* powA, const 
   }
   return sum;
 }
-
-/// Number of series terms that reach 2^-56 relative accuracy for total depth
-/// d1: the first terms of WFront and WBack are both >= d1/3 and term n is
-/// bounded by d1^n/n!, so n terms suffice once d1^n/(n+1)! < 2^-56/3. The
-/// emission weights (first terms 1/2) need d1^(n+1)/(n+1)! < 2^-56 as well.
-struct ThinTermTable
-{
-  double MaxDepth[MaxThinOrder + 1] = {};
-  ThinTermTable()
-  {
-    const double stop = std::ldexp(1.0, -56) / 3.0;
-    double fact = 1.0;
-    for (int n = 1; n <= MaxThinOrder; ++n)
-    {
-      fact *= n + 1; // (n+1)!
-      const double wm = std::pow(stop * fact, 1.0 / n);
-      const double wvg = std::pow(3.0 * stop * fact, 1.0 / (n + 1));
-      this->MaxDepth[n] = std::min(wm, wvg);
-    }
-  }
-  int Terms(double d1) const
-  {
-    int n = 1;
-    while (n < MaxThinOrder && d1 > this->MaxDepth[n])
-    {
-      ++n;
-    }
-    return n;
-  }
-};
-
-/// Terms for every binary exponent of d1 <= ThinDepth: d1 < 2^(e+1) for
-/// biased exponent e, so Terms(2^(e+1)) is enough (at most one extra term).
-struct ThinTermByExponent
-{
-  static constexpr int Lowest = 1023 - 80; // below 2^-80 one term is exact
-  int Terms[1023 - Lowest] = {};
-  ThinTermByExponent()
-  {
-    const ThinTermTable table;
-    for (int e = Lowest; e < 1023; ++e)
-    {
-      this->Terms[e - Lowest] = table.Terms(std::ldexp(1.0, e - 1023 + 1));
-    }
-  }
-  int operator()(double d1) const
-  {
-    std::uint64_t bits;
-    std::memcpy(&bits, &d1, sizeof(bits));
-    const int e = static_cast<int>((bits >> 52) & 0x7ff);
-    return e < Lowest ? 1 : this->Terms[std::min(e, 1022) - Lowest];
-  }
-};
 
 /// WFront = sum_{n=1}^{N} (-1)^(n+1) I_n/n! with I_n/n! = D1^n Q_n(r),
 /// Q_n(r) = sum_j P0[n][n-j] r^j, r = a/D1 in [0, 2] (positive coefficients:
@@ -209,8 +111,7 @@ inline void ThinWilliamsMaxDispatch(int terms, double a, double d1, double& wFro
 /// Thin segment (D1 <= ThinDepth): all weights from the Taylor series in D.
 SegmentWeights ThinWeights(double a, double d1, bool withEmission)
 {
-  static const ThinTermByExponent termsOf; // thread-safe initialisation (C++11)
-  const int terms = termsOf(d1);
+  const int terms = detail::ThinTerms()(d1);
   if (!(d1 > 0.0))
   {
     SegmentWeights none;

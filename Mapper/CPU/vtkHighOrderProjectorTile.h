@@ -1,0 +1,163 @@
+/**
+ * @class   vtkHighOrderProjectorTile
+ * @brief   One image tile of vtkHighOrderCellProjector: scan conversion of the
+ *          tile's cells, exact ray clipping, batched segment integrals and
+ *          front-to-back compositing.
+ *
+ * The projector bins its cells (in visibility order) into square tiles; a
+ * tile is rendered by one thread with this object, which keeps its buffers
+ * from tile to tile (nothing is allocated per tile once they have grown).
+ *
+ * Visibility order (RenderInCellOrder): cell by cell, the segments of the
+ * cell's covered, not yet opaque pixels are gathered, integrated together by
+ * hov::SegmentBatch (independent pixels: the batch hides the latency of the
+ * series) and composited behind what each pixel holds. A pixel receives its
+ * segments in exactly the cell order, as when integrating one at a time.
+ *
+ * Per-pixel order (RenderPerPixel; the projector then orders the cells by
+ * centroid depth, so fragments arrive nearly sorted): every segment of the
+ * tile becomes a fragment; fragments are bucketed by pixel, sorted by entry distance,
+ * integrated in one batch and composited pixel by pixel in that order,
+ * stopping where the pixel becomes opaque.
+ *
+ * Both give bit for bit the image of integrating and compositing one segment
+ * at a time (SegmentBatch is bit-identical to the scalar kernels), for any
+ * number of threads.
+ *
+ * Thread safety: one object per thread; Frame is shared read-only.
+ * @sa vtkHighOrderCellProjector, hovSegmentBatch.h
+ */
+#ifndef vtkHighOrderProjectorTile_h
+#define vtkHighOrderProjectorTile_h
+
+#include "vtkHighOrderCellProjector.h" // Settings, Statistics
+#include "vtkHighOrderViewRays.h"      // Ray
+
+#include "hovSegmentBatch.h" // batched integrals
+
+#include <array>  // pixel boxes
+#include <vector> // buffers
+
+class vtkHighOrderProjectorTile
+{
+public:
+  using Box = std::array<int, 4>; ///< i0, i1, j0, j1 inclusive; i0 > i1 means empty
+
+  /**
+   * Everything the tile loop reads of a cell, stored per ordered cell (built
+   * each frame by the projector in one parallel pass): the tile loop then
+   * reads a few consecutive cache lines per cell instead of a scattered
+   * tetrahedron, four scattered points and several per-cell arrays.
+   */
+  struct CellRecord
+  {
+    double NX[4], NY[4], NZ[4], Offset[4]; ///< face k: (NX,NY,NZ)[k] . x <= Offset[k]
+    glm::dvec3 Gradient;                   ///< as vtkHighOrderTetraSetup::Tetra
+    glm::dvec3 RefPoint;
+    double RefScalar;
+    glm::dvec2 Vertex[4]; ///< projected vertices (window coordinates)
+    Box PixelBox;         ///< pixel centres of the projected bounding box
+    int Interval;         ///< transfer-function interval of the whole cell, or -2
+    bool Projectable;     ///< every vertex in front of the eye plane
+  };
+
+  /// Cells binned into image tiles, each tile's list in visibility order.
+  struct Bins
+  {
+    int Size = 16, TilesX = 0, TilesY = 0;
+    std::vector<vtkIdType> Start; ///< per tile, into Cells
+    std::vector<vtkIdType> Cells; ///< ordered-cell indices
+    std::vector<vtkIdType> Fill;  ///< scratch: per chunk and tile
+    static constexpr int Chunks = 16; ///< cell chunks binned in parallel
+    void Build(const std::vector<CellRecord>& cells, int width, int height, int tileSize);
+  };
+
+  /// Everything the tiles of one frame read.
+  struct Frame
+  {
+    const Bins* TileBins;
+    const std::vector<CellRecord>* Cells; ///< per ordered cell
+    const hov::TransferFunction* TF;
+    const vtkHighOrderCellProjector::Settings* Settings;
+    const vtkHighOrderViewRays* Rays;
+    const float* Depth;
+    double WitnessTol;
+    glm::dvec3 PerturbX, PerturbY;
+  };
+
+  /// Pixel centres inside the projection are those within BoxMargin pixels
+  /// of it (slack against round-off; the per-pixel ray test is exact).
+  static constexpr double BoxMargin = 1e-6;
+  /// Largest tile side (vtkHighOrderVolumeMapper clamps TileSize to it).
+  static constexpr int MaxTileSize = 256;
+
+  /// Render tile @p tileIndex of @p frame and write it into @p rgba.
+  void Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
+    vtkHighOrderCellProjector::Statistics& stats);
+
+private:
+  void Init(const Frame& frame, int tileIndex);
+  void RenderInCellOrder(const Frame& frame, const vtkIdType* cells, vtkIdType count,
+    vtkHighOrderCellProjector::Statistics& st);
+  void RenderPerPixel(const Frame& frame, const vtkIdType* cells, vtkIdType count,
+    vtkHighOrderCellProjector::Statistics& st);
+  void CollectFragments(const Frame& frame, const vtkIdType* cells, vtkIdType count);
+  void CompositeFragments(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
+  /// Visit the segments of ordered cell k in rows [RowBegin, RowEnd) of the tile.
+  template <typename Visit>
+  void ForCellSegments(const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit);
+  /// Queue a segment of pixel p for the next Flush().
+  inline void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
+  /// Integrate the queued segments together, then composite them in queue order.
+  void Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
+  /// Witness update of pixel p for a segment [tIn, tOut] composited next.
+  void Witness(const Frame& frame, size_t p, double tIn, double tOut);
+  /// Composite a segment's RGBA behind pixel p; marks it done when opaque.
+  void Composite(const Frame& frame, size_t p, const hov::RGBA& seg);
+  void Write(std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const;
+
+  /// A ray-cell segment waiting for its turn (per-pixel ordering).
+  struct Fragment
+  {
+    double TIn, TOut, SIn, SOut;
+    int Pixel;
+    int Order; ///< ordered-cell index: a deterministic tie-break
+    bool operator<(const Fragment& o) const
+    {
+      return this->TIn != o.TIn ? this->TIn < o.TIn : this->Order < o.Order;
+    }
+  };
+
+  int X0 = 0, Y0 = 0, W = 0, H = 0;
+  int RowBegin = 0, RowEnd = 0; ///< rows ForCellSegments visits
+  /// Per-pixel mode: pixels per band of rows (a band's fragments, some
+  /// thousands, stay in the L1/L2 cache while they are bucketed and sorted).
+  static constexpr int BandPixels = 64;
+  std::vector<vtkHighOrderViewRays::Ray> Rays;
+  std::vector<double> TMax;
+  std::vector<hov::RGBA> Accum;
+  std::vector<double> MaxExit;
+  std::vector<unsigned char> Violated;
+  std::vector<unsigned char> Done;
+  std::vector<Fragment> Fragments; ///< in cell order (NumFragments used)
+  int NumFragments = 0;
+  std::vector<Fragment> ByPixel;   ///< bucketed by pixel, then sorted by entry
+  std::vector<int> PixelStart;
+  std::vector<int> Fill;
+  /// Segments queued per Flush(): enough for full four-lane blocks of every
+  /// term count, few enough to stay in the L1/L2 cache.
+  static constexpr int BatchSize = 256;
+  struct PendingSegment
+  {
+    double TIn, TOut;
+    int Pixel;
+  };
+  std::vector<hov::SegmentJob> Jobs;
+  std::vector<PendingSegment> Pending;
+  int NumQueued = 0; ///< used entries of Jobs and Pending
+  std::vector<hov::RGBA> Results;
+  std::vector<int> Pieces;
+  hov::SegmentBatch Batch;
+};
+
+#endif

@@ -1,0 +1,204 @@
+#include "hovSegmentBatch.h"
+
+#include "hovThinSeries.h"       // the scalar kernel's series and term counts
+#include "hovTransferFunction.h" // Evaluate, interval search
+
+#include <algorithm> // std::max, std::min
+#include <cmath>     // std::isfinite
+#include <cstring>   // memcpy into vector registers
+
+namespace hov
+{
+namespace
+{
+using detail::Thin;
+
+/// Segments evaluated side by side (a multiple of the SIMD width the
+/// compiler vectorises the lane loops to: 2 for SSE2, 4 for AVX).
+constexpr int Lanes = 4;
+
+// With GCC or Clang on x86-64 the lane loops are also compiled for AVX2 (four
+// lanes per instruction) and the variant is chosen at load time; both variants
+// perform the same IEEE operations (no contraction into fused multiply-adds
+// under -std=c++17), so the result does not depend on the CPU.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
+#define HOV_LANES_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HOV_LANES_TARGET_CLONES
+#endif
+
+/**
+ * The thin Williams-Max series of hovSegmentIntegral.cxx (ThinWilliamsMax)
+ * for Lanes segments with the same number of terms: the same operations in
+ * the same order per lane, so each lane's w = WFront (before clamping) and
+ * alpha equal the scalar kernel's bit for bit.
+ */
+HOV_LANES_TARGET_CLONES
+void ThinWilliamsMaxLanes(int terms, const double* a, const double* d1, double* w, double* alpha)
+{
+  // Four lanes in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
+  typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
+  static_assert(Lanes == 4, "one V4 per block");
+  V4 va, vd1;
+  std::memcpy(&va, a, sizeof(V4));
+  std::memcpy(&vd1, d1, sizeof(V4));
+  const V4 r = va / vd1;
+  const V4 d2 = vd1 * vd1;
+  V4 wOdd = {}, wEven = {}, aOdd = {}, aEven = {};
+  for (int n = terms; n >= 1; --n)
+  {
+    // q_n(r) = sum_j P0[n][n-j] r^j by Horner's rule (the scalar kernel's q[n]).
+    const double* p = Thin.P0[n];
+    V4 h = V4{} + p[0];
+    for (int j = 1; j <= n; ++j)
+    {
+      h = h * r + p[j];
+    }
+    // Outer Horner chains in d1^2 on odd and even terms.
+    const double f = Thin.InvFactorial[n];
+    if (n % 2)
+    {
+      wOdd = wOdd * d2 + h;
+      aOdd = aOdd * d2 + f;
+    }
+    else
+    {
+      wEven = wEven * d2 + h;
+      aEven = aEven * d2 + f;
+    }
+  }
+  const V4 vw = vd1 * wOdd - d2 * wEven;
+  const V4 valpha = vd1 * aOdd - d2 * aEven;
+  std::memcpy(w, &vw, sizeof(V4));
+  std::memcpy(alpha, &valpha, sizeof(V4));
+}
+}
+
+long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
+  const SegmentJob* jobs, int count, RGBA* out, int* piecesOut)
+{
+  const bool batched =
+    settings.Emission == EmissionModel::WilliamsMax && settings.Method == SegmentMethod::Exact;
+  long long total = 0;
+  auto count1 = [&](int i, int p) {
+    total += p;
+    if (piecesOut)
+    {
+      piecesOut[i] = p;
+    }
+  };
+  if (this->Items.size() < static_cast<size_t>(count))
+  {
+    this->Items.resize(count); // grows only: no allocation in steady state
+    this->Order.resize(count);
+  }
+  int numItems = 0;
+  int perTerms[detail::MaxThinOrder + 2] = {};
+  for (int i = 0; i < count; ++i)
+  {
+    const SegmentJob& job = jobs[i];
+    int k = job.Interval;
+    if (k < -1)
+    {
+      // IntegrateLinearScalar(): nothing for invalid input, a walk over the
+      // intervals if the segment crosses a node, else one piece in k.
+      if (!(job.Length > 0.0) || !std::isfinite(job.SFront) || !std::isfinite(job.SBack) ||
+        tf.GetNumberOfNodes() == 0)
+      {
+        out[i] = RGBA();
+        count1(i, 0);
+        continue;
+      }
+      k = OnePieceInterval(tf, job.SFront, job.SBack);
+      if (k < -1)
+      {
+        int p = 0;
+        out[i] = IntegrateLinearScalar(tf, job.SFront, job.SBack, job.Length, settings, &p);
+        count1(i, p);
+        continue;
+      }
+    }
+    count1(i, 1);
+    if (!batched || !(job.Length > 0.0) || !std::isfinite(job.SFront) || !std::isfinite(job.SBack))
+    {
+      out[i] = IntegrateLinearScalarInInterval(tf, k, job.SFront, job.SBack, job.Length, settings);
+      continue;
+    }
+    // IntegrateLinearScalarInInterval() -> IntegrateSegment() -> ExactSegmentWeights(),
+    // taking the thin branch aside for the lanes.
+    SegmentEnd front, back;
+    tf.Evaluate(k, job.SFront, false, front);
+    tf.Evaluate(k, job.SBack, false, back);
+    const double depthFront = std::max(front.Tau, 0.0) * job.Length;
+    const double depthBack = std::max(back.Tau, 0.0) * job.Length;
+    const double a = std::min(depthFront, detail::DepthCap);
+    const double c = std::min(depthBack, detail::DepthCap);
+    const double d1 = 0.5 * (a + c);
+    if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(d1 > 0.0) ||
+      d1 > detail::ThinDepth)
+    {
+      out[i] = IntegrateSegment(job.Length, front, back, settings.Emission, settings.Method);
+      continue;
+    }
+    ThinItem& item = this->Items[numItems++];
+    item.A = a;
+    item.D1 = d1;
+    for (int ch = 0; ch < 3; ++ch)
+    {
+      item.Front[ch] = front.Color[ch];
+      item.Back[ch] = back.Color[ch];
+    }
+    item.Index = i;
+    item.Terms = detail::ThinTerms()(d1);
+    ++perTerms[item.Terms + 1];
+  }
+
+  // Group the thin segments by number of terms (counting sort), Lanes at a time.
+  for (int t = 0; t <= detail::MaxThinOrder; ++t)
+  {
+    perTerms[t + 1] += perTerms[t];
+  }
+  for (int n = 0; n < numItems; ++n)
+  {
+    this->Order[perTerms[this->Items[n].Terms]++] = n;
+  }
+  for (int first = 0; first < numItems; first += Lanes)
+  {
+    // A block may mix two term counts at a bucket boundary: it then runs with
+    // the larger count for the lanes that have it and again for the others.
+    const int last = std::min(first + Lanes, numItems);
+    int done = first;
+    while (done < last)
+    {
+      const int terms = this->Items[this->Order[done]].Terms;
+      double a[Lanes], d1[Lanes], w[Lanes], alpha[Lanes];
+      int lanes = 0;
+      for (int m = done; m < last && this->Items[this->Order[m]].Terms == terms; ++m, ++lanes)
+      {
+        a[lanes] = this->Items[this->Order[m]].A;
+        d1[lanes] = this->Items[this->Order[m]].D1;
+      }
+      for (int l = lanes; l < Lanes; ++l)
+      {
+        a[l] = 0.0; // padding: any valid thin segment
+        d1[l] = 1.0 / 8.0;
+      }
+      ThinWilliamsMaxLanes(terms, a, d1, w, alpha);
+      for (int l = 0; l < lanes; ++l)
+      {
+        const ThinItem& item = this->Items[this->Order[done + l]];
+        // As ThinWeights() and IntegrateSegment().
+        const double wf = std::max(0.0, w[l]);
+        const double wb = std::max(0.0, alpha[l] - w[l]);
+        RGBA& o = out[item.Index];
+        o.A = alpha[l];
+        o.R = wf * item.Front[0] + wb * item.Back[0];
+        o.G = wf * item.Front[1] + wb * item.Back[1];
+        o.B = wf * item.Front[2] + wb * item.Back[2];
+      }
+      done += lanes;
+    }
+  }
+  return total;
+}
+}

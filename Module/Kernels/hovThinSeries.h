@@ -1,0 +1,137 @@
+/**
+ * @file hovThinSeries.h
+ * @brief Internal to the segment kernels: the thin-segment Taylor series of
+ * hovSegmentIntegral (coefficient tables, branch threshold, number of terms
+ * per binary exponent of the depth), shared by the scalar kernel
+ * (hovSegmentIntegral.cxx) and the batched one (hovSegmentBatch.cxx) so that
+ * both evaluate exactly the same series with the same number of terms.
+ *
+ * Not part of the public API (namespace hov::detail).
+ */
+#ifndef hovThinSeries_h
+#define hovThinSeries_h
+
+#include <algorithm> // std::min
+#include <cmath>     // std::ldexp, std::pow
+#include <cstdint>   // exponent bits
+#include <cstring>   // memcpy
+
+namespace hov
+{
+namespace detail
+{
+// Below this total depth D(1) the closed form K0 = sqrt(pi)/(2s)(...) loses
+// digits in 1 - K0 (absolute error ~ eps / D(1), measured 3e-14 relative just
+// above 1/8); the Taylor series in D converges like D^n/n! and needs at most
+// 14 terms for 2^-56 relative at 1/4, which by Horner's rule costs less than
+// the two erfcx calls of the closed form.
+constexpr double ThinDepth = 0.25;
+constexpr int MaxThinOrder = 16;
+
+// Depth rates are capped here: a+b stays finite, T(1) underflows to 0, and
+// every weight is already exact in double precision.
+constexpr double DepthCap = 1e300;
+
+/**
+ * Coefficients of the thin-segment series. With D(x) = x (a (1-x) + D1 x),
+ *   integral_0^1 x^m D^n dx / n! = sum_k P[m][n][k] a^(n-k) D1^k,
+ *     P[m][n][k] = (n+k+m)! / (k! (2n+m+1)!),            m = 0, 1
+ *   integral_0^1 (1-x) D^n dx / n! = sum_k Q[n][k] a^(n-k) D1^k,
+ *     Q[n][k] = (n+k)! (n-k+1) / (k! (2n+2)!).
+ * All terms are positive for a >= 0, D1 >= 0.
+ */
+struct ThinTables
+{
+  double P0[MaxThinOrder + 1][MaxThinOrder + 1] = {};
+  double P1[MaxThinOrder + 1][MaxThinOrder + 1] = {};
+  double Q[MaxThinOrder + 1][MaxThinOrder + 1] = {};
+  double InvFactorial[MaxThinOrder + 1] = {};
+};
+
+constexpr ThinTables MakeThinTables()
+{
+  ThinTables t{};
+  double fact[2 * MaxThinOrder + 4] = {};
+  fact[0] = 1.0;
+  for (int i = 1; i < 2 * MaxThinOrder + 4; ++i)
+  {
+    fact[i] = fact[i - 1] * i;
+  }
+  for (int n = 0; n <= MaxThinOrder; ++n)
+  {
+    t.InvFactorial[n] = 1.0 / fact[n];
+    for (int k = 0; k <= n; ++k)
+    {
+      t.P0[n][k] = fact[n + k] / (fact[k] * fact[2 * n + 1]);
+      t.P1[n][k] = fact[n + k + 1] / (fact[k] * fact[2 * n + 2]);
+      t.Q[n][k] = fact[n + k] * (n - k + 1) / (fact[k] * fact[2 * n + 2]);
+    }
+  }
+  return t;
+}
+
+inline constexpr ThinTables Thin = MakeThinTables();
+
+/// Number of series terms that reach 2^-56 relative accuracy for total depth
+/// d1: the first terms of WFront and WBack are both >= d1/3 and term n is
+/// bounded by d1^n/n!, so n terms suffice once d1^n/(n+1)! < 2^-56/3. The
+/// emission weights (first terms 1/2) need d1^(n+1)/(n+1)! < 2^-56 as well.
+struct ThinTermTable
+{
+  double MaxDepth[MaxThinOrder + 1] = {};
+  ThinTermTable()
+  {
+    const double stop = std::ldexp(1.0, -56) / 3.0;
+    double fact = 1.0;
+    for (int n = 1; n <= MaxThinOrder; ++n)
+    {
+      fact *= n + 1; // (n+1)!
+      const double wm = std::pow(stop * fact, 1.0 / n);
+      const double wvg = std::pow(3.0 * stop * fact, 1.0 / (n + 1));
+      this->MaxDepth[n] = std::min(wm, wvg);
+    }
+  }
+  int Terms(double d1) const
+  {
+    int n = 1;
+    while (n < MaxThinOrder && d1 > this->MaxDepth[n])
+    {
+      ++n;
+    }
+    return n;
+  }
+};
+
+/// Terms for every binary exponent of d1 <= ThinDepth: d1 < 2^(e+1) for
+/// biased exponent e, so Terms(2^(e+1)) is enough (at most one extra term).
+struct ThinTermByExponent
+{
+  static constexpr int Lowest = 1023 - 80; // below 2^-80 one term is exact
+  int Terms[1023 - Lowest] = {};
+  ThinTermByExponent()
+  {
+    const ThinTermTable table;
+    for (int e = Lowest; e < 1023; ++e)
+    {
+      this->Terms[e - Lowest] = table.Terms(std::ldexp(1.0, e - 1023 + 1));
+    }
+  }
+  int operator()(double d1) const
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, &d1, sizeof(bits));
+    const int e = static_cast<int>((bits >> 52) & 0x7ff);
+    return e < Lowest ? 1 : this->Terms[std::min(e, 1022) - Lowest];
+  }
+};
+
+/// The table of terms per exponent (built once, thread-safe static initialisation).
+inline const ThinTermByExponent& ThinTerms()
+{
+  static const ThinTermByExponent table;
+  return table;
+}
+}
+}
+
+#endif
