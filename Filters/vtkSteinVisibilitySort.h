@@ -25,10 +25,14 @@
  *    projection: Orient3dDirection); the eye on the plane gives no edge.
  *    Non-planar (Newell) faces with the eye near their slab are undecided and
  *    their two cells are handled like boundary cells.
- * 3. A cell with a boundary face whose plane has the eye strictly inside is an
- *    EXIT cell (a view ray can leave the mesh there), strictly outside an ENTRY
- *    cell. For every EXIT a and ENTRY b with overlapping screen extents (a
- *    screen grid, each pair once), Obstructs(a, b) adds the edge b -> a.
+ * 3. A boundary face whose plane has the eye strictly inside is an EXIT face
+ *    (a view ray can leave the mesh there), strictly outside an ENTRY face
+ *    (undecided faces are both). For every EXIT face F of a cell a and ENTRY
+ *    face G of a cell b != a such that the screen extents of F and G overlap,
+ *    G reaches behind F's front depth, and (for exact face planes) G has a
+ *    corner on the closed outer side of F's plane and F one of G's plane,
+ *    Obstructs(a, b) (once per cell pair) adds the edge b -> a
+ *    (hovSteinBoundaryPairs.h).
  * 4. Kahn's topological sort (FIFO; initial sources back to front by rearmost
  *    depth). If it stalls, the rest's strongly connected components (iterative
  *    Tarjan) are output in topological order, each back to front by rearmost
@@ -38,11 +42,17 @@
  * edges and walk along it from P's point to Q's. Each step leaves a cell
  * through a face. Through an interior face from A into B: the ray moves away
  * from the eye, so the eye is on A's side and B -> A is an edge. Otherwise it
- * leaves A through a boundary face whose plane has the eye inside (A is EXIT)
- * and, after a gap or a non-matching interface, enters the next cell B through
- * a boundary face whose plane has the eye outside (B is ENTRY); the ray meets A
- * in front of B, so Obstructs(A, B) holds, the screen extents overlap, and
- * B -> A is an edge. The walk gives a path Q -> ... -> P: Q precedes P in every
+ * leaves A through a boundary face F whose plane has the eye inside (an EXIT
+ * face) and, after a gap or a non-matching interface, enters the
+ * next cell B through a boundary face G whose plane has the eye outside (an
+ * ENTRY face). The ray crosses F at x and G at y farther along, so the screen
+ * extents of F and G both contain the image of x, G reaches behind x (behind
+ * F's front), y is on the closed outer side of F's plane (so is a corner of
+ * G, G lying in the convex hull of its corners; y is on the plane when F and
+ * G are coplanar) and x on the closed outer side of G's plane (the eye's
+ * side, as the ray crosses G's plane only at y); the pair (F, G) is
+ * found, the ray meets A in front of B, so Obstructs(A, B) holds and B -> A
+ * is an edge. The walk gives a path Q -> ... -> P: Q precedes P in every
  * topological order. Cells hidden behind the near plane are not on the walk
  * (it stays in front of P's point); unsupported cells act as empty space (their
  * neighbours have boundary faces there).
