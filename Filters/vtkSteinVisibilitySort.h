@@ -58,12 +58,11 @@
  * neighbours have boundary faces there).
  * Measured (hovBenchSort, 2 cores, loaded machine; re-sort after a 5 degree
  * rotation, vtkCellCenterDepthSort = CCD in the same process; RT = tetrahedra
- * of vtkRTAnalyticSource): RT 13.7k cells 0.006 s (5x CCD), 197k 0.063 s
- * (1.9x), 625k 0.13 s (2.1x), 976k 0.19 s (1.9x; 1.8-2.6x over runs), with a
- * view-independent set-up of 0.38 s at 976k. The bracket (56k cells, a quarter
- * of them on the boundary) takes 0.06-0.11 s (10-18x CCD): the Obstructs tests
- * among boundary cells dominate there. MULTITILED_MERGE took 0.26 s at 13.7k,
- * 4.6 s at 197k and about 20 s at 976k (130-270x CCD).
+ * of vtkRTAnalyticSource): RT 13.7k cells 0.0023 s (2.4x CCD), bracket 56k
+ * (a quarter on the boundary) 0.024 s (4.0x; 9.7k Obstructs tests), RT 197k
+ * 0.032 s (1.7x), 625k 0.086 s (1.2x), 976k 0.11 s (1.0x), with a
+ * view-independent set-up of 0.26 s at 976k. MULTITILED_MERGE took 0.27 s at
+ * 13.7k and 1.15 s on the bracket (190-280x CCD), about 20 s at 976k.
  *
  * MULTITILED_MERGE (HIAC 6, 6.1, 6.2 as published):
  * 1. Rough sort by each cell's rearmost depth (the Global Sorting List).
