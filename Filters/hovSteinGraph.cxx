@@ -2,16 +2,14 @@
 #include "hovSteinGraph.h"
 
 #include "hovGeometricPredicates.h" // exact Orient3d, Orient3dDirection
+#include "hovSteinBoundaryPairs.h"  // BoundaryEdges
 #include "hovSteinMerge.h"          // RadixSortDescending
-#include "hovSteinObstructs.h"      // Obstruction
 
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 
 namespace hovStein
 {
@@ -113,204 +111,88 @@ void FaceDirections(const Geometry& g, const Topology& t, const View& v, std::ve
   });
 }
 
-/// Per cell: bit 0 EXIT, bit 1 ENTRY (see hovSteinGraph.h).
-void Roles(const Geometry& g, const Topology& t, const View& v, const std::vector<std::int8_t>& dir,
-  std::vector<std::uint8_t>& roles)
+/// Face @p of cell @p c whose corners are those of face @p fa of cell @p a, or -1.
+int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
+{
+  vtkIdType ia[4], ic[4];
+  const int na = g.OrientedFace(a, fa, ia);
+  std::sort(ia, ia + na);
+  const Shape& s = GetShape(g.Kinds[c]);
+  for (int f = 0; f < s.NumFaces; ++f)
+  {
+    if (s.FaceSize[f] == na)
+    {
+      g.OrientedFace(c, f, ic);
+      std::sort(ic, ic + na);
+      if (std::equal(ia, ia + na, ic))
+      {
+        return f;
+      }
+    }
+  }
+  return -1;
+}
+
+/**
+ * The faces of step 3 (see hovSteinBoundaryPairs.h): boundary faces of
+ * ordered cells with the eye strictly inside (EXIT), strictly outside (ENTRY)
+ * or undecided (both), and both sides of undecided interior faces.
+ */
+void ViewFaces(const Geometry& g, const Topology& t, const View& v, const std::vector<std::int8_t>& dir,
+  std::vector<ViewFace>& faces, GraphStats& stats)
 {
   const vtkIdType n = g.NumberOfCells;
-  roles.assign(n, 0);
+  std::vector<std::uint8_t> roles(MaxFaces * n, 0);
   vtkSMPTools::For(0, n, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType c = begin; c < end; ++c)
     {
-      const std::uint8_t faces = t.BoundaryFaces[c];
-      if (!faces || !Ordered(v, c))
+      const std::uint8_t mask = t.BoundaryFaces[c];
+      if (!mask || !Ordered(v, c))
       {
         continue;
       }
-      std::uint8_t r = 0;
-      for (int f = 0; f < MaxFaces && r != 3; ++f)
+      for (int f = 0; f < MaxFaces; ++f)
       {
-        if (faces & (1 << f))
+        if (mask & (1 << f))
         {
           const int side = EyeSide(g, v.Frame, c, f);
-          r |= side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
+          roles[MaxFaces * c + f] = side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
         }
       }
-      roles[c] = r;
     }
   });
   for (size_t i = 0; i < dir.size(); ++i)
   {
     if (dir[i] == 2)
     {
-      roles[t.A[i]] = roles[t.B[i]] = 3;
+      roles[MaxFaces * t.A[i] + t.FaceA[i]] = 3;
+      const int fb = MatchingFace(g, t.A[i], t.FaceA[i], t.B[i]);
+      if (fb >= 0)
+      {
+        roles[MaxFaces * t.B[i] + fb] = 3;
+      }
     }
+  }
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    std::uint8_t cellRoles = 0;
+    for (int f = 0; f < MaxFaces; ++f)
+    {
+      const std::uint8_t r = roles[MaxFaces * c + f];
+      if (r)
+      {
+        faces.push_back({ c, static_cast<std::uint8_t>(f), r });
+        cellRoles |= r;
+      }
+    }
+    stats.ExitCells += cellRoles & 1;
+    stats.EntryCells += (cellRoles >> 1) & 1;
   }
 }
 }
 
 namespace
 {
-/// Uniform screen grid for the pair search.
-struct PairGrid
-{
-  int NX = 1, NY = 1;
-  double X0 = 0, Y0 = 0, DX = 1, DY = 1;
-  int IX(double x) const
-  {
-    const double u = (x - this->X0) / this->DX;
-    return u <= 0 ? 0 : (u >= this->NX - 1 ? this->NX - 1 : static_cast<int>(u));
-  }
-  int IY(double y) const
-  {
-    const double u = (y - this->Y0) / this->DY;
-    return u <= 0 ? 0 : (u >= this->NY - 1 ? this->NY - 1 : static_cast<int>(u));
-  }
-};
-
-/// Tiles about the mean extent of the cells, within the view window, at most ~4 per cell.
-PairGrid MakePairGrid(const View& v, const std::vector<vtkIdType>& cells)
-{
-  double r[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  double w = 0, h = 0;
-  for (vtkIdType c : cells)
-  {
-    const float* b = v.Box.data() + 4 * c;
-    r[0] = std::min(r[0], double(b[0]));
-    r[1] = std::max(r[1], double(b[1]));
-    r[2] = std::min(r[2], double(b[2]));
-    r[3] = std::max(r[3], double(b[3]));
-  }
-  const double* win = v.Frame.Window;
-  PairGrid grid;
-  grid.X0 = std::max(r[0], win[0]);
-  grid.Y0 = std::max(r[2], win[2]);
-  const double width = std::min(r[1], win[1]) - grid.X0, height = std::min(r[3], win[3]) - grid.Y0;
-  for (vtkIdType c : cells)
-  {
-    const float* b = v.Box.data() + 4 * c;
-    w += std::min(double(b[1]) - b[0], width);
-    h += std::min(double(b[3]) - b[2], height);
-  }
-  const double count = std::max<double>(1, static_cast<double>(cells.size()));
-  w /= count;
-  h /= count;
-  if (!(width > 0 && height > 0 && w > 0 && h > 0) || !std::isfinite(width * height))
-  {
-    return grid; // one tile
-  }
-  double nx = width / w, ny = height / h;
-  const double scale = std::sqrt(std::min(1.0, 4 * count / (nx * ny)));
-  nx = std::min(4096.0, std::max(1.0, std::floor(nx * scale)));
-  ny = std::min(4096.0, std::max(1.0, std::floor(ny * scale)));
-  grid.NX = static_cast<int>(nx);
-  grid.NY = static_cast<int>(ny);
-  grid.DX = width / grid.NX;
-  grid.DY = height / grid.NY;
-  return grid;
-}
-
-inline bool Disjoint(const float* a, const float* b)
-{
-  return a[1] <= b[0] || b[1] <= a[0] || a[3] <= b[2] || b[3] <= a[2];
-}
-
-/// Obstructs() edges (b, a) for EXIT a, ENTRY b with overlapping extents.
-void ObstructEdges(const Geometry& g, const View& v, const std::vector<std::uint8_t>& roles,
-  std::vector<std::pair<vtkIdType, vtkIdType>>& edges, GraphStats& stats)
-{
-  std::vector<vtkIdType> cells;
-  for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
-  {
-    if (roles[c])
-    {
-      cells.push_back(c);
-      stats.ExitCells += roles[c] & 1;
-      stats.EntryCells += (roles[c] >> 1) & 1;
-    }
-  }
-  if (cells.size() < 2)
-  {
-    return;
-  }
-  const PairGrid grid = MakePairGrid(v, cells);
-  const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
-  std::vector<vtkIdType> start(nt + 1, 0);
-  auto forTiles = [&](vtkIdType c, auto&& fn) {
-    const float* b = v.Box.data() + 4 * c;
-    for (int iy = grid.IY(b[2]), iy1 = grid.IY(b[3]); iy <= iy1; ++iy)
-    {
-      for (int ix = grid.IX(b[0]), ix1 = grid.IX(b[1]); ix <= ix1; ++ix)
-      {
-        fn(static_cast<vtkIdType>(iy) * grid.NX + ix);
-      }
-    }
-  };
-  for (vtkIdType c : cells)
-  {
-    forTiles(c, [&](vtkIdType tile) { ++start[tile + 1]; });
-  }
-  for (vtkIdType i = 0; i < nt; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  std::vector<vtkIdType> lists(start[nt]);
-  {
-    std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
-    for (vtkIdType c : cells)
-    {
-      forTiles(c, [&](vtkIdType tile) { lists[cursor[tile]++] = c; });
-    }
-  }
-  const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
-  std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>> blockEdges(numBlocks);
-  std::vector<vtkIdType> blockTests(numBlocks, 0);
-  vtkSMPThreadLocal<std::shared_ptr<Obstruction>> local;
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    std::shared_ptr<Obstruction>& ob = local.Local();
-    if (!ob)
-    {
-      ob.reset(new Obstruction(g, v));
-    }
-    for (vtkIdType blk = b0; blk < b1; ++blk)
-    {
-      for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
-      {
-        const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
-        for (vtkIdType i = start[tile]; i < start[tile + 1]; ++i)
-        {
-          const vtkIdType a = lists[i];
-          if (!(roles[a] & 1))
-          {
-            continue;
-          }
-          const float* ba = v.Box.data() + 4 * a;
-          for (vtkIdType j = start[tile]; j < start[tile + 1]; ++j)
-          {
-            const vtkIdType b = lists[j];
-            const float* bb = v.Box.data() + 4 * b;
-            if (b == a || !(roles[b] & 2) || Disjoint(ba, bb) ||
-              grid.IX(std::max(ba[0], bb[0])) != ix || grid.IY(std::max(ba[2], bb[2])) != iy)
-            {
-              continue;
-            }
-            ++blockTests[blk];
-            if (ob->Obstructs(a, b))
-            {
-              blockEdges[blk].emplace_back(b, a);
-            }
-          }
-        }
-      }
-    }
-  });
-  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
-  {
-    stats.Tests += blockTests[blk];
-    edges.insert(edges.end(), blockEdges[blk].begin(), blockEdges[blk].end());
-  }
-}
-
 /// Compressed adjacency of the face edges and the Obstructs() edges.
 void BuildDigraph(const Topology& t, const std::vector<std::int8_t>& dir,
   const std::vector<std::pair<vtkIdType, vtkIdType>>& extra, vtkIdType n, Digraph& d)
@@ -383,10 +265,13 @@ void SortByGraph(const Geometry& g, const Topology& t, const View& v,
   }
   std::vector<std::int8_t> dir;
   FaceDirections(g, t, v, dir);
-  std::vector<std::uint8_t> roles;
-  Roles(g, t, v, dir, roles);
+  std::vector<ViewFace> faces;
+  ViewFaces(g, t, v, dir, faces, stats);
   std::vector<std::pair<vtkIdType, vtkIdType>> extra;
-  ObstructEdges(g, v, roles, extra, stats);
+  PairStats pairStats;
+  BoundaryEdges(g, v, faces, extra, pairStats);
+  stats.Tests = pairStats.Tests;
+  stats.FacePairs = pairStats.FacePairs;
   for (std::int8_t s : dir)
   {
     stats.FaceEdges += s == 1 || s == -1;

@@ -41,6 +41,7 @@ namespace hovStein
 struct GraphStats
 {
   vtkIdType Tests = 0;         ///< Obstructs() calls
+  vtkIdType FacePairs = 0;     ///< boundary face pairs with overlapping extents and depths
   vtkIdType FaceEdges = 0;     ///< edges from interior faces
   vtkIdType ObstructEdges = 0; ///< edges from Obstructs()
   vtkIdType Undecided = 0;     ///< interior faces left to Obstructs()

@@ -25,10 +25,14 @@
  *    projection: Orient3dDirection); the eye on the plane gives no edge.
  *    Non-planar (Newell) faces with the eye near their slab are undecided and
  *    their two cells are handled like boundary cells.
- * 3. A cell with a boundary face whose plane has the eye strictly inside is an
- *    EXIT cell (a view ray can leave the mesh there), strictly outside an ENTRY
- *    cell. For every EXIT a and ENTRY b with overlapping screen extents (a
- *    screen grid, each pair once), Obstructs(a, b) adds the edge b -> a.
+ * 3. A boundary face whose plane has the eye strictly inside is an EXIT face
+ *    (a view ray can leave the mesh there), strictly outside an ENTRY face
+ *    (undecided faces are both). For every EXIT face F of a cell a and ENTRY
+ *    face G of a cell b != a such that the screen extents of F and G overlap,
+ *    G reaches behind F's front depth, and (for exact face planes) G has a
+ *    corner on the closed outer side of F's plane and F one of G's plane,
+ *    Obstructs(a, b) (once per cell pair) adds the edge b -> a
+ *    (hovSteinBoundaryPairs.h).
  * 4. Kahn's topological sort (FIFO; initial sources back to front by rearmost
  *    depth). If it stalls, the rest's strongly connected components (iterative
  *    Tarjan) are output in topological order, each back to front by rearmost
@@ -38,22 +42,27 @@
  * edges and walk along it from P's point to Q's. Each step leaves a cell
  * through a face. Through an interior face from A into B: the ray moves away
  * from the eye, so the eye is on A's side and B -> A is an edge. Otherwise it
- * leaves A through a boundary face whose plane has the eye inside (A is EXIT)
- * and, after a gap or a non-matching interface, enters the next cell B through
- * a boundary face whose plane has the eye outside (B is ENTRY); the ray meets A
- * in front of B, so Obstructs(A, B) holds, the screen extents overlap, and
- * B -> A is an edge. The walk gives a path Q -> ... -> P: Q precedes P in every
+ * leaves A through a boundary face F whose plane has the eye inside (an EXIT
+ * face) and, after a gap or a non-matching interface, enters the
+ * next cell B through a boundary face G whose plane has the eye outside (an
+ * ENTRY face). The ray crosses F at x and G at y farther along, so the screen
+ * extents of F and G both contain the image of x, G reaches behind x (behind
+ * F's front), y is on the closed outer side of F's plane (so is a corner of
+ * G, G lying in the convex hull of its corners; y is on the plane when F and
+ * G are coplanar) and x on the closed outer side of G's plane (the eye's
+ * side, as the ray crosses G's plane only at y); the pair (F, G) is
+ * found, the ray meets A in front of B, so Obstructs(A, B) holds and B -> A
+ * is an edge. The walk gives a path Q -> ... -> P: Q precedes P in every
  * topological order. Cells hidden behind the near plane are not on the walk
  * (it stays in front of P's point); unsupported cells act as empty space (their
  * neighbours have boundary faces there).
  * Measured (hovBenchSort, 2 cores, loaded machine; re-sort after a 5 degree
  * rotation, vtkCellCenterDepthSort = CCD in the same process; RT = tetrahedra
- * of vtkRTAnalyticSource): RT 13.7k cells 0.006 s (5x CCD), 197k 0.063 s
- * (1.9x), 625k 0.13 s (2.1x), 976k 0.19 s (1.9x; 1.8-2.6x over runs), with a
- * view-independent set-up of 0.38 s at 976k. The bracket (56k cells, a quarter
- * of them on the boundary) takes 0.06-0.11 s (10-18x CCD): the Obstructs tests
- * among boundary cells dominate there. MULTITILED_MERGE took 0.26 s at 13.7k,
- * 4.6 s at 197k and about 20 s at 976k (130-270x CCD).
+ * of vtkRTAnalyticSource): RT 13.7k cells 0.0023 s (2.4x CCD), bracket 56k
+ * (a quarter on the boundary) 0.024 s (4.0x; 9.7k Obstructs tests), RT 197k
+ * 0.032 s (1.7x), 625k 0.086 s (1.2x), 976k 0.11 s (1.0x), with a
+ * view-independent set-up of 0.26 s at 976k. MULTITILED_MERGE took 0.27 s at
+ * 13.7k and 1.15 s on the bracket (190-280x CCD), about 20 s at 976k.
  *
  * MULTITILED_MERGE (HIAC 6, 6.1, 6.2 as published):
  * 1. Rough sort by each cell's rearmost depth (the Global Sorting List).

@@ -1,0 +1,65 @@
+/**
+ * @file hovSteinBoundaryPairs.h
+ * @brief Step 3 of vtkSteinVisibilitySort's ADJACENCY_GRAPH algorithm: the
+ *        Obstructs() edges between cells with boundary faces, found face by face.
+ *
+ * A view ray that leaves cell A through a boundary face F (an EXIT face: the
+ * eye strictly on the inner side of F's plane, or undecided) and later enters
+ * cell B through a boundary face G (an ENTRY face: the eye strictly outside,
+ * or undecided) crosses F at a point x and G at a point y farther along the
+ * ray. Hence a face pair (F, G) can only be needed when
+ * - the screen extents of F and G overlap (both contain the image of x and y);
+ * - rear depth of G > front depth of F (depth grows along the ray; compared
+ *   with a rounding margin, pruned only when clearly violated);
+ * - if F is an exact face: some corner of G lies on the closed outer side of
+ *   F's plane (y does: the ray crosses F's plane once, at x, from the inner
+ *   side; G lies in the convex hull of its corners). Closed: y lies on F's
+ *   plane when F and G are coplanar (touching cells, sliding interfaces);
+ *   pruned only when every corner is inside by more than 1e-9 times the
+ *   coordinate magnitude, so that interfaces coplanar up to rounding (which
+ *   Obstructs() treats as touching) stay candidates;
+ * - if G is an exact face: some corner of F lies on the closed outer side of
+ *   G's plane (x does: it is on the eye's side of y, and the eye is outside).
+ * Every cell pair (A, B) with a face pair passing these tests is decided with
+ * the exact cell-level Obstructs(A, B), which adds the edge B -> A.
+ * Faces of straddling cells (clipped by the near plane) use the cell's
+ * visible-part extents and depth range. Undecided interior faces (non-planar
+ * faces with the eye near them) are EXIT and ENTRY faces of both their cells.
+ *
+ * Face pairs are found with a uniform screen grid (each pair in the tile of
+ * the lower-left corner of the intersection of the extents), in parallel over
+ * blocks of tiles; the cell pairs are sorted and made unique, then tested in
+ * parallel. Results do not depend on the thread count.
+ */
+#ifndef hovSteinBoundaryPairs_h
+#define hovSteinBoundaryPairs_h
+
+#include "hovSteinView.h" // Geometry, View
+
+#include <cstdint> // std::uint8_t
+#include <utility> // std::pair
+#include <vector>  // storage
+
+namespace hovStein
+{
+/// A face taking part in step 3: bit 0 of Roles EXIT, bit 1 ENTRY.
+struct ViewFace
+{
+  vtkIdType Cell;
+  std::uint8_t Face;
+  std::uint8_t Roles;
+};
+
+/// Counters of step 3.
+struct PairStats
+{
+  vtkIdType FacePairs = 0; ///< face pairs with overlapping extents and depth ranges
+  vtkIdType Tests = 0;     ///< distinct cell pairs tested with Obstructs()
+};
+
+/// Edges (b, a), b before a, for the cell pairs that need them (see the file doc).
+void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
+  std::vector<std::pair<vtkIdType, vtkIdType>>& edges, PairStats& stats);
+}
+
+#endif
