@@ -12,15 +12,15 @@
  *    the eye on the plane gives no edge. Non-planar (Newell) faces decide only
  *    when the eye is clearly off the face (margin below); otherwise the face is
  *    UNDECIDED and its two cells take part in step 2 in both roles.
- * 2. Boundary faces: a cell is an EXIT cell if the eye lies strictly inside
- *    the plane of one of its boundary faces (a view ray can leave the mesh
- *    there) and an ENTRY cell if strictly outside (a ray can enter); undecided
- *    Newell or degenerate faces count as both. For every pair (a EXIT, b ENTRY)
- *    whose screen extents overlap (found with a screen grid; a pair is
- *    considered only in the tile holding the lower-left corner of the
- *    intersection of the extents), Obstructs(a, b) adds the edge b -> a.
- *    Runs in parallel over blocks of tiles, one Obstruction per thread; edges
- *    are concatenated in block order, so the result is deterministic.
+ * 2. Boundary faces (hovSteinBoundaryPairs): EXIT faces (the eye strictly
+ *    on the inner side of the plane: a view ray can leave the mesh there) are
+ *    paired with ENTRY faces (the eye strictly outside) of other cells whose
+ *    screen extents overlap, that reach behind the exit face's front and are
+ *    not separated from it by either face's plane; undecided Newell or
+ *    degenerate faces count in both roles. For each surviving cell pair
+ *    (a, b), Obstructs(a, b) adds the edge b -> a. Pairs are de-duplicated and
+ *    decided in parallel, one Obstruction per thread, in a fixed order, so the
+ *    result does not depend on the number of threads.
  * 3. Kahn's algorithm on the DAG, FIFO, the initial sources sorted back to
  *    front by rearmost depth (a full rough sort of all cells measured ~15% of
  *    the re-sort time at 1M cells and is not needed for exactness). If it stalls, the strongly connected
