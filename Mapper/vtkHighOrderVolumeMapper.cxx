@@ -318,7 +318,6 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   timer->StartTimer();
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
-  impl.RGBA.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
 
   const bool ok = this->ValidateInputs(camera, volume, width, height);
   bool render = ok && !impl.Setup.GetTetras().empty() &&
@@ -329,8 +328,14 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
     render = false;
   }
-  if (render && this->PrepareOrder(camera, volume))
+  render = render && this->PrepareOrder(camera, volume);
+  if (!render)
   {
+    impl.RGBA.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
+  }
+  else
+  {
+    // The projector sizes the image and writes every pixel: no clearing.
     vtkHighOrderCellProjector::Settings settings;
     settings.Integration.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
     settings.Integration.Method = static_cast<hov::SegmentMethod>(this->IntegrationMethod);

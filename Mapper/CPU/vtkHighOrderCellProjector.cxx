@@ -43,6 +43,10 @@ using Tetra = vtkHighOrderTetraSetup::Tetra;
 /// projection (the per-pixel ray test that follows is exact).
 constexpr double BoxMargin = vtkHighOrderProjectorTile::BoxMargin;
 
+/// Distance, in ordered cells, at which a tetrahedron is prefetched while the
+/// cell records are built.
+constexpr vtkIdType RecordPrefetch = 8;
+
 Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
   const std::vector<unsigned char>& projectable, int width, int height)
 {
@@ -144,6 +148,15 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType k = b; k < e; ++k)
     {
+      // The order scatters the tetrahedra in memory: fetch a few ahead.
+      if (k + RecordPrefetch < e)
+      {
+        const char* ahead = reinterpret_cast<const char*>(&tets[(*order)[k + RecordPrefetch]]);
+        for (size_t offset = 0; offset < sizeof(Tetra); offset += 64)
+        {
+          __builtin_prefetch(ahead + offset);
+        }
+      }
       const Tetra& tet = tets[(*order)[k]];
       CellRecord& cell = records[k];
       for (int f = 0; f < 4; ++f)

@@ -24,6 +24,7 @@
 #include "vtkSMPTools.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "vtkSteinVisibilitySort.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +91,7 @@ void RunMesh(const Args& args, const Mesh& mesh, bool perPixel)
   vtkNew<vtkCamera> cam;
   SetupCamera(cam, mesh.Grid->GetBounds());
   mapper->RenderImage(cam, volume, opt.Size, opt.Size); // set-up, caches
-  std::vector<double> wall, cpu;
+  std::vector<double> wall, cpu, sortWall;
   double worst = 0.0;
   for (int f = 0; f < opt.Frames; ++f)
   {
@@ -100,6 +101,8 @@ void RunMesh(const Args& args, const Mesh& mesh, bool perPixel)
     mapper->RenderImage(cam, volume, opt.Size, opt.Size);
     cpu.push_back(CpuSeconds() - c0);
     wall.push_back(mapper->GetLastImageTime());
+    auto* stein = vtkSteinVisibilitySort::SafeDownCast(mapper->GetVisibilitySort());
+    sortWall.push_back(stein && !perPixel ? stein->GetLastSortSeconds() : 0.0);
     auto* rgba = vtkFloatArray::SafeDownCast(mapper->GetFloatImage()->GetPointData()->GetScalars());
     const size_t n = static_cast<size_t>(rgba->GetNumberOfValues());
     const std::string file = FileSafe(mesh.Name) + (perPixel ? "_pix_" : "_vis_") +
@@ -117,7 +120,7 @@ void RunMesh(const Args& args, const Mesh& mesh, bool perPixel)
     }
   }
   std::cout << "  " << (perPixel ? "per-pixel " : "visibility") << "  wall " << Fmt(Median(wall))
-            << " s  cpu " << Fmt(Median(cpu)) << " s  segments " << mapper->GetNumberOfSegments()
+            << " s  (sort " << Fmt(Median(sortWall)) << " s)  cpu " << Fmt(Median(cpu)) << " s  segments " << mapper->GetNumberOfSegments()
             << "  pieces " << mapper->GetNumberOfPieces() << "  witness "
             << mapper->GetWitnessViolations();
   if (!args.Compare.empty())
