@@ -5,8 +5,11 @@ Renders the bundled bracket (linear tetrahedra, CalculiX von Mises stress) with
 
   * vtkHighOrderVolumeMapper, exact integral, VTK-unstructured opacity semantics,
     per-pixel segment sort (the REFERENCE image),
-  * vtkHighOrderVolumeMapper, same, HIAC visibility-sort ordering (vtkCellCenterDepthSort),
-  * vtkProjectedTetrahedraMapper (default vtkCellCenterDepthSort),
+  * vtkHighOrderVolumeMapper, same, HIAC visibility-sort ordering by the exact
+    vtkSteinVisibilitySort (the mapper's default) and by VTK's approximate
+    vtkCellCenterDepthSort (its z-buffer witness counts the mis-ordered pixels),
+  * vtkProjectedTetrahedraMapper with its default vtkCellCenterDepthSort and with our
+    vtkSteinVisibilitySort,
   * vtkUnstructuredGridVolumeRayCastMapper (Bunyk + vtkUnstructuredGridLinearRayIntegrator),
   * vtkHighOrderVolumeMapper in GPU-compatible opacity semantics (extra, not comparable),
 
@@ -48,6 +51,7 @@ from vtkmodules.vtkImagingCore import vtkImageConstantPad
 from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkRenderingCore import (
     vtkCamera,
+    vtkCellCenterDepthSort,
     vtkColorTransferFunction,
     vtkRenderer,
     vtkRenderWindow,
@@ -66,7 +70,7 @@ from vtkmodules.vtkRenderingVolume import (
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 try:
-    from highordervolume import vtkHighOrderVolumeMapper
+    from highordervolume import vtkHighOrderVolumeMapper, vtkSteinVisibilitySort
 except ImportError as exc:  # pragma: no cover - environment problem
     sys.exit("cannot import highordervolume (set PYTHONPATH=<build>/lib/python3/dist-packages "
              "and use /usr/bin/python3): %s" % exc)
@@ -336,6 +340,8 @@ def main():
 
     def hov(semantics, ordering):
         m = vtkHighOrderVolumeMapper()
+        if ordering == "cellcentre":
+            m.SetVisibilitySort(vtkCellCenterDepthSort())
         m.SetIntegrationMethodToExact()
         if semantics == "vtk":
             m.SetOpacitySemanticsToVTKUnstructured()
@@ -348,6 +354,8 @@ def main():
         return m
 
     pt = vtkProjectedTetrahedraMapper()
+    pt_stein = vtkProjectedTetrahedraMapper()
+    pt_stein.SetVisibilitySort(vtkSteinVisibilitySort())
     rc = vtkUnstructuredGridVolumeRayCastMapper()
     rc.SetRayIntegrator(vtkUnstructuredGridLinearRayIntegrator())
     rc.SetAutoAdjustSampleDistances(0)
@@ -359,11 +367,18 @@ def main():
          "label": "HighOrderVolume exact, per-pixel sort (reference)"},
         {"key": "hov_visibility", "mapper": hov("vtk", "visibility"),
          "semantics": "VTK-unstructured",
-         "name": "vtkHighOrderVolumeMapper, visibility sort (cell centre)",
+         "name": "vtkHighOrderVolumeMapper, exact Stein visibility sort (default)",
+         "label": "HighOrderVolume exact, Stein sort (default)"},
+        {"key": "hov_cellcentre", "mapper": hov("vtk", "cellcentre"),
+         "semantics": "VTK-unstructured",
+         "name": "vtkHighOrderVolumeMapper, VTK's cell-centre sort",
          "label": "HighOrderVolume exact, cell-centre sort"},
         {"key": "projected_tetrahedra", "mapper": pt, "semantics": "VTK-unstructured",
          "name": "vtkProjectedTetrahedraMapper (cell-centre sort)",
          "label": "vtkProjectedTetrahedraMapper"},
+        {"key": "projected_tetrahedra_stein", "mapper": pt_stein, "semantics": "VTK-unstructured",
+         "name": "vtkProjectedTetrahedraMapper + vtkSteinVisibilitySort",
+         "label": "vtkProjectedTetrahedraMapper + Stein sort"},
         {"key": "ug_raycast", "mapper": rc, "semantics": "VTK-unstructured",
          "name": "vtkUnstructuredGridVolumeRayCastMapper (Bunyk, linear integrator)",
          "label": "vtkUnstructuredGridVolumeRayCastMapper"},
