@@ -40,20 +40,7 @@ vtkSmartPointer<vtkUnstructuredGrid> BlockLattice(unsigned seed)
         const double size[3] = { 0.9, 0.8, 0.7 + 0.1 * (i & 1) };
         const unsigned s = seed + 31u * static_cast<unsigned>(i + 4 * (j + 4 * k));
         MeshBuilder m = JitteredTetBlock(2, 2, 2, o, size, 0.3, s);
-        const vtkIdType base = static_cast<vtkIdType>(all.Points.size());
-        for (size_t v = 0; v < m.Points.size(); ++v)
-        {
-          all.AddPoint(m.Points[v][0], m.Points[v][1], m.Points[v][2], m.Scalars[v]);
-        }
-        for (size_t c = 0; c < m.Cells.size(); ++c)
-        {
-          std::vector<vtkIdType> ids = m.Cells[c];
-          for (vtkIdType& id : ids)
-          {
-            id += base;
-          }
-          all.AddCell(m.Types[c], ids);
-        }
+        all.Append(m);
       }
     }
   }

@@ -457,20 +457,7 @@ vtkSmartPointer<vtkUnstructuredGrid> DisconnectedBlocks(unsigned seed)
   {
     const double size[3] = { 1.0, 0.8 + 0.1 * b, 0.5 + 0.2 * b };
     MeshBuilder m = JitteredTetBlock(3, 3, 3, origins[b], size, 0.3, seed + 17 * b);
-    const vtkIdType base = static_cast<vtkIdType>(all.Points.size());
-    for (size_t v = 0; v < m.Points.size(); ++v)
-    {
-      all.AddPoint(m.Points[v][0], m.Points[v][1], m.Points[v][2], m.Scalars[v]);
-    }
-    for (size_t c = 0; c < m.Cells.size(); ++c)
-    {
-      std::vector<vtkIdType> ids = m.Cells[c];
-      for (vtkIdType& id : ids)
-      {
-        id += base;
-      }
-      all.AddCell(m.Types[c], ids);
-    }
+    all.Append(m);
   }
   return all.Grid();
 }
@@ -483,20 +470,7 @@ vtkSmartPointer<vtkUnstructuredGrid> SlidingInterface(unsigned seed)
   const double o2[3] = { 1, 0, 0 }, s2[3] = { 0.8, 1, 1 };
   MeshBuilder a = JitteredTetBlock(4, 4, 4, o1, s1, 0.0, 1);
   MeshBuilder b = JitteredTetBlock(3, 3, 3, o2, s2, 0.0, 2);
-  const vtkIdType base = static_cast<vtkIdType>(a.Points.size());
-  for (size_t v = 0; v < b.Points.size(); ++v)
-  {
-    a.AddPoint(b.Points[v][0], b.Points[v][1], b.Points[v][2], b.Scalars[v]);
-  }
-  for (size_t c = 0; c < b.Cells.size(); ++c)
-  {
-    std::vector<vtkIdType> ids = b.Cells[c];
-    for (vtkIdType& id : ids)
-    {
-      id += base;
-    }
-    a.AddCell(b.Types[c], ids);
-  }
+  a.Append(b);
   // A shear keeps the interface planar but not axis-aligned.
   for (auto& p : a.Points)
   {

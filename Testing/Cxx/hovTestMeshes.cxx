@@ -144,4 +144,23 @@ MeshBuilder UnitBlock(int n, bool inverted)
   m.AddTetBlock(n, n, n, o, size, DefaultField, inverted);
   return m;
 }
+
+//------------------------------------------------------------------------------
+void MeshBuilder::Append(const MeshBuilder& other)
+{
+  const vtkIdType base = static_cast<vtkIdType>(this->Points.size());
+  for (size_t v = 0; v < other.Points.size(); ++v)
+  {
+    this->AddPoint(other.Points[v][0], other.Points[v][1], other.Points[v][2], other.Scalars[v]);
+  }
+  for (size_t c = 0; c < other.Cells.size(); ++c)
+  {
+    std::vector<vtkIdType> ids = other.Cells[c];
+    for (vtkIdType& id : ids)
+    {
+      id += base;
+    }
+    this->AddCell(other.Types[c], ids);
+  }
+}
 }

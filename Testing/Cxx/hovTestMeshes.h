@@ -38,6 +38,9 @@ struct MeshBuilder
     const std::function<double(double, double, double)>& f, bool inverted = false);
   /// A lone tetrahedron with its own four points and scalars @p svals.
   void AddLooseTet(const double p[4][3], const double svals[4]);
+  /// Appends the points and cells of @p other (its point ids shifted past ours;
+  /// no points are merged, so the pieces stay disconnected).
+  void Append(const MeshBuilder& other);
   /// The grid; point scalars "s" (double) are the active scalars unless
   /// @p withScalars is false.
   vtkSmartPointer<vtkUnstructuredGrid> Grid(bool withScalars = true) const;
