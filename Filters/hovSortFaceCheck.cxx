@@ -1,7 +1,9 @@
 #include "hovSortFaceCheck.h"
 
+#include "hovCellShapes.h" // cell types, corner counts
+#include "hovRayCell.h"    // face corner tables
+
 #include "vtkCamera.h"
-#include "vtkCellType.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
@@ -18,51 +20,6 @@
 namespace
 {
 //------------------------------------------------------------------------------
-// Corner faces of the cell types the violation check understands (VTK's
-// vertex numbering; quadratic cells use their corner vertices).
-struct FaceTable
-{
-  int NumberOfFaces = 0;
-  int Size[6] = { 0, 0, 0, 0, 0, 0 };
-  int Ids[6][4] = {};
-};
-
-const FaceTable* FacesOf(int type)
-{
-  static const FaceTable tet = { 4, { 3, 3, 3, 3 },
-    { { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 }, { 0, 2, 1 } } };
-  static const FaceTable voxel = { 6, { 4, 4, 4, 4, 4, 4 },
-    { { 0, 2, 6, 4 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 }, { 2, 3, 7, 6 }, { 0, 1, 3, 2 },
-      { 4, 5, 7, 6 } } };
-  static const FaceTable hex = { 6, { 4, 4, 4, 4, 4, 4 },
-    { { 0, 4, 7, 3 }, { 1, 2, 6, 5 }, { 0, 1, 5, 4 }, { 3, 7, 6, 2 }, { 0, 3, 2, 1 },
-      { 4, 5, 6, 7 } } };
-  static const FaceTable wedge = { 5, { 3, 3, 4, 4, 4 },
-    { { 0, 1, 2 }, { 3, 5, 4 }, { 0, 3, 4, 1 }, { 1, 4, 5, 2 }, { 2, 5, 3, 0 } } };
-  static const FaceTable pyramid = { 5, { 4, 3, 3, 3, 3 },
-    { { 0, 3, 2, 1 }, { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 } } };
-  switch (type)
-  {
-    case VTK_TETRA:
-    case VTK_QUADRATIC_TETRA:
-      return &tet;
-    case VTK_VOXEL:
-      return &voxel;
-    case VTK_HEXAHEDRON:
-    case VTK_QUADRATIC_HEXAHEDRON:
-    case VTK_TRIQUADRATIC_HEXAHEDRON:
-      return &hex;
-    case VTK_WEDGE:
-    case VTK_QUADRATIC_WEDGE:
-      return &wedge;
-    case VTK_PYRAMID:
-    case VTK_QUADRATIC_PYRAMID:
-      return &pyramid;
-    default:
-      return nullptr;
-  }
-}
-
 /// One cell face: its sorted corner ids (the key), its cell and its corners in order.
 struct FaceRecord
 {
@@ -87,22 +44,11 @@ void CornerCentroid(vtkPoints* points, const vtkIdType* pts, int n, double c[3])
   }
 }
 
+// Corners of a supported type (hovCellShapes: quadratic cells use their corners).
 int CornerCount(int type)
 {
-  switch (type)
-  {
-    case VTK_TETRA:
-    case VTK_QUADRATIC_TETRA:
-      return 4;
-    case VTK_PYRAMID:
-    case VTK_QUADRATIC_PYRAMID:
-      return 5;
-    case VTK_WEDGE:
-    case VTK_QUADRATIC_WEDGE:
-      return 6;
-    default:
-      return 8;
-  }
+  return hov::IsSupportedCellType(type) ? hov::CellCornerCount(static_cast<hov::CellShape>(type))
+                                        : 0;
 }
 
 /// All faces of the supported cells, sorted so that equal keys are adjacent.
@@ -114,26 +60,28 @@ std::vector<FaceRecord> CollectFaces(vtkUnstructuredGrid* input)
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < n; ++c)
   {
-    const FaceTable* table = FacesOf(input->GetCellType(c));
-    if (!table)
+    const int type = input->GetCellType(c);
+    if (!hov::IsSupportedCellType(type))
     {
       continue;
     }
+    const hov::CellShape shape = static_cast<hov::CellShape>(type);
     input->GetCellPoints(c, ids);
-    if (ids->GetNumberOfIds() < CornerCount(input->GetCellType(c)))
+    if (ids->GetNumberOfIds() < hov::CellCornerCount(shape))
     {
       continue;
     }
-    for (int f = 0; f < table->NumberOfFaces; ++f)
+    for (int f = 0, nf = hov::CellFaceCount(shape); f < nf; ++f)
     {
+      int corners[4];
       FaceRecord r;
       r.Cell = c;
-      r.Size = table->Size[f];
+      r.Size = hov::CellFaceCorners(shape, f, corners);
       r.Key.fill(-1);
       r.Corners.fill(-1);
       for (int k = 0; k < r.Size; ++k)
       {
-        r.Corners[k] = r.Key[k] = ids->GetId(table->Ids[f][k]);
+        r.Corners[k] = r.Key[k] = ids->GetId(corners[k]);
       }
       std::sort(r.Key.begin(), r.Key.begin() + r.Size);
       faces.push_back(r);
