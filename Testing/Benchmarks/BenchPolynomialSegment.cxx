@@ -14,6 +14,8 @@
 #include "hovPolynomialSegment.h"
 #include "hovTransferFunction.h"
 
+#include "hovBenchTables.h" // the shared 10-node table
+
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -26,20 +28,7 @@ constexpr size_t Mask = N - 1;
 
 hov::TransferFunction Table()
 {
-  hov::TransferFunctionSpec spec;
-  spec.Semantics = hov::OpacitySemantics::VTKUnstructured;
-  spec.UnitDistance = 0.5;
-  std::mt19937_64 rng(777);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  for (int k = 0; k < 10; ++k)
-  {
-    const double x = k / 9.0;
-    spec.Color.push_back({ x, u01(rng), u01(rng), u01(rng) });
-    spec.Opacity.push_back({ x, 0.9 * u01(rng) });
-  }
-  hov::TransferFunction tf;
-  tf.Build(spec);
-  return tf;
+  return hovBench::TenNodeTable(hov::OpacitySemantics::VTKUnstructured);
 }
 
 struct Segment

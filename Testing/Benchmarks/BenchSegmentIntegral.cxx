@@ -19,6 +19,8 @@
 #include "hovSegmentIntegral.h"
 #include "hovTransferFunction.h"
 
+#include "hovBenchTables.h" // the shared 10-node table
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -116,19 +118,9 @@ void Approximate_WM_Mix(benchmark::State& state)
 void RunLinearScalar(benchmark::State& state, hov::OpacitySemantics semantics)
 {
   // 10 nodes: colour and opacity nodes at the same 10 positions.
-  hov::TransferFunctionSpec spec;
-  spec.Semantics = semantics;
-  spec.UnitDistance = 0.5;
-  std::mt19937_64 rng(777);
+  const hov::TransferFunction tf = hovBench::TenNodeTable(semantics);
+  std::mt19937_64 rng(778);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  for (int k = 0; k < 10; ++k)
-  {
-    const double x = k / 9.0;
-    spec.Color.push_back({ x, u01(rng), u01(rng), u01(rng) });
-    spec.Opacity.push_back({ x, 0.9 * u01(rng) });
-  }
-  hov::TransferFunction tf;
-  tf.Build(spec);
   struct Ray
   {
     double S0, S1, L;
