@@ -210,11 +210,11 @@ void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>
       FillFaceData(g, v, faces[i], data[i]);
     }
   });
- 
+
   const PairGrid grid = MakePairGrid(v, data);
   std::vector<vtkIdType> start, lists;
   BinFaces(grid, data, start, lists);
- 
+
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
   std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>> blockPairs(numBlocks);
@@ -256,7 +256,7 @@ void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>
       }
     }
   });
- 
+
   std::vector<std::pair<vtkIdType, vtkIdType>> pairs;
   for (vtkIdType blk = 0; blk < numBlocks; ++blk)
   {
@@ -266,7 +266,7 @@ void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>
   vtkSMPTools::Sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   const vtkIdType np = static_cast<vtkIdType>(pairs.size());
- 
+
   stats.Tests += np;
   std::vector<std::uint8_t> hit(np, 0);
   vtkSMPThreadLocal<std::shared_ptr<Obstruction>> local;
@@ -281,7 +281,7 @@ void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>
       hit[i] = ob->Obstructs(pairs[i].first, pairs[i].second);
     }
   });
- 
+
   for (vtkIdType i = 0; i < np; ++i)
   {
     if (hit[i])
