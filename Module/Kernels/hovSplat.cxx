@@ -10,14 +10,10 @@ namespace
 // 1 - D/2 + D^2/6 (error < D^3/24 < 1e-19 relative), avoiding 0/0 at D = 0.
 constexpr double SeriesDepth = 1e-6;
 
-/// (1 - e^-D) / D for D >= 0, 0 for D = +inf.
+/// (1 - e^-D) / D for 0 <= D < SeriesDepth.
 double SlabFactor(double depth)
 {
-  if (depth < SeriesDepth)
-  {
-    return 1.0 - depth * (0.5 - depth / 6.0);
-  }
-  return std::isfinite(depth) ? -std::expm1(-depth) / depth : 0.0;
+  return 1.0 - depth * (0.5 - depth / 6.0);
 }
 }
 
@@ -28,8 +24,15 @@ int QuadraticBSplineWeights(double x, double w[3])
     w[0] = w[1] = w[2] = 0.0;
     return 0;
   }
-  const double c = std::floor(x + 0.5);
-  const double f = x - c; // in [-1/2, 1/2]
+  // c = floor(x + 1/2) without rounding x + 1/2 (which sends x just below a
+  // half-integer up): x - floor(x) is exact, and so is f - 1.
+  double c = std::floor(x);
+  double f = x - c;
+  if (f >= 0.5)
+  {
+    c += 1.0;
+    f -= 1.0;
+  }
   const double a = 0.5 - f, b = 0.5 + f;
   w[0] = 0.5 * a * a;
   w[1] = 0.75 - f * f;
@@ -78,6 +81,10 @@ SplatFootprint SplatCellContribution(
   out.X0 = w.X0;
   out.Y0 = w.Y0;
   const double length = cell.Volume / pixelArea; // integrated path length, pixel units
+  if (!std::isfinite(length))
+  {
+    return out; // V / a overflows: not a sub-pixel cell
+  }
   for (int j = 0; j < 3; ++j)
   {
     for (int i = 0; i < 3; ++i)
@@ -87,8 +94,11 @@ SplatFootprint SplatCellContribution(
       const double depth = l > 0.0 ? cell.Tau * l : 0.0;
       RGBA& p = out.Pixel[j][i];
       p.A = -std::expm1(-depth);
-      const double scale =
-        emission == EmissionModel::WilliamsMax ? p.A : l * SlabFactor(depth);
+      // WVG: l (1 - e^-D)/D, written as (1 - e^-D)/tau beyond the series
+      // range so that an infinite tau gives 0 (no emission escapes).
+      const double scale = emission == EmissionModel::WilliamsMax
+        ? p.A
+        : (depth < SeriesDepth ? l * SlabFactor(depth) : p.A / cell.Tau);
       p.R = scale * cell.Color[0];
       p.G = scale * cell.Color[1];
       p.B = scale * cell.Color[2];
