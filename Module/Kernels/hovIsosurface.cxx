@@ -1,6 +1,7 @@
 #include "hovIsosurface.h"
 
 #include "hovTransferFunction.h" // the table of the volume pieces
+#include "hovTwoFieldSegment.h"  // volume pieces (one field: IntegratePolynomialScalar)
 
 #include <algorithm> // std::sort, std::min, std::max, std::remove_if
 #include <cmath>     // fabs, isfinite
@@ -135,9 +136,20 @@ RGBA IsosurfaceHitColor(const Isosurface& surface, const double point[3], const 
 
 namespace
 {
+/// The fields and tables of the volume between the surfaces.
+struct Volume
+{
+  const TransferFunction& Extinction;
+  const Polynomial& S1;
+  const TransferFunction& Color;
+  const Polynomial& S2;
+  double Length;
+};
+
 /// Volume piece [t0, t1] of the segment, composited behind @p result.Color.
-void AddVolume(const TransferFunction& tf, const Polynomial& s, double length, double t0, double t1,
-  const PolynomialSegmentSettings& settings, int& panelsLeft, IsosurfaceSegmentResult& result)
+/// (One field and one table: IntegrateTwoFields is IntegratePolynomialScalar.)
+void AddVolume(const Volume& v, double t0, double t1, const PolynomialSegmentSettings& settings,
+  int& panelsLeft, IsosurfaceSegmentResult& result)
 {
   if (!(t1 > t0))
   {
@@ -147,16 +159,17 @@ void AddVolume(const TransferFunction& tf, const Polynomial& s, double length, d
   PolynomialSegmentSettings piece = settings;
   piece.MaxPanels = std::max(panelsLeft, 1);
   PolynomialSegmentResult r;
-  if (t0 == 0.0 && t1 == length)
+  if (t0 == 0.0 && t1 == v.Length)
   {
-    r = IntegratePolynomialScalar(tf, s, length, piece);
+    r = IntegrateTwoFields(v.Extinction, v.S1, v.Color, v.S2, v.Length, piece);
   }
   else
   {
     // Budget Tolerance (t1 - t0)/L, relaxed by the transmittance in front.
-    piece.Tolerance = transmit > 0.0 ? settings.Tolerance * ((t1 - t0) / length) / transmit
+    piece.Tolerance = transmit > 0.0 ? settings.Tolerance * ((t1 - t0) / v.Length) / transmit
                                      : settings.Tolerance;
-    r = IntegratePolynomialScalar(tf, ComposeAffine(s, t0, 1.0), t1 - t0, piece);
+    r = IntegrateTwoFields(v.Extinction, ComposeAffine(v.S1, t0, 1.0), v.Color,
+      ComposeAffine(v.S2, t0, 1.0), t1 - t0, piece);
   }
   panelsLeft -= r.Panels;
   result.ErrorEstimate += transmit * r.ErrorEstimate;
@@ -165,14 +178,13 @@ void AddVolume(const TransferFunction& tf, const Polynomial& s, double length, d
   result.Converged = result.Converged && r.Converged;
   CompositeBehind(result.Color, r.Color);
 }
-}
 
-IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction& tf, const Polynomial& s,
-  double length, const IsovalueCrossing* crossings, int crossingCount, SurfaceShadeFunction shade,
-  void* user, const PolynomialSegmentSettings& settings)
+IsosurfaceSegmentResult Integrate(const Volume& v, const IsovalueCrossing* crossings,
+  int crossingCount, SurfaceShadeFunction shade, void* user,
+  const PolynomialSegmentSettings& settings)
 {
   IsosurfaceSegmentResult result;
-  if (!(length > 0.0) || !std::isfinite(length))
+  if (!(v.Length > 0.0) || !std::isfinite(v.Length))
   {
     return result;
   }
@@ -180,8 +192,8 @@ IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction& tf, const 
   double tPrev = 0.0;
   for (int i = 0; i < crossingCount && crossings && result.Color.A < 1.0; ++i)
   {
-    const double t = std::min(std::max(crossings[i].T, tPrev), length);
-    AddVolume(tf, s, length, tPrev, t, settings, panelsLeft, result);
+    const double t = std::min(std::max(crossings[i].T, tPrev), v.Length);
+    AddVolume(v, tPrev, t, settings, panelsLeft, result);
     tPrev = t;
     if (result.Color.A >= 1.0 || !shade)
     {
@@ -196,8 +208,25 @@ IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction& tf, const 
   }
   if (result.Color.A < 1.0)
   {
-    AddVolume(tf, s, length, tPrev, length, settings, panelsLeft, result);
+    AddVolume(v, tPrev, v.Length, settings, panelsLeft, result);
   }
   return result;
+}
+}
+
+IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction& tf, const Polynomial& s,
+  double length, const IsovalueCrossing* crossings, int crossingCount, SurfaceShadeFunction shade,
+  void* user, const PolynomialSegmentSettings& settings)
+{
+  return Integrate(Volume{ tf, s, tf, s, length }, crossings, crossingCount, shade, user, settings);
+}
+
+IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction& extinction,
+  const Polynomial& s1, const TransferFunction& color, const Polynomial& s2, double length,
+  const IsovalueCrossing* crossings, int crossingCount, SurfaceShadeFunction shade, void* user,
+  const PolynomialSegmentSettings& settings)
+{
+  return Integrate(
+    Volume{ extinction, s1, color, s2, length }, crossings, crossingCount, shade, user, settings);
 }
 }

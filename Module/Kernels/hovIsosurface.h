@@ -36,7 +36,10 @@
  * Segment integral (IntegrateWithSurfaces): the volume between consecutive
  * crossings is integrated with IntegratePolynomialScalar (degree <= 1: the
  * exact linear path IntegrateLinearScalar) on s shifted to the piece
- * (ComposeAffine), and the pieces and surfaces are composited front to back:
+ * (ComposeAffine) -- or, three fields, with IntegrateTwoFields on the
+ * extinction and colour fields shifted to the piece while the crossings come
+ * from the isosurface field -- and the pieces and surfaces are composited
+ * front to back:
  *   C = V[0,t1] over S1 over V[t1,t2] over S2 ... over V[tn, L].
  * Surfaces at the same t are composited by increasing isovalue index. The
  * surface RGBA comes from a caller-supplied function of the crossing (the
@@ -44,8 +47,10 @@
  * call IsosurfaceHitColor); it is called lazily, front to back, and not for
  * crossings behind an opaque accumulation. With no crossing the result is
  * bitwise IntegratePolynomialScalar(tf, s, L). A surface of zero opacity only
- * splits the volume integral: exact pieces compose to rounding (measured
- * <= 4e-16), quadrature pieces to within the tolerance (see the tests).
+ * splits the volume integral: pieces compose to rounding (measured 6.7e-16
+ * over 160 random linear to quartic segments, also where the quadrature
+ * runs); against an independent long double reference with surfaces the
+ * worst error is 1.5e-16 (TestIsosurfaceSegment).
  * Error budget: each volume piece gets Tolerance * (piece length)/L divided
  * by the transmittance in front of it, so ErrorEstimate <= Tolerance as for
  * one IntegratePolynomialScalar call.
@@ -63,7 +68,8 @@
 #include "hovPolynomialSegment.h" // IsovalueCrossing, PolynomialSegmentSettings
 #include "hovShading.h"           // ShadingLight, ShadingMaterial
 
-#include <vector> // SurfaceCrossings output
+#include <type_traits> // remove_reference_t (callable adaptor)
+#include <vector>      // SurfaceCrossings output
 
 namespace hov
 {
@@ -121,16 +127,28 @@ HOV_EXPORT IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction&
   const Polynomial& s, double length, const IsovalueCrossing* crossings, int crossingCount,
   SurfaceShadeFunction shade, void* user, const PolynomialSegmentSettings& settings);
 
+/**
+ * Three fields (HIAC 5): the surfaces at @p crossings (of a third field s3,
+ * from SurfaceCrossings(s3, ...)) embedded in the volume whose extinction
+ * comes from @p extinction at s1 and colour from @p color at s2
+ * (IntegrateTwoFields between the crossings).
+ */
+HOV_EXPORT IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction& extinction,
+  const Polynomial& s1, const TransferFunction& color, const Polynomial& s2, double length,
+  const IsovalueCrossing* crossings, int crossingCount, SurfaceShadeFunction shade, void* user,
+  const PolynomialSegmentSettings& settings);
+
 /// IntegrateWithSurfaces for any callable RGBA(const IsovalueCrossing&).
 template <class F>
 IsosurfaceSegmentResult IntegrateWithSurfaces(const TransferFunction& tf, const Polynomial& s,
-  double length, const IsovalueCrossing* crossings, int crossingCount, F& shade,
+  double length, const IsovalueCrossing* crossings, int crossingCount, F&& shade,
   const PolynomialSegmentSettings& settings)
 {
+  using Fn = std::remove_reference_t<F>;
   return IntegrateWithSurfaces(
     tf, s, length, crossings, crossingCount,
-    [](void* user, const IsovalueCrossing& c) { return (*static_cast<F*>(user))(c); }, &shade,
-    settings);
+    [](void* user, const IsovalueCrossing& c) { return (*static_cast<Fn*>(user))(c); },
+    const_cast<void*>(static_cast<const void*>(&shade)), settings);
 }
 }
 

@@ -39,8 +39,14 @@
  * Consistency: with s1 = s2 and the same table the pieces, end values and
  * quadrature are those of IntegratePolynomialScalar (same object and same
  * coefficients: that function is called directly, bitwise equal; two equal
- * tables: equal to rounding, measured in TestTwoFieldSegment); linear s1 = s2
- * reproduces IntegrateLinearScalar to rounding.
+ * tables: bitwise equal for degree >= 2, 2.1e-16 for linear fields, which go
+ * through IntegrateSegment per piece instead of IntegrateLinearScalar).
+ *
+ * Measured (TestTwoFieldSegment, GCC 12 Release): against an independent
+ * long double reference with separate raw tables and fields of degree 1..4,
+ * worst colour/opacity error 3.3e-16 (Williams-Max), 1.9e-16 (Wilhelms-Van
+ * Gelder); two linear fields (closed form, no quadrature) 2.4e-16; constant
+ * extinction with a quadratic colour against the closed form 5.6e-17.
  *
  * Degenerate input: length <= 0 or not finite, an empty table, non-finite
  * coefficients: transparent, 0 pieces; degree > 8: transparent, Converged

@@ -186,6 +186,63 @@ TEST(IsosurfaceSegment, MatchesReferenceWithSurfaces)
   hovtest::ReportMeasured("IsosurfaceSegment.ReferenceWithSurfaces", worst);
 }
 
+/// Three fields (HIAC 5): extinction from s1, colour from s2 (separate
+/// tables), surfaces of a third field s3; against the reference.
+TEST(IsosurfaceSegment, ThreeFieldsMatchReference)
+{
+  std::mt19937_64 rng(18);
+  Worst worst;
+  int surfaces = 0;
+  for (int trial = 0; trial < 16; ++trial)
+  {
+    const auto sem = trial % 2 ? hov::OpacitySemantics::RawExtinction : hov::OpacitySemantics::VTKUnstructured;
+    const hov::TransferFunctionSpec specE = hovtest::RandomSurfaceSpec(rng, sem, 2 + trial % 3);
+    hov::TransferFunctionSpec specC = hovtest::RandomSurfaceSpec(rng, sem, 2 + trial % 4);
+    specC.UnitDistance = specE.UnitDistance;
+    hov::TransferFunction tfE, tfC;
+    ASSERT_TRUE(tfE.Build(specE));
+    ASSERT_TRUE(tfC.Build(specC));
+    const double length = hovtest::LogUniform(rng, 0.1, 3.0);
+    const hov::Polynomial s1 = hovtest::RandomSurfaceField(rng, 1 + trial % 3, length);
+    const hov::Polynomial s2 = hovtest::RandomSurfaceField(rng, 1 + (trial / 3) % 3, length);
+    const hov::Polynomial s3 = hovtest::RandomSurfaceField(rng, 1 + (trial / 2) % 3, length);
+    const double iso[1] = { hovtest::Uniform(rng, 0.2, 0.8) };
+    ConstantShade shade{ { hov::RGBA{ 0.3, 0.2, 0.1, 0.4 } } };
+    std::vector<hov::IsovalueCrossing> crossings;
+    hov::SurfaceCrossings(s3, length, iso, 1, true, crossings);
+    std::vector<long double> ts;
+    hovtest::ScanLevel(s3, iso[0], 0.0L, length, 20000, ts);
+    ASSERT_EQ(ts.size(), crossings.size());
+    const auto model = static_cast<hov::EmissionModel>(trial % 2);
+    const auto refE = hovtest::ToReference(specE), refC = hovtest::ToReference(specC);
+    hovtest::RefRGBA expect;
+    long double tPrev = 0.0L;
+    ts.push_back(length);
+    for (size_t k = 0; k < ts.size(); ++k)
+    {
+      hovtest::RefCompositeBehind(expect,
+        hovtest::ReferenceTwoFieldRange(refE, s1, refC, s2, tPrev, ts[k], hovtest::ToReference(model)));
+      if (k + 1 < ts.size())
+      {
+        hovtest::RefCompositeBehind(expect, hovtest::RefRGBA{ 0.3, 0.2, 0.1, 0.4 });
+      }
+      tPrev = ts[k];
+    }
+    const auto r = hov::IntegrateWithSurfaces(tfE, s1, tfC, s2, length, crossings.data(),
+      static_cast<int>(crossings.size()),
+      [](void* u, const hov::IsovalueCrossing& c) { return (*static_cast<ConstantShade*>(u))(c); }, &shade,
+      Settings(model));
+    const double scale = model == hov::EmissionModel::WilliamsMax ? 1.0
+                                                                  : std::max(1.0, length * tfC.GetEmissionFactor());
+    const double err = hovtest::MaxAbsDiff(r.Color, expect, scale);
+    worst.Add(err, Describe(s3, length));
+    EXPECT_LE(err, ReferenceTol) << "trial " << trial;
+    surfaces += r.Surfaces;
+  }
+  EXPECT_GT(surfaces, 8);
+  hovtest::ReportMeasured("IsosurfaceSegment.ThreeFieldsReference", worst);
+}
+
 /// Constant extinction tau and colour c, s = t: one surface S at t*, seen
 /// through the volume in front: C = c(1 - e^{-tau t*}) + e^{-tau t*}
 /// (S + (1 - S.A) c (1 - e^{-tau (L - t*)})).
