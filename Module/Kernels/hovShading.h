@@ -51,7 +51,11 @@
  * we keep the documented invariant. Each channel is clamped to [0, 1] as the
  * GPU shader does (ClampColor, default true).
  *
- * Accuracy: a few ulp per operation (direct formulas); pow for the highlight.
+ * Accuracy: direct formulas, a few ulp per operation. Measured (TestShading):
+ * EdgeOnOpacity vs a 50-digit 1 - (1 - a)^(1/c): 2.7e-16 relative;
+ * ShadePhong vs a long double transcription of the formula above with 1-3
+ * random directional/positional/spot lights: 3.8e-15 absolute (powers up to
+ * 100 amplify the rounding of n.h); rotation invariance 3.3e-16.
  * Thread safety: stateless, re-entrant.
  * @sa hovIsosurface.h (the hit's premultiplied RGBA)
  */
