@@ -54,6 +54,7 @@
 
 class vtkCamera;
 class vtkDataArray;
+class vtkDoubleArray;
 class vtkHighOrderTransferFunction;
 class vtkImageData;
 class vtkVisibilitySort;
@@ -195,6 +196,25 @@ public:
   vtkBooleanMacro(UseDepthBuffer, bool);
   ///@}
 
+  ///@{
+  /**
+   * View-depth clipping (HIAC z-clipping; off by default): only the part of
+   * the volume whose view depth lies in ViewDepthRange [near, far] is
+   * rendered, i.e. the slab between two planes parallel to the screen. View
+   * depth is the distance from the camera position along the direction of
+   * projection, in world units (the units of vtkCamera::SetClippingRange),
+   * for perspective and parallel projections alike. Applied per pixel on the
+   * ray, like the clipping planes (SetClippingPlanes/AddClippingPlane, world
+   * coordinates; the half-space the plane normal points into is kept, as in
+   * VTK's mappers).
+   */
+  vtkSetMacro(ViewDepthClipping, bool);
+  vtkGetMacro(ViewDepthClipping, bool);
+  vtkBooleanMacro(ViewDepthClipping, bool);
+  vtkSetVector2Macro(ViewDepthRange, double);
+  vtkGetVector2Macro(ViewDepthRange, double);
+  ///@}
+
   /**
    * Compute the float image for @p camera and @p volume at @p width x
    * @p height pixels without any OpenGL (the projection aspect is
@@ -205,6 +225,13 @@ public:
 
   /// The last image: float premultiplied RGBA (array "RGBA"), row 0 at the bottom.
   vtkImageData* GetFloatImage();
+
+  /**
+   * The last image in the double precision it is computed in (4 components,
+   * width x height tuples, the layout of GetFloatImage()), copied into
+   * @p rgba: for accuracy checks finer than float resolution.
+   */
+  void GetDoubleImage(vtkDoubleArray* rgba);
 
   ///@{
   /// Diagnostics of the last render.
@@ -237,6 +264,8 @@ protected:
   int VectorComponent = 0;
   double TerminationTransmittance = 1e-9;
   bool UseDepthBuffer = true;
+  bool ViewDepthClipping = false;
+  double ViewDepthRange[2] = { 0.0, 1.0 };
   int TileSize = 16;
   vtkVisibilitySort* VisibilitySort = nullptr;
 

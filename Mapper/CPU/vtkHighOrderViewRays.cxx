@@ -3,7 +3,8 @@
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 
-#include <cmath> // std::isfinite
+#include <algorithm> // std::min, std::max
+#include <cmath>     // std::isfinite
 
 namespace
 {
@@ -88,4 +89,27 @@ bool vtkHighOrderViewRays::Project(const glm::dvec3& p, double& xWindow, double&
   xWindow = (c.x / c.w + 1.0) * 0.5 * this->Width;
   yWindow = (c.y / c.w + 1.0) * 0.5 * this->Height;
   return std::isfinite(xWindow) && std::isfinite(yWindow);
+}
+
+void vtkHighOrderViewRays::ClipRange(const Ray& ray, double& tMin, double& tMax) const
+{
+  for (const glm::dvec4& plane : this->ClipPlanes)
+  {
+    const glm::dvec3 normal(plane);
+    // Kept where value(t) = num + t slope >= 0.
+    const double num = glm::dot(normal, ray.Origin) + plane.w;
+    const double slope = glm::dot(normal, ray.Direction);
+    if (slope > 0.0)
+    {
+      tMin = std::max(tMin, -num / slope);
+    }
+    else if (slope < 0.0)
+    {
+      tMax = std::min(tMax, -num / slope);
+    }
+    else if (num < 0.0)
+    {
+      tMax = tMin; // parallel and outside
+    }
+  }
 }
