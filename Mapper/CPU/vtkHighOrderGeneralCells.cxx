@@ -18,10 +18,15 @@ enum Status : unsigned char
   Degenerate
 };
 
-/// Sign of det J at the centre of VTK's reference cell of @p shape (nodes
-/// at their parametric coordinates): what a valid, non-inverted cell has.
+/// Sign of det J at the centre for a valid, non-inverted cell of @p shape in
+/// VTK's convention (the one vtkCellValidator checks): that of VTK's
+/// reference cell (nodes at their parametric coordinates), except for wedges.
+/// VTK's wedge has its (0,1,2) face normal pointing away from (3,4,5) (vtkWedge
+/// doc; real meshes in VTK order, e.g. zoo_mixed_ccx.vtu), the opposite of
+/// the orientation of its own parametric map.
 double ReferenceOrientation(hov::CellShape shape)
 {
+  const double wedge = hov::GeometryShape(shape) == hov::CellShape::Wedge ? -1.0 : 1.0;
   const int n = hov::CellNodeCount(shape);
   std::vector<double> nodes(3 * static_cast<size_t>(n));
   for (int i = 0; i < n; ++i)
@@ -33,7 +38,7 @@ double ReferenceOrientation(hov::CellShape shape)
   hov::EvaluateGeometry(shape, nodes.data(), pc, x, jac);
   const double det = jac[0] * (jac[4] * jac[8] - jac[5] * jac[7]) -
     jac[1] * (jac[3] * jac[8] - jac[5] * jac[6]) + jac[2] * (jac[3] * jac[7] - jac[4] * jac[6]);
-  return det < 0.0 ? -1.0 : 1.0;
+  return det < 0.0 ? -wedge : wedge;
 }
 
 double Det3(const double j[9])

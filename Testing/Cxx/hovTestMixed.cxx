@@ -88,7 +88,8 @@ void AddCube(MeshBuilder& m, const std::array<vtkIdType, 8>& c, CubeSplit split,
         {
           ids.push_back(c[v]);
         }
-        if (Det(m, ids[0], ids[1], ids[2], ids[3]) < 0.0)
+        // VTK's wedge: the (0,1,2) normal points away from (3,4,5).
+        if (Det(m, ids[0], ids[1], ids[2], ids[3]) > 0.0)
         {
           std::swap(ids[1], ids[2]);
           std::swap(ids[4], ids[5]);
