@@ -27,9 +27,11 @@
  * determinant at a corner (the pyramid apex excepted, where it always
  * vanishes) has the opposite sign to the centre's beyond that tolerance (a
  * tangled cell, which no ray interval test can render faithfully). Cells
- * whose centre determinant has the opposite sign of VTK's reference cell are
- * inverted (mirrored node order): rendered (the ray and restriction kernels
- * do not depend on orientation) and counted.
+ * whose centre determinant has the opposite sign of a valid cell in VTK's
+ * convention (the one vtkCellValidator checks: that of VTK's reference cell,
+ * except the wedge, whose (0,1,2) normal points away from (3,4,5), opposite
+ * to its parametric map) are inverted (mirrored node order): rendered (the
+ * ray and restriction kernels do not depend on orientation) and counted.
  *
  * Thread safety: Build() runs in parallel internally (vtkSMPTools) and is not
  * re-entrant; the built arrays are read-only afterwards.
