@@ -13,13 +13,15 @@
 //    tetrahedra with curved boundary cells): rendered straight-edged with the
 //    quadratic field; the curved-geometry warning (count and max deviation)
 //    is captured; no NaN.
-// Frame times are printed for information (not checked).
+// Both: the image is bit-identical for 1 and 3 threads (zoo). Frame times are
+// printed for information (not checked).
 #include "hovTestAnalytic.h"
 #include "hovTestMixed.h"
 #include "hovTestScenes.h"
 
 #include "vtkCamera.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
@@ -141,6 +143,25 @@ int TestMixedDatasets(int argc, char* argv[])
     ck.Check(overlapPixels <= static_cast<size_t>(std::max<vtkIdType>(witness[1], 0)) * 9 + 0,
       "zoo: the orders differ only at pixels where cells overlap (<= 9 x per-pixel witness)");
     ck.Check(d.Max < 0.5, "zoo: even there the difference is bounded (< 0.5)");
+
+    // Threads: 1 and 3 STDThread threads give the bit-identical double image.
+    for (int order : orders)
+    {
+      scene.Mapper->SetCellOrdering(order);
+      Image byThreads[2];
+      const int counts[2] = { 1, 3 };
+      for (int t = 0; t < 2; ++t)
+      {
+        vtkSMPTools::LocalScope(vtkSMPTools::Config{ counts[t], "STDThread", false }, [&]() {
+          byThreads[t] = RenderDouble(scene.Mapper, cam, scene.Volume, 120, 96);
+        });
+      }
+      const bool same = byThreads[0].W == 120 && byThreads[0].V == byThreads[1].V &&
+        CheckImage(byThreads[0]).Covered > 1000;
+      std::cout << "== zoo, " << (order ? "PER_PIXEL_SORT" : "VISIBILITY_SORT")
+                << ", 1 vs 3 threads: " << (same ? "bit-identical" : "DIFFERENT") << "\n";
+      ck.Check(same, "zoo: the image is bit-identical for 1 and 3 threads");
+    }
   }
 
   // ---- The T-junction of quadratic tetrahedra.
