@@ -17,7 +17,6 @@
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -33,47 +32,7 @@
 
 vtkStandardNewMacro(vtkHighOrderVolumeMapper);
 
-namespace
-{
-/// The mapper's clipping planes and view-depth slab as half-spaces
-/// a.x + d >= 0 in dataset coordinates (world planes transformed like
-/// vtkAbstractMapper3D::GetClippingPlaneInDataCoords).
-std::vector<glm::dvec4> ClipPlanes(
-  vtkHighOrderVolumeMapper* mapper, vtkCamera* camera, vtkMatrix4x4* matrix)
-{
-  std::vector<glm::dvec4> planes;
-  for (int i = 0; i < mapper->GetNumberOfClippingPlanes(); ++i)
-  {
-    double h[4];
-    mapper->GetClippingPlaneInDataCoords(matrix, i, h);
-    planes.emplace_back(h[0], h[1], h[2], h[3]);
-  }
-  if (mapper->GetViewDepthClipping())
-  {
-    const double* range = mapper->GetViewDepthRange();
-    double eye[3], dop[3];
-    camera->GetPosition(eye);
-    camera->GetDirectionOfProjection(dop);
-    const double depthOfEye = vtkMath::Dot(dop, eye);
-    // Near: dop.x - (dop.eye + near) >= 0; far: -dop.x + (dop.eye + far) >= 0.
-    const double world[2][4] = { { dop[0], dop[1], dop[2], -(depthOfEye + range[0]) },
-      { -dop[0], -dop[1], -dop[2], depthOfEye + range[1] } };
-    for (const double* w : world)
-    {
-      double h[4] = { 0.0, 0.0, 0.0, 0.0 };
-      for (int c = 0; c < 4; ++c)
-      {
-        for (int r = 0; r < 4; ++r)
-        {
-          h[c] += w[r] * matrix->GetElement(r, c);
-        }
-      }
-      planes.emplace_back(h[0], h[1], h[2], h[3]);
-    }
-  }
-  return planes;
-}
-}
+
 vtkCxxSetObjectMacro(vtkHighOrderVolumeMapper, VisibilitySort, vtkVisibilitySort);
 
 struct vtkHighOrderVolumeMapper::Internals
@@ -399,7 +358,8 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   }
   if (render)
   {
-    rays.SetClipPlanes(ClipPlanes(this, camera, volume->GetMatrix()));
+    rays.SetupClipping(this, camera, volume->GetMatrix(),
+      this->ViewDepthClipping ? this->ViewDepthRange : nullptr);
   }
   render = render && this->PrepareOrder(camera, volume);
   if (!render)

@@ -29,6 +29,7 @@
 
 #include <vector> // clip planes
 
+class vtkAbstractMapper3D;
 class vtkCamera;
 class vtkMatrix4x4;
 
@@ -87,6 +88,17 @@ public:
    * a x + b y + c z + d >= 0. Empty: no clipping. Call after Setup().
    */
   void SetClipPlanes(const std::vector<glm::dvec4>& planes) { this->ClipPlanes = planes; }
+
+  /**
+   * SetClipPlanes() from @p mapper's clipping planes (world coordinates, the
+   * normal's side kept) and, if @p viewDepthRange is given, the slab of view
+   * depths [near, far] (world distance from @p camera's position along its
+   * direction of projection), both transformed to dataset coordinates with
+   * the volume matrix @p volumeMatrix as
+   * vtkAbstractMapper3D::GetClippingPlaneInDataCoords does.
+   */
+  void SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera, vtkMatrix4x4* volumeMatrix,
+    const double* viewDepthRange);
   bool HasClipping() const { return !this->ClipPlanes.empty(); }
 
   /**

@@ -26,7 +26,7 @@ using namespace hovTest;
 
 namespace
 {
-constexpr int W = 72, H = 60;
+constexpr int W = 48, H = 40;
 
 double Linear(double x, double y, double z)
 {
