@@ -70,6 +70,50 @@ bool HullRowSpan(const glm::dvec2* corners, int n, double y, double& xMin, doubl
   }
   return xMin <= xMax;
 }
+
+/**
+ * hov::RestrictCellScalar's exact affine path with the cell's inverse
+ * Jacobian precomputed (vtkHighOrderGeneralCells): the parametric point moves
+ * linearly along the ray, pc(t0 + tau) = pc0 + J^-1 (o + t0 d - x0) + tau J^-1 d
+ * (x0, pc0: corner 0), and the shape functions expanded along that line
+ * (hov::CellShapeFunctionsAlongLine) give s as one polynomial in tau, exact
+ * to rounding.
+ */
+void RestrictAffine(const vtkHighOrderGeneralCells::Cell& cell, const double* nodes,
+  const double* scalars, const double o[3], const double d[3], double t0, double t1,
+  std::vector<hov::RestrictedPiece>& out)
+{
+  const double* inv = cell.InverseJacobian;
+  double pc0[3], rel[3], start[3], step[3];
+  hov::CellNodeParametricCoords(cell.Shape, 0, pc0);
+  for (int k = 0; k < 3; ++k)
+  {
+    rel[k] = (o[k] - nodes[k]) + t0 * d[k];
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    start[i] = pc0[i] + (inv[3 * i] * rel[0] + inv[3 * i + 1] * rel[1] + inv[3 * i + 2] * rel[2]);
+    step[i] = inv[3 * i] * d[0] + inv[3 * i + 1] * d[1] + inv[3 * i + 2] * d[2];
+  }
+  hov::Polynomial w[hov::MaxCellNodes];
+  hov::CellShapeFunctionsAlongLine(cell.Shape, start, step, w);
+  out.resize(1);
+  hov::RestrictedPiece& piece = out[0];
+  piece.T0 = t0;
+  piece.T1 = t1;
+  piece.S = hov::Polynomial();
+  int degree = 0;
+  for (int i = 0; i < cell.NodeCount; ++i)
+  {
+    for (int k = 0; k <= w[i].Degree; ++k)
+    {
+      piece.S.C[k] += scalars[i] * w[i].C[k];
+    }
+    degree = std::max(degree, w[i].Degree);
+  }
+  piece.S.Degree = degree;
+  piece.S.Degree = hov::EffectiveDegree(piece.S);
+}
 }
 
 std::array<int, 4> vtkHighOrderGeneralCellTile::PixelBox(
@@ -146,8 +190,8 @@ const std::vector<vtkHighOrderGeneralCellTile::Hit>& vtkHighOrderGeneralCellTile
       const vtkHighOrderViewRays::Ray& ray = rows.Rays[p];
       const double origin[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
       const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
-      const int n = hov::RayCellIntervals(
-        cell.Shape, nodes, cell.CornerIds, origin, direction, 0.0, rows.TMax[p], found);
+      const int n = hov::RayCellIntervals(cell.Shape, nodes, cell.CornerIds, origin, direction, 0.0,
+        rows.TMax[p], found, cell.PlanarFaces);
       if (n <= 0)
       {
         continue;
@@ -177,8 +221,16 @@ hov::RGBA vtkHighOrderGeneralCellTile::Integrate(const FrameData& frame, int g,
   }
   const double origin[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
   const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
-  hov::RestrictCellScalar(cell.Shape, cells.GetNodes(cell), cells.GetScalars(cell), origin,
-    direction, t0, t1, frame.Restriction, this->Pieces);
+  if (cell.Affine)
+  {
+    RestrictAffine(cell, cells.GetNodes(cell), cells.GetScalars(cell), origin, direction, t0, t1,
+      this->Pieces);
+  }
+  else
+  {
+    hov::RestrictCellScalar(cell.Shape, cells.GetNodes(cell), cells.GetScalars(cell), origin,
+      direction, t0, t1, frame.Restriction, this->Pieces);
+  }
   const double tol =
     NegligibleRelative * std::max(std::abs(cell.ScalarMin), std::abs(cell.ScalarMax));
   for (hov::RestrictedPiece& piece : this->Pieces)

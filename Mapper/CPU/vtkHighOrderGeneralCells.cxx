@@ -1,5 +1,8 @@
 #include "vtkHighOrderGeneralCells.h"
 
+#include "hovCellRestriction.h" // IsGeometryAffine
+#include "hovRayCell.h"         // PlanarFaceMask
+
 #include "vtkIdList.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
@@ -45,6 +48,33 @@ double Det3(const double j[9])
 {
   return j[0] * (j[4] * j[8] - j[5] * j[7]) - j[1] * (j[3] * j[8] - j[5] * j[6]) +
     j[2] * (j[3] * j[7] - j[4] * j[6]);
+}
+
+/// The per-pixel work's view-independent data of a valid cell (class doc).
+void PrepareRays(vtkHighOrderGeneralCells::Cell& cell, const double* nodes)
+{
+  cell.PlanarFaces = hov::PlanarFaceMask(cell.Shape, nodes);
+  cell.Affine = hov::IsGeometryAffine(cell.Shape, nodes);
+  double pc[3], x[3], j[9];
+  hov::CellParametricCenter(cell.Shape, pc);
+  hov::EvaluateGeometry(cell.Shape, nodes, pc, x, j);
+  const double det = Det3(j);
+  if (!(std::abs(det) > 0.0))
+  {
+    cell.Affine = false;
+    return;
+  }
+  // Inverse by cofactors (the Jacobian is well conditioned: not degenerate).
+  double* inv = cell.InverseJacobian;
+  inv[0] = (j[4] * j[8] - j[5] * j[7]) / det;
+  inv[1] = (j[2] * j[7] - j[1] * j[8]) / det;
+  inv[2] = (j[1] * j[5] - j[2] * j[4]) / det;
+  inv[3] = (j[5] * j[6] - j[3] * j[8]) / det;
+  inv[4] = (j[0] * j[8] - j[2] * j[6]) / det;
+  inv[5] = (j[2] * j[3] - j[0] * j[5]) / det;
+  inv[6] = (j[3] * j[7] - j[4] * j[6]) / det;
+  inv[7] = (j[1] * j[6] - j[0] * j[7]) / det;
+  inv[8] = (j[0] * j[4] - j[1] * j[3]) / det;
 }
 
 /// Per-cell result of the geometric checks.
@@ -207,6 +237,10 @@ void vtkHighOrderGeneralCells::Build(vtkUnstructuredGridBase* grid,
       cell.ScalarMax = *std::max_element(s, s + cell.NodeCount);
       checks[k] = CheckGeometry(cell.Shape, x, referenceSign[static_cast<int>(cell.Shape)]);
       status[k] = checks[k].Result;
+      if (status[k] == Ok)
+      {
+        PrepareRays(cell, x);
+      }
     }
   });
   // Compact in the given order; count problems.

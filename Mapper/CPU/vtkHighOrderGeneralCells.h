@@ -33,6 +33,12 @@
  * to its parametric map) are inverted (mirrored node order): rendered (the
  * ray and restriction kernels do not depend on orientation) and counted.
  *
+ * View-independent per-cell data for the per-pixel work: the planarity of
+ * each face (hov::PlanarFaceMask: the exact predicates are not repeated per
+ * ray) and, for affine cells (hov::IsGeometryAffine), the inverse Jacobian of
+ * the corner map, so that the parametric line of a ray comes without Newton
+ * iterations (vtkHighOrderGeneralCellTile).
+ *
  * Thread safety: Build() runs in parallel internally (vtkSMPTools) and is not
  * re-entrant; the built arrays are read-only afterwards.
  * @sa vtkHighOrderTetraSetup, vtkHighOrderGeneralCellTile, hovCellShapes.h
@@ -68,6 +74,9 @@ public:
     vtkIdType NodeOffset;        ///< first node in the pools
     std::int64_t CornerIds[8];   ///< global point ids of the corners
     double ScalarMin, ScalarMax; ///< over all nodes
+    unsigned PlanarFaces;        ///< hov::PlanarFaceMask (view-independent)
+    bool Affine;                 ///< hov::IsGeometryAffine: the field is a polynomial along rays
+    double InverseJacobian[9];   ///< affine cells: d(pcoords)/dx, row-major
   };
 
   struct Statistics
