@@ -19,6 +19,8 @@
 //     (two of its corners moved along the box edges: (1,0,0) -> (0.85,0,0),
 //     (1,1,1) -> (1.2,1,1)); the outer boundary stays the box, so the chord
 //     is known although the interface is a bilinear patch.
+//  3. Mesh 1 with the constant as CELL scalars (each general cell one
+//     constant piece per interval).
 // Views: orthographic along -z (shifted off the cell faces), orthographic
 // oblique, perspective oblique; both cell orderings. Every pixel whose ray is
 // farther than 1e-9 from the box's edges must match to 1e-11 (double image),
@@ -29,6 +31,8 @@
 #include "hovTestScenes.h"
 
 #include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 
 #include <cmath>
 #include <iostream>
@@ -103,16 +107,34 @@ int TestMixedChord(int, char*[])
   {
     const char* Name;
     MeshBuilder Mesh;
+    bool CellScalars;
     double Bounds[6];
   };
-  Case cases[2] = { { "all cell types, [0,3]x[0,2]x[0,2]", AllTypesBlock(), { 0, 3, 0, 2, 0, 2 } },
-    { "2 hexahedra sharing a non-planar face", NonPlanarPair(), { 0, 2, 0, 1, 0, 1 } } };
+  Case cases[3] = {
+    { "all cell types, [0,3]x[0,2]x[0,2]", AllTypesBlock(), false, { 0, 3, 0, 2, 0, 2 } },
+    { "all cell types, cell scalars", AllTypesBlock(), true, { 0, 3, 0, 2, 0, 2 } },
+    { "2 hexahedra sharing a non-planar face", NonPlanarPair(), false, { 0, 2, 0, 1, 0, 1 } }
+  };
   const View views[3] = { { "ortho -z", { 0, 0, 1 }, true, 1.7 },
     { "ortho oblique", { 0.5, -0.7, 0.6 }, true, 2.0 },
     { "perspective oblique", { -0.4, -0.8, 0.5 }, false, 40.0 } };
   for (Case& cs : cases)
   {
-    VolumeScene scene(cs.Mesh.Grid());
+    auto grid = cs.Mesh.Grid();
+    if (cs.CellScalars)
+    {
+      // The constant as a cell array (the point scalars "s" are ignored).
+      vtkNew<vtkDoubleArray> c;
+      c->SetName("c");
+      c->SetNumberOfTuples(grid->GetNumberOfCells());
+      c->FillValue(1.0);
+      grid->GetCellData()->SetScalars(c);
+    }
+    VolumeScene scene(grid);
+    if (cs.CellScalars)
+    {
+      scene.Mapper->SetScalarModeToUseCellData();
+    }
     ConstantTF(scene.Tf, Colour, Opacity, Unit);
     scene.Mapper->SetOpacitySemanticsToVTKUnstructured();
     for (const View& v : views)
