@@ -15,9 +15,11 @@
  * [0, tMax]: the inside intervals, sorted and disjoint (up to
  * hov::MaxRayCellIntervals for non-planar faces), with bit-identical
  * shared-face times (corner point ids), so there is no crack and no double
- * counting between neighbouring cells, tetrahedra included when the shared
- * face is a triangle (both compute the crossing exactly; see the projector's
- * witness tolerance).
+ * counting between neighbouring general cells. A triangle shared with a
+ * linear tetrahedron (whose fast path evaluates the same canonical plane in
+ * another operation order) gives times equal to rounding (~1e-16 relative),
+ * which changes the integral at rounding level only (TestMixedChord: 4e-15)
+ * and is absorbed by the witness tolerance.
  *
  * Per interval (Integrate): the scalar along the ray as polynomial pieces
  * (hov::RestrictCellScalar: exact for affine cells, Chebyshev with a bound of
