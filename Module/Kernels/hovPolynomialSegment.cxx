@@ -1,5 +1,6 @@
 #include "hovPolynomialSegment.h"
 
+#include "hovPieceQuadrature.h" // IntegrateSmoothPiece (the quadrature of one piece)
 #include "hovRayIntegrator.h"    // IntegrateLinearScalar (degree <= 1)
 #include "hovTransferFunction.h" // the table walked here
 
@@ -10,170 +11,10 @@ namespace hov
 {
 namespace
 {
-// Gauss-Kronrod 7-15 on [-1, 1] (QUADPACK qk15; a typo would show in the
-// reference tests of TestPolynomialSegment). Nodes +-XGK[i], Kronrod weights
-// WGK[i]; the odd entries XGK[1], XGK[3], XGK[5] and XGK[7] = 0 are the 7
-// Gauss nodes, with Gauss weights WG[0..3].
-constexpr double XGK[8] = { 0.991455371120812639206854697526329,
-  0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
-  0.741531185599394439863864773280788, 0.586087235467691130294144845693013,
-  0.405845151377397166906606412076961, 0.207784955007898467600689403773245, 0.0 };
-constexpr double WGK[8] = { 0.022935322010529224963732008058970,
-  0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
-  0.140653259715525918745189590510238, 0.169004726639267902826583426598550,
-  0.190350578064785409913256402421014, 0.204432940075298892414161999234649,
-  0.209482141084727828012999174891714 };
-constexpr double WG[4] = { 0.129484966168869693270611432679082,
-  0.279705391489276667901467771423780, 0.381830050505118944950369775488975,
-  0.417959183673469387755102040816327 };
-
-// Beyond this optical depth inside a piece e^-D < 1.6e-28: the rest of the
-// piece is not integrated, its bound goes into the error estimate.
-constexpr double DepthCut = 64.0;
-// Initial panels end where D reaches 1, 2, 4, ..., 32 (6 levels).
-constexpr int DepthLevels = 6;
-// Depth rates h tau above this are capped (as DepthCap in hovSegmentIntegral):
-// D stays finite, e^-D is 0 long before.
-constexpr double DepthRateCap = 1e300;
-// Bisection depth limit for one panel (2^-40 of the initial panel).
-constexpr int MaxBisectionDepth = 40;
 // Fields of higher degree have a depth of degree > MaxDegree.
 constexpr int MaxFieldDegree = Polynomial::MaxDegree - 1;
 
-/// One piece in normalised coordinates y in [0,1]: u, u', D, and the weights.
-struct Piece
-{
-  Polynomial U, DU, Depth;
-  double TotalDepth = 0.0;
-  double EndTransmittance = 1.0;
-  bool Emission = false; ///< Wilhelms-Van Gelder (two integrals) or Williams-Max (one)
-};
-
-/// Integrands at y: WM: f0 = u' (e^-D - T(1)); WVG: f0 = (1-u) e^-D, f1 = u e^-D.
-inline void Integrands(const Piece& p, double y, double& f0, double& f1)
-{
-  const double e = std::exp(-Evaluate(p.Depth, y));
-  if (p.Emission)
-  {
-    const double u = std::min(std::max(Evaluate(p.U, y), 0.0), 1.0);
-    f0 = (1.0 - u) * e;
-    f1 = u * e;
-  }
-  else
-  {
-    f0 = Evaluate(p.DU, y) * (e - p.EndTransmittance);
-    f1 = 0.0;
-  }
-}
-
-struct PanelResult
-{
-  double Value[2] = { 0.0, 0.0 };
-  double Error[2] = { 0.0, 0.0 };
-};
-
-/// Gauss-Kronrod 7-15 on [y0, y1].
-PanelResult Kronrod(const Piece& p, double y0, double y1)
-{
-  const double half = 0.5 * (y1 - y0), mid = 0.5 * (y0 + y1);
-  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 };
-  for (int i = 0; i < 8; ++i)
-  {
-    double a0, a1, b0 = 0.0, b1 = 0.0;
-    Integrands(p, mid - half * XGK[i], a0, a1);
-    if (i < 7)
-    {
-      Integrands(p, mid + half * XGK[i], b0, b1);
-    }
-    k[0] += WGK[i] * (a0 + b0);
-    k[1] += WGK[i] * (a1 + b1);
-    if (i % 2 == 1)
-    {
-      g[0] += WG[i / 2] * (a0 + b0);
-      g[1] += WG[i / 2] * (a1 + b1);
-    }
-  }
-  PanelResult r;
-  for (int j = 0; j < 2; ++j)
-  {
-    r.Value[j] = half * k[j];
-    r.Error[j] = std::fabs(half * (k[j] - g[j]));
-  }
-  return r;
-}
-
-struct PieceOutput
-{
-  RGBA Color;
-  double Error = 0.0;
-  int Panels = 0;
-  bool Converged = true;
-};
-
-/**
- * Adaptive quadrature of the piece's integrals over [0,1]. @p factor converts
- * an integral's error into a colour error; @p budget is the colour error
- * allowed per unit of y; @p panelsLeft is decremented.
- */
-void Integrate(const Piece& p, double factor, double budget, int& panelsLeft, double value[2],
-  PieceOutput& out)
-{
-  // Initial panels at depth levels 1, 2, 4, ... (D is non-decreasing).
-  double edges[DepthLevels + 3];
-  int n = 0;
-  edges[n++] = 0.0;
-  double level = 1.0;
-  for (int i = 0; i < DepthLevels && level < p.TotalDepth; ++i, level *= 2.0)
-  {
-    const double y = SolveMonotone(p.Depth, level, 0.0, 1.0);
-    edges[n] = std::max(edges[n - 1], y);
-    ++n;
-  }
-  double end = 1.0;
-  if (p.TotalDepth > DepthCut)
-  {
-    end = std::max(edges[n - 1], SolveMonotone(p.Depth, DepthCut, 0.0, 1.0));
-    // Tail bound: WM |u'|-weighted e^-D integrates to <= e^-64; WVG <= e^-64 (1 - end).
-    out.Error += factor * std::exp(-DepthCut) * (p.Emission ? 2.0 * (1.0 - end) : 1.0);
-  }
-  edges[n++] = end;
-
-  struct Panel
-  {
-    double Y0, Y1;
-    int Depth;
-  };
-  Panel stack[DepthLevels + 3 + MaxBisectionDepth + 2];
-  int top = 0;
-  for (int i = n - 1; i >= 1; --i)
-  {
-    if (edges[i] > edges[i - 1])
-    {
-      stack[top++] = Panel{ edges[i - 1], edges[i], 0 };
-    }
-  }
-  while (top > 0)
-  {
-    const Panel panel = stack[--top];
-    const PanelResult r = Kronrod(p, panel.Y0, panel.Y1);
-    --panelsLeft;
-    ++out.Panels;
-    const double err = factor * (r.Error[0] + r.Error[1]);
-    const double mid = 0.5 * (panel.Y0 + panel.Y1);
-    const bool canSplit = panel.Depth < MaxBisectionDepth && panelsLeft > 1 && mid > panel.Y0 &&
-      mid < panel.Y1;
-    if (err <= budget * (panel.Y1 - panel.Y0) || !canSplit)
-    {
-      out.Converged = out.Converged && (err <= budget * (panel.Y1 - panel.Y0));
-      value[0] += r.Value[0];
-      value[1] += r.Value[1];
-      out.Error += err;
-      continue;
-    }
-    stack[top++] = Panel{ mid, panel.Y1, panel.Depth + 1 };
-    stack[top++] = Panel{ panel.Y0, mid, panel.Depth + 1 };
-  }
-}
+using detail::PieceOutput;
 
 /**
  * Piece [tA, tA + h] of the segment in table interval @p k, where s goes
@@ -185,7 +26,6 @@ PieceOutput IntegratePiece(const TransferFunction& tf, int k, const Polynomial& 
   double h, double sA, double sB, double transmitFront, double budgetPerLength, bool emission,
   int& panelsLeft)
 {
-  PieceOutput out;
   SegmentEnd fA, fB;
   tf.Evaluate(k, sA, emission, fA);
   tf.Evaluate(k, sB, emission, fB);
@@ -194,61 +34,27 @@ PieceOutput IntegratePiece(const TransferFunction& tf, int k, const Polynomial& 
     fA.Color[1] == fB.Color[1] && fA.Color[2] == fB.Color[2];
   if (sameEnds || !std::isfinite(fA.Tau) || !std::isfinite(fB.Tau))
   {
+    PieceOutput out;
     out.Color = IntegrateSegment(h, fA, fB, model, SegmentMethod::Exact);
     return out;
   }
-  Piece p;
-  p.Emission = emission;
+  Polynomial u;
   if (sB != sA)
   {
-    p.U = ComposeAffine(s, tA, h);
-    p.U.C[0] = 0.0; // u(0) = 0 exactly: s(tA) = sA up to the root's rounding
+    u = ComposeAffine(s, tA, h);
+    u.C[0] = 0.0; // u(0) = 0 exactly: s(tA) = sA up to the root's rounding
     const double inv = 1.0 / (sB - sA);
-    for (int i = 1; i <= p.U.Degree; ++i)
+    for (int i = 1; i <= u.Degree; ++i)
     {
-      p.U.C[i] *= inv;
+      u.C[i] *= inv;
     }
   }
   else
   {
-    p.U = Polynomial::FromCoefficients({ 0.0, 1.0 }); // s constant: any monotone u
+    u = Polynomial::FromCoefficients({ 0.0, 1.0 }); // s constant: any monotone u
   }
-  p.DU = Derivative(p.U);
-  Polynomial integralU;
-  Antiderivative(p.U, integralU); // degree <= 9: checked by the caller
-  const double dA = std::min(fA.Tau * h, DepthRateCap), dB = std::min(fB.Tau * h, DepthRateCap);
-  p.Depth = integralU;
-  for (int i = 0; i <= p.Depth.Degree; ++i)
-  {
-    p.Depth.C[i] *= dB - dA;
-  }
-  p.Depth.C[1] += dA;
-  p.Depth.Degree = std::max(p.Depth.Degree, 1);
-  p.TotalDepth = std::max(Evaluate(p.Depth, 1.0), 0.0);
-  p.EndTransmittance = std::exp(-p.TotalDepth);
-  const double alpha = -std::expm1(-p.TotalDepth);
-  out.Color.A = alpha;
-
-  double factor = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    factor = std::max(factor,
-      emission ? h * std::max(std::fabs(fA.Color[c]), std::fabs(fB.Color[c]))
-               : std::fabs(fB.Color[c] - fA.Color[c]));
-  }
-  double w[2] = { 0.0, 0.0 };
-  if (factor > 0.0)
-  {
-    const double budget = transmitFront > 0.0 ? budgetPerLength * h / transmitFront : INFINITY;
-    Integrate(p, factor, budget, panelsLeft, w, out);
-  }
-  double* rgb[3] = { &out.Color.R, &out.Color.G, &out.Color.B };
-  for (int c = 0; c < 3; ++c)
-  {
-    *rgb[c] = emission ? h * (fA.Color[c] * w[0] + fB.Color[c] * w[1])
-                       : fA.Color[c] * alpha + (fB.Color[c] - fA.Color[c]) * w[0];
-  }
-  return out;
+  return detail::IntegrateSmoothPiece(
+    fA, fB, u, u, h, transmitFront, budgetPerLength, emission, panelsLeft);
 }
 
 /// Integrates the monotone runs of s front to back into Accum and Result.
