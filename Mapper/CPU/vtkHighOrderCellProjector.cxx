@@ -72,7 +72,6 @@ Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
   return b;
 }
 
-
 /// Centroid of the corners of general cell @p g (per-pixel mode's depth key).
 glm::dvec3 GeneralCentroid(const vtkHighOrderTetraSetup& setup, vtkIdType g)
 {

@@ -22,7 +22,8 @@
 //  3. Mesh 1 with the constant as CELL scalars (each general cell one
 //     constant piece per interval).
 // Views: orthographic along -z (shifted off the cell faces), orthographic
-// oblique, perspective oblique; both cell orderings. Every pixel whose ray is
+// oblique, perspective oblique, perspective from inside the mesh (cells cut
+// by the near plane and the eye plane); both cell orderings. Every pixel whose ray is
 // farther than 1e-9 from the box's edges must match to 1e-11 (double image),
 // pixels missing the box must be exactly 0; the per-pixel witness must be 0.
 #include "hovTestAnalytic.h"
@@ -96,6 +97,7 @@ struct View
   double Direction[3];
   bool Parallel;
   double AngleOrScale;
+  double Distance; ///< from the box centre (< half the box: the eye is inside)
 };
 }
 
@@ -115,9 +117,10 @@ int TestMixedChord(int, char*[])
     { "all cell types, cell scalars", AllTypesBlock(), true, { 0, 3, 0, 2, 0, 2 } },
     { "2 hexahedra sharing a non-planar face", NonPlanarPair(), false, { 0, 2, 0, 1, 0, 1 } }
   };
-  const View views[3] = { { "ortho -z", { 0, 0, 1 }, true, 1.7 },
-    { "ortho oblique", { 0.5, -0.7, 0.6 }, true, 2.0 },
-    { "perspective oblique", { -0.4, -0.8, 0.5 }, false, 40.0 } };
+  const View views[4] = { { "ortho -z", { 0, 0, 1 }, true, 1.7, 8.0 },
+    { "ortho oblique", { 0.5, -0.7, 0.6 }, true, 2.0, 8.0 },
+    { "perspective oblique", { -0.4, -0.8, 0.5 }, false, 40.0, 8.0 },
+    { "perspective, eye inside the mesh", { -0.4, -0.8, 0.5 }, false, 70.0, 0.3 } };
   for (Case& cs : cases)
   {
     auto grid = cs.Mesh.Grid();
@@ -146,8 +149,8 @@ int TestMixedChord(int, char*[])
       const double focal[3] = { 0.5 * (b[0] + b[1]) + 1.0 / 8192, 0.5 * (b[2] + b[3]) + 1.0 / 4096,
         0.5 * (b[4] + b[5]) };
       const double up[3] = { 0, 1, 0 };
-      PlaceCamera(cam, focal, v.Direction, 8.0, up, v.Parallel, v.AngleOrScale);
-      cam->SetClippingRange(1.0, 20.0);
+      PlaceCamera(cam, focal, v.Direction, v.Distance, up, v.Parallel, v.AngleOrScale);
+      cam->SetClippingRange(v.Distance < 1.0 ? 0.01 : 1.0, 20.0);
       const hovTestRef::CameraSpec spec = hovTestRef::ReadCamera(cam);
       for (int order : { vtkHighOrderVolumeMapper::VISIBILITY_SORT,
              vtkHighOrderVolumeMapper::PER_PIXEL_SORT })
