@@ -11,13 +11,14 @@
 // alpha = 1 - 0.7^(1/|cos|), the others 0 (to 1e-12, away from the square's
 // border by 1e-6), both orderings. The magnitude (component -1) of "v" is
 // never 0.5 inside the cube (>= 5.38): no surface at all. Also: a missing
-// isosurface array is an error.
+// or non-numeric isosurface array is an error.
 #include "hovTestMixed.h"
 #include "hovTestScenes.h"
 
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
 #include "vtkPointData.h"
+#include "vtkStringArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,21 +146,33 @@ int TestFieldsIsoArray(int, char*[])
           " over " + std::to_string(inside) + " pixels");
     }
   }
-  VolumeScene scene(Mesh(false));
-  scene.Tf.Color->AddRGBPoint(0.0, 1, 1, 1);
-  scene.Tf.Opacity->AddPoint(0.0, 0.1);
-  scene.Mapper->SetIsosurfaceArrayName("v");
-  scene.Mapper->AddIsosurface(0.5, 1, 1, 1, Opacity);
-  vtkNew<vtkCamera> cam;
-  cam->SetPosition(0.5, 0.5, 4);
-  cam->SetFocalPoint(0.5, 0.5, 0.5);
-  int status = -1;
-  const Image img = RenderDouble(scene.Mapper, cam, scene.Volume, 16, 16, &status);
-  double sum = 0;
-  for (double x : img.V)
-    sum += std::abs(x);
-  check.Check(scene.Observer->GetError() && sum == 0.0,
-    "missing isosurface array: error '" + Msg(scene.Observer->GetErrorMessage()) +
-      "', image sum " + Fmt(sum));
+  // Bad arrays: missing, non-numeric (a string array of that name): an error, nothing drawn.
+  for (int bad = 0; bad < 2; ++bad)
+  {
+    auto input = Mesh(false);
+    if (bad == 1)
+    {
+      vtkNew<vtkStringArray> names;
+      names->SetName("v");
+      names->SetNumberOfValues(input->GetNumberOfPoints());
+      input->GetPointData()->AddArray(names);
+    }
+    VolumeScene scene(input);
+    scene.Tf.Color->AddRGBPoint(0.0, 1, 1, 1);
+    scene.Tf.Opacity->AddPoint(0.0, 0.1);
+    scene.Mapper->SetIsosurfaceArrayName("v");
+    scene.Mapper->AddIsosurface(0.5, 1, 1, 1, Opacity);
+    vtkNew<vtkCamera> cam;
+    cam->SetPosition(0.5, 0.5, 4);
+    cam->SetFocalPoint(0.5, 0.5, 0.5);
+    int status = -1;
+    const Image img = RenderDouble(scene.Mapper, cam, scene.Volume, 16, 16, &status);
+    double sum = 0;
+    for (double x : img.V)
+      sum += std::abs(x);
+    check.Check(scene.Observer->GetError() && sum == 0.0,
+      std::string(bad == 0 ? "missing" : "non-numeric") + " isosurface array: error '" +
+        Msg(scene.Observer->GetErrorMessage()) + "', image sum " + Fmt(sum));
+  }
   return check.Result();
 }
