@@ -40,6 +40,12 @@
  * every tile its pixel box (or splat footprint) overlaps: the image is
  * bit-identical for any number of threads.
  *
+ * Cost (512^2, 2 cores shared, RenderImage, best of 3): the bracket
+ * (56071 linear tetrahedra) takes 0.11 s on the fast path, 0.28 s here with
+ * no surface (per-segment instead of batched integrals, whole pixel boxes
+ * scanned), 0.47 s with one isosurface; the tjunction (quadratic
+ * tetrahedra, already per pixel) 1.0 s either way, 1.55 s with a colour array.
+ *
  * Thread safety: Render() is not re-entrant.
  * @sa vtkHighOrderFeatureTile, vtkHighOrderFeatureSegment, vtkHighOrderCellProjector
  */
