@@ -52,7 +52,7 @@
  * inside quadratic and trilinear cells, drawn once on shared faces), three
  * fields (SetColorArrayName, SetIsosurfaceArrayName: colour and isosurfaces
  * from other point arrays than the extinction), subpixel splatting of
- * tetrahedra smaller than a pixel (SetSplatting, SetSplatPixelThreshold).
+ * cells smaller than a pixel (SetSplatting, SetSplatPixelThreshold).
  * When one is active every cell goes through vtkHighOrderFeatureProjector
  * (same cells, order, rays and clipping; always the EXACT integration);
  * otherwise the image and speed are those of the plain path, bit for bit.
@@ -318,7 +318,7 @@ public:
 
   ///@{
   /**
-   * Subpixel splatting (HIAC 5.3; off by default): linear tetrahedra whose
+   * Subpixel splatting (HIAC 5.3; off by default): cells (any type) whose
    * projected bounding box is smaller than SplatPixelThreshold pixels^2
    * (default 2) and at most 3 pixels wide and high are splatted: their
    * volume times the extinction and colour at their centroid, divided by the
@@ -326,15 +326,15 @@ public:
    * spread over 3 x 3 pixels by the biquadratic B-spline kernel
    * (hov::SplatCellContribution), composited in the cell's visibility turn
    * (per-pixel ordering: at the centroid's depth along each pixel's ray).
-   * General cells are never splatted; surfaces inside a splatted cell are
-   * not drawn. Bit-identical for any number of threads.
+   * Surfaces inside a splatted cell are not drawn. Bit-identical for any
+   * number of threads.
    */
   vtkSetMacro(Splatting, bool);
   vtkGetMacro(Splatting, bool);
   vtkBooleanMacro(Splatting, bool);
   vtkSetClampMacro(SplatPixelThreshold, double, 0.0, 1e6);
   vtkGetMacro(SplatPixelThreshold, double);
-  /// Tetrahedra splatted in the last render.
+  /// Cells splatted in the last render.
   vtkGetMacro(NumberOfSplattedCells, vtkIdType);
   ///@}
 

@@ -6,6 +6,8 @@
 #include "vtkHighOrderTetraSetup.h"  // the cells
 #include "vtkHighOrderViewRays.h"    // rays, projection
 
+#include "hovCellShapes.h"       // general cells' splat centre and scalars
+#include "hovRayCell.h"          // faces (general cells' volume)
 #include "hovTransferFunction.h" // centroid extinction/colour of splats
 
 #include "vtkSMPThreadLocal.h"
@@ -51,6 +53,58 @@ double PixelCrossSection(const vtkHighOrderViewRays& rays, int i, int j, const g
   const glm::dvec3 p0 = onPlane(r0);
   return glm::length(glm::cross(onPlane(rx) - p0, onPlane(ry) - p0));
 }
+/**
+ * Volume of a straight-edged general cell from its corners: tetrahedra from
+ * corner 0 to the fan triangles of every face not containing it (exact for
+ * convex cells with planar faces; a non-planar quad face counts as its two
+ * triangles through one diagonal, an O(non-planarity) difference).
+ */
+double GeneralCellVolume(hov::CellShape shape, const double* x)
+{
+  double volume = 0.0;
+  const int faces = hov::CellFaceCount(shape);
+  const glm::dvec3 p0(x[0], x[1], x[2]);
+  for (int f = 0; f < faces; ++f)
+  {
+    int c[4];
+    const int n = hov::CellFaceCorners(shape, f, c);
+    if (std::find(c, c + n, 0) != c + n)
+    {
+      continue;
+    }
+    auto at = [&](int k) { return glm::dvec3(x[3 * c[k]], x[3 * c[k] + 1], x[3 * c[k] + 2]) - p0; };
+    for (int k = 1; k + 1 < n; ++k)
+    {
+      volume += std::abs(glm::dot(at(0), glm::cross(at(k), at(k + 1)))) / 6.0;
+    }
+  }
+  return volume;
+}
+
+/// The splat data of general cell @p cell: volume, centre (the parametric
+/// centre's position) and the scalars there.
+void GeneralSplatCell(const vtkHighOrderGeneralCells& cells, const vtkHighOrderGeneralCells::Cell& cell,
+  const std::vector<double>* colorField, glm::dvec3& centre, double& s1, double& s2, double& volume)
+{
+  const double* nodes = cells.GetNodes(cell);
+  double pc[3], x[3];
+  hov::CellParametricCenter(cell.Shape, pc);
+  hov::EvaluateGeometry(cell.Shape, nodes, pc, x, nullptr);
+  centre = glm::dvec3(x[0], x[1], x[2]);
+  s1 = hov::InterpolateCellScalar(cell.Shape, cells.GetScalars(cell), pc);
+  s2 = s1;
+  if (colorField)
+  {
+    double values[hov::MaxCellNodes];
+    const vtkIdType* ids = cells.GetNodeIds(cell);
+    for (int i = 0; i < cell.NodeCount; ++i)
+    {
+      values[i] = (*colorField)[ids[i]];
+    }
+    s2 = hov::InterpolateCellScalar(cell.Shape, values, pc);
+  }
+  volume = GeneralCellVolume(cell.Shape, nodes);
+}
 }
 
 vtkHighOrderFeatureProjector::vtkHighOrderFeatureProjector()
@@ -80,8 +134,23 @@ void vtkHighOrderFeatureProjector::PrepareCells(const vtkHighOrderTetraSetup& se
       if (cell >= numTets)
       {
         bool projectable = true;
-        f.Boxes[k] = vtkHighOrderGeneralCellTile::PixelBox(
-          f.General, static_cast<int>(cell - numTets), width, height, projectable);
+        const int g = static_cast<int>(cell - numTets);
+        f.Boxes[k] = vtkHighOrderGeneralCellTile::PixelBox(f.General, g, width, height, projectable);
+        if (features.Splatting && projectable)
+        {
+          const auto& gc = setup.GetGeneralCells().GetCells()[g];
+          double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+          for (int v = 0; v < hov::CellCornerCount(gc.Shape); ++v)
+          {
+            const glm::dvec2& w = this->Window[gc.CornerIds[v]];
+            x0 = std::min(x0, w.x);
+            x1 = std::max(x1, w.x);
+            y0 = std::min(y0, w.y);
+            y1 = std::max(y1, w.y);
+          }
+          splat[k] = (x1 - x0) * (y1 - y0) < features.SplatPixelThreshold &&
+            std::max(x1 - x0, y1 - y0) <= vtkHighOrderFeatures::SplatMaxSide;
+        }
         continue;
       }
       const auto& tet = tets[cell];
@@ -126,22 +195,36 @@ void vtkHighOrderFeatureProjector::PrepareCells(const vtkHighOrderTetraSetup& se
         continue;
       }
       const vtkIdType cell = (*f.Order)[k];
-      const auto& tet = tets[cell];
-      const glm::dvec3 p0 = points[tet.Points[0]];
-      const glm::dvec3 c = 0.25 * (p0 + points[tet.Points[1]] + points[tet.Points[2]] +
-                                    points[tet.Points[3]]);
       hov::SplatCell sc;
-      sc.Volume = std::abs(glm::dot(points[tet.Points[1]] - p0,
-                    glm::cross(points[tet.Points[2]] - p0, points[tet.Points[3]] - p0))) / 6.0;
-      // HIAC: extinction and colour at the centroid (exact mean of a linear field).
-      const double s1 = tet.RefScalar + glm::dot(tet.Gradient, c - tet.RefPoint);
+      glm::dvec3 c;
+      double s1 = 0.0, s2 = 0.0;
+      if (cell < numTets)
+      {
+        const auto& tet = tets[cell];
+        const glm::dvec3 p0 = points[tet.Points[0]];
+        c = 0.25 * (p0 + points[tet.Points[1]] + points[tet.Points[2]] + points[tet.Points[3]]);
+        sc.Volume = std::abs(glm::dot(points[tet.Points[1]] - p0,
+                      glm::cross(points[tet.Points[2]] - p0, points[tet.Points[3]] - p0))) / 6.0;
+        // HIAC: extinction and colour at the centroid (exact mean of a linear field).
+        s1 = tet.RefScalar + glm::dot(tet.Gradient, c - tet.RefPoint);
+        s2 = s1;
+        if (!this->TetColor.empty())
+        {
+          const auto& field = this->TetColor[cell];
+          s2 = field.RefScalar + glm::dot(field.Gradient, c - tet.RefPoint);
+        }
+      }
+      else
+      {
+        const vtkHighOrderGeneralCells& cells = setup.GetGeneralCells();
+        GeneralSplatCell(cells, cells.GetCells()[cell - numTets], features.ColorField, c, s1, s2,
+          sc.Volume);
+      }
       hov::SegmentEnd end;
       tf.Evaluate(tf.FindIntervalUpward(s1), s1, wvg, end);
       sc.Tau = end.Tau;
-      if (!this->TetColor.empty())
+      if (s2 != s1)
       {
-        const auto& field = this->TetColor[cell];
-        const double s2 = field.RefScalar + glm::dot(field.Gradient, c - tet.RefPoint);
         tf.Evaluate(tf.FindIntervalUpward(s2), s2, wvg, end);
       }
       std::copy(end.Color, end.Color + 3, sc.Color);

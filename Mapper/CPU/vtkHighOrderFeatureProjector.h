@@ -21,19 +21,20 @@
  * order the previous segment of a pixel is the one composited before; per
  * pixel it is the previous one in the pixel's entry-sorted list.
  *
- * Splatting (Features::Splatting, HIAC 5.3): a linear tetrahedron whose
- * projected bounding box has an area below SplatPixelThreshold (pixels^2)
- * and sides of at most SplatMaxSide pixels is not ray-traced: its volume,
- * the extinction and colour of the transfer function at its centroid's
- * scalar(s) and the cross-section of one pixel's ray bundle at its centroid
+ * Splatting (Features::Splatting, HIAC 5.3): a cell whose projected
+ * (corners') bounding box has an area below SplatPixelThreshold (pixels^2)
+ * and sides of at most SplatMaxSide pixels is not ray-traced: its volume
+ * (tetrahedra exact; general cells: tetrahedra from corner 0 to the faces'
+ * fan triangles, exact for planar faces), the extinction and colour of the
+ * transfer function at its centroid's scalar(s) (general cells: at the
+ * parametric centre) and the cross-section of one pixel's ray bundle there
  * (from the neighbouring pixel rays: orthographic and perspective alike,
  * any affine volume matrix) give hov::SplatCellContribution, a 3 x 3
  * biquadratic B-spline footprint composited in the cell's turn (cell order;
  * per pixel it is a fragment at the depth of the centroid along that pixel's
  * ray). A splat is applied where its centroid lies within the pixel's ray
- * range (clipping planes, view-depth slab, opaque geometry). General cells
- * are never splatted. Isosurfaces inside a splatted cell are not drawn (the
- * splat carries the volume only).
+ * range (clipping planes, view-depth slab, opaque geometry). Isosurfaces
+ * inside a splatted cell are not drawn (the splat carries the volume only).
  *
  * Threads: as vtkHighOrderCellProjector, tiles run in parallel and each
  * pixel is composited by one thread in a fixed order; a cell is binned into
@@ -72,7 +73,7 @@ class vtkHighOrderFeatureProjector
 public:
   using Box = std::array<int, 4>; ///< i0, i1, j0, j1 inclusive
 
-  /// A splatted tetrahedron.
+  /// A splatted cell.
   struct Splat
   {
     hov::SplatFootprint Footprint;
@@ -110,7 +111,7 @@ public:
     const hov::TransferFunction& tf, const vtkHighOrderCellProjector::Settings& settings,
     const vtkHighOrderFeatures& features, const float* depth, std::vector<double>& rgba);
 
-  /// Tetrahedra splatted in the last frame.
+  /// Cells splatted in the last frame.
   vtkIdType GetNumberOfSplats() const { return static_cast<vtkIdType>(this->F.Splats.size()); }
 
 private:

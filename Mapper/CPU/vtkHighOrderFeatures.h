@@ -41,7 +41,7 @@ struct vtkHighOrderFeatures
   const std::vector<double>* IsoField = nullptr;
 
   bool Splatting = false;
-  /// Tetrahedra whose projected bounding box is smaller than this (pixels^2)
+  /// Cells whose projected bounding box is smaller than this (pixels^2)
   /// and whose sides are at most SplatMaxSide pixels are splatted.
   double SplatPixelThreshold = 2.0;
   static constexpr double SplatMaxSide = 3.0;

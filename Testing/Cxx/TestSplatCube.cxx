@@ -5,8 +5,8 @@
 // Cube [0,1]^3, field s = x + y + z, colour red -> blue over [0, 3], opacity
 // 0.02 -> 0.06 (VTK_UNSTRUCTURED, u = 1: optically thin, depth <= 0.1; the
 // splats' error relative to the exact image grows with the depth, O(D)).
-// Fine mesh: 32^3 Kuhn-split cubes (196608 tetrahedra); coarse: 1 cube (6
-// tetrahedra). Views of 48 x 48 pixels where the cube spans ~24 pixels (each
+// Fine mesh: 32^3 Kuhn-split cubes (196608 tetrahedra), or 32^3 hexahedra
+// (general cells); coarse: 1 cube (6 tetrahedra). Views of 48 x 48 pixels where the cube spans ~24 pixels (each
 // fine cell's projected box < 1 pixel^2, so every one is splatted):
 // orthographic along a slightly oblique axis and perspective.
 // Checks:
@@ -41,11 +41,27 @@ constexpr int Super = 8; ///< samples per pixel side of the reference image inte
 /// measured 0.03-0.04 on alpha; an unsplatted or misplaced splat differs by more).
 constexpr double BlurBound = 0.08;
 
-MeshBuilder Cube(int n)
+double Field(double x, double y, double z)
+{
+  return x + y + z;
+}
+
+MeshBuilder Cube(int n, bool hexahedra = false)
 {
   MeshBuilder m;
-  const double o[3] = { 0, 0, 0 }, size[3] = { 1, 1, 1 };
-  m.AddTetBlock(n, n, n, o, size, [](double x, double y, double z) { return x + y + z; });
+  if (!hexahedra)
+  {
+    const double o[3] = { 0, 0, 0 }, size[3] = { 1, 1, 1 };
+    m.AddTetBlock(n, n, n, o, size, Field);
+    return m;
+  }
+  const double o[3] = { 0, 0, 0 }, h = 1.0 / n;
+  const double a[3][3] = { { h, 0, 0 }, { 0, h, 0 }, { 0, 0, h } };
+  const std::vector<vtkIdType> ids = AddLattice(m, n, n, n, o, a, Field);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        AddCube(m, LatticeCube(ids, n, n, i, j, k), CubeSplit::Hexahedron, Field);
   return m;
 }
 
@@ -107,12 +123,15 @@ Image RenderCube(vtkUnstructuredGrid* grid, bool perspective, bool splat, int th
 int TestSplatCube(int, char*[])
 {
   Checker check;
-  const auto fine = Cube(Fine).Grid();
   const auto coarse = Cube(1).Grid();
-  const vtkIdType fineCells = fine->GetNumberOfCells();
-  for (bool perspective : { false, true })
+  for (int variant = 0; variant < 3; ++variant)
   {
-    const std::string view = perspective ? "perspective" : "orthographic";
+    // Tetrahedra orthographic and perspective; hexahedra (general cells) perspective.
+    const bool perspective = variant > 0, hexahedra = variant == 2;
+    const auto fine = Cube(Fine, hexahedra).Grid();
+    const vtkIdType fineCells = fine->GetNumberOfCells();
+    const std::string view = std::string(hexahedra ? "hexahedra, " : "tetrahedra, ") +
+      (perspective ? "perspective" : "orthographic");
     const Image exact = RenderCube(coarse, perspective, false, 0);
     const Image off = RenderCube(fine, perspective, false, 0);
     const DiffStats d0 = Diff(exact, off);
@@ -158,6 +177,10 @@ int TestSplatCube(int, char*[])
         " at " + std::to_string(Super) + "x" + std::to_string(Super) + " samples per pixel" +
         ", point-sampled exact image " + Fmt(sumPoint) + ") agree to " + Fmt(rel) +
         " relative; max per-pixel difference to the exact image " + Fmt(worst));
+    if (hexahedra)
+    {
+      continue; // the threads check runs on the tetrahedra
+    }
     const Image one = RenderCube(fine, perspective, true, 1);
     const Image three = RenderCube(fine, perspective, true, 3);
     check.Check(!one.V.empty() && one.V == three.V && one.V == on.V,
