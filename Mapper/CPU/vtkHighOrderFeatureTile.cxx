@@ -1,6 +1,7 @@
 #include "vtkHighOrderFeatureTile.h"
 
-#include "vtkHighOrderTetraSetup.h" // tetrahedra face planes
+#include "vtkHighOrderProjectorTile.h" // BoxMargin
+#include "vtkHighOrderTetraSetup.h"    // tetrahedra face planes
 
 #include "hovCompositing.h" // CompositeBehind
 
@@ -12,6 +13,7 @@ namespace
 {
 using Ray = vtkHighOrderViewRays::Ray;
 using Tetra = vtkHighOrderTetraSetup::Tetra;
+constexpr double BoxMargin = vtkHighOrderProjectorTile::BoxMargin;
 
 /// Exact clip of a ray against a tetrahedron's four canonical face planes:
 /// the arithmetic of the fast path's ClipRay (vtkHighOrderTileGeometry.h),
@@ -49,6 +51,34 @@ bool ClipTetra(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& 
     }
   }
   return tIn < tOut;
+}
+
+/// Window-x span of the convex hull of the 4 projected vertices on the row at
+/// height @p y (the span of the row's crossings with all 6 edges); false if
+/// the row misses it.
+bool HullRowSpan(const glm::dvec2* p, double y, double& xMin, double& xMax)
+{
+  xMin = 1e300;
+  xMax = -1e300;
+  for (int a = 0; a < 4; ++a)
+  {
+    if (p[a].y == y)
+    {
+      xMin = std::min(xMin, p[a].x);
+      xMax = std::max(xMax, p[a].x);
+    }
+    for (int b = a + 1; b < 4; ++b)
+    {
+      if ((p[a].y - y) * (p[b].y - y) >= 0.0)
+      {
+        continue;
+      }
+      const double x = p[a].x + (p[b].x - p[a].x) * ((y - p[a].y) / (p[b].y - p[a].y));
+      xMin = std::min(xMin, x);
+      xMax = std::max(xMax, x);
+    }
+  }
+  return xMin <= xMax;
 }
 }
 
@@ -122,9 +152,29 @@ void vtkHighOrderFeatureTile::ForIntervals(
   const int i1 = std::min(box[1], this->X0 + this->W - 1) - this->X0;
   const int j0 = std::max(box[2], this->Y0) - this->Y0;
   const int j1 = std::min(box[3], this->Y0 + this->H - 1) - this->Y0;
+  glm::dvec2 corners[4];
+  bool projectable = true;
+  for (int v = 0; v < 4; ++v)
+  {
+    corners[v] = frame.General.Window[tet.Points[v]];
+    projectable = projectable && frame.General.Projectable[tet.Points[v]];
+  }
   for (int j = j0; j <= j1; ++j)
   {
-    for (int i = i0; i <= i1; ++i)
+    int r0 = i0, r1 = i1;
+    if (projectable)
+    {
+      // Only the pixel centres in the row's span of the projection (the
+      // exact clip below decides; BoxMargin of slack against round-off).
+      double xMin, xMax;
+      if (!HullRowSpan(corners, this->Y0 + j + 0.5, xMin, xMax))
+      {
+        continue;
+      }
+      r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - this->X0);
+      r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - this->X0);
+    }
+    for (int i = r0; i <= r1; ++i)
     {
       const size_t p = static_cast<size_t>(j) * this->W + i;
       double tIn, tOut;
