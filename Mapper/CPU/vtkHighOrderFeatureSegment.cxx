@@ -170,6 +170,14 @@ void vtkHighOrderFeatureSegment::RestrictGeneral(
     this->RestrictField(frame, g, this->NodeValues[f].data(), ray, t0, t1, this->Restricted[f]);
     source[f] = f;
   }
+  this->Pieces.clear();
+  for (int f = 0; f < 3; ++f)
+  {
+    if (this->Restricted[source[f]].empty())
+    {
+      return; // the restriction failed (invalid input): nothing to integrate
+    }
+  }
   // Common breakpoints of the restrictions in use.
   this->Breaks.clear();
   for (int f = 0; f < 3; ++f)
@@ -185,7 +193,6 @@ void vtkHighOrderFeatureSegment::RestrictGeneral(
   }
   std::sort(this->Breaks.begin(), this->Breaks.end());
   this->Breaks.erase(std::unique(this->Breaks.begin(), this->Breaks.end()), this->Breaks.end());
-  this->Pieces.clear();
   for (size_t b = 0; b + 1 < this->Breaks.size(); ++b)
   {
     Piece piece;
