@@ -1,6 +1,7 @@
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkHighOrderCellProjector.h" // CPU path
+#include "vtkHighOrderFeatureSetup.h"  // isosurfaces, fields, splatting
 #include "vtkHighOrderImageDisplay.h"  // OpenGL blit of the float image
 #include "vtkHighOrderTetraSetup.h"    // per-cell preparation
 #include "vtkHighOrderTransferFunction.h"
@@ -66,6 +67,7 @@ struct vtkHighOrderVolumeMapper::Internals
 
 vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
   : Impl(new Internals)
+  , FeatureImpl(new vtkHighOrderFeatureSetup)
 {
   vtkSteinVisibilitySort* sort = vtkSteinVisibilitySort::New();
   this->SetVisibilitySort(sort);
@@ -75,6 +77,8 @@ vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
 vtkHighOrderVolumeMapper::~vtkHighOrderVolumeMapper()
 {
   this->SetVisibilitySort(nullptr);
+  this->SetColorArrayName(nullptr);
+  this->SetIsosurfaceArrayName(nullptr);
 }
 
 vtkImageData* vtkHighOrderVolumeMapper::GetFloatImage()
@@ -345,11 +349,13 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
 
   const bool ok = this->ValidateInputs(camera, volume, width, height);
+  // Isosurfaces are visible even where the volume does not absorb.
   bool render = ok && impl.Setup.GetNumberOfRenderedCells() > 0 &&
-    this->PrepareTransferFunction(volume->GetProperty());
+    (this->PrepareTransferFunction(volume->GetProperty()) || this->GetNumberOfIsosurfaces() > 0);
   vtkHighOrderViewRays rays;
   if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
   {
@@ -376,8 +382,24 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     // A cyclic order cannot be exact: fall back to the per-pixel order.
     settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT || impl.OrderHasCycles;
     settings.TileSize = this->TileSize;
-    const vtkHighOrderCellProjector::Statistics st = impl.Projector.Render(impl.Setup,
-      impl.FrontToBack, rays, impl.TransferFunction->GetTable(), settings, depth, impl.RGBA);
+    const int features = this->PrepareFeatures(camera, volume);
+    vtkHighOrderCellProjector::Statistics st;
+    if (features > 0) // isosurfaces, separate fields or splatting: the feature path
+    {
+      st = this->FeatureImpl->GetProjector().Render(impl.Setup, impl.FrontToBack, rays,
+        impl.TransferFunction->GetTable(), settings, this->FeatureImpl->GetFeatures(), depth,
+        impl.RGBA);
+      this->NumberOfSplattedCells = this->FeatureImpl->GetProjector().GetNumberOfSplats();
+    }
+    else if (features == 0)
+    {
+      st = impl.Projector.Render(impl.Setup, impl.FrontToBack, rays,
+        impl.TransferFunction->GetTable(), settings, depth, impl.RGBA);
+    }
+    else
+    {
+      impl.RGBA.assign(static_cast<size_t>(width) * height * 4, 0.0);
+    }
     this->WitnessViolations = st.WitnessViolations;
     this->NumberOfSegments = st.Segments;
     this->NumberOfPieces = st.Pieces;
@@ -420,7 +442,9 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   // The same aspect VTK's own mappers and actors use for the projection.
   const double tiledAspect = ren->GetTiledAspectRatio();
+  this->FrameRenderer = ren; // its lights shade the isosurfaces
   this->ComputeImage(ren->GetActiveCamera(), vol, width, height, tiledAspect, depth);
+  this->FrameRenderer = nullptr;
   vtkDataArray* rgba = impl.FloatImage->GetPointData()->GetScalars();
   if (rgba && rgba->GetNumberOfTuples() == static_cast<vtkIdType>(width) * height)
   {
@@ -456,6 +480,14 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ViewDepthClipping: " << this->ViewDepthClipping << " ["
      << this->ViewDepthRange[0] << ", " << this->ViewDepthRange[1] << "]\n";
   os << indent << "VisibilitySort: " << this->VisibilitySort << "\n";
+  os << indent << "Isosurfaces: " << this->GetNumberOfIsosurfaces() << "\n";
+  os << indent << "ColorArrayName: " << (this->ColorArrayName ? this->ColorArrayName : "(none)")
+     << " component " << this->ColorArrayComponent << "\n";
+  os << indent << "IsosurfaceArrayName: "
+     << (this->IsosurfaceArrayName ? this->IsosurfaceArrayName : "(none)") << " component "
+     << this->IsosurfaceArrayComponent << "\n";
+  os << indent << "Splatting: " << this->Splatting << " (threshold " << this->SplatPixelThreshold
+     << " pixels^2)\n";
   os << indent << "WitnessViolations: " << this->WitnessViolations << "\n";
   os << indent << "NumberOfRenderedCells: " << this->NumberOfRenderedCells << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
