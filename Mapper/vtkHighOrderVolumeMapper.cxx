@@ -13,6 +13,7 @@
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
@@ -30,6 +31,8 @@
 #include <vector>    // buffers
 
 vtkStandardNewMacro(vtkHighOrderVolumeMapper);
+
+
 vtkCxxSetObjectMacro(vtkHighOrderVolumeMapper, VisibilitySort, vtkVisibilitySort);
 
 struct vtkHighOrderVolumeMapper::Internals
@@ -77,6 +80,18 @@ vtkHighOrderVolumeMapper::~vtkHighOrderVolumeMapper()
 vtkImageData* vtkHighOrderVolumeMapper::GetFloatImage()
 {
   return this->Impl->FloatImage;
+}
+
+void vtkHighOrderVolumeMapper::GetDoubleImage(vtkDoubleArray* rgba)
+{
+  if (!rgba)
+  {
+    return;
+  }
+  const std::vector<double>& values = this->Impl->RGBA;
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / 4));
+  std::copy(values.begin(), values.end(), rgba->GetPointer(0));
 }
 
 vtkHighOrderTransferFunction* vtkHighOrderVolumeMapper::GetTransferFunction()
@@ -140,22 +155,34 @@ bool vtkHighOrderVolumeMapper::PrepareCells(vtkVolume*)
   {
     vtkWarningMacro("The input grid has no cells: nothing to render.");
   }
-  if (st.NonTetra)
+  if (st.Unsupported)
   {
-    vtkWarningMacro(<< st.NonTetra << " of " << st.Cells
-                    << " cells are not linear tetrahedra (first type: " << st.FirstNonTetraType
-                    << "); the accurate CPU path renders VTK_TETRA only, these cells are skipped.");
+    vtkWarningMacro(<< st.Unsupported << " of " << st.Cells << " cells are of types not yet "
+                    << "supported by the CPU projection path (first type: "
+                    << st.FirstUnsupportedType << "; supported: 10-14, 24-27, 29); they are "
+                    << "skipped.");
   }
   if (st.NonFinitePoints || st.NonFiniteScalars || st.Degenerate)
   {
     vtkWarningMacro(<< "Skipped cells: " << st.NonFinitePoints << " with NaN/Inf points or bad "
                     << "connectivity, " << st.NonFiniteScalars << " with NaN/Inf scalars, "
-                    << st.Degenerate << " degenerate (zero-volume) tetrahedra.");
+                    << st.Degenerate << " degenerate (zero-volume or tangled) cells.");
   }
   if (st.Inverted)
   {
     vtkWarningMacro(<< st.Inverted << " tetrahedra are inverted (negative orientation); they are "
                     << "rendered as the convex hull of their vertices.");
+  }
+  if (st.InvertedGeneral)
+  {
+    vtkWarningMacro(<< st.InvertedGeneral << " non-tetrahedral cells are inverted (mirrored node "
+                    << "order); they are rendered as the region their corners bound.");
+  }
+  if (st.Curved)
+  {
+    vtkWarningMacro(<< st.Curved << " quadratic cells have curved geometry (max node deviation "
+                    << st.MaxCurvature << " of the cell size); they are rendered with straight "
+                    << "edges and their quadratic field (curved geometry needs the ray caster).");
   }
   return true;
 }
@@ -166,7 +193,7 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
   if (this->CellOrdering == PER_PIXEL_SORT)
   {
     // Any order will do: each pixel sorts its own segments.
-    const vtkIdType n = static_cast<vtkIdType>(impl.Setup.GetTetras().size());
+    const vtkIdType n = impl.Setup.GetNumberOfRenderedCells();
     if (impl.OrderGeneration != impl.SetupGeneration || impl.OrderCamera != nullptr ||
       static_cast<vtkIdType>(impl.FrontToBack.size()) != n)
     {
@@ -193,8 +220,8 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
   {
     return true; // same view: reuse the order (also keeps ties deterministic)
   }
-  // The sort sees only the valid tetrahedra (never a cell with broken
-  // connectivity or NaN points), and its ids are tetra indices.
+  // The sort sees only the valid cells (never a cell with broken
+  // connectivity or NaN points), and its ids are rendered-cell indices.
   vtkVisibilitySort* sort = this->VisibilitySort;
   sort->SetInput(impl.Setup.GetSortGrid());
   sort->SetCamera(camera);
@@ -202,16 +229,17 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
   sort->SetDirectionToBackToFront();
   sort->InitTraversal();
   impl.FrontToBack.clear();
-  impl.FrontToBack.reserve(impl.Setup.GetTetras().size());
+  const vtkIdType numRendered = impl.Setup.GetNumberOfRenderedCells();
+  impl.FrontToBack.reserve(numRendered);
   while (vtkIdTypeArray* cells = sort->GetNextCells())
   {
     const vtkIdType n = cells->GetNumberOfTuples();
     for (vtkIdType i = 0; i < n; ++i)
     {
-      const vtkIdType tet = cells->GetValue(i);
-      if (tet >= 0 && tet < static_cast<vtkIdType>(impl.Setup.GetTetras().size()))
+      const vtkIdType cell = cells->GetValue(i);
+      if (cell >= 0 && cell < numRendered)
       {
-        impl.FrontToBack.push_back(tet);
+        impl.FrontToBack.push_back(cell);
       }
     }
   }
@@ -225,10 +253,10 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume
                                                           << " cycle(s); frames with cycles are "
                                                              "composited with PER_PIXEL_SORT.");
   }
-  if (impl.FrontToBack.size() != impl.Setup.GetTetras().size())
+  if (static_cast<vtkIdType>(impl.FrontToBack.size()) != numRendered)
   {
     vtkWarningMacro("The visibility sort returned " << impl.FrontToBack.size() << " of "
-                                                    << impl.Setup.GetTetras().size() << " cells.");
+                                                    << numRendered << " cells.");
   }
   impl.OrderGeneration = impl.SetupGeneration;
   impl.OrderCamera = camera;
@@ -320,13 +348,18 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
 
   const bool ok = this->ValidateInputs(camera, volume, width, height);
-  bool render = ok && !impl.Setup.GetTetras().empty() &&
+  bool render = ok && impl.Setup.GetNumberOfRenderedCells() > 0 &&
     this->PrepareTransferFunction(volume->GetProperty());
   vtkHighOrderViewRays rays;
   if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
   {
     vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
     render = false;
+  }
+  if (render)
+  {
+    rays.SetupClipping(this, camera, volume->GetMatrix(),
+      this->ViewDepthClipping ? this->ViewDepthRange : nullptr);
   }
   render = render && this->PrepareOrder(camera, volume);
   if (!render)
@@ -420,6 +453,8 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "UseDepthBuffer: " << this->UseDepthBuffer << "\n";
   os << indent << "TileSize: " << this->TileSize << "\n";
+  os << indent << "ViewDepthClipping: " << this->ViewDepthClipping << " ["
+     << this->ViewDepthRange[0] << ", " << this->ViewDepthRange[1] << "]\n";
   os << indent << "VisibilitySort: " << this->VisibilitySort << "\n";
   os << indent << "WitnessViolations: " << this->WitnessViolations << "\n";
   os << indent << "NumberOfRenderedCells: " << this->NumberOfRenderedCells << "\n";

@@ -22,6 +22,7 @@ struct vtkHighOrderCellProjector::Buffers
   std::vector<vtkHighOrderProjectorTile::CellRecord> Cells;
   std::vector<std::pair<float, vtkIdType>> DepthOrder; ///< per-pixel mode: (depth, tetra)
   std::vector<vtkIdType> Order;                        ///< per-pixel mode: tetras by depth
+  std::vector<int> GeneralOf; ///< per ordered cell: general cell index, or -1
   vtkHighOrderProjectorTile::Bins TileBins;
   vtkSMPThreadLocal<vtkHighOrderProjectorTile> Tiles;
 };
@@ -71,6 +72,32 @@ Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
   return b;
 }
 
+/// Centroid of the corners of general cell @p g (per-pixel mode's depth key).
+glm::dvec3 GeneralCentroid(const vtkHighOrderTetraSetup& setup, vtkIdType g)
+{
+  const vtkHighOrderGeneralCells& cells = setup.GetGeneralCells();
+  const vtkHighOrderGeneralCells::Cell& cell = cells.GetCells()[g];
+  const double* x = cells.GetNodes(cell);
+  const int n = hov::CellCornerCount(cell.Shape);
+  glm::dvec3 c(0.0);
+  for (int v = 0; v < n; ++v)
+  {
+    c += glm::dvec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+  }
+  return c / static_cast<double>(n);
+}
+
+/// The record of general cell @p g: only its pixel box and projectability
+/// are read by the tile loop (binning, band test); the rest is zero.
+void GeneralRecord(const vtkHighOrderGeneralCellTile::FrameData& general, int g, int width,
+  int height, CellRecord& cell)
+{
+  cell = CellRecord();
+  bool projectable = true;
+  cell.PixelBox = vtkHighOrderGeneralCellTile::PixelBox(general, g, width, height, projectable);
+  cell.Projectable = projectable;
+  cell.Interval = -2;
+}
 }
 
 vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
@@ -89,6 +116,8 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   rgba.resize(static_cast<size_t>(width) * height * 4);
   const auto& tets = setup.GetTetras();
   const auto& points = setup.GetPoints();
+  const vtkIdType numTets = static_cast<vtkIdType>(tets.size());
+  const bool hasGeneral = !setup.GetGeneralCells().GetCells().empty();
 
   // Per-frame arrays live across frames: no allocation, no page faults.
   if (!this->Scratch)
@@ -123,9 +152,12 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
     vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
       for (vtkIdType k = b; k < e; ++k)
       {
-        const Tetra& tet = tets[frontToBack[k]];
-        const glm::dvec3 c = 0.25 * (points[tet.Points[0]] + points[tet.Points[1]] +
-                                points[tet.Points[2]] + points[tet.Points[3]]);
+        const vtkIdType id = frontToBack[k];
+        const glm::dvec3 c = id < numTets ? 0.25 * (points[tets[id].Points[0]] +
+                                                     points[tets[id].Points[1]] +
+                                                     points[tets[id].Points[2]] +
+                                                     points[tets[id].Points[3]])
+                                          : GeneralCentroid(setup, id - numTets);
         buf.DepthOrder[k] = { static_cast<float>(glm::dot(c - centre.Origin, centre.Direction)),
           frontToBack[k] };
       }
@@ -145,11 +177,29 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   const size_t numCells = order->size();
   std::vector<CellRecord>& records = buf.Cells;
   records.resize(numCells);
+  // The general cells' frame data (their records only carry the pixel box).
+  vtkHighOrderGeneralCellTile::FrameData general;
+  general.Cells = &setup.GetGeneralCells();
+  general.GeneralOf = &buf.GeneralOf;
+  general.Window = window.data();
+  general.Projectable = projectable.data();
+  general.TF = &tf;
+  general.Segment.Emission = settings.Integration.Emission;
+  buf.GeneralOf.resize(hasGeneral ? numCells : 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType k = b; k < e; ++k)
     {
+      if (hasGeneral)
+      {
+        buf.GeneralOf[k] = (*order)[k] < numTets ? -1 : static_cast<int>((*order)[k] - numTets);
+        if (buf.GeneralOf[k] >= 0)
+        {
+          GeneralRecord(general, buf.GeneralOf[k], width, height, records[k]);
+          continue;
+        }
+      }
       // The order scatters the tetrahedra in memory: fetch a few ahead.
-      if (k + RecordPrefetch < e)
+      if (k + RecordPrefetch < e && (*order)[k + RecordPrefetch] < numTets)
       {
         const char* ahead = reinterpret_cast<const char*>(&tets[(*order)[k + RecordPrefetch]]);
         for (size_t offset = 0; offset < sizeof(Tetra); offset += 64)
@@ -194,6 +244,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   frame.WitnessTol = WitnessRelativeTolerance * rays.GetDepthScale();
   frame.PerturbX = rays.GetPerturbX();
   frame.PerturbY = rays.GetPerturbY();
+  frame.General = hasGeneral ? &general : nullptr;
   std::vector<Statistics> tileStats(numTiles);
   // One tile object per thread, kept across tiles and frames so that its
   // buffers keep their capacity (the result does not depend on which thread

@@ -1,7 +1,7 @@
 /**
  * @class   vtkHighOrderCellProjector
  * @brief   HIAC cell projection on the CPU: exact per-pixel ray segments through
- *          linear tetrahedra, composited in visibility order.
+ *          linear tetrahedra and general cells, composited in visibility order.
  *
  * HIAC section 5.1 (Williams, Max & Stein 1998): cells are taken in visibility
  * order; each is scan converted; for every pixel centre it covers, the exact
@@ -28,6 +28,17 @@
  * so the tile loop reads memory in order; segments are integrated in batches
  * (hov::SegmentBatch, bit-identical to the scalar kernels); per-frame arrays
  * are kept across frames. None of this changes a bit of the image.
+ *
+ * General cells (hexahedra, wedges, pyramids, voxels, quadratic cells:
+ * vtkHighOrderGeneralCells) take their place in the same order; their pixel
+ * box comes from their projected corners and their per-pixel work (exact
+ * intervals, polynomial restriction, accurate integral) is done by
+ * vtkHighOrderGeneralCellTile. With none in the input, the tetrahedra's loop
+ * is exactly what it was (Frame::General is null).
+ *
+ * Clipping (vtkHighOrderViewRays::SetClipPlanes): each pixel ray starts at its
+ * clipped entry (the ray origin moves there) and stops at its clipped exit;
+ * without clip planes nothing changes.
  *
  * HIAC's z-buffer witness: a pixel counts as a violation if a cell composited
  * later enters the ray in front of the farthest exit composited so far there
@@ -83,8 +94,8 @@ public:
   };
 
   /**
-   * Render the tetrahedra listed in @p frontToBack (indices into
-   * setup.GetTetras()) into @p rgba (premultiplied, 4 doubles per pixel,
+   * Render the cells listed in @p frontToBack (rendered-cell indices of
+   * @p setup: tetrahedra, then general cells) into @p rgba (premultiplied, 4 doubles per pixel,
    * width*height pixels, row j = 0 at the bottom). @p depth, if not null,
    * holds one OpenGL window depth per pixel of opaque geometry already drawn
    * (the segment is clipped there); 1 means nothing.

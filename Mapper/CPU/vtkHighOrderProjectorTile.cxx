@@ -2,8 +2,6 @@
 
 #include "vtkHighOrderTileGeometry.h" // ray clipping, row spans
 
-#include "hovCompositing.h" // CompositeBehind
-
 #include "vtkSMPTools.h" // parallel binning
 
 #include <algorithm> // std::min, std::max
@@ -171,6 +169,14 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
       {
         tMax = std::min(tMax, rays.DepthToT(pi, pj, this->Rays[p], z));
       }
+      if (rays.HasClipping())
+      {
+        // The ray starts where clipping lets it (same segments, shifted t).
+        double tMin = 0.0;
+        rays.ClipRange(this->Rays[p], tMin, tMax);
+        this->Rays[p].Origin += tMin * this->Rays[p].Direction;
+        tMax = tMax > tMin ? tMax - tMin : 0.0;
+      }
       this->TMax[p] = tMax;
     }
   }
@@ -191,24 +197,6 @@ void vtkHighOrderProjectorTile::Write(
       out[3] = this->Accum[p].A;
       st.WitnessViolations += this->Violated[p];
     }
-  }
-}
-
-inline void vtkHighOrderProjectorTile::Witness(const Frame& frame, size_t p, double tIn, double tOut)
-{
-  if (tIn < this->MaxExit[p] - frame.WitnessTol)
-  {
-    this->Violated[p] = 1;
-  }
-  this->MaxExit[p] = std::max(this->MaxExit[p], tOut);
-}
-
-inline void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
-{
-  hov::CompositeBehind(this->Accum[p], seg);
-  if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance)
-  {
-    this->Done[p] = 1;
   }
 }
 
@@ -342,6 +330,12 @@ void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkI
       PrefetchCell(frame, cells[c + PrefetchDistance]);
     }
     const vtkIdType k = cells[c];
+    if (IsGeneral(frame, k))
+    {
+      this->Flush(frame, st); // the tetra segments queued so far come first
+      this->RenderGeneralCell(frame, k, st);
+      continue;
+    }
     const int interval = (*frame.Cells)[k].Interval;
     this->ForCellSegments(frame, k, true,
       [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
@@ -391,6 +385,11 @@ void vtkHighOrderProjectorTile::CollectFragments(
     if (records[k].PixelBox[3] < y0 || records[k].PixelBox[2] > y1)
     {
       continue; // not in this band
+    }
+    if (IsGeneral(frame, k))
+    {
+      this->CollectGeneralFragments(frame, k);
+      continue;
     }
     this->ForCellSegments(frame, k, false,
       [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
@@ -444,6 +443,12 @@ void vtkHighOrderProjectorTile::CompositeFragments(
     InsertionSort(begin, end);
     for (const Fragment* f = begin; f != end; ++f)
     {
+      if (IsGeneral(frame, f->Order))
+      {
+        this->Flush(frame, st); // keep the pixel's order
+        this->CompositeGeneralInterval(frame, first + p, f->TIn, f->TOut, f->Order, st);
+        continue;
+      }
       this->Queue(first + p, f->TIn, f->TOut, f->SIn, f->SOut, records[f->Order].Interval);
     }
     if (this->NumQueued >= BatchSize)

@@ -20,6 +20,13 @@
  * integrated in one batch and composited pixel by pixel in that order,
  * stopping where the pixel becomes opaque.
  *
+ * General cells (hexahedra, wedges, ..., quadratic cells: Frame::General,
+ * vtkHighOrderGeneralCellTile, in vtkHighOrderProjectorTileGeneral.cxx) take
+ * their turn in the same order: in cell order the queued tetra segments are
+ * flushed, then each covered pixel composites the cell's intervals (first
+ * entry and last exit for the witness); per pixel, every interval is a
+ * fragment sorted with the others.
+ *
  * Both give bit for bit the image of integrating and compositing one segment
  * at a time (SegmentBatch is bit-identical to the scalar kernels), for any
  * number of threads.
@@ -30,11 +37,15 @@
 #ifndef vtkHighOrderProjectorTile_h
 #define vtkHighOrderProjectorTile_h
 
-#include "vtkHighOrderCellProjector.h" // Settings, Statistics
-#include "vtkHighOrderViewRays.h"      // Ray
+#include "vtkHighOrderCellProjector.h"   // Settings, Statistics
+#include "vtkHighOrderGeneralCellTile.h" // non-tetrahedral cells
+#include "vtkHighOrderViewRays.h"        // Ray
 
 #include "hovSegmentBatch.h" // batched integrals
 
+#include "hovCompositing.h" // CompositeBehind
+
+#include <algorithm> // std::max
 #include <array>  // pixel boxes
 #include <vector> // buffers
 
@@ -83,6 +94,8 @@ public:
     const float* Depth;
     double WitnessTol;
     glm::dvec3 PerturbX, PerturbY;
+    /// The general cells, or null if there are none (tetrahedra only).
+    const vtkHighOrderGeneralCellTile::FrameData* General = nullptr;
   };
 
   /// Pixel centres inside the projection are those within BoxMargin pixels
@@ -115,6 +128,24 @@ private:
   /// Composite a segment's RGBA behind pixel p; marks it done when opaque.
   void Composite(const Frame& frame, size_t p, const hov::RGBA& seg);
   void Write(std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const;
+  /// True if ordered cell k is a general cell.
+  static bool IsGeneral(const Frame& frame, vtkIdType k)
+  {
+    return frame.General && (*frame.General->GeneralOf)[k] >= 0;
+  }
+  /// Cell order: composite general cell k into every covered, unfinished pixel.
+  void RenderGeneralCell(const Frame& frame, vtkIdType k, vtkHighOrderCellProjector::Statistics& st);
+  /// Per-pixel order: one fragment per ray interval of general cell k.
+  void CollectGeneralFragments(const Frame& frame, vtkIdType k);
+  /// Per-pixel order: integrate and composite a general cell's interval at pixel p.
+  void CompositeGeneralInterval(const Frame& frame, size_t p, double tIn, double tOut,
+    vtkIdType k, vtkHighOrderCellProjector::Statistics& st);
+  /// The tile's rows [RowBegin, RowEnd) for the general-cell scan conversion.
+  vtkHighOrderGeneralCellTile::TileRows Rows() const
+  {
+    return { this->X0, this->Y0, this->W, this->RowBegin, this->RowEnd, this->Rays.data(),
+      this->TMax.data() };
+  }
 
   /// A ray-cell segment waiting for its turn (per-pixel ordering).
   struct Fragment
@@ -158,6 +189,25 @@ private:
   std::vector<hov::RGBA> Results;
   std::vector<int> Pieces;
   hov::SegmentBatch Batch;
+  vtkHighOrderGeneralCellTile General; ///< scratch of the general-cell path
 };
+
+inline void vtkHighOrderProjectorTile::Witness(const Frame& frame, size_t p, double tIn, double tOut)
+{
+  if (tIn < this->MaxExit[p] - frame.WitnessTol)
+  {
+    this->Violated[p] = 1;
+  }
+  this->MaxExit[p] = std::max(this->MaxExit[p], tOut);
+}
+
+inline void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
+{
+  hov::CompositeBehind(this->Accum[p], seg);
+  if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance)
+  {
+    this->Done[p] = 1;
+  }
+}
 
 #endif

@@ -1,5 +1,7 @@
 #include "vtkHighOrderTetraSetup.h"
 
+#include "hovCellShapes.h" // IsSupportedCellType
+
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
@@ -21,7 +23,8 @@ constexpr double DegenerateRelativeVolume = 1e-12;
 enum Status : unsigned char
 {
   Ok = 0,
-  NotTetra,
+  NotTetra,   // another supported type: vtkHighOrderGeneralCells
+  Unsupported,
   BadPoint,
   BadScalar,
   Degenerate
@@ -56,6 +59,7 @@ bool vtkHighOrderTetraSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* 
   this->Tetras.clear();
   this->Points.clear();
   this->CellToTetra.clear();
+  this->General.Build(nullptr, this->Points, {}, false, {});
   if (!grid || !scalars || !grid->GetPoints())
   {
     return false;
@@ -105,15 +109,17 @@ bool vtkHighOrderTetraSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* 
     vtkIdList* ids = localIds.Local();
     for (vtkIdType cellId = begin; cellId < end; ++cellId)
     {
-      status[cellId] = NotTetra;
-      if (grid->GetCellType(cellId) != VTK_TETRA)
+      const int type = grid->GetCellType(cellId);
+      if (type != VTK_TETRA)
       {
+        status[cellId] = hov::IsSupportedCellType(type) ? NotTetra : Unsupported;
         continue;
       }
+      status[cellId] = BadPoint;
       grid->GetCellPoints(cellId, ids);
       if (ids->GetNumberOfIds() != 4)
       {
-        continue;
+        continue; // broken connectivity
       }
       Tetra& tet = all[cellId];
       glm::dvec3 x[4];
@@ -202,6 +208,7 @@ bool vtkHighOrderTetraSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* 
   // Compact, keeping input order; count problems.
   this->CellToTetra.assign(numCells, -1);
   vtkIdType next = 0;
+  std::vector<vtkIdType> generalIds;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   double bounds[6] = { lo, -lo, lo, -lo, lo, -lo };
   for (vtkIdType cellId = 0; cellId < numCells; ++cellId)
@@ -211,9 +218,12 @@ bool vtkHighOrderTetraSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* 
       case Ok:
         break;
       case NotTetra:
-        if (this->Stats.NonTetra++ == 0)
+        generalIds.push_back(cellId);
+        continue;
+      case Unsupported:
+        if (this->Stats.Unsupported++ == 0)
         {
-          this->Stats.FirstNonTetraType = grid->GetCellType(cellId);
+          this->Stats.FirstUnsupportedType = grid->GetCellType(cellId);
         }
         continue;
       case BadPoint:
@@ -251,14 +261,47 @@ bool vtkHighOrderTetraSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* 
   all.shrink_to_fit();
   this->Tetras.swap(all);
 
-  // The grid given to visibility sorts: valid tetrahedra only, in tetra order.
+  // The other supported cells, in input order after the tetrahedra.
+  this->General.Build(grid, this->Points, values, cellScalars, generalIds);
+  const vtkHighOrderGeneralCells::Statistics& gs = this->General.GetStatistics();
+  this->Stats.General = gs.Rendered;
+  this->Stats.NonFinitePoints += gs.NonFinitePoints;
+  this->Stats.NonFiniteScalars += gs.NonFiniteScalars;
+  this->Stats.Degenerate += gs.Degenerate;
+  this->Stats.InvertedGeneral = gs.Inverted;
+  this->Stats.Curved = gs.Curved;
+  this->Stats.MaxCurvature = gs.MaxCurvature;
+  for (const vtkHighOrderGeneralCells::Cell& cell : this->General.GetCells())
+  {
+    const double* x = this->General.GetNodes(cell);
+    const double* sv = this->General.GetScalars(cell);
+    for (int v = 0; v < cell.NodeCount; ++v)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        bounds[2 * a] = std::min(bounds[2 * a], x[3 * v + a]);
+        bounds[2 * a + 1] = std::max(bounds[2 * a + 1], x[3 * v + a]);
+      }
+    }
+    lo = std::min(lo, cell.ScalarMin);
+    hi = std::max(hi, cell.ScalarMax);
+  }
+
+  // The grid given to visibility sorts: valid cells only, tetrahedra first
+  // (cell k = GetTetras()[k]), then the general cells with their own types.
   this->SortGrid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   this->SortGrid->SetPoints(points);
-  this->SortGrid->Allocate(next);
+  this->SortGrid->Allocate(next + gs.Rendered);
   for (const Tetra& tet : this->Tetras)
   {
     this->SortGrid->InsertNextCell(VTK_TETRA, 4, tet.Points);
   }
+  for (const vtkHighOrderGeneralCells::Cell& cell : this->General.GetCells())
+  {
+    this->SortGrid->InsertNextCell(
+      static_cast<int>(cell.Shape), cell.NodeCount, this->General.GetNodeIds(cell));
+  }
+  next += gs.Rendered;
   this->Stats.Rendered = next;
   this->ScalarRange[0] = next ? lo : 0.0;
   this->ScalarRange[1] = next ? hi : 0.0;

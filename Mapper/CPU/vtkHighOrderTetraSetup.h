@@ -1,6 +1,8 @@
 /**
  * @class   vtkHighOrderTetraSetup
- * @brief   View-independent preparation of linear tetrahedra for exact ray clipping.
+ * @brief   View-independent preparation of the cells of the accurate CPU
+ *          path: linear tetrahedra for exact ray clipping (the fast path),
+ *          the other supported types in vtkHighOrderGeneralCells.
  *
  * For every valid tetrahedron of the input: its four face planes n.x <= h
  * (outward normals) and its linear scalar field s(x) = s0 + g.(x - x0). Built
@@ -12,8 +14,14 @@
  * exit parameter from one equals its entry parameter into the other exactly:
  * no crack and no overlap between neighbouring cells, by construction.
  *
- * Validation (counted, reported by the mapper, never fatal): non-tetrahedral
- * cells (skipped until the mixed-cell paths land), non-finite point
+ * Rendered cells are numbered tetrahedra first (0 .. GetTetras().size()-1),
+ * then the general cells (voxel, hexahedron, wedge, pyramid, quadratic
+ * types: GetGeneralCells(), in input order); GetSortGrid() holds them all in
+ * that numbering with their own cell types.
+ *
+ * Validation (counted, reported by the mapper, never fatal): cell types the
+ * CPU path does not support (hov::IsSupportedCellType false: polyhedra,
+ * Lagrange/Bezier cells, 2D cells, ...), broken connectivity, non-finite point
  * coordinates, non-finite scalars, degenerate tetrahedra (|6V| <= 1e-12
  * times the cube of the longest edge: no volume to render) are skipped;
  * inverted tetrahedra (negative VTK orientation) are rendered, since the
@@ -25,6 +33,8 @@
  */
 #ifndef vtkHighOrderTetraSetup_h
 #define vtkHighOrderTetraSetup_h
+
+#include "vtkHighOrderGeneralCells.h" // the non-tetrahedral cells
 
 #include "vtkSmartPointer.h"     // For SortGrid
 #include "vtkType.h"             // vtkIdType
@@ -58,12 +68,16 @@ public:
   {
     vtkIdType Cells = 0;
     vtkIdType Rendered = 0;
-    vtkIdType NonTetra = 0;
+    vtkIdType General = 0;     ///< rendered non-tetrahedral cells (in Rendered)
+    vtkIdType Unsupported = 0; ///< cells of types the CPU path does not render
     vtkIdType NonFinitePoints = 0;
     vtkIdType NonFiniteScalars = 0;
     vtkIdType Degenerate = 0;
-    vtkIdType Inverted = 0;
-    int FirstNonTetraType = -1;
+    vtkIdType Inverted = 0;        ///< tetrahedra
+    vtkIdType InvertedGeneral = 0; ///< other cells
+    vtkIdType Curved = 0;      ///< quadratic cells rendered straight-edged
+    double MaxCurvature = 0.0; ///< their largest node deviation / cell size
+    int FirstUnsupportedType = -1;
   };
 
   /**
@@ -84,6 +98,13 @@ public:
   vtkUnstructuredGrid* GetSortGrid() const { return this->SortGrid; }
 
   const std::vector<Tetra>& GetTetras() const { return this->Tetras; }
+  /// The rendered non-tetrahedral cells (rendered cell GetTetras().size() + g is cell g).
+  const vtkHighOrderGeneralCells& GetGeneralCells() const { return this->General; }
+  /// Rendered cells: tetrahedra plus general cells.
+  vtkIdType GetNumberOfRenderedCells() const
+  {
+    return static_cast<vtkIdType>(this->Tetras.size() + this->General.GetCells().size());
+  }
   /// All input points (dataset coordinates), indexed by point id.
   const std::vector<glm::dvec3>& GetPoints() const { return this->Points; }
   /// Index into GetTetras() of input cell @p cellId, or -1 if it was skipped.
@@ -103,6 +124,7 @@ private:
   std::vector<Tetra> Tetras;
   std::vector<glm::dvec3> Points;
   std::vector<vtkIdType> CellToTetra;
+  vtkHighOrderGeneralCells General;
   vtkSmartPointer<vtkUnstructuredGrid> SortGrid;
   Statistics Stats;
   double ScalarRange[2] = { 0.0, 0.0 };

@@ -1,9 +1,13 @@
 #include "vtkHighOrderViewRays.h"
 
+#include "vtkAbstractMapper3D.h"
 #include "vtkCamera.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 
-#include <cmath> // std::isfinite
+#include <algorithm> // std::min, std::max
+#include <cmath>     // std::isfinite
 
 namespace
 {
@@ -88,4 +92,64 @@ bool vtkHighOrderViewRays::Project(const glm::dvec3& p, double& xWindow, double&
   xWindow = (c.x / c.w + 1.0) * 0.5 * this->Width;
   yWindow = (c.y / c.w + 1.0) * 0.5 * this->Height;
   return std::isfinite(xWindow) && std::isfinite(yWindow);
+}
+
+void vtkHighOrderViewRays::ClipRange(const Ray& ray, double& tMin, double& tMax) const
+{
+  for (const glm::dvec4& plane : this->ClipPlanes)
+  {
+    const glm::dvec3 normal(plane);
+    // Kept where value(t) = num + t slope >= 0.
+    const double num = glm::dot(normal, ray.Origin) + plane.w;
+    const double slope = glm::dot(normal, ray.Direction);
+    if (slope > 0.0)
+    {
+      tMin = std::max(tMin, -num / slope);
+    }
+    else if (slope < 0.0)
+    {
+      tMax = std::min(tMax, -num / slope);
+    }
+    else if (num < 0.0)
+    {
+      tMax = tMin; // parallel and outside
+    }
+  }
+}
+
+void vtkHighOrderViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera,
+  vtkMatrix4x4* volumeMatrix, const double* viewDepthRange)
+{
+  this->ClipPlanes.clear();
+  vtkNew<vtkMatrix4x4> identity;
+  vtkMatrix4x4* matrix = volumeMatrix ? volumeMatrix : identity.Get();
+  for (int i = 0; mapper && i < mapper->GetNumberOfClippingPlanes(); ++i)
+  {
+    double h[4];
+    mapper->GetClippingPlaneInDataCoords(matrix, i, h);
+    this->ClipPlanes.emplace_back(h[0], h[1], h[2], h[3]);
+  }
+  if (viewDepthRange && camera)
+  {
+    double eye[3], dop[3];
+    camera->GetPosition(eye);
+    camera->GetDirectionOfProjection(dop);
+    const double depthOfEye = vtkMath::Dot(dop, eye);
+    // Near: dop.x - (dop.eye + near) >= 0; far: -dop.x + (dop.eye + far) >= 0.
+    const double world[2][4] = { { dop[0], dop[1], dop[2], -(depthOfEye + viewDepthRange[0]) },
+      { -dop[0], -dop[1], -dop[2], depthOfEye + viewDepthRange[1] } };
+    for (const double* w : world)
+    {
+      // World to data: h_data = M^T h_world (M: data to world).
+      double h[4] = { 0.0, 0.0, 0.0, 0.0 };
+      for (int c = 0; c < 4; ++c)
+      {
+        for (int r = 0; r < 4; ++r)
+        {
+          h[c] += w[r] * matrix->GetElement(r, c);
+        }
+      }
+      this->ClipPlanes.emplace_back(h[0], h[1], h[2], h[3]);
+    }
+  }
 }

@@ -13,6 +13,12 @@
  * over). Orthographic and perspective cameras, off-axis projections and
  * any affine volume matrix are handled by the same unprojection.
  *
+ * Clipping (SetClipPlanes): half-spaces a.x + d >= 0 in dataset coordinates
+ * (the mapper's vtkPlaneCollection and its view-depth range, transformed
+ * like vtkAbstractMapper3D::GetClippingPlaneInDataCoords); ClipRange()
+ * narrows a ray's parameter range to the part inside all of them (convex:
+ * one interval).
+ *
  * Thread safety: after Setup(), every const method is thread safe.
  * @sa vtkHighOrderCellProjector
  */
@@ -21,6 +27,9 @@
 
 #include <glm/glm.hpp> // dvec3, dvec4, dmat4
 
+#include <vector> // clip planes
+
+class vtkAbstractMapper3D;
 class vtkCamera;
 class vtkMatrix4x4;
 
@@ -74,7 +83,33 @@ public:
   const glm::dvec3& GetPerturbX() const { return this->PerturbX; }
   const glm::dvec3& GetPerturbY() const { return this->PerturbY; }
 
+  /**
+   * Planes (a, b, c, d) in dataset coordinates; a point x is kept where
+   * a x + b y + c z + d >= 0. Empty: no clipping. Call after Setup().
+   */
+  void SetClipPlanes(const std::vector<glm::dvec4>& planes) { this->ClipPlanes = planes; }
+
+  /**
+   * SetClipPlanes() from @p mapper's clipping planes (world coordinates, the
+   * normal's side kept) and, if @p viewDepthRange is given, the slab of view
+   * depths [near, far] (world distance from @p camera's position along its
+   * direction of projection), both transformed to dataset coordinates with
+   * the volume matrix @p volumeMatrix as
+   * vtkAbstractMapper3D::GetClippingPlaneInDataCoords does.
+   */
+  void SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera, vtkMatrix4x4* volumeMatrix,
+    const double* viewDepthRange);
+  bool HasClipping() const { return !this->ClipPlanes.empty(); }
+
+  /**
+   * Narrow [@p tMin, @p tMax] of @p ray to where it is inside every clip
+   * plane; the result may be empty (tMin >= tMax). A ray parallel to a plane
+   * is kept or dropped whole.
+   */
+  void ClipRange(const Ray& ray, double& tMin, double& tMax) const;
+
 private:
+  std::vector<glm::dvec4> ClipPlanes;
   glm::dvec3 Unproject(double xNdc, double yNdc, double zNdc) const;
 
   glm::dmat4 DataToClip{ 1.0 };

@@ -254,7 +254,8 @@ int ClipConvex(CellShape shape, const double* points, const std::int64_t* ids, c
 
 /// General cells: sorted crossings, gaps classified by their midpoint.
 int SplitAndClassify(CellShape shape, const double* points, const std::int64_t* ids,
-  const double o[3], const double d[3], double tMin, double tMax, RayCellInterval* out)
+  const double o[3], const double d[3], double tMin, double tMax, RayCellInterval* out,
+  unsigned planarFaces)
 {
   double cand[2 * 6 + 2];
   int nCand = 0;
@@ -263,7 +264,8 @@ int SplitAndClassify(CellShape shape, const double* points, const std::int64_t* 
   {
     const FaceData face = GetFace(shape, points, ids, f);
     double t[2];
-    const int nt = FaceRayCrossings(face.N, face.C, face.Ids, o, d, t);
+    const int nt =
+      FaceRayCrossingsKnown(face.N, face.C, face.Ids, o, d, t, (planarFaces >> f) & 1u);
     for (int i = 0; i < nt; ++i)
     {
       if (t[i] > tMin && t[i] < tMax)
@@ -335,9 +337,17 @@ bool IsQuadPlanar(const double* const corners[4])
 int FaceRayCrossings(int cornerCount, const double* const corners[4], const std::int64_t ids[4],
   const double origin[3], const double direction[3], double t[2])
 {
+  return FaceRayCrossingsKnown(cornerCount, corners, ids, origin, direction, t,
+    cornerCount == 3 || IsQuadPlanar(corners));
+}
+
+int FaceRayCrossingsKnown(int cornerCount, const double* const corners[4],
+  const std::int64_t ids[4], const double origin[3], const double direction[3], double t[2],
+  bool planar)
+{
   const double* c[4];
   Canonical(cornerCount, corners, ids, c);
-  if (cornerCount == 4 && !IsQuadPlanar(c))
+  if (cornerCount == 4 && !planar)
   {
     return PatchCrossings(c, origin, direction, t);
   }
@@ -353,23 +363,41 @@ int FaceRayCrossings(int cornerCount, const double* const corners[4], const std:
   return std::isfinite(t[0]) ? 1 : 0;
 }
 
+unsigned PlanarFaceMask(CellShape shape, const double* points)
+{
+  unsigned mask = 0;
+  const std::int64_t ids[8] = { 0, 1, 2, 3, 4, 5, 6, 7 }; // planarity ignores ids
+  for (int f = 0, nf = CellFaceCount(shape); f < nf; ++f)
+  {
+    const FaceData face = GetFace(shape, points, ids, f);
+    if (face.N == 3 || IsQuadPlanar(face.C))
+    {
+      mask |= 1u << f;
+    }
+  }
+  return mask;
+}
+
 int RayCellIntervals(CellShape shape, const double* points, const std::int64_t* cornerIds,
   const double origin[3], const double direction[3], double tMin, double tMax,
   RayCellInterval* out)
+{
+  return RayCellIntervals(shape, points, cornerIds, origin, direction, tMin, tMax, out,
+    PlanarFaceMask(shape, points));
+}
+
+int RayCellIntervals(CellShape shape, const double* points, const std::int64_t* cornerIds,
+  const double origin[3], const double direction[3], double tMin, double tMax,
+  RayCellInterval* out, unsigned planarFaces)
 {
   if (!(tMin <= tMax) || !std::isfinite(tMin) || !std::isfinite(tMax) ||
     !(Dot(direction, direction) > 0.0))
   {
     return 0;
   }
-  bool allPlanar = true;
-  for (int f = 0, nf = CellFaceCount(shape); f < nf && allPlanar; ++f)
-  {
-    const FaceData face = GetFace(shape, points, cornerIds, f);
-    allPlanar = face.N == 3 || IsQuadPlanar(face.C);
-  }
-  return allPlanar
+  const unsigned all = (1u << CellFaceCount(shape)) - 1u;
+  return (planarFaces & all) == all
     ? ClipConvex(shape, points, cornerIds, origin, direction, tMin, tMax, out)
-    : SplitAndClassify(shape, points, cornerIds, origin, direction, tMin, tMax, out);
+    : SplitAndClassify(shape, points, cornerIds, origin, direction, tMin, tMax, out, planarFaces);
 }
 }

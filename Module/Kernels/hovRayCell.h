@@ -92,8 +92,21 @@ struct RayCellInterval
 HOV_EXPORT int FaceRayCrossings(int cornerCount, const double* const corners[4],
   const std::int64_t ids[4], const double origin[3], const double direction[3], double t[2]);
 
+/// FaceRayCrossings() for a face whose planarity (IsQuadPlanar) is known.
+HOV_EXPORT int FaceRayCrossingsKnown(int cornerCount, const double* const corners[4],
+  const std::int64_t ids[4], const double origin[3], const double direction[3], double t[2],
+  bool planar);
+
 /// True if the 4 corners are exactly coplanar (then the face is a plane).
 HOV_EXPORT bool IsQuadPlanar(const double* const corners[4]);
+
+/**
+ * Bit f set iff face f (CellFaceCorners order) of the cell is planar
+ * (triangles always; quads by IsQuadPlanar). View-independent: callers that
+ * cast many rays through one cell compute it once and pass it to
+ * RayCellIntervals, saving the exact predicates per ray.
+ */
+HOV_EXPORT unsigned PlanarFaceMask(CellShape shape, const double* points);
 
 /**
  * Inside intervals of the ray o + t d, t in [@p tMin, @p tMax], for the cell
@@ -105,6 +118,12 @@ HOV_EXPORT bool IsQuadPlanar(const double* const corners[4]);
 HOV_EXPORT int RayCellIntervals(CellShape shape, const double* points,
   const std::int64_t* cornerIds, const double origin[3], const double direction[3], double tMin,
   double tMax, RayCellInterval* out);
+
+/// RayCellIntervals() with the faces' planarity given (PlanarFaceMask(shape,
+/// points)): the same result without recomputing it.
+HOV_EXPORT int RayCellIntervals(CellShape shape, const double* points,
+  const std::int64_t* cornerIds, const double origin[3], const double direction[3], double tMin,
+  double tMax, RayCellInterval* out, unsigned planarFaces);
 
 /// Faces of a cell (by GeometryShape): count, and the corners of face @p f.
 HOV_EXPORT int CellFaceCount(CellShape shape);

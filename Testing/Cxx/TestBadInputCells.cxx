@@ -1,6 +1,6 @@
 // Bad cells and bad arrays: no scalars, string arrays, NaN/Inf scalars and
-// points, degenerate and inverted tetrahedra, empty grids, non-tetrahedral
-// cells. For each: no crash, an error or warning where the input is bad (none
+// points, degenerate and inverted tetrahedra, empty grids, unsupported cell
+// types. For each: no crash, an error or warning where the input is bad (none
 // where it is fine), a finite float image with 0 <= alpha <= 1, and the valid
 // tetrahedra render exactly as they do alone (within 1e-6).
 #include "hovTestScenes.h"
@@ -396,22 +396,14 @@ int TestBadInputCells(int, char*[])
     }
   }
 
-  // ---- 8. Non-tetrahedral cells mixed with the tets, in view.
+  // ---- 8. Cell types the CPU path does not render, mixed with the tets, in
+  // view (hexahedra, wedges, pyramids and quadratic cells are rendered: see
+  // TestMixed*).
   {
     MeshBuilder m = block;
-    // A hexahedron over [0.1,0.9]^2 x [0.55,0.95] (inside the block's view).
     auto P = [&](double x, double y, double z) { return m.AddPoint(x, y, z, DefaultField(x, y, z)); };
-    vtkIdType hx[8] = { P(0.1, 0.1, 0.55), P(0.9, 0.1, 0.55), P(0.9, 0.9, 0.55), P(0.1, 0.9, 0.55),
-      P(0.1, 0.1, 0.95), P(0.9, 0.1, 0.95), P(0.9, 0.9, 0.95), P(0.1, 0.9, 0.95) };
-    m.AddCell(VTK_HEXAHEDRON, std::vector<vtkIdType>(hx, hx + 8));
-    // A wedge and a pyramid.
-    vtkIdType wd[6] = { P(0.1, 0.1, 0.1), P(0.9, 0.1, 0.1), P(0.1, 0.9, 0.1), P(0.1, 0.1, 0.5),
-      P(0.9, 0.1, 0.5), P(0.1, 0.9, 0.5) };
-    m.AddCell(VTK_WEDGE, std::vector<vtkIdType>(wd, wd + 6));
-    vtkIdType py[5] = { P(0.2, 0.2, 0.2), P(0.8, 0.2, 0.2), P(0.8, 0.8, 0.2), P(0.2, 0.8, 0.2),
-      P(0.5, 0.5, 0.8) };
-    m.AddCell(VTK_PYRAMID, std::vector<vtkIdType>(py, py + 5));
-    // A quadratic tetrahedron (10 nodes), a triangle and a vertex.
+    vtkIdType hx[4] = { P(0.1, 0.1, 0.55), P(0.9, 0.1, 0.55), P(0.9, 0.9, 0.55), P(0.1, 0.9, 0.55) };
+    // A Lagrange tetrahedron (10 nodes), a triangle and a vertex.
     std::vector<vtkIdType> qt;
     const double qv[4][3] = { { 0.2, 0.2, 0.3 }, { 0.8, 0.2, 0.3 }, { 0.2, 0.8, 0.3 },
       { 0.2, 0.2, 0.9 } };
@@ -425,13 +417,13 @@ int TestBadInputCells(int, char*[])
       qt.push_back(P(0.5 * (qv[e[0]][0] + qv[e[1]][0]), 0.5 * (qv[e[0]][1] + qv[e[1]][1]),
         0.5 * (qv[e[0]][2] + qv[e[1]][2])));
     }
-    m.AddCell(VTK_QUADRATIC_TETRA, qt);
+    m.AddCell(VTK_LAGRANGE_TETRAHEDRON, qt);
     m.AddCell(VTK_TRIANGLE, { hx[0], hx[1], hx[2] });
     m.AddCell(VTK_VERTEX, { hx[3] });
-    badCase("48 tets + hexahedron, wedge, pyramid, quadratic tet, triangle, vertex", m.Grid(), ref,
-      "not linear tetrahedra", 48, 6);
+    badCase("48 tets + Lagrange tetrahedron, triangle, vertex", m.Grid(), ref,
+      "not yet supported by the CPU projection path", 48, 3);
 
-    // Only hexahedra: nothing rendered, a warning, zero image.
+    // A single hexahedron: rendered (general cells), no message.
     MeshBuilder h;
     auto Q = [&](double x, double y, double z) { return h.AddPoint(x, y, z, DefaultField(x, y, z)); };
     vtkIdType hh[8] = { Q(0, 0, 0), Q(1, 0, 0), Q(1, 1, 0), Q(0, 1, 0), Q(0, 0, 1), Q(1, 0, 1),
@@ -446,10 +438,8 @@ int TestBadInputCells(int, char*[])
       std::cout << "== a single hexahedron, " << OrderName(orders[o]) << ": status=" << status
                 << " " << s.Str() << " warning: '" << Msg(scene.Observer->GetWarningMessage())
                 << "'\n";
-      ck.Check(status == 1 && !scene.Observer->GetError() &&
-          scene.Observer->GetWarningMessage().find("not linear tetrahedra") != std::string::npos,
-        "hexahedron only: a warning about non-tetrahedral cells, no error");
-      ck.Check(s.Ok() && s.Covered == 0, "hexahedron only: zero image");
+      ck.Check(status == 1 && scene.NoMessages(), "hexahedron only: rendered, no message");
+      ck.Check(s.Ok() && s.Covered > 1000, "hexahedron only: a sane image covering > 1000 pixels");
     }
   }
 
