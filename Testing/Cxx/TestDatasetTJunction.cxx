@@ -68,11 +68,11 @@ int TestDatasetTJunction(int argc, char* argv[])
   const double tessDiff = hovTestRef::MeanDiff255(run.Ours, run.OursTessellated);
   const double rcDiff = hovTestRef::MeanDiff255(run.RC, run.OursCorners);
   const double ptDiff = hovTestRef::MeanDiff255(run.PT, run.Ours);
-  ck.Check(tessDiff <= 1.0,
-    "ours native vs ours on the 8-way tessellation: mean <= 1/255 (measured " + Fmt(tessDiff) + ")");
-  ck.Check(rcDiff <= 2.0,
-    "RC (tessellated) vs ours native, corner rays: mean <= 2/255 (measured " + Fmt(rcDiff) + ")");
-  ck.Check(ptDiff <= 4.0,
-    "PT (tessellated) vs ours native: mean <= 4/255 (measured " + Fmt(ptDiff) + ")");
+  ck.Check(tessDiff <= 0.1,
+    "ours native vs ours on the 8-way tessellation: mean <= 0.1/255 (measured " + Fmt(tessDiff) + ")");
+  ck.Check(rcDiff <= 1.0,
+    "RC (tessellated) vs ours native, corner rays: mean <= 1/255 (measured " + Fmt(rcDiff) + ")");
+  ck.Check(ptDiff <= 1.0,
+    "PT (tessellated) vs ours native: mean <= 1/255 (measured " + Fmt(ptDiff) + ")");
   return ck.Result();
 }

@@ -3,8 +3,9 @@
 // wedges, 400 pyramids; steady heat conduction, point array "temperature").
 // The mesh contains one cluster of three overlapping tetrahedra left by the
 // mesher: the visibility relation then has cycles and rays cross overlapping
-// cells. Our mapper's warnings about it are captured (asserted present and
-// printed), never left to ctest's error filter.
+// cells. Our mapper reports it (a captured cycle warning, or the per-pixel
+// witness count of rays crossing overlapping cells: asserted, printed); its
+// warnings never reach ctest's error filter.
 //
 // Ours (VTK_UNSTRUCTURED semantics, native cells, default visibility-sort
 // ordering) beside vtkProjectedTetrahedraMapper and
@@ -68,16 +69,20 @@ int TestDatasetZoo(int argc, char* argv[])
   const Sanity s = CheckImage(run.Ours);
   ck.Check(run.OurStatus == 1 && run.OurErrors.empty(), "ours: RenderImage 1, no error");
   ck.Check(s.Ok() && s.Covered > size * size / 10, "ours: image sane, covers > 10%: " + s.Str());
-  ck.Check(run.OurWarnings.find("cycle") != std::string::npos,
-    "ours: the visibility cycle of the overlapping tetrahedra is reported (warning captured)");
+  // The overlap is reported either as a visibility-cycle warning (if the
+  // view's order has a cycle) or by the per-pixel witness (rays on which
+  // cells overlap); in this view: no cycle, 22 witness pixels (measured).
+  ck.Check(run.OurWarnings.find("cycle") != std::string::npos || run.WitnessViolations > 0,
+    "ours: the overlapping tetrahedra are reported (cycle warning captured or witness " +
+      std::to_string(run.WitnessViolations) + " > 0)");
   const double tessDiff = hovTestRef::MeanDiff255(run.Ours, run.OursTessellated);
   const double rcDiff = hovTestRef::MeanDiff255(run.RC, run.OursCorners);
   const double ptDiff = hovTestRef::MeanDiff255(run.PT, run.Ours);
-  ck.Check(tessDiff <= 1.0,
-    "ours native vs ours on the tetrahedra: mean <= 1/255 (measured " + Fmt(tessDiff) + ")");
-  ck.Check(rcDiff <= 2.0,
-    "RC (tetrahedra) vs ours native, corner rays: mean <= 2/255 (measured " + Fmt(rcDiff) + ")");
-  ck.Check(ptDiff <= 4.0,
-    "PT (tetrahedra) vs ours native: mean <= 4/255 (measured " + Fmt(ptDiff) + ")");
+  ck.Check(tessDiff <= 0.1,
+    "ours native vs ours on the tetrahedra: mean <= 0.1/255 (measured " + Fmt(tessDiff) + ")");
+  ck.Check(rcDiff <= 1.0,
+    "RC (tetrahedra) vs ours native, corner rays: mean <= 1/255 (measured " + Fmt(rcDiff) + ")");
+  ck.Check(ptDiff <= 1.0,
+    "PT (tetrahedra) vs ours native: mean <= 1/255 (measured " + Fmt(ptDiff) + ")");
   return ck.Result();
 }
