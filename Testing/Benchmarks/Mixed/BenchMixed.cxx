@@ -9,7 +9,7 @@
 // its nodes, as in the demo; the tests use the straight-edged 8-way split of
 // hovTestReferenceGeneral.h, whose time is printed too).
 // The tessellation time is reported separately (done once, not per frame).
-// Every mapper renders in its own offscreen S x S window (default 512) with
+// Every mapper renders in one shared offscreen S x S window (default 512) with
 // the same vtkVolumeProperty (opacity nodes = colour nodes); ours with
 // VTK_UNSTRUCTURED semantics (the peers' extinction a/u) and its default
 // ordering (visibility sort). Frame 0 (set-up, sort, GL resources) is
@@ -66,24 +66,35 @@ double Since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// One offscreen window (and X connection) shared by every measurement.
+struct Window
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> RenderWindow;
+  explicit Window(int size)
+  {
+    this->Renderer->SetBackground(0, 0, 0);
+    this->RenderWindow->SetOffScreenRendering(1);
+    this->RenderWindow->SetMultiSamples(0);
+    this->RenderWindow->AddRenderer(this->Renderer);
+    this->RenderWindow->SetSize(size, size);
+  }
+};
+
 /// Frame times of @p mapper on @p property from @p camera (copied, then turned).
 Timing TimeFrames(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property, vtkCamera* camera,
-  const Options& opt)
+  const Options& opt, Window& window)
 {
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(property);
   vtkNew<vtkCamera> cam;
   cam->DeepCopy(camera);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0, 0, 0);
+  vtkRenderer* ren = window.Renderer;
+  vtkRenderWindow* win = window.RenderWindow;
+  ren->RemoveAllViewProps();
   ren->SetActiveCamera(cam);
   ren->AddVolume(volume);
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->AddRenderer(ren);
-  win->SetSize(opt.Size, opt.Size);
   Timing t;
   auto t0 = std::chrono::steady_clock::now();
   win->Render();
@@ -100,6 +111,7 @@ Timing TimeFrames(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property, 
   std::sort(frames.begin(), frames.end());
   t.Median = frames.empty() ? 0 : frames[frames.size() / 2];
   mapper->ReleaseGraphicsResources(win);
+  ren->RemoveAllViewProps();
   return t;
 }
 
@@ -112,7 +124,8 @@ struct Row
 };
 
 Row Run(const std::string& name, vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tess,
-  double tessSeconds, vtkVolumeProperty* property, vtkCamera* cam, const Options& opt)
+  double tessSeconds, vtkVolumeProperty* property, vtkCamera* cam, const Options& opt,
+  Window& window)
 {
   Row r;
   r.Name = name;
@@ -126,7 +139,7 @@ Row Run(const std::string& name, vtkUnstructuredGrid* grid, vtkUnstructuredGrid*
     vtkNew<vtkHighOrderVolumeMapper> ours;
     ours->SetInputData(grid);
     ours->SetOpacitySemanticsToVTKUnstructured();
-    r.Ours = TimeFrames(ours, property, cam, opt);
+    r.Ours = TimeFrames(ours, property, cam, opt, window);
     std::cout << "  ours (native)       first " << r.Ours.First << " s, median " << r.Ours.Median
               << " s (" << ours->GetNumberOfRenderedCells() << " cells rendered, "
               << ours->GetNumberOfSkippedCells() << " skipped)\n"
@@ -136,7 +149,7 @@ Row Run(const std::string& name, vtkUnstructuredGrid* grid, vtkUnstructuredGrid*
     vtkNew<vtkHighOrderVolumeMapper> ours;
     ours->SetInputData(tess);
     ours->SetOpacitySemanticsToVTKUnstructured();
-    r.OursTess = TimeFrames(ours, property, cam, opt);
+    r.OursTess = TimeFrames(ours, property, cam, opt, window);
     std::cout << "  ours (tessellated)  first " << r.OursTess.First << " s, median "
               << r.OursTess.Median << " s\n"
               << std::flush;
@@ -144,7 +157,7 @@ Row Run(const std::string& name, vtkUnstructuredGrid* grid, vtkUnstructuredGrid*
   {
     vtkNew<vtkProjectedTetrahedraMapper> pt;
     pt->SetInputData(tess);
-    r.PT = TimeFrames(pt, property, cam, opt);
+    r.PT = TimeFrames(pt, property, cam, opt, window);
     std::cout << "  PT (tessellated)    first " << r.PT.First << " s, median " << r.PT.Median
               << " s\n"
               << std::flush;
@@ -157,7 +170,7 @@ Row Run(const std::string& name, vtkUnstructuredGrid* grid, vtkUnstructuredGrid*
     rc->SetRayIntegrator(integrator);
     rc->AutoAdjustSampleDistancesOff();
     rc->SetImageSampleDistance(1.0);
-    r.RC = TimeFrames(rc, property, cam, opt);
+    r.RC = TimeFrames(rc, property, cam, opt, window);
     std::cout << "  RC (tessellated)    first " << r.RC.First << " s, median " << r.RC.Median
               << " s\n"
               << std::flush;
@@ -231,6 +244,7 @@ int main(int argc, char* argv[])
     }
   }
   std::vector<Row> rows;
+  Window window(opt.Size);
   {
     auto grid = hovTestRef::LoadDataset(opt.Data, "tjunction_tet10_dolfinx.vtu", "speed");
     double tessSeconds = 0, splitSeconds = 0;
@@ -241,7 +255,8 @@ int main(int argc, char* argv[])
     hovTestRef::DatasetTF(property, 0.1, 2.7, 0.6);
     vtkNew<vtkCamera> cam;
     hovTestRef::TJunctionCamera(cam);
-    rows.push_back(Run("tjunction (quadratic tets)", grid, tess, tessSeconds, property, cam, opt));
+    rows.push_back(
+      Run("tjunction (quadratic tets)", grid, tess, tessSeconds, property, cam, opt, window));
   }
   {
     auto grid = hovTestRef::LoadDataset(opt.Data, "zoo_mixed_ccx.vtu", "temperature");
@@ -251,7 +266,7 @@ int main(int argc, char* argv[])
     hovTestRef::DatasetTF(property, 15.0, 120.0, 0.8);
     vtkNew<vtkCamera> cam;
     hovTestRef::ZooCamera(cam);
-    rows.push_back(Run("zoo (mixed cells)", grid, tess, tessSeconds, property, cam, opt));
+    rows.push_back(Run("zoo (mixed cells)", grid, tess, tessSeconds, property, cam, opt, window));
   }
   PrintTable(rows, opt);
   return EXIT_SUCCESS;
