@@ -14,6 +14,16 @@
 
 namespace hovTestRef
 {
+namespace
+{
+/// GPU_COMPATIBLE opacity tolerance of the mapper in these cases: its
+/// documented image error is ~2x the tolerance, well below the 1e-6 asked.
+/// (1e-8, as in TestAnalytic*, made one 64 x 48 image of ONE quadratic cell
+/// take 2-10 s in the general-cell path, against ~5 ms for the other
+/// semantics: measured 2026-11-22 after merging gen.)
+constexpr double GPUTolerance = 1e-7;
+}
+
 void RunCellCases(const char* cellName, vtkUnstructuredGrid* grid, const CellScene& scene,
   const double focal[3], const std::vector<CellView>& views, const std::vector<Model>& models,
   vtkVolumeProperty* property, int width, int height, RunTotals& totals)
@@ -47,10 +57,11 @@ void RunCellCases(const char* cellName, vtkUnstructuredGrid* grid, const CellSce
       vs.Mapper->SetOpacitySemantics(model.Semantics);
       vs.Mapper->SetEmissionModel(model.Emission);
       vs.Mapper->SetEmissionScale(model.EmissionScale);
-      vs.Mapper->SetGPUOpacityTolerance(1e-8);
+      vs.Mapper->SetGPUOpacityTolerance(GPUTolerance);
       hovTest::CaseFailures fail(label.str());
-      const float* px =
-        hovTest::RenderCase(vs.Mapper, camera, vs.Volume, width, height, vs.Observer, fail);
+      double mapperSeconds = 0;
+      const float* px = hovTest::RenderCase(
+        vs.Mapper, camera, vs.Volume, width, height, vs.Observer, fail, &mapperSeconds);
       if (px)
       {
         const ImageComparison cmp = CompareImage(ref, px, hovTest::AnalyticTolerance);
@@ -70,7 +81,7 @@ void RunCellCases(const char* cellName, vtkUnstructuredGrid* grid, const CellSce
                   << "/" << ref.ExpectedCovered << "  max error " << std::scientific
                   << std::setprecision(2) << cmp.MaxError << "  mean " << cmp.MeanError
                   << std::defaultfloat << "  (reference " << std::setprecision(3) << refSeconds
-                  << " s)\n";
+                  << " s, mapper " << mapperSeconds << " s)\n";
       }
       if (fail.Count)
       {

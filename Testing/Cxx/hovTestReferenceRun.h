@@ -42,7 +42,7 @@ struct RunTotals
 };
 
 /**
- * Every (view, model) case: our mapper renders @p grid (GPU tolerance 1e-8)
+ * Every (view, model) case: our mapper renders @p grid (GPU tolerance 1e-7)
  * at @p width x @p height, the reference integrates @p scene; one line per
  * case (covered pixels, max and mean error), failures printed with the worst
  * pixel and the inputs. Results are added to @p totals.
