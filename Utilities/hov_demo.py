@@ -13,13 +13,19 @@ Renders the bundled bracket (linear tetrahedra, CalculiX von Mises stress) with
   * vtkUnstructuredGridVolumeRayCastMapper (Bunyk + vtkUnstructuredGridLinearRayIntegrator),
   * vtkHighOrderVolumeMapper in GPU-compatible opacity semantics (extra, not comparable),
 
-all under the same camera and the same vtkVolumeProperty, 512x512 offscreen, and writes
+all under the same camera and the same vtkVolumeProperty, 512x512 offscreen; then (unless
+--no-issue4) the two issue-4 datasets of Testing/Data, the dolfinx T-junction (10521
+quadratic tetrahedra, 'speed') and the CalculiX zoo (tetrahedra, hexahedra, wedges,
+pyramids, 'temperature'): ours on the native cells (the reference of those rows) beside ours,
+vtkProjectedTetrahedraMapper and the unstructured ray caster on the tetrahedra of
+vtkDataSetTriangleFilter (its time reported apart). It writes
 
   <out>/hov_demo_<key>.png     one screen capture per mapper (no labels)
   <out>/hov_demo_montage.png   all captures, labelled, plus the colour legend
   <out>/hov_demo_reference.vti our float image (premultiplied RGBA, row 0 at the bottom)
   <out>/hov_demo_gpu.vti       our float image in GPU-compatible semantics
-  <out>/hov_demo_table.md      the table printed to stdout
+  <out>/hov_demo_table.md      the table printed to stdout (one section per dataset)
+  <out>/hov_demo_<tjunction|zoo>_<key>.png, <out>/hov_demo_<tjunction|zoo>_montage.png
 
 Run (Debian's python has VTK; an X server is needed even offscreen):
   PYTHONPATH=<build>/lib/python3/dist-packages \
@@ -251,13 +257,13 @@ def render_case(case, grid, prop, camera, size, frames, catcher):
     return result
 
 
-def legend_image(ctf, smin, smax, size, title):
+def legend_image(ctf, smin, smax, size, title, label_format="%.0f"):
     """A colour legend panel for the montage (the opacity ramp is in the table notes)."""
     bar = vtkScalarBarActor()
     bar.SetLookupTable(ctf)
     bar.SetTitle(title)
     bar.SetNumberOfLabels(6)
-    bar.SetLabelFormat("%.0f")
+    bar.SetLabelFormat(label_format)
     bar.SetOrientationToVertical()
     bar.SetPosition(0.30, 0.08)
     bar.SetWidth(0.30)
@@ -347,15 +353,18 @@ def comparison_rows(ok_cases, reference, ref_alpha, failures, input_column=False
 
 
 # The issue-4 datasets (Testing/Data): quadratic tetrahedra and a mixed-cell zoo. Ours
-# renders the native cells; VTK's mappers need linear tetrahedra, made by
-# vtkDataSetTriangleFilter (quadratic tet -> 8 tets at its nodes; hexahedron -> 5 or 6,
-# wedge -> 3, pyramid -> 2), timed separately. Cameras as in Testing/Cxx
-# (hovTestReferenceDatasets.cxx); transfer function: 5 nodes, opacity nodes = colour nodes.
+# renders the native cells; VTK's mappers need linear tetrahedra: quadratic tetrahedra split
+# 8-way at their nodes (split_quadratic_tets), linear cells by vtkDataSetTriangleFilter
+# (hexahedron -> 5 or 6, wedge -> 3, pyramid -> 2); tessellation timed separately. Cameras as in Testing/Cxx
+# (hovTestReferenceDatasets.cxx); transfer function: 5 nodes, opacity nodes = colour nodes
+# (denser here than in the tests: smaller unit distance).
 ISSUE4_DATASETS = [
-    {"tag": "tjunction", "file": "tjunction_tet10_dolfinx.vtu", "array": "speed", "unit": 0.6,
+    {"tag": "tjunction", "file": "tjunction_tet10_dolfinx.vtu", "array": "speed", "unit": 0.12,
+     "label_format": "%.1f",
      "focal": (0.0, 0.55, 0.0), "position": (2.2, 2.6, 5.2), "up": (0, 1, 0), "angle": 40.0,
      "clip": (2.0, 12.0)},
-    {"tag": "zoo", "file": "zoo_mixed_ccx.vtu", "array": "temperature", "unit": 0.8,
+    {"tag": "zoo", "file": "zoo_mixed_ccx.vtu", "array": "temperature", "unit": 0.3,
+     "label_format": "%.0f",
      "focal": (2.0, 1.0, 0.9), "position": (5.2, -3.6, 4.4), "up": (0, 0, 1), "angle": 38.0,
      "clip": (2.0, 14.0)},
 ]
@@ -366,6 +375,38 @@ ISSUE4_NODES = [  # (fraction of the range, r, g, b, opacity), as hovTestRef::Da
     (0.75, 1.00, 0.85, 0.10, 0.50),
     (1.00, 0.95, 0.15, 0.10, 0.85),
 ]
+
+
+# The regular 1 -> 8 split of a VTK_QUADRATIC_TETRA at its nodes (corners 0-3, mid-edge
+# nodes 4-9 on (0,1), (1,2), (2,0), (0,3), (1,3), (2,3)), octahedron cut along 6-8.
+# Conforming across shared faces (a face is always cut into the same 4 triangles), the
+# field is exactly the nodal values; vtkDataSetTriangleFilter instead runs its ordered
+# (Delaunay) triangulator on the 10 nodes of these non-primary cells, which on the curved
+# boundary cells of the T-junction gives 83031 instead of 84168 tetrahedra and a
+# non-conforming, overlapping tessellation (our per-pixel witness flags ~18000 pixels).
+RED_SPLIT = np.array([[0, 4, 6, 7], [4, 1, 5, 8], [6, 5, 2, 9], [7, 8, 9, 3],
+                      [4, 6, 7, 8], [4, 6, 5, 8], [6, 7, 8, 9], [6, 5, 8, 9]])
+
+
+def split_quadratic_tets(grid):
+    """Linear tetrahedra of a grid of quadratic tetrahedra (same points and point data)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkUnstructuredGrid
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+    tets = conn[:, RED_SPLIT].reshape(-1, 4)
+    xyz = vtk_to_numpy(grid.GetPoints().GetData()).astype(np.float64)
+    a, b, c, d = (xyz[tets[:, k]] for k in range(4))
+    flip = np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a) < 0
+    tets[flip, 1], tets[flip, 2] = tets[flip, 2], tets[flip, 1].copy()
+    cells = vtkCellArray()
+    offsets = np.arange(0, 4 * len(tets) + 1, 4, dtype=np.int64)
+    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True),
+                  numpy_to_vtkIdTypeArray(tets.ravel().astype(np.int64), deep=True))
+    out = vtkUnstructuredGrid()
+    out.SetPoints(grid.GetPoints())
+    out.GetPointData().ShallowCopy(grid.GetPointData())
+    out.SetCells(10, cells)  # VTK_TETRA
+    return out
 
 
 def issue4_property(smin, smax, unit):
@@ -394,12 +435,19 @@ def issue4_dataset(ds, args, frames, catcher, log, failures):
     grid.GetPointData().SetActiveScalars(ds["array"])
     smin, smax = grid.GetPointData().GetArray(ds["array"]).GetRange(0)
     t0 = time.perf_counter()
-    tri = vtkDataSetTriangleFilter()
-    tri.SetInputData(grid)
-    tri.TetrahedraOnlyOn()
-    tri.Update()
+    quadratic = grid.GetNumberOfCells() > 0 and all(
+        grid.GetCellType(i) == 24 for i in range(grid.GetNumberOfCells()))
+    if quadratic:
+        tets = split_quadratic_tets(grid)
+        tess_name = "the regular 8-way split of every quadratic tetrahedron at its nodes"
+    else:
+        tri = vtkDataSetTriangleFilter()
+        tri.SetInputData(grid)
+        tri.TetrahedraOnlyOn()
+        tri.Update()
+        tets = tri.GetOutput()
+        tess_name = "vtkDataSetTriangleFilter"
     tess_time = time.perf_counter() - t0
-    tets = tri.GetOutput()
     prop, ctf = issue4_property(smin, smax, ds["unit"])
     camera = vtkCamera()
     camera.SetFocalPoint(*ds["focal"])
@@ -458,14 +506,14 @@ def issue4_dataset(ds, args, frames, catcher, log, failures):
     if "result" not in cases[0]:
         return lines
     panels = [c["result"]["labelled"] for c in ok_cases]
-    panels.append(legend_image(ctf, smin, smax, args.size, ds["array"]))
+    panels.append(legend_image(ctf, smin, smax, args.size, ds["array"], ds["label_format"]))
     write_png(montage(panels, 3, args.size),
               os.path.join(args.out, "hov_demo_%s_montage.png" % ds["tag"]))
-    lines.append("VTK's mappers render the %s made by vtkDataSetTriangleFilter in %.3f s "
+    lines.append("VTK's mappers render the %s made by %s in %.3f s "
                  "(not included in their frame times). Reference: our float image of the "
                  "native cells (%s), VTK-unstructured semantics, 5 colour/opacity nodes at the "
                  "same scalars, unit distance %.3g." % (
-                     tessellated, tess_time, describe_types(grid), ds["unit"]))
+                     tessellated, tess_name, tess_time, describe_types(grid), ds["unit"]))
     lines.append("")
     lines.extend(comparison_rows(ok_cases, cases[0]["result"]["float_rgb"],
                                  cases[0]["result"]["float_alpha"], failures,
