@@ -25,22 +25,24 @@ double Since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// Screen capture of @p mapper's volume rendered in an offscreen window; seconds of Render().
-hovTest::Image PeerImage(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property, vtkCamera* cam,
-  int size, double& seconds, vtkTest::ErrorObserver* observer)
+/// Screen capture of @p mapper's volume rendered in @p win (its one renderer
+/// emptied afterwards); seconds of Render(). One window serves both peers:
+/// fewer X connections (under a loaded shared Xvfb, creating a second window
+/// has failed with "bad X server connection").
+hovTest::Image PeerImage(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property,
+  vtkRenderWindow* win, vtkRenderer* ren, double& seconds, vtkTest::ErrorObserver* observer)
 {
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(property);
   hovTest::ObserveMessages(mapper, observer);
-  vtkSmartPointer<vtkRenderer> ren = hovTest::BlackRenderer(cam);
   ren->AddVolume(volume);
-  vtkSmartPointer<vtkRenderWindow> win = hovTest::OffscreenWindow(ren, size, size, 0);
   const auto t0 = std::chrono::steady_clock::now();
   win->Render();
   seconds = Since(t0);
   hovTest::Image img = hovTest::Capture(win);
   mapper->ReleaseGraphicsResources(win);
+  ren->RemoveAllViewProps();
   return img;
 }
 }
@@ -79,16 +81,18 @@ PeerRun RenderWithPeers(vtkUnstructuredGrid* native, vtkUnstructuredGrid* tessel
     run.OursTessellated = hovTest::FloatImage(ours.Mapper);
   }
   vtkNew<vtkTest::ErrorObserver> peerObserver;
+  vtkSmartPointer<vtkRenderer> ren = hovTest::BlackRenderer(cam);
+  vtkSmartPointer<vtkRenderWindow> win = hovTest::OffscreenWindow(ren, size, size, 0);
   vtkNew<vtkProjectedTetrahedraMapper> pt;
   pt->SetInputData(tessellated);
-  run.PT = PeerImage(pt, property, cam, size, run.PTSeconds, peerObserver);
+  run.PT = PeerImage(pt, property, win, ren, run.PTSeconds, peerObserver);
   vtkNew<vtkUnstructuredGridVolumeRayCastMapper> rc;
   rc->SetInputData(tessellated);
   vtkNew<vtkUnstructuredGridLinearRayIntegrator> integrator;
   rc->SetRayIntegrator(integrator);
   rc->AutoAdjustSampleDistancesOff();
   rc->SetImageSampleDistance(1.0);
-  run.RC = PeerImage(rc, property, cam, size, run.RCSeconds, peerObserver);
+  run.RC = PeerImage(rc, property, win, ren, run.RCSeconds, peerObserver);
   run.PeerMessages =
     hovTest::Msg(peerObserver->GetErrorMessage() + peerObserver->GetWarningMessage());
   hovTest::WritePNG(run.Ours, tmp + "/" + tag + "_ours.png");
