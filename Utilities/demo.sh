@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# README command 1: set up, build, then render the bundled dataset with
+# README command 1: set up, build, then render the bundled datasets (the bracket,
+# the quadratic-tet T-junction and the mixed-cell zoo) with
 # vtkHighOrderVolumeMapper and VTK's unstructured mappers side by side.
 # Output: <build>/demo/ (PNGs, montage, float image, table.md).
 set -euo pipefail

@@ -13,13 +13,19 @@ Renders the bundled bracket (linear tetrahedra, CalculiX von Mises stress) with
   * vtkUnstructuredGridVolumeRayCastMapper (Bunyk + vtkUnstructuredGridLinearRayIntegrator),
   * vtkHighOrderVolumeMapper in GPU-compatible opacity semantics (extra, not comparable),
 
-all under the same camera and the same vtkVolumeProperty, 512x512 offscreen, and writes
+all under the same camera and the same vtkVolumeProperty, 512x512 offscreen; then (unless
+--no-issue4) the two issue-4 datasets of Testing/Data, the dolfinx T-junction (10521
+quadratic tetrahedra, 'speed') and the CalculiX zoo (tetrahedra, hexahedra, wedges,
+pyramids, 'temperature'): ours on the native cells (the reference of those rows) beside ours,
+vtkProjectedTetrahedraMapper and the unstructured ray caster on the tetrahedra of
+vtkDataSetTriangleFilter (its time reported apart). It writes
 
   <out>/hov_demo_<key>.png     one screen capture per mapper (no labels)
   <out>/hov_demo_montage.png   all captures, labelled, plus the colour legend
   <out>/hov_demo_reference.vti our float image (premultiplied RGBA, row 0 at the bottom)
   <out>/hov_demo_gpu.vti       our float image in GPU-compatible semantics
-  <out>/hov_demo_table.md      the table printed to stdout
+  <out>/hov_demo_table.md      the table printed to stdout (one section per dataset)
+  <out>/hov_demo_<tjunction|zoo>_<key>.png, <out>/hov_demo_<tjunction|zoo>_montage.png
 
 Run (Debian's python has VTK; an X server is needed even offscreen):
   PYTHONPATH=<build>/lib/python3/dist-packages \
@@ -49,6 +55,7 @@ from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLUnstructuredGridRea
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkImagingCore import vtkImageConstantPad
 from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkRenderingCore import (
     vtkCamera,
     vtkCellCenterDepthSort,
@@ -250,13 +257,13 @@ def render_case(case, grid, prop, camera, size, frames, catcher):
     return result
 
 
-def legend_image(ctf, smin, smax, size, title):
+def legend_image(ctf, smin, smax, size, title, label_format="%.0f"):
     """A colour legend panel for the montage (the opacity ramp is in the table notes)."""
     bar = vtkScalarBarActor()
     bar.SetLookupTable(ctf)
     bar.SetTitle(title)
     bar.SetNumberOfLabels(6)
-    bar.SetLabelFormat("%.0f")
+    bar.SetLabelFormat(label_format)
     bar.SetOrientationToVertical()
     bar.SetPosition(0.30, 0.08)
     bar.SetWidth(0.30)
@@ -306,6 +313,227 @@ def fmt3(v):
     return "/".join("%.3g" % x for x in v)
 
 
+def comparison_rows(ok_cases, reference, ref_alpha, failures, input_column=False):
+    """Markdown rows: each case's image against the reference float image (RGB over black)."""
+    lines = []
+    extra = " input |" if input_column else ""
+    lines.append("| mapper |" + extra + " opacity semantics | frame time [s] | CPU image [s] "
+                 "| compared image | max abs diff R/G/B | mean abs diff R/G/B "
+                 "| mean abs diff R/G/B, covered px | witness |")
+    lines.append("|---|---|---|---|---|---|---|---|---|" + ("---|" if input_column else ""))
+    for c in ok_cases:
+        res = c["result"]
+        ours = "float_rgb" in res
+        img = res["float_rgb"] if ours else res["screen_rgb"]
+        if img.shape != reference.shape:
+            failures.append("%s: image shape %s != reference %s"
+                            % (c["key"], img.shape, reference.shape))
+            continue
+        diff = np.abs(img - reference)
+        dmax = diff.reshape(-1, 3).max(axis=0)
+        dmean = diff.reshape(-1, 3).mean(axis=0)
+        covered = (ref_alpha > 1.0 / 255.0) | (img.max(axis=2) > 0.0)
+        dcov = diff[covered].mean(axis=0) if covered.any() else np.zeros(3)
+        note = " (other semantics: not comparable)" if c["semantics"] != "VTK-unstructured" else ""
+        lines.append("| %s |%s %s | %.3f | %s | %s | %s%s | %s | %s | %s |" % (
+            c["name"], (" %s |" % c["input"]) if input_column else "", c["semantics"],
+            res["median"], "%.3f" % res["cpu_time"] if ours else "-",
+            "float" if ours else "8-bit capture",
+            fmt3(dmax), note, fmt3(dmean), fmt3(dcov),
+            str(res["witness"]) if ours else "-"))
+        if ours:
+            # Sanity: our own 8-bit capture against our float image (display path).
+            c["display_diff"] = np.abs(res["screen_rgb"] - img).max()
+    lines.append("")
+    for c in ok_cases:
+        if "display_diff" in c:
+            lines.append("- %s: on-screen capture vs its own float image, max |diff| %.4f "
+                         "(8-bit display path)." % (c["key"], c["display_diff"]))
+    return lines
+
+
+# The issue-4 datasets (Testing/Data): quadratic tetrahedra and a mixed-cell zoo. Ours
+# renders the native cells; VTK's mappers need linear tetrahedra: quadratic tetrahedra split
+# 8-way at their nodes (split_quadratic_tets), linear cells by vtkDataSetTriangleFilter
+# (hexahedron -> 5 or 6, wedge -> 3, pyramid -> 2); tessellation timed separately. Cameras as in Testing/Cxx
+# (hovTestReferenceDatasets.cxx); transfer function: 5 nodes, opacity nodes = colour nodes
+# (denser here than in the tests: smaller unit distance).
+ISSUE4_DATASETS = [
+    {"tag": "tjunction", "file": "tjunction_tet10_dolfinx.vtu", "array": "speed", "unit": 0.12,
+     "label_format": "%.1f",
+     "focal": (0.0, 0.55, 0.0), "position": (2.2, 2.6, 5.2), "up": (0, 1, 0), "angle": 40.0,
+     "clip": (2.0, 12.0)},
+    {"tag": "zoo", "file": "zoo_mixed_ccx.vtu", "array": "temperature", "unit": 0.3,
+     "label_format": "%.0f",
+     "focal": (2.0, 1.0, 0.9), "position": (5.2, -3.6, 4.4), "up": (0, 0, 1), "angle": 38.0,
+     "clip": (2.0, 14.0)},
+]
+ISSUE4_NODES = [  # (fraction of the range, r, g, b, opacity), as hovTestRef::DatasetTF
+    (0.00, 0.05, 0.10, 0.90, 0.02),
+    (0.25, 0.10, 0.70, 0.90, 0.08),
+    (0.50, 0.20, 0.90, 0.30, 0.25),
+    (0.75, 1.00, 0.85, 0.10, 0.50),
+    (1.00, 0.95, 0.15, 0.10, 0.85),
+]
+
+
+# The regular 1 -> 8 split of a VTK_QUADRATIC_TETRA at its nodes (corners 0-3, mid-edge
+# nodes 4-9 on (0,1), (1,2), (2,0), (0,3), (1,3), (2,3)), octahedron cut along 6-8.
+# Conforming across shared faces (a face is always cut into the same 4 triangles), the
+# field is exactly the nodal values; vtkDataSetTriangleFilter instead runs its ordered
+# (Delaunay) triangulator on the 10 nodes of these non-primary cells, which on the curved
+# boundary cells of the T-junction gives 83031 instead of 84168 tetrahedra and a
+# non-conforming, overlapping tessellation (our per-pixel witness flags ~18000 pixels).
+RED_SPLIT = np.array([[0, 4, 6, 7], [4, 1, 5, 8], [6, 5, 2, 9], [7, 8, 9, 3],
+                      [4, 6, 7, 8], [4, 6, 5, 8], [6, 7, 8, 9], [6, 5, 8, 9]])
+
+
+def split_quadratic_tets(grid):
+    """Linear tetrahedra of a grid of quadratic tetrahedra (same points and point data)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkUnstructuredGrid
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 10)
+    tets = conn[:, RED_SPLIT].reshape(-1, 4)
+    xyz = vtk_to_numpy(grid.GetPoints().GetData()).astype(np.float64)
+    a, b, c, d = (xyz[tets[:, k]] for k in range(4))
+    flip = np.einsum("ij,ij->i", np.cross(b - a, c - a), d - a) < 0
+    tets[flip, 1], tets[flip, 2] = tets[flip, 2], tets[flip, 1].copy()
+    cells = vtkCellArray()
+    offsets = np.arange(0, 4 * len(tets) + 1, 4, dtype=np.int64)
+    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True),
+                  numpy_to_vtkIdTypeArray(tets.ravel().astype(np.int64), deep=True))
+    out = vtkUnstructuredGrid()
+    out.SetPoints(grid.GetPoints())
+    out.GetPointData().ShallowCopy(grid.GetPointData())
+    out.SetCells(10, cells)  # VTK_TETRA
+    return out
+
+
+def issue4_property(smin, smax, unit):
+    ctf = vtkColorTransferFunction()
+    otf = vtkPiecewiseFunction()
+    for f, r, g, b, a in ISSUE4_NODES:
+        ctf.AddRGBPoint(smin + f * (smax - smin), r, g, b)
+        otf.AddPoint(smin + f * (smax - smin), a)
+    prop = vtkVolumeProperty()
+    prop.SetColor(ctf)
+    prop.SetScalarOpacity(otf)
+    prop.SetScalarOpacityUnitDistance(unit)
+    prop.SetInterpolationTypeToLinear()
+    prop.ShadeOff()
+    return prop, ctf
+
+
+def issue4_dataset(ds, args, frames, catcher, log, failures):
+    """Ours on the native cells beside ours, PT and RC on the tetrahedra: PNGs, montage,
+    table lines (the reference is our float image of the native cells)."""
+    path = os.path.join(HERE, os.pardir, "Testing", "Data", ds["file"])
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    grid.GetPointData().SetActiveScalars(ds["array"])
+    smin, smax = grid.GetPointData().GetArray(ds["array"]).GetRange(0)
+    t0 = time.perf_counter()
+    quadratic = grid.GetNumberOfCells() > 0 and all(
+        grid.GetCellType(i) == 24 for i in range(grid.GetNumberOfCells()))
+    if quadratic:
+        tets = split_quadratic_tets(grid)
+        tess_name = "the regular 8-way split of every quadratic tetrahedron at its nodes"
+    else:
+        tri = vtkDataSetTriangleFilter()
+        tri.SetInputData(grid)
+        tri.TetrahedraOnlyOn()
+        tri.Update()
+        tets = tri.GetOutput()
+        tess_name = "vtkDataSetTriangleFilter"
+    tess_time = time.perf_counter() - t0
+    prop, ctf = issue4_property(smin, smax, ds["unit"])
+    camera = vtkCamera()
+    camera.SetFocalPoint(*ds["focal"])
+    camera.SetPosition(*ds["position"])
+    camera.SetViewUp(*ds["up"])
+    camera.SetViewAngle(ds["angle"])
+    camera.SetClippingRange(*ds["clip"])
+
+    def ours():
+        m = vtkHighOrderVolumeMapper()
+        m.SetOpacitySemanticsToVTKUnstructured()
+        return m
+
+    rc = vtkUnstructuredGridVolumeRayCastMapper()
+    rc.SetRayIntegrator(vtkUnstructuredGridLinearRayIntegrator())
+    rc.SetAutoAdjustSampleDistances(0)
+    rc.SetImageSampleDistance(1.0)
+    native = "native (%d cells)" % grid.GetNumberOfCells()
+    tessellated = "tetrahedra (%d)" % tets.GetNumberOfCells()
+    cases = [
+        {"key": "hov", "mapper": ours(), "grid": grid, "input": native,
+         "name": "vtkHighOrderVolumeMapper (reference)", "label": "HighOrderVolume, native cells"},
+        {"key": "hov_tets", "mapper": ours(), "grid": tets, "input": tessellated,
+         "name": "vtkHighOrderVolumeMapper", "label": "HighOrderVolume, tetrahedra"},
+        {"key": "projected_tetrahedra", "mapper": vtkProjectedTetrahedraMapper(), "grid": tets,
+         "input": tessellated, "name": "vtkProjectedTetrahedraMapper",
+         "label": "vtkProjectedTetrahedraMapper, tetrahedra"},
+        {"key": "ug_raycast", "mapper": rc, "grid": tets, "input": tessellated,
+         "name": "vtkUnstructuredGridVolumeRayCastMapper (Bunyk, linear integrator)",
+         "label": "vtkUnstructuredGridVolumeRayCastMapper, tetrahedra"},
+    ]
+    for case in cases:
+        case["semantics"] = "VTK-unstructured"
+        key = "%s_%s" % (ds["tag"], case["key"])
+        try:
+            case["result"] = render_case(case, case["grid"], prop, camera, args.size, frames,
+                                         catcher)
+        except Exception as exc:  # a failed render must fail the demo
+            failures.append("%s: exception %r" % (key, exc))
+            continue
+        res = case["result"]
+        printed_all = log.GetOutput() or ""
+        printed, log.seen = printed_all[log.seen:], len(printed_all)
+        if printed:
+            sys.stderr.write("[%s] VTK output:\n%s\n" % (key, printed.strip()))
+            if "ERROR" in printed:
+                failures.append("%s: VTK printed an error" % key)
+        for msg in res["errors"]:
+            failures.append("%s: VTK error: %s" % (key, msg.strip()))
+        if res["screen_rgb"].max() <= 0.0:
+            failures.append("%s: the screen capture is all black" % key)
+        write_png(res["png"], os.path.join(args.out, "hov_demo_%s.png" % key))
+    ok_cases = [c for c in cases if "result" in c]
+    lines = ["", "## %s, array '%s' (range %.4g..%.4g), %s" % (
+        ds["file"], ds["array"], smin, smax, native), ""]
+    if "result" not in cases[0]:
+        return lines
+    panels = [c["result"]["labelled"] for c in ok_cases]
+    panels.append(legend_image(ctf, smin, smax, args.size, ds["array"], ds["label_format"]))
+    write_png(montage(panels, 3, args.size),
+              os.path.join(args.out, "hov_demo_%s_montage.png" % ds["tag"]))
+    lines.append("VTK's mappers render the %s made by %s in %.3f s "
+                 "(not included in their frame times). Reference: our float image of the "
+                 "native cells (%s), VTK-unstructured semantics, 5 colour/opacity nodes at the "
+                 "same scalars, unit distance %.3g." % (
+                     tessellated, tess_name, tess_time, describe_types(grid), ds["unit"]))
+    lines.append("")
+    lines.extend(comparison_rows(ok_cases, cases[0]["result"]["float_rgb"],
+                                 cases[0]["result"]["float_alpha"], failures,
+                                 input_column=True))
+    lines.append("- Frame times per render [s]: " + "; ".join(
+        "%s %s" % (c["key"], ", ".join("%.3f" % t for t in c["result"]["times"]))
+        for c in ok_cases))
+    return lines
+
+
+def describe_types(grid):
+    names = {10: "tetrahedra", 12: "hexahedra", 13: "wedges", 14: "pyramids",
+             24: "quadratic tetrahedra"}
+    counts = {}
+    for i in range(grid.GetNumberOfCells()):
+        t = grid.GetCellType(i)
+        counts[t] = counts.get(t, 0) + 1
+    return ", ".join("%d %s" % (n, names.get(t, "type %d" % t)) for t, n in sorted(counts.items()))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--data", default=DEFAULT_DATA, help="a .vtu of linear tetrahedra")
@@ -315,6 +543,8 @@ def main():
     parser.add_argument("--unit-distance", type=float, default=2.5,
                         help="scalar opacity unit distance (dataset units; bracket is 100x60x80)")
     parser.add_argument("--frames", type=int, default=3, help="timed renders per mapper (>= 3)")
+    parser.add_argument("--no-issue4", action="store_true",
+                        help="skip the quadratic-tet and mixed-cell datasets (issue 4)")
     args = parser.parse_args()
     frames = max(3, args.frames)
     os.makedirs(args.out, exist_ok=True)
@@ -336,7 +566,7 @@ def main():
     # Everything VTK prints (errors of objects we do not observe too) goes through here.
     log = vtkStringOutputWindow()
     vtkOutputWindow.SetInstance(log)
-    log_seen = 0
+    log.seen = 0  # characters of the log already shown
 
     def hov(semantics, ordering):
         m = vtkHighOrderVolumeMapper()
@@ -396,7 +626,7 @@ def main():
             continue
         res = case["result"]
         printed_all = log.GetOutput() or ""
-        printed, log_seen = printed_all[log_seen:], len(printed_all)
+        printed, log.seen = printed_all[log.seen:], len(printed_all)
         if printed:
             sys.stderr.write("[%s] VTK output:\n%s\n" % (case["key"], printed.strip()))
             if "ERROR" in printed:
@@ -445,42 +675,13 @@ def main():
                  "'CPU image' is GetLastImageTime() of the last frame."
                  % (prop.GetScalarOpacityUnitDistance(), frames))
     lines.append("")
-    lines.append("| mapper | opacity semantics | frame time [s] | CPU image [s] | compared image "
-                 "| max abs diff R/G/B | mean abs diff R/G/B | mean abs diff R/G/B, covered px "
-                 "| witness |")
-    lines.append("|---|---|---|---|---|---|---|---|---|")
-    for c in ok_cases:
-        res = c["result"]
-        ours = "float_rgb" in res
-        img = res["float_rgb"] if ours else res["screen_rgb"]
-        if img.shape != reference.shape:
-            failures.append("%s: image shape %s != reference %s"
-                            % (c["key"], img.shape, reference.shape))
-            continue
-        diff = np.abs(img - reference)
-        dmax = diff.reshape(-1, 3).max(axis=0)
-        dmean = diff.reshape(-1, 3).mean(axis=0)
-        covered = (ref_alpha > 1.0 / 255.0) | (img.max(axis=2) > 0.0)
-        dcov = diff[covered].mean(axis=0) if covered.any() else np.zeros(3)
-        note = " (other semantics: not comparable)" if c["semantics"] != "VTK-unstructured" else ""
-        lines.append("| %s | %s | %.3f | %s | %s | %s%s | %s | %s | %s |" % (
-            c["name"], c["semantics"], res["median"],
-            "%.3f" % res["cpu_time"] if ours else "-",
-            "float" if ours else "8-bit capture",
-            fmt3(dmax), note, fmt3(dmean), fmt3(dcov),
-            str(res["witness"]) if ours else "-"))
-        if ours:
-            # Sanity: our own 8-bit capture against our float image (display path).
-            disp = np.abs(res["screen_rgb"] - img).max()
-            c["display_diff"] = disp
-    lines.append("")
-    for c in ok_cases:
-        if "display_diff" in c:
-            lines.append("- %s: on-screen capture vs its own float image, max |diff| %.4f "
-                         "(8-bit display path)." % (c["key"], c["display_diff"]))
+    lines.extend(comparison_rows(ok_cases, reference, ref_alpha, failures))
     lines.append("- Frame times per render [s]: " + "; ".join(
         "%s %s" % (c["key"], ", ".join("%.3f" % t for t in c["result"]["times"]))
         for c in ok_cases))
+    if not args.no_issue4:
+        for ds in ISSUE4_DATASETS:
+            lines.extend(issue4_dataset(ds, args, frames, catcher, log, failures))
     table = "\n".join(lines)
     print(table)
     with open(os.path.join(args.out, "hov_demo_table.md"), "w") as f:

@@ -1,6 +1,7 @@
 // The reference ray integral of hovTestReference.h (IntegrateRay,
 // IntegrateRayBruteForce) and the naming / description helpers.
 #include "hovTestReference.h"
+#include "hovTestReferenceVector.h"
 
 #include "vtkColorTransferFunction.h"
 #include "vtkPiecewiseFunction.h"
@@ -19,49 +20,6 @@ namespace hovTestRef
 {
 namespace
 {
-/// A 3-vector the Boost quadrature can integrate (abs = max norm).
-struct QVec
-{
-  Real V[3];
-  QVec(Real x = 0)
-    : V{ x, x, x }
-  {
-  }
-  QVec(Real a, Real b, Real c)
-    : V{ a, b, c }
-  {
-  }
-  QVec& operator+=(const QVec& o)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      this->V[c] += o.V[c];
-    }
-    return *this;
-  }
-  QVec operator-() const { return QVec(-V[0], -V[1], -V[2]); }
-};
-inline QVec operator+(QVec a, const QVec& b)
-{
-  return a += b;
-}
-inline QVec operator-(const QVec& a, const QVec& b)
-{
-  return QVec(a.V[0] - b.V[0], a.V[1] - b.V[1], a.V[2] - b.V[2]);
-}
-inline QVec operator*(const QVec& a, Real s)
-{
-  return QVec(a.V[0] * s, a.V[1] * s, a.V[2] * s);
-}
-inline QVec operator*(Real s, const QVec& a)
-{
-  return a * s;
-}
-inline Real abs(const QVec& a)
-{
-  return std::max({ std::fabs(a.V[0]), std::fabs(a.V[1]), std::fabs(a.V[2]) });
-}
-
 /// Optical depth of a piece of length x on which the opacity goes linearly
 /// from aFront to a (exact for every semantics, see the header).
 Real PieceDepth(Real x, Real aFront, Real a, int semantics, Real unit)

@@ -16,8 +16,6 @@
 
 namespace hovTestRef
 {
-namespace
-{
 /// Segment-segment distance (Ericson, Real-Time Collision Detection 5.1.9).
 Real SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2)
 {
@@ -59,7 +57,6 @@ Real SegmentDistance(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3&
     }
   }
   return Norm(Sub(Add(p1, Scale(d1, s)), Add(p2, Scale(d2, t))));
-}
 }
 
 std::string CameraSpec::ToString() const
