@@ -85,13 +85,13 @@ def tjunction(out, size):
     lo, hi = grid.GetPointData().GetArray("speed").GetRange()
     mapper = vtkHighOrderVolumeMapper()
     mapper.SetInputData(grid)
-    volume = volume_for(mapper, lo, hi, 0.15, 1.0)
-    for value, rgb, opacity in ((0.6, (0.3, 0.6, 1.0), 0.25), (1.3, (1.0, 0.8, 0.3), 0.5),
+    volume = volume_for(mapper, lo, hi, 0.35, 0.5)
+    for value, rgb, opacity in ((0.75, (0.3, 0.6, 1.0), 0.3), (1.3, (1.0, 0.8, 0.3), 0.5),
                                 (2.0, (1.0, 0.3, 0.2), 0.9)):
         mapper.AddIsosurface(value, *rgb, opacity)
     cam = vtkCamera()
     cam.SetFocalPoint(0.0, 0.6, 0.0)
-    cam.SetPosition(1.8, 2.6, 4.2)
+    cam.SetPosition(1.4, 2.2, 3.4)
     cam.SetViewUp(0, 1, 0)
     cam.SetViewAngle(35)
     cam.SetClippingRange(1, 20)
@@ -115,10 +115,10 @@ def bracket(out, size):
     centre = [0.5 * (bounds[2 * k] + bounds[2 * k + 1]) for k in range(3)]
     diag = sum((bounds[2 * k + 1] - bounds[2 * k]) ** 2 for k in range(3)) ** 0.5
     cam.SetFocalPoint(*centre)
-    cam.SetPosition(centre[0] + 0.6 * diag, centre[1] + 0.9 * diag, centre[2] + 1.6 * diag)
+    cam.SetPosition(centre[0] + 1.2 * diag, centre[1] + 1.8 * diag, centre[2] + 3.2 * diag)
     cam.SetViewUp(0, 0, 1)
     cam.SetViewAngle(30)
-    cam.SetClippingRange(0.5 * diag, 4 * diag)
+    cam.SetClippingRange(0.5 * diag, 8 * diag)
     for splat in (False, True):
         mapper.SetSplatting(splat)
         mapper.RenderImage(cam, volume, size, size)
@@ -132,7 +132,7 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="features")
     parser.add_argument("--size", type=int, default=384)
-    parser.add_argument("--splat-size", type=int, default=160)
+    parser.add_argument("--splat-size", type=int, default=128)
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     tjunction(args.out, args.size)
