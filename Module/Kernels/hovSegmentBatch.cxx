@@ -126,9 +126,13 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
     }
     // IntegrateLinearScalarInInterval() -> IntegrateSegment() -> ExactSegmentWeights(),
     // taking the thin branch aside for the lanes.
-    SegmentEnd front, back;
-    tf.Evaluate(k, job.SFront, false, front);
-    tf.Evaluate(k, job.SBack, false, back);
+    // Evaluated straight into the next item's slot (taken only if the segment
+    // is thin): copying a SegmentEnd off the stack stalled on store forwarding.
+    ThinItem& item = this->Items[numItems];
+    const SegmentEnd& front = item.Front;
+    const SegmentEnd& back = item.Back;
+    tf.Evaluate(k, job.SFront, false, item.Front);
+    tf.Evaluate(k, job.SBack, false, item.Back);
     const double depthFront = std::max(front.Tau, 0.0) * job.Length;
     const double depthBack = std::max(back.Tau, 0.0) * job.Length;
     const double a = std::min(depthFront, detail::DepthCap);
@@ -140,14 +144,9 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
       out[i] = IntegrateSegment(job.Length, front, back, settings.Emission, settings.Method);
       continue;
     }
-    ThinItem& item = this->Items[numItems++];
+    ++numItems;
     item.A = a;
     item.D1 = d1;
-    for (int ch = 0; ch < 3; ++ch)
-    {
-      item.Front[ch] = front.Color[ch];
-      item.Back[ch] = back.Color[ch];
-    }
     item.Index = i;
     item.Terms = detail::ThinTerms()(d1);
     ++perTerms[item.Terms + 1];
@@ -192,9 +191,9 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
         const double wb = std::max(0.0, alpha[l] - w[l]);
         RGBA& o = out[item.Index];
         o.A = alpha[l];
-        o.R = wf * item.Front[0] + wb * item.Back[0];
-        o.G = wf * item.Front[1] + wb * item.Back[1];
-        o.B = wf * item.Front[2] + wb * item.Back[2];
+        o.R = wf * item.Front.Color[0] + wb * item.Back.Color[0];
+        o.G = wf * item.Front.Color[1] + wb * item.Back.Color[1];
+        o.B = wf * item.Front.Color[2] + wb * item.Back.Color[2];
       }
       done += lanes;
     }

@@ -26,6 +26,7 @@
 #include "hovCompositing.h"
 #include "hovConfig.h"
 #include "hovRayIntegrator.h" // IntegrationSettings
+#include "hovSegmentIntegral.h" // SegmentEnd
 
 #include <vector> // scratch
 
@@ -60,8 +61,8 @@ private:
   /// A thin Williams-Max segment waiting for its block.
   struct ThinItem
   {
+    SegmentEnd Front, Back; ///< transfer function at both ends (evaluated in place)
     double A, D1;           ///< front depth rate tauFront L and total depth D(1)
-    double Front[3], Back[3]; ///< chromaticities at both ends
     int Index;              ///< into out
     int Terms;              ///< series terms (as the scalar kernel)
   };
