@@ -94,6 +94,7 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
   }
   int numItems = 0;
   int perTerms[detail::MaxThinOrder + 2] = {};
+  const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
   for (int i = 0; i < count; ++i)
   {
     const SegmentJob& job = jobs[i];
@@ -148,44 +149,48 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
     item.A = a;
     item.D1 = d1;
     item.Index = i;
-    item.Terms = detail::ThinTerms()(d1);
+    item.Terms = thinTerms(d1);
     ++perTerms[item.Terms + 1];
   }
 
-  // Group the thin segments by number of terms (counting sort), Lanes at a time.
+  // Group the thin segments by number of terms (counting sort), their depths
+  // contiguous, then each group Lanes at a time (lanes are independent: the
+  // grouping does not change any result).
   for (int t = 0; t <= detail::MaxThinOrder; ++t)
   {
     perTerms[t + 1] += perTerms[t];
   }
+  int groupStart[detail::MaxThinOrder + 2];
+  std::copy(perTerms, perTerms + detail::MaxThinOrder + 2, groupStart);
+  if (this->SortedA.size() < static_cast<size_t>(numItems + Lanes))
+  {
+    this->SortedA.resize(numItems + Lanes);
+    this->SortedD1.resize(numItems + Lanes);
+  }
   for (int n = 0; n < numItems; ++n)
   {
-    this->Order[perTerms[this->Items[n].Terms]++] = n;
+    const ThinItem& item = this->Items[n];
+    const int pos = perTerms[item.Terms]++;
+    this->Order[pos] = n;
+    this->SortedA[pos] = item.A;
+    this->SortedD1[pos] = item.D1;
   }
-  for (int first = 0; first < numItems; first += Lanes)
+  for (int terms = 1; terms <= detail::MaxThinOrder; ++terms)
   {
-    // A block may mix two term counts at a bucket boundary: it then runs with
-    // the larger count for the lanes that have it and again for the others.
-    const int last = std::min(first + Lanes, numItems);
-    int done = first;
-    while (done < last)
+    const int last = groupStart[terms + 1];
+    for (int first = groupStart[terms]; first < last; first += Lanes)
     {
-      const int terms = this->Items[this->Order[done]].Terms;
+      const int lanes = std::min(Lanes, last - first);
       double a[Lanes], d1[Lanes], w[Lanes], alpha[Lanes];
-      int lanes = 0;
-      for (int m = done; m < last && this->Items[this->Order[m]].Terms == terms; ++m, ++lanes)
+      for (int l = 0; l < Lanes; ++l)
       {
-        a[lanes] = this->Items[this->Order[m]].A;
-        d1[lanes] = this->Items[this->Order[m]].D1;
-      }
-      for (int l = lanes; l < Lanes; ++l)
-      {
-        a[l] = 0.0; // padding: any valid thin segment
-        d1[l] = 1.0 / 8.0;
+        a[l] = l < lanes ? this->SortedA[first + l] : 0.0; // padding: any valid thin segment
+        d1[l] = l < lanes ? this->SortedD1[first + l] : 1.0 / 8.0;
       }
       ThinWilliamsMaxLanes(terms, a, d1, w, alpha);
       for (int l = 0; l < lanes; ++l)
       {
-        const ThinItem& item = this->Items[this->Order[done + l]];
+        const ThinItem& item = this->Items[this->Order[first + l]];
         // As ThinWeights() and IntegrateSegment().
         const double wf = std::max(0.0, w[l]);
         const double wb = std::max(0.0, alpha[l] - w[l]);
@@ -195,7 +200,6 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
         o.G = wf * item.Front.Color[1] + wb * item.Back.Color[1];
         o.B = wf * item.Front.Color[2] + wb * item.Back.Color[2];
       }
-      done += lanes;
     }
   }
   return total;
