@@ -253,8 +253,8 @@ void vtkHighOrderProjectorTile::ForCellSegments(
       {
         continue;
       }
-      r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - this->X0);
-      r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - this->X0);
+      r0 = std::max(r0, CeilToInt(xMin - 0.5 - BoxMargin) - this->X0);
+      r1 = std::min(r1, FloorToInt(xMax - 0.5 + BoxMargin) - this->X0);
     }
 #ifdef HOV_CLIP_LANES
     double spanIn[MaxTileSize + PixelLanes], spanOut[MaxTileSize + PixelLanes];

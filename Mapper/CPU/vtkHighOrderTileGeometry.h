@@ -157,6 +157,21 @@ struct ProjectedEdges
   }
 };
 
+/// std::ceil / std::floor to int for |v| < 2^30 (beyond: clamped to +-2^30),
+/// without the library call's software rounding on baseline x86-64.
+inline int CeilToInt(double v)
+{
+  v = std::min(std::max(v, -1073741824.0), 1073741824.0);
+  const int i = static_cast<int>(v); // rounds toward zero
+  return i + (static_cast<double>(i) < v ? 1 : 0);
+}
+inline int FloorToInt(double v)
+{
+  v = std::min(std::max(v, -1073741824.0), 1073741824.0);
+  const int i = static_cast<int>(v);
+  return i - (v < static_cast<double>(i) ? 1 : 0);
+}
+
 /// Window-x range of the projected cell on the row at height y; false if
 /// the row misses it. (Round-off here only widens or narrows the candidate
 /// pixels by far less than BoxMargin; the ray clip decides exactly.)
