@@ -7,6 +7,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -173,29 +174,32 @@ struct EntryRecord
   vtkIdType Face; ///< index into the faces
 };
 
+/// The tiles a face's extents cover: ix0, ix1, iy0, iy1 (inclusive).
+using TileRange = std::array<int, 4>;
+
 /// Tile lists (CSR) of the faces with role @p role (1 EXIT, 2 ENTRY);
 /// @p lists holds the face indices, in face order within each tile.
 void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
-  const std::vector<FaceData>& data, int role, std::vector<vtkIdType>& start,
+  const std::vector<TileRange>& ranges, int role, std::vector<vtkIdType>& start,
   std::vector<vtkIdType>& lists)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   start.assign(nt + 1, 0);
-  auto forTiles = [&](const FaceData& d, auto&& fn) {
-    for (int iy = grid.IY(d.Box[2]), iy1 = grid.IY(d.Box[3]); iy <= iy1; ++iy)
+  auto forTiles = [&](const TileRange& r, auto&& fn) {
+    for (int iy = r[2]; iy <= r[3]; ++iy)
     {
-      for (int ix = grid.IX(d.Box[0]), ix1 = grid.IX(d.Box[1]); ix <= ix1; ++ix)
+      for (int ix = r[0]; ix <= r[1]; ++ix)
       {
         fn(static_cast<vtkIdType>(iy) * grid.NX + ix);
       }
     }
   };
-  const vtkIdType nf = static_cast<vtkIdType>(data.size());
+  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
   for (vtkIdType i = 0; i < nf; ++i)
   {
     if (faces[i].Roles & role)
     {
-      forTiles(data[i], [&](vtkIdType tile) { ++start[tile + 1]; });
+      forTiles(ranges[i], [&](vtkIdType tile) { ++start[tile + 1]; });
     }
   }
   for (vtkIdType i = 0; i < nt; ++i)
@@ -208,7 +212,7 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
   {
     if (faces[i].Roles & role)
     {
-      forTiles(data[i], [&](vtkIdType tile) { lists[cursor[tile]++] = i; });
+      forTiles(ranges[i], [&](vtkIdType tile) { lists[cursor[tile]++] = i; });
     }
   }
 }
@@ -233,9 +237,17 @@ void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>
   const PairGrid grid = MakePairGrid(v, data);
   // Per tile, the EXIT faces against the ENTRY faces: two lists, the entries
   // as contiguous records (the search rejects almost every candidate on them).
+  std::vector<TileRange> ranges(nf);
+  vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const float* b = data[i].Box;
+      ranges[i] = { grid.IX(b[0]), grid.IX(b[1]), grid.IY(b[2]), grid.IY(b[3]) };
+    }
+  });
   std::vector<vtkIdType> exitStart, exitLists, entryStart, entryLists;
-  BinFaces(grid, faces, data, 1, exitStart, exitLists);
-  BinFaces(grid, faces, data, 2, entryStart, entryLists);
+  BinFaces(grid, faces, ranges, 1, exitStart, exitLists);
+  BinFaces(grid, faces, ranges, 2, entryStart, entryLists);
   std::vector<EntryRecord> entries(entryLists.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(entryLists.size()), 4096,
     [&](vtkIdType begin, vtkIdType end) {
