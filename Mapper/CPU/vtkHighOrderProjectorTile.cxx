@@ -334,6 +334,8 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
     this->Results.data(), this->Pieces.data());
   // In queue order, skipping pixels that turned opaque meanwhile: exactly
   // what compositing one segment at a time does.
+  // (Counted in locals: the byte stores to Done may alias the statistics.)
+  vtkIdType segments = 0, pieces = 0;
   for (int m = 0; m < n; ++m)
   {
     const PendingSegment& seg = this->Pending[m];
@@ -343,9 +345,11 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
     }
     this->Witness(frame, seg.Pixel, seg.TIn, seg.TOut);
     this->Composite(frame, seg.Pixel, this->Results[m]);
-    ++st.Segments;
-    st.Pieces += this->Pieces[m];
+    ++segments;
+    pieces += this->Pieces[m];
   }
+  st.Segments += segments;
+  st.Pieces += pieces;
   this->NumQueued = 0;
 }
 

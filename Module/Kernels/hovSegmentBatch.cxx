@@ -19,8 +19,10 @@ constexpr int Lanes = 4;
 
 // With GCC or Clang on x86-64 the lane loops are also compiled for AVX2 (four
 // lanes per instruction) and the variant is chosen at load time; both variants
-// perform the same IEEE operations (no contraction into fused multiply-adds
-// under -std=c++17), so the result does not depend on the CPU.
+// perform the same IEEE operations (the "avx2" target does not enable FMA, so
+// nothing is contracted into fused multiply-adds; -std=c++17 alone would not
+// prevent it: GCC 12 contracts wherever FMA is enabled), so the result does
+// not depend on the CPU.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
 #define HOV_LANES_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
 #else

@@ -12,7 +12,9 @@
  * the scalar kernel uses) and evaluated four at a time, lane by lane with
  * exactly the scalar kernel's operations in the scalar kernel's order, so the
  * result does not change in any bit (no fused multiply-add is introduced: the
- * module compiles with -std=c++17, which disables contraction). Every other
+ * module targets baseline x86-64 and the extra AVX2 clone does not enable FMA;
+ * note that GCC contracts a*b+c even under -std=c++17 wherever FMA is enabled,
+ * e.g. with -march=native). Every other
  * segment (several transfer-function intervals, thick, opaque, Wilhelms-Van
  * Gelder emission or the approximate method) goes through the scalar kernels.
  *
