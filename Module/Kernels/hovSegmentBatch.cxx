@@ -35,8 +35,8 @@ constexpr int Lanes = 4;
  * the same order per lane, so each lane's w = WFront (before clamping) and
  * alpha equal the scalar kernel's bit for bit.
  */
-HOV_LANES_TARGET_CLONES
-void ThinWilliamsMaxLanes(int terms, const double* a, const double* d1, double* w, double* alpha)
+inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
+  int terms, const double* a, const double* d1, double* w, double* alpha)
 {
   // Four lanes in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
   typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
@@ -73,6 +73,18 @@ void ThinWilliamsMaxLanes(int terms, const double* a, const double* d1, double* 
   const V4 valpha = vd1 * aOdd - d2 * aEven;
   std::memcpy(w, &vw, sizeof(V4));
   std::memcpy(alpha, &valpha, sizeof(V4));
+}
+
+/// ThinWilliamsMaxLanes() on @p blocks consecutive blocks of Lanes segments
+/// (one call per group of equal term counts: no dispatch per block).
+HOV_LANES_TARGET_CLONES
+void ThinWilliamsMaxBlocks(
+  int terms, const double* a, const double* d1, int blocks, double* w, double* alpha)
+{
+  for (int b = 0; b < blocks; ++b)
+  {
+    ThinWilliamsMaxLanes(terms, a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
+  }
 }
 }
 
@@ -177,32 +189,43 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
     this->SortedA[pos] = item.A;
     this->SortedD1[pos] = item.D1;
   }
+  if (this->W.size() < static_cast<size_t>(numItems + Lanes))
+  {
+    this->W.resize(numItems + Lanes);
+    this->Alpha.resize(numItems + Lanes);
+  }
   for (int terms = 1; terms <= detail::MaxThinOrder; ++terms)
   {
-    const int last = groupStart[terms + 1];
-    for (int first = groupStart[terms]; first < last; first += Lanes)
+    const int first = groupStart[terms], last = groupStart[terms + 1];
+    const int full = (last - first) / Lanes;
+    ThinWilliamsMaxBlocks(terms, this->SortedA.data() + first, this->SortedD1.data() + first,
+      full, this->W.data() + first, this->Alpha.data() + first);
+    const int tail = first + full * Lanes;
+    if (tail < last)
     {
-      const int lanes = std::min(Lanes, last - first);
-      double a[Lanes], d1[Lanes], w[Lanes], alpha[Lanes];
+      double a[Lanes], d1[Lanes];
       for (int l = 0; l < Lanes; ++l)
       {
-        a[l] = l < lanes ? this->SortedA[first + l] : 0.0; // padding: any valid thin segment
-        d1[l] = l < lanes ? this->SortedD1[first + l] : 1.0 / 8.0;
+        a[l] = tail + l < last ? this->SortedA[tail + l] : 0.0; // padding: any valid thin segment
+        d1[l] = tail + l < last ? this->SortedD1[tail + l] : 1.0 / 8.0;
       }
-      ThinWilliamsMaxLanes(terms, a, d1, w, alpha);
-      for (int l = 0; l < lanes; ++l)
-      {
-        const ThinItem& item = this->Items[this->Order[first + l]];
-        // As ThinWeights() and IntegrateSegment().
-        const double wf = std::max(0.0, w[l]);
-        const double wb = std::max(0.0, alpha[l] - w[l]);
-        RGBA& o = out[item.Index];
-        o.A = alpha[l];
-        o.R = wf * item.Front.Color[0] + wb * item.Back.Color[0];
-        o.G = wf * item.Front.Color[1] + wb * item.Back.Color[1];
-        o.B = wf * item.Front.Color[2] + wb * item.Back.Color[2];
-      }
+      double w[Lanes], alpha[Lanes];
+      ThinWilliamsMaxBlocks(terms, a, d1, 1, w, alpha);
+      std::copy(w, w + (last - tail), this->W.data() + tail);
+      std::copy(alpha, alpha + (last - tail), this->Alpha.data() + tail);
     }
+  }
+  for (int m = 0; m < numItems; ++m)
+  {
+    const ThinItem& item = this->Items[this->Order[m]];
+    // As ThinWeights() and IntegrateSegment().
+    const double wf = std::max(0.0, this->W[m]);
+    const double wb = std::max(0.0, this->Alpha[m] - this->W[m]);
+    RGBA& o = out[item.Index];
+    o.A = this->Alpha[m];
+    o.R = wf * item.Front.Color[0] + wb * item.Back.Color[0];
+    o.G = wf * item.Front.Color[1] + wb * item.Back.Color[1];
+    o.B = wf * item.Front.Color[2] + wb * item.Back.Color[2];
   }
   return total;
 }

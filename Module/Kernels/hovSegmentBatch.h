@@ -71,6 +71,7 @@ private:
   std::vector<ThinItem> Items;
   std::vector<int> Order; ///< Items grouped by Terms
   std::vector<double> SortedA, SortedD1; ///< their A and D1 in that order
+  std::vector<double> W, Alpha;          ///< the series' results in that order
 };
 }
 
