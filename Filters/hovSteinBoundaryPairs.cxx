@@ -7,6 +7,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -163,24 +164,43 @@ inline bool Disjoint(const float* a, const float* b)
   return a[1] <= b[0] || b[1] <= a[0] || a[3] <= b[2] || b[3] <= a[2];
 }
 
-/// Tile lists (CSR) of the faces.
-void BinFaces(const PairGrid& grid, const std::vector<FaceData>& data, std::vector<vtkIdType>& start,
+/// A face in the ENTRY lists of the tiles: what the pair search rejects on,
+/// stored contiguously in tile order (the search streams through it).
+struct EntryRecord
+{
+  float Box[4];
+  double Rear;
+  vtkIdType Cell;
+  vtkIdType Face; ///< index into the faces
+};
+
+/// The tiles a face's extents cover: ix0, ix1, iy0, iy1 (inclusive).
+using TileRange = std::array<int, 4>;
+
+/// Tile lists (CSR) of the faces with role @p role (1 EXIT, 2 ENTRY);
+/// @p lists holds the face indices, in face order within each tile.
+void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
+  const std::vector<TileRange>& ranges, int role, std::vector<vtkIdType>& start,
   std::vector<vtkIdType>& lists)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   start.assign(nt + 1, 0);
-  auto forTiles = [&](const FaceData& d, auto&& fn) {
-    for (int iy = grid.IY(d.Box[2]), iy1 = grid.IY(d.Box[3]); iy <= iy1; ++iy)
+  auto forTiles = [&](const TileRange& r, auto&& fn) {
+    for (int iy = r[2]; iy <= r[3]; ++iy)
     {
-      for (int ix = grid.IX(d.Box[0]), ix1 = grid.IX(d.Box[1]); ix <= ix1; ++ix)
+      for (int ix = r[0]; ix <= r[1]; ++ix)
       {
         fn(static_cast<vtkIdType>(iy) * grid.NX + ix);
       }
     }
   };
-  for (const FaceData& d : data)
+  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
+  for (vtkIdType i = 0; i < nf; ++i)
   {
-    forTiles(d, [&](vtkIdType tile) { ++start[tile + 1]; });
+    if (faces[i].Roles & role)
+    {
+      forTiles(ranges[i], [&](vtkIdType tile) { ++start[tile + 1]; });
+    }
   }
   for (vtkIdType i = 0; i < nt; ++i)
   {
@@ -188,9 +208,12 @@ void BinFaces(const PairGrid& grid, const std::vector<FaceData>& data, std::vect
   }
   lists.resize(start[nt]);
   std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
-  for (vtkIdType i = 0; i < static_cast<vtkIdType>(data.size()); ++i)
+  for (vtkIdType i = 0; i < nf; ++i)
   {
-    forTiles(data[i], [&](vtkIdType tile) { lists[cursor[tile]++] = i; });
+    if (faces[i].Roles & role)
+    {
+      forTiles(ranges[i], [&](vtkIdType tile) { lists[cursor[tile]++] = i; });
+    }
   }
 }
 }
@@ -212,8 +235,32 @@ void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>
   });
 
   const PairGrid grid = MakePairGrid(v, data);
-  std::vector<vtkIdType> start, lists;
-  BinFaces(grid, data, start, lists);
+  // Per tile, the EXIT faces against the ENTRY faces: two lists, the entries
+  // as contiguous records (the search rejects almost every candidate on them).
+  std::vector<TileRange> ranges(nf);
+  vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const float* b = data[i].Box;
+      ranges[i] = { grid.IX(b[0]), grid.IX(b[1]), grid.IY(b[2]), grid.IY(b[3]) };
+    }
+  });
+  std::vector<vtkIdType> exitStart, exitLists, entryStart, entryLists;
+  BinFaces(grid, faces, ranges, 1, exitStart, exitLists);
+  BinFaces(grid, faces, ranges, 2, entryStart, entryLists);
+  std::vector<EntryRecord> entries(entryLists.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(entryLists.size()), 4096,
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const vtkIdType gi = entryLists[i];
+        EntryRecord& e = entries[i];
+        std::copy(data[gi].Box, data[gi].Box + 4, e.Box);
+        e.Rear = data[gi].Rear;
+        e.Cell = faces[gi].Cell;
+        e.Face = gi;
+      }
+    });
 
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
@@ -225,31 +272,26 @@ void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>
       for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
       {
         const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
-        for (vtkIdType i = start[tile]; i < start[tile + 1]; ++i)
+        const EntryRecord* first = entries.data() + entryStart[tile];
+        const EntryRecord* last = entries.data() + entryStart[tile + 1];
+        for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
         {
-          const vtkIdType fi = lists[i];
-          if (!(faces[fi].Roles & 1))
-          {
-            continue;
-          }
+          const vtkIdType fi = exitLists[i];
           const FaceData& F = data[fi];
           const vtkIdType a = faces[fi].Cell;
-          const double tol = 1e-9 * (std::abs(F.Front) + g.Diagonal);
-          for (vtkIdType j = start[tile]; j < start[tile + 1]; ++j)
+          const double front = F.Front - 1e-9 * (std::abs(F.Front) + g.Diagonal);
+          for (const EntryRecord* G = first; G != last; ++G)
           {
-            const vtkIdType gi = lists[j];
-            const FaceData& G = data[gi];
-            const vtkIdType b = faces[gi].Cell;
-            if (b == a || !(faces[gi].Roles & 2) || G.Rear < F.Front - tol || Disjoint(F.Box, G.Box) ||
-              grid.IX(std::max(F.Box[0], G.Box[0])) != ix ||
-              grid.IY(std::max(F.Box[2], G.Box[2])) != iy)
+            if (G->Cell == a || G->Rear < front || Disjoint(F.Box, G->Box) ||
+              grid.IX(std::max(F.Box[0], G->Box[0])) != ix ||
+              grid.IY(std::max(F.Box[2], G->Box[2])) != iy)
             {
               continue;
             }
             ++blockCount[blk];
-            if (SomeCornerOutside(g, F, G) && SomeCornerOutside(g, G, F))
+            if (SomeCornerOutside(g, F, data[G->Face]) && SomeCornerOutside(g, data[G->Face], F))
             {
-              blockPairs[blk].emplace_back(a, b);
+              blockPairs[blk].emplace_back(a, G->Cell);
             }
           }
         }

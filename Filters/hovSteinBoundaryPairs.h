@@ -26,7 +26,8 @@
  * visible-part extents and depth range. Undecided interior faces (non-planar
  * faces with the eye near them) are EXIT and ENTRY faces of both their cells.
  *
- * Face pairs are found with a uniform screen grid (each pair in the tile of
+ * Face pairs are found with a uniform screen grid, per tile the EXIT faces
+ * against the ENTRY faces (each pair in the tile of
  * the lower-left corner of the intersection of the extents), in parallel over
  * blocks of tiles; the cell pairs are sorted and made unique, then tested in
  * parallel. Results do not depend on the thread count.

@@ -104,7 +104,20 @@ void FaceDirections(const Geometry& g, const Topology& t, const View& v, std::ve
         dir[i] = 0;
         continue;
       }
-      const int side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
+      // EyeSide(g, v.Frame, t.A[i], t.FaceA[i]), exact faces from the topology's record.
+      int side;
+      if (t.ModeA[i] == FaceExact)
+      {
+        const vtkIdType* ids = t.TripleA.data() + 3 * i;
+        const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *c = g.Point(ids[2]);
+        const ViewFrame& f = v.Frame;
+        const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
+        side = f.Parallel ? hov::Orient3dDirection(a, b, c, back) : hov::Orient3d(a, b, c, f.Eye);
+      }
+      else
+      {
+        side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
+      }
       // Eye on B's side (outside A's face): B is nearer, A comes first.
       dir[i] = static_cast<std::int8_t>(side == EyeOutside ? 1 : side == EyeInside ? -1 : side == EyeOn ? 0 : 2);
     }

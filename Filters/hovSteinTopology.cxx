@@ -207,6 +207,19 @@ void Topology::Build(const Geometry& g)
       this->BoundaryFaces[c] |= static_cast<std::uint8_t>(1 << f);
     }
   }
+  const vtkIdType numInterior = this->NumberOfInteriorFaces();
+  this->ModeA.resize(numInterior);
+  this->TripleA.assign(3 * numInterior, 0);
+  vtkSMPTools::For(0, numInterior, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      this->ModeA[i] = g.FaceCode(this->A[i], this->FaceA[i]) & 3;
+      if (this->ModeA[i] == FaceExact)
+      {
+        g.ExactTriple(this->A[i], this->FaceA[i], this->TripleA.data() + 3 * i);
+      }
+    }
+  });
   this->NumberOfBoundaryCells = 0;
   for (vtkIdType c = 0; c < n; ++c)
   {

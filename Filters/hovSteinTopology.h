@@ -31,6 +31,11 @@ struct Topology
   /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
   std::vector<vtkIdType> A, B;
   std::vector<std::uint8_t> FaceA;
+  /// Per interior face: the mode of A's face (FaceCode & 3) and, for exact
+  /// faces, its three corners as Geometry::ExactTriple gives them (the per-view
+  /// side test then reads one contiguous record instead of the cell's tables).
+  std::vector<std::uint8_t> ModeA;
+  std::vector<vtkIdType> TripleA; ///< 3 per interior face
   /// Per cell: bit f set when face f is a boundary face.
   std::vector<std::uint8_t> BoundaryFaces;
   vtkIdType NumberOfBoundaryCells = 0;

@@ -20,19 +20,18 @@ using namespace hovTileGeometry;
 #define HOV_SPAN_TARGET_CLONES
 #endif
 /**
- * ClipRayLanes() for the pixels [first, first + count) of a row (rays and
- * limits consecutive in memory): hit[i] is its result (1 hit, 0 miss, -1
- * undecided). Compiled also for AVX2 (one instruction per four-plane
- * operation), chosen at load time; the operations, hence the results, are the
- * same on every CPU.
+ * ClipPixelLanes() for the pixels [p, p + count) of a row (the tile's ray
+ * arrays are padded for the last block of lanes). Compiled also for AVX2 (one
+ * instruction per four-pixel operation), chosen at load time; the operations,
+ * hence the results, are the same on every CPU.
  */
 HOV_SPAN_TARGET_CLONES
-void ClipSpan(const FacePlanes& planes, const Ray* rays, const double* tMax, int count,
-  double* tIn, double* tOut, signed char* hit)
+void ClipSpan(const CellRecord& cell, const TileRays& rays, size_t p, int count, double* tIn,
+  double* tOut, double* sIn, double* sOut, signed char* hit)
 {
-  for (int i = 0; i < count; ++i)
+  for (int i = 0; i < count; i += PixelLanes)
   {
-    hit[i] = static_cast<signed char>(ClipRayLanes(planes, rays[i], tMax[i], tIn[i], tOut[i]));
+    ClipPixelLanes(cell, rays, p + i, tIn + i, tOut + i, sIn + i, sOut + i, hit + i);
   }
 }
 #endif
@@ -180,6 +179,25 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
       this->TMax[p] = tMax;
     }
   }
+#ifdef HOV_CLIP_LANES
+  // The rays again as padded arrays per coordinate, for the pixel lanes.
+  const size_t padded = n + PixelLanes;
+  this->TMax.resize(padded, 0.0);
+  this->LaneStore.assign(6 * padded, 0.0);
+  double* a = this->LaneStore.data();
+  for (size_t p = 0; p < n; ++p)
+  {
+    const Ray& ray = this->Rays[p];
+    a[p] = ray.Origin.x;
+    a[padded + p] = ray.Origin.y;
+    a[2 * padded + p] = ray.Origin.z;
+    a[3 * padded + p] = ray.Direction.x;
+    a[4 * padded + p] = ray.Direction.y;
+    a[5 * padded + p] = ray.Direction.z;
+  }
+  this->LaneRays = { a, a + padded, a + 2 * padded, a + 3 * padded, a + 4 * padded,
+    a + 5 * padded, this->TMax.data() };
+#endif
 }
 
 void vtkHighOrderProjectorTile::Write(
@@ -206,9 +224,6 @@ void vtkHighOrderProjectorTile::ForCellSegments(
   const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit)
 {
   const CellRecord& cell = (*frame.Cells)[k];
-#ifdef HOV_CLIP_LANES
-  const FacePlanes planes(cell);
-#endif
   const Box& b = cell.PixelBox;
   const int i0 = std::max(b[0], this->X0) - this->X0;
   const int i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
@@ -226,17 +241,18 @@ void vtkHighOrderProjectorTile::ForCellSegments(
       {
         continue;
       }
-      r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - this->X0);
-      r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - this->X0);
+      r0 = std::max(r0, CeilToInt(xMin - 0.5 - BoxMargin) - this->X0);
+      r1 = std::min(r1, FloorToInt(xMax - 0.5 + BoxMargin) - this->X0);
     }
 #ifdef HOV_CLIP_LANES
-    double spanIn[MaxTileSize], spanOut[MaxTileSize];
-    signed char spanHit[MaxTileSize];
+    double spanIn[MaxTileSize + PixelLanes], spanOut[MaxTileSize + PixelLanes];
+    double spanSIn[MaxTileSize + PixelLanes], spanSOut[MaxTileSize + PixelLanes];
+    signed char spanHit[MaxTileSize + PixelLanes];
     const size_t rowStart = static_cast<size_t>(j) * this->W;
     if (r1 >= r0)
     {
-      ClipSpan(planes, this->Rays.data() + rowStart + r0, this->TMax.data() + rowStart + r0,
-        r1 - r0 + 1, spanIn, spanOut, spanHit);
+      ClipSpan(cell, this->LaneRays, rowStart + r0, r1 - r0 + 1, spanIn, spanOut, spanSIn,
+        spanSOut, spanHit);
     }
 #endif
     for (int i = r0; i <= r1; ++i)
@@ -250,11 +266,13 @@ void vtkHighOrderProjectorTile::ForCellSegments(
       double tIn, tOut;
 #ifdef HOV_CLIP_LANES
       const int hit = spanHit[i - r0];
-      tIn = spanIn[i - r0];
-      tOut = spanOut[i - r0];
+      if (hit > 0)
+      {
+        visit(p, spanIn[i - r0], spanOut[i - r0], spanSIn[i - r0], spanSOut[i - r0]);
+        continue;
+      }
       if (hit == 0 ||
-        (hit < 0 &&
-          !ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut)))
+        !ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
 #else
       if (!ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
 #endif
@@ -304,6 +322,8 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
     this->Results.data(), this->Pieces.data());
   // In queue order, skipping pixels that turned opaque meanwhile: exactly
   // what compositing one segment at a time does.
+  // (Counted in locals: the byte stores to Done may alias the statistics.)
+  vtkIdType segments = 0, pieces = 0;
   for (int m = 0; m < n; ++m)
   {
     const PendingSegment& seg = this->Pending[m];
@@ -313,9 +333,11 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
     }
     this->Witness(frame, seg.Pixel, seg.TIn, seg.TOut);
     this->Composite(frame, seg.Pixel, this->Results[m]);
-    ++st.Segments;
-    st.Pieces += this->Pieces[m];
+    ++segments;
+    pieces += this->Pieces[m];
   }
+  st.Segments += segments;
+  st.Pieces += pieces;
   this->NumQueued = 0;
 }
 

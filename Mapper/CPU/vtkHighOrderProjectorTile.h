@@ -72,6 +72,13 @@ public:
     bool Projectable;     ///< every vertex in front of the eye plane
   };
 
+  /// The rays of a tile as arrays per coordinate (padded: a block of pixel
+  /// lanes may read past any pixel), for the lanes of vtkHighOrderTileGeometry.h.
+  struct TileRays
+  {
+    const double *OX, *OY, *OZ, *DX, *DY, *DZ, *TMax;
+  };
+
   /// Cells binned into image tiles, each tile's list in visibility order.
   struct Bins
   {
@@ -166,6 +173,8 @@ private:
   static constexpr int BandPixels = 64;
   std::vector<vtkHighOrderViewRays::Ray> Rays;
   std::vector<double> TMax;
+  std::vector<double> LaneStore;   ///< the rays per coordinate (vtkHighOrderTileGeometry.h)
+  TileRays LaneRays{};
   std::vector<hov::RGBA> Accum;
   std::vector<double> MaxExit;
   std::vector<unsigned char> Violated;

@@ -1,7 +1,7 @@
 /**
  * @file    vtkHighOrderTileGeometry.h
  * @brief   Private to vtkHighOrderProjectorTile: exact ray clipping against a
- *          cell's four face planes (scalar, and four planes at once in vector
+ *          cell's four face planes (scalar, and four pixels at once in vector
  *          lanes) and the window-x span of a projected cell on a pixel row.
  *
  * Header only (inline helpers of one translation unit), in namespace
@@ -63,44 +63,69 @@ inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const g
 
 #if defined(__GNUC__) // GCC and Clang: vector extensions
 #define HOV_CLIP_LANES 1
-/// The four face planes of a cell, one per lane (a GCC/Clang vector: two SSE2
-/// or one AVX instruction per operation).
+/// Four doubles in a GCC/Clang vector: one AVX instruction, or two SSE2 ones.
 typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
-struct FacePlanes
-{
-  V4 NX, NY, NZ, Offset;
-  explicit FacePlanes(const CellRecord& cell)
-  {
-    std::memcpy(&this->NX, cell.NX, sizeof(V4));
-    std::memcpy(&this->NY, cell.NY, sizeof(V4));
-    std::memcpy(&this->NZ, cell.NZ, sizeof(V4));
-    std::memcpy(&this->Offset, cell.Offset, sizeof(V4));
-  }
-};
+
+using TileRays = vtkHighOrderProjectorTile::TileRays;
+constexpr int PixelLanes = 4; ///< pixels per ClipPixelLanes() call
 
 /**
- * ClipRay() for the four planes at once, branch free: the same products,
- * sums and quotients in the same order (dot products as glm::dot computes
- * them), and min/max, which do not depend on the order, so the result is
- * bit-identical. Returns -1 (undecided: call ClipRay) if a ray is parallel to
- * a face (denominator exactly 0), where ClipRay's tie rules apply.
+ * ClipRay() and the scalars at both ends of the segment for the PixelLanes
+ * consecutive pixels from @p p, one pixel per lane, branch free: the same
+ * products, sums and quotients in the same order (dot products as glm::dot
+ * computes them), and min/max, which do not depend on the order, so the
+ * result is bit-identical. hit[l]: 1 hit, 0 miss, -1 undecided (a ray
+ * parallel to a face, denominator exactly 0, where ClipRay's tie rules apply).
  */
-inline int ClipRayLanes(const FacePlanes& f, const Ray& ray, double tMax, double& tIn, double& tOut)
+__attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell, const TileRays& r, size_t p, double* tIn,
+  double* tOut, double* sIn, double* sOut, signed char* hit)
 {
-  const V4 denom = (f.NX * ray.Direction.x + f.NY * ray.Direction.y) + f.NZ * ray.Direction.z;
-  const V4 num = f.Offset - ((f.NX * ray.Origin.x + f.NY * ray.Origin.y) + f.NZ * ray.Origin.z);
-  if (denom[0] == 0.0 || denom[1] == 0.0 || denom[2] == 0.0 || denom[3] == 0.0)
-  {
-    return -1;
-  }
-  const V4 t = num / denom;
+  V4 ox, oy, oz, dx, dy, dz, tMax;
+  std::memcpy(&ox, r.OX + p, sizeof(V4));
+  std::memcpy(&oy, r.OY + p, sizeof(V4));
+  std::memcpy(&oz, r.OZ + p, sizeof(V4));
+  std::memcpy(&dx, r.DX + p, sizeof(V4));
+  std::memcpy(&dy, r.DY + p, sizeof(V4));
+  std::memcpy(&dz, r.DZ + p, sizeof(V4));
+  std::memcpy(&tMax, r.TMax + p, sizeof(V4));
   const V4 zero = {};
   const V4 big = zero + 1e300 * 1e300; // +inf: no constraint
-  const V4 enter = denom < zero ? t : -big;
-  const V4 leave = denom > zero ? t : big;
-  tIn = std::max(std::max(std::max(0.0, enter[0]), std::max(enter[1], enter[2])), enter[3]);
-  tOut = std::min(std::min(std::min(tMax, leave[0]), std::min(leave[1], leave[2])), leave[3]);
-  return tIn < tOut ? 1 : 0;
+  V4 enter[4], leave[4];
+  auto parallel = zero < zero; // no lane yet
+  for (int k = 0; k < 4; ++k)
+  {
+    const double nx = cell.NX[k], ny = cell.NY[k], nz = cell.NZ[k];
+    const V4 denom = (nx * dx + ny * dy) + nz * dz;
+    const V4 num = cell.Offset[k] - ((nx * ox + ny * oy) + nz * oz);
+    parallel |= denom == zero;
+    const V4 t = num / denom;
+    enter[k] = denom < zero ? t : -big;
+    leave[k] = denom > zero ? t : big;
+  }
+  // std::max(a, b) is a < b ? b : a, std::min(a, b) is b < a ? b : a, per lane.
+  const V4 in0 = zero < enter[0] ? enter[0] : zero;
+  const V4 in12 = enter[1] < enter[2] ? enter[2] : enter[1];
+  const V4 in012 = in0 < in12 ? in12 : in0;
+  const V4 vIn = in012 < enter[3] ? enter[3] : in012;
+  const V4 out0 = leave[0] < tMax ? leave[0] : tMax;
+  const V4 out12 = leave[2] < leave[1] ? leave[2] : leave[1];
+  const V4 out012 = out12 < out0 ? out12 : out0;
+  const V4 vOut = leave[3] < out012 ? leave[3] : out012;
+  const glm::dvec3& g = cell.Gradient;
+  const glm::dvec3& q = cell.RefPoint;
+  const V4 sAtOrigin = cell.RefScalar + ((g.x * (ox - q.x) + g.y * (oy - q.y)) + g.z * (oz - q.z));
+  const V4 slope = (g.x * dx + g.y * dy) + g.z * dz;
+  const V4 vsIn = sAtOrigin + vIn * slope;
+  const V4 vsOut = sAtOrigin + vOut * slope;
+  std::memcpy(tIn, &vIn, sizeof(V4));
+  std::memcpy(tOut, &vOut, sizeof(V4));
+  std::memcpy(sIn, &vsIn, sizeof(V4));
+  std::memcpy(sOut, &vsOut, sizeof(V4));
+  const auto inside = vIn < vOut;
+  for (int l = 0; l < PixelLanes; ++l)
+  {
+    hit[l] = static_cast<signed char>(parallel[l] ? -1 : (inside[l] ? 1 : 0));
+  }
 }
 #endif
 
@@ -131,6 +156,21 @@ struct ProjectedEdges
     }
   }
 };
+
+/// std::ceil / std::floor to int for |v| < 2^30 (beyond: clamped to +-2^30),
+/// without the library call's software rounding on baseline x86-64.
+inline int CeilToInt(double v)
+{
+  v = std::min(std::max(v, -1073741824.0), 1073741824.0);
+  const int i = static_cast<int>(v); // rounds toward zero
+  return i + (static_cast<double>(i) < v ? 1 : 0);
+}
+inline int FloorToInt(double v)
+{
+  v = std::min(std::max(v, -1073741824.0), 1073741824.0);
+  const int i = static_cast<int>(v);
+  return i - (v < static_cast<double>(i) ? 1 : 0);
+}
 
 /// Window-x range of the projected cell on the row at height y; false if
 /// the row misses it. (Round-off here only widens or narrows the candidate

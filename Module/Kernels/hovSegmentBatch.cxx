@@ -19,8 +19,10 @@ constexpr int Lanes = 4;
 
 // With GCC or Clang on x86-64 the lane loops are also compiled for AVX2 (four
 // lanes per instruction) and the variant is chosen at load time; both variants
-// perform the same IEEE operations (no contraction into fused multiply-adds
-// under -std=c++17), so the result does not depend on the CPU.
+// perform the same IEEE operations (the "avx2" target does not enable FMA, so
+// nothing is contracted into fused multiply-adds; -std=c++17 alone would not
+// prevent it: GCC 12 contracts wherever FMA is enabled), so the result does
+// not depend on the CPU.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
 #define HOV_LANES_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
 #else
@@ -33,8 +35,8 @@ constexpr int Lanes = 4;
  * the same order per lane, so each lane's w = WFront (before clamping) and
  * alpha equal the scalar kernel's bit for bit.
  */
-HOV_LANES_TARGET_CLONES
-void ThinWilliamsMaxLanes(int terms, const double* a, const double* d1, double* w, double* alpha)
+inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
+  int terms, const double* a, const double* d1, double* w, double* alpha)
 {
   // Four lanes in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
   typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
@@ -72,6 +74,18 @@ void ThinWilliamsMaxLanes(int terms, const double* a, const double* d1, double* 
   std::memcpy(w, &vw, sizeof(V4));
   std::memcpy(alpha, &valpha, sizeof(V4));
 }
+
+/// ThinWilliamsMaxLanes() on @p blocks consecutive blocks of Lanes segments
+/// (one call per group of equal term counts: no dispatch per block).
+HOV_LANES_TARGET_CLONES
+void ThinWilliamsMaxBlocks(
+  int terms, const double* a, const double* d1, int blocks, double* w, double* alpha)
+{
+  for (int b = 0; b < blocks; ++b)
+  {
+    ThinWilliamsMaxLanes(terms, a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
+  }
+}
 }
 
 long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
@@ -94,6 +108,7 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
   }
   int numItems = 0;
   int perTerms[detail::MaxThinOrder + 2] = {};
+  const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
   for (int i = 0; i < count; ++i)
   {
     const SegmentJob& job = jobs[i];
@@ -126,9 +141,13 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
     }
     // IntegrateLinearScalarInInterval() -> IntegrateSegment() -> ExactSegmentWeights(),
     // taking the thin branch aside for the lanes.
-    SegmentEnd front, back;
-    tf.Evaluate(k, job.SFront, false, front);
-    tf.Evaluate(k, job.SBack, false, back);
+    // Evaluated straight into the next item's slot (taken only if the segment
+    // is thin): copying a SegmentEnd off the stack stalled on store forwarding.
+    ThinItem& item = this->Items[numItems];
+    const SegmentEnd& front = item.Front;
+    const SegmentEnd& back = item.Back;
+    tf.Evaluate(k, job.SFront, false, item.Front);
+    tf.Evaluate(k, job.SBack, false, item.Back);
     const double depthFront = std::max(front.Tau, 0.0) * job.Length;
     const double depthBack = std::max(back.Tau, 0.0) * job.Length;
     const double a = std::min(depthFront, detail::DepthCap);
@@ -140,64 +159,73 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
       out[i] = IntegrateSegment(job.Length, front, back, settings.Emission, settings.Method);
       continue;
     }
-    ThinItem& item = this->Items[numItems++];
+    ++numItems;
     item.A = a;
     item.D1 = d1;
-    for (int ch = 0; ch < 3; ++ch)
-    {
-      item.Front[ch] = front.Color[ch];
-      item.Back[ch] = back.Color[ch];
-    }
     item.Index = i;
-    item.Terms = detail::ThinTerms()(d1);
+    item.Terms = thinTerms(d1);
     ++perTerms[item.Terms + 1];
   }
 
-  // Group the thin segments by number of terms (counting sort), Lanes at a time.
+  // Group the thin segments by number of terms (counting sort), their depths
+  // contiguous, then each group Lanes at a time (lanes are independent: the
+  // grouping does not change any result).
   for (int t = 0; t <= detail::MaxThinOrder; ++t)
   {
     perTerms[t + 1] += perTerms[t];
   }
+  int groupStart[detail::MaxThinOrder + 2];
+  std::copy(perTerms, perTerms + detail::MaxThinOrder + 2, groupStart);
+  if (this->SortedA.size() < static_cast<size_t>(numItems + Lanes))
+  {
+    this->SortedA.resize(numItems + Lanes);
+    this->SortedD1.resize(numItems + Lanes);
+  }
   for (int n = 0; n < numItems; ++n)
   {
-    this->Order[perTerms[this->Items[n].Terms]++] = n;
+    const ThinItem& item = this->Items[n];
+    const int pos = perTerms[item.Terms]++;
+    this->Order[pos] = n;
+    this->SortedA[pos] = item.A;
+    this->SortedD1[pos] = item.D1;
   }
-  for (int first = 0; first < numItems; first += Lanes)
+  if (this->W.size() < static_cast<size_t>(numItems + Lanes))
   {
-    // A block may mix two term counts at a bucket boundary: it then runs with
-    // the larger count for the lanes that have it and again for the others.
-    const int last = std::min(first + Lanes, numItems);
-    int done = first;
-    while (done < last)
+    this->W.resize(numItems + Lanes);
+    this->Alpha.resize(numItems + Lanes);
+  }
+  for (int terms = 1; terms <= detail::MaxThinOrder; ++terms)
+  {
+    const int first = groupStart[terms], last = groupStart[terms + 1];
+    const int full = (last - first) / Lanes;
+    ThinWilliamsMaxBlocks(terms, this->SortedA.data() + first, this->SortedD1.data() + first,
+      full, this->W.data() + first, this->Alpha.data() + first);
+    const int tail = first + full * Lanes;
+    if (tail < last)
     {
-      const int terms = this->Items[this->Order[done]].Terms;
-      double a[Lanes], d1[Lanes], w[Lanes], alpha[Lanes];
-      int lanes = 0;
-      for (int m = done; m < last && this->Items[this->Order[m]].Terms == terms; ++m, ++lanes)
+      double a[Lanes], d1[Lanes];
+      for (int l = 0; l < Lanes; ++l)
       {
-        a[lanes] = this->Items[this->Order[m]].A;
-        d1[lanes] = this->Items[this->Order[m]].D1;
+        a[l] = tail + l < last ? this->SortedA[tail + l] : 0.0; // padding: any valid thin segment
+        d1[l] = tail + l < last ? this->SortedD1[tail + l] : 1.0 / 8.0;
       }
-      for (int l = lanes; l < Lanes; ++l)
-      {
-        a[l] = 0.0; // padding: any valid thin segment
-        d1[l] = 1.0 / 8.0;
-      }
-      ThinWilliamsMaxLanes(terms, a, d1, w, alpha);
-      for (int l = 0; l < lanes; ++l)
-      {
-        const ThinItem& item = this->Items[this->Order[done + l]];
-        // As ThinWeights() and IntegrateSegment().
-        const double wf = std::max(0.0, w[l]);
-        const double wb = std::max(0.0, alpha[l] - w[l]);
-        RGBA& o = out[item.Index];
-        o.A = alpha[l];
-        o.R = wf * item.Front[0] + wb * item.Back[0];
-        o.G = wf * item.Front[1] + wb * item.Back[1];
-        o.B = wf * item.Front[2] + wb * item.Back[2];
-      }
-      done += lanes;
+      double w[Lanes], alpha[Lanes];
+      ThinWilliamsMaxBlocks(terms, a, d1, 1, w, alpha);
+      std::copy(w, w + (last - tail), this->W.data() + tail);
+      std::copy(alpha, alpha + (last - tail), this->Alpha.data() + tail);
     }
+  }
+  for (int m = 0; m < numItems; ++m)
+  {
+    const ThinItem& item = this->Items[this->Order[m]];
+    // As ThinWeights() and IntegrateSegment().
+    const double wf = std::max(0.0, this->W[m]);
+    const double wb = std::max(0.0, this->Alpha[m] - this->W[m]);
+    RGBA& o = out[item.Index];
+    o.A = this->Alpha[m];
+    o.R = wf * item.Front.Color[0] + wb * item.Back.Color[0];
+    o.G = wf * item.Front.Color[1] + wb * item.Back.Color[1];
+    o.B = wf * item.Front.Color[2] + wb * item.Back.Color[2];
   }
   return total;
 }

@@ -12,7 +12,9 @@
  * the scalar kernel uses) and evaluated four at a time, lane by lane with
  * exactly the scalar kernel's operations in the scalar kernel's order, so the
  * result does not change in any bit (no fused multiply-add is introduced: the
- * module compiles with -std=c++17, which disables contraction). Every other
+ * module targets baseline x86-64 and the extra AVX2 clone does not enable FMA;
+ * note that GCC contracts a*b+c even under -std=c++17 wherever FMA is enabled,
+ * e.g. with -march=native). Every other
  * segment (several transfer-function intervals, thick, opaque, Wilhelms-Van
  * Gelder emission or the approximate method) goes through the scalar kernels.
  *
@@ -26,6 +28,7 @@
 #include "hovCompositing.h"
 #include "hovConfig.h"
 #include "hovRayIntegrator.h" // IntegrationSettings
+#include "hovSegmentIntegral.h" // SegmentEnd
 
 #include <vector> // scratch
 
@@ -60,13 +63,15 @@ private:
   /// A thin Williams-Max segment waiting for its block.
   struct ThinItem
   {
+    SegmentEnd Front, Back; ///< transfer function at both ends (evaluated in place)
     double A, D1;           ///< front depth rate tauFront L and total depth D(1)
-    double Front[3], Back[3]; ///< chromaticities at both ends
     int Index;              ///< into out
     int Terms;              ///< series terms (as the scalar kernel)
   };
   std::vector<ThinItem> Items;
   std::vector<int> Order; ///< Items grouped by Terms
+  std::vector<double> SortedA, SortedD1; ///< their A and D1 in that order
+  std::vector<double> W, Alpha;          ///< the series' results in that order
 };
 }
 
