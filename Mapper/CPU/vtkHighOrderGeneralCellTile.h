@@ -82,6 +82,9 @@ public:
     const hov::TransferFunction* TF = nullptr;
     hov::PolynomialSegmentSettings Segment;
     hov::CellRestrictionSettings Restriction;
+    /// Symbolic ray displacement deciding rays in a face plane (the rays'
+    /// GetPerturbX/GetPerturbY, as for the tetrahedra: hovRayCell.h).
+    hov::RayPerturbation Perturbation;
   };
 
   /// The rows of a tile the caller wants (tile-local pixel p = j W + i).
@@ -118,6 +121,9 @@ public:
    */
   hov::RGBA Integrate(const FrameData& frame, int g, const vtkHighOrderViewRays::Ray& ray,
     double t0, double t1, vtkIdType& pieces);
+
+  /// The rays' symbolic displacement (GetPerturbX, GetPerturbY) for FrameData.
+  static hov::RayPerturbation PerturbationOf(const vtkHighOrderViewRays& rays);
 
   /// Pixel box of general cell @p g (pixel centres of its projected corners' box).
   static std::array<int, 4> PixelBox(
