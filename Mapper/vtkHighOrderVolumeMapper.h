@@ -18,7 +18,10 @@
  * wedges and pyramids (types 11-14, 24-27, 29; "general cells"). For a
  * general cell each pixel ray gets its exact inside intervals (planar faces,
  * or bilinear patches for non-planar quadrilaterals; a shared face gives
- * bit-identical exit/entry times, so no cracks and no double counting), the
+ * bit-identical exit/entry times, also next to a linear tetrahedron, and a
+ * ray lying exactly in a shared planar face goes to exactly one of the two
+ * cells by the tetrahedra's symbolic perturbation rule, so no cracks and no
+ * double counting), the
  * cell's own interpolant restricted to each interval as polynomial pieces
  * (exact for affine cells: degree 1 to 6 in the ray parameter; Chebyshev
  * with a 1e-10 relative bound otherwise, e.g. pyramids and distorted

@@ -182,6 +182,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   general.Cells = &setup.GetGeneralCells();
   general.GeneralOf = &buf.GeneralOf;
   general.Window = window.data();
+  general.Perturbation = vtkHighOrderGeneralCellTile::PerturbationOf(rays);
   general.Projectable = projectable.data();
   general.TF = &tf;
   general.Segment.Emission = settings.Integration.Emission;

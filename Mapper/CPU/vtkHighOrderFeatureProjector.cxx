@@ -324,6 +324,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderFeatureProjector::Render(
   f.General.Window = this->Window.data();
   f.General.Projectable = this->Projectable.data();
   f.General.TF = &tf;
+  f.General.Perturbation = vtkHighOrderGeneralCellTile::PerturbationOf(rays);
   f.Segment = vtkHighOrderFeatureSegment::FrameData();
   f.Segment.Setup = &setup;
   f.Segment.Features = &features;

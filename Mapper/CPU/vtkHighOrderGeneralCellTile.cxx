@@ -145,6 +145,17 @@ std::array<int, 4> vtkHighOrderGeneralCellTile::PixelBox(
   return b;
 }
 
+hov::RayPerturbation vtkHighOrderGeneralCellTile::PerturbationOf(const vtkHighOrderViewRays& rays)
+{
+  hov::RayPerturbation p;
+  for (int k = 0; k < 3; ++k)
+  {
+    p.X[k] = rays.GetPerturbX()[k];
+    p.Y[k] = rays.GetPerturbY()[k];
+  }
+  return p;
+}
+
 const std::vector<vtkHighOrderGeneralCellTile::Hit>& vtkHighOrderGeneralCellTile::Collect(
   const FrameData& frame, int g, const std::array<int, 4>& box, const TileRows& rows,
   const unsigned char* skip)
@@ -191,7 +202,7 @@ const std::vector<vtkHighOrderGeneralCellTile::Hit>& vtkHighOrderGeneralCellTile
       const double origin[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
       const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
       const int n = hov::RayCellIntervals(cell.Shape, nodes, cell.CornerIds, origin, direction, 0.0,
-        rows.TMax[p], found, cell.PlanarFaces);
+        rows.TMax[p], found, cell.PlanarFaces, frame.Perturbation);
       if (n <= 0)
       {
         continue;

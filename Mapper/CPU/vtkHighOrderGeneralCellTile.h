@@ -16,10 +16,12 @@
  * hov::MaxRayCellIntervals for non-planar faces), with bit-identical
  * shared-face times (corner point ids), so there is no crack and no double
  * counting between neighbouring general cells. A triangle shared with a
- * linear tetrahedron (whose fast path evaluates the same canonical plane in
- * another operation order) gives times equal to rounding (~1e-16 relative),
- * which changes the integral at rounding level only (TestMixedChord: 4e-15)
- * and is absorbed by the witness tolerance.
+ * linear tetrahedron gives bit-identical times too (hovRayCell evaluates
+ * planar faces with the fast path's formula, corner order and operation
+ * order). A ray lying exactly in a planar face's plane is given to exactly
+ * one of the two cells sharing the face by the rays' symbolic perturbation
+ * (FrameData::Perturbation = the rays' PerturbX/PerturbY, the tetrahedra's
+ * rule: hovRayCell.h; TestMixedInFace, TestCellRayInFace).
  *
  * Per interval (Integrate): the scalar along the ray as polynomial pieces
  * (hov::RestrictCellScalar: exact for affine cells, Chebyshev with a bound of
@@ -82,6 +84,9 @@ public:
     const hov::TransferFunction* TF = nullptr;
     hov::PolynomialSegmentSettings Segment;
     hov::CellRestrictionSettings Restriction;
+    /// Symbolic ray displacement deciding rays in a face plane (the rays'
+    /// GetPerturbX/GetPerturbY, as for the tetrahedra: hovRayCell.h).
+    hov::RayPerturbation Perturbation;
   };
 
   /// The rows of a tile the caller wants (tile-local pixel p = j W + i).
@@ -118,6 +123,9 @@ public:
    */
   hov::RGBA Integrate(const FrameData& frame, int g, const vtkHighOrderViewRays::Ray& ray,
     double t0, double t1, vtkIdType& pieces);
+
+  /// The rays' symbolic displacement (GetPerturbX, GetPerturbY) for FrameData.
+  static hov::RayPerturbation PerturbationOf(const vtkHighOrderViewRays& rays);
 
   /// Pixel box of general cell @p g (pixel centres of its projected corners' box).
   static std::array<int, 4> PixelBox(

@@ -43,6 +43,20 @@ double Triple(const double* d, const double* a, const double* b)
   return Dot(d, c);
 }
 
+/// +1 / -1: side of the plane with normal @p n on which the ray displaced by
+/// e X + e^2 Y (e -> 0+) lies when the ray itself lies in the plane; 0 if the
+/// perturbation is degenerate (n orthogonal to X and Y).
+int PerturbedSide(const double n[3], const RayPerturbation& p)
+{
+  const double nx = Dot(n, p.X);
+  if (nx != 0.0)
+  {
+    return nx > 0.0 ? 1 : -1;
+  }
+  const double ny = Dot(n, p.Y);
+  return ny > 0.0 ? 1 : (ny < 0.0 ? -1 : 0);
+}
+
 /// Strict order of corners: id, then coordinates (ties only for repeated ids).
 bool Less(const double* a, std::int64_t ia, const double* b, std::int64_t ib)
 {
@@ -154,6 +168,58 @@ int PatchCrossings(const double* const c[4], const double o[3], const double d[3
   return count;
 }
 
+/**
+ * Crossings of a face (FaceRayCrossingsKnown). A planar face whose plane the
+ * ray runs in (n.d == 0 and n.c0 - n.o within rounding of 0) gives none; then
+ * @p push (if given) is incremented by Push = 1e-7 h s n/|n| (h: the face's
+ * extent, s: the side of the plane where the ray, or its symbolic
+ * displacement if exactly in the plane, lies). Push depends only on the face
+ * and the ray, so two cells sharing the face use the same vector.
+ */
+int FaceCrossingsImpl(int cornerCount, const double* const corners[4], const std::int64_t ids[4],
+  const double o[3], const double d[3], double t[2], bool planar, const RayPerturbation* pert,
+  double push[3])
+{
+  const double* c[4];
+  Canonical(cornerCount, corners, ids, c);
+  if (cornerCount == 4 && !planar)
+  {
+    return PatchCrossings(c, o, d, t);
+  }
+  double n[3];
+  FacePlane(cornerCount, c, n);
+  const double num = Dot(n, c[0]) - Dot(n, o), den = Dot(n, d);
+  if (den != 0.0)
+  {
+    t[0] = num / den;
+    return std::isfinite(t[0]) ? 1 : 0;
+  }
+  if (!push)
+  {
+    return 0;
+  }
+  double scale = 0.0, h = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    scale += std::fabs(n[k]) * (std::fabs(c[0][k]) + std::fabs(o[k]));
+    for (int i = 1; i < cornerCount; ++i)
+    {
+      h = std::max(h, std::fabs(c[i][k] - c[0][k]));
+    }
+  }
+  const double norm = std::sqrt(Dot(n, n));
+  if (!(std::fabs(num) <= 64.0 * 2.220446049250313e-16 * scale) || !(norm > 0.0))
+  {
+    return 0; // parallel, off the plane
+  }
+  const int side = num != 0.0 ? (num > 0.0 ? -1 : 1) : (pert ? PerturbedSide(n, *pert) : 0);
+  for (int k = 0; k < 3; ++k)
+  {
+    push[k] += 1e-7 * h * side * n[k] / norm;
+  }
+  return 0;
+}
+
 const int (*FaceTable(CellShape shape, int& count))[4]
 {
   switch (GeometryShape(shape))
@@ -198,7 +264,7 @@ FaceData GetFace(CellShape shape, const double* points, const std::int64_t* ids,
 
 /// Half-space clipping for cells whose faces are all planes.
 int ClipConvex(CellShape shape, const double* points, const std::int64_t* ids, const double o[3],
-  const double d[3], double tMin, double tMax, RayCellInterval* out)
+  const double d[3], double tMin, double tMax, RayCellInterval* out, const RayPerturbation& pert)
 {
   const int nc = CellCornerCount(shape);
   double centroid[3] = { 0, 0, 0 };
@@ -215,7 +281,7 @@ int ClipConvex(CellShape shape, const double* points, const std::int64_t* ids, c
     const FaceData face = GetFace(shape, points, ids, f);
     const double* c[4];
     Canonical(face.N, face.C, face.Ids, c);
-    double n[3], toCentroid[3], toBase[3];
+    double n[3], toCentroid[3];
     FacePlane(face.N, c, n);
     Sub(centroid, c[0], toCentroid);
     const double inSide = Dot(n, toCentroid);
@@ -223,18 +289,23 @@ int ClipConvex(CellShape shape, const double* points, const std::int64_t* ids, c
     {
       continue; // degenerate face (zero normal) or flat cell: no constraint
     }
-    Sub(c[0], o, toBase);
-    const double num = Dot(n, toBase), den = Dot(n, d);
+    const bool inward = inSide > 0.0; // the canonical normal points into the cell
+    // The tetrahedron fast path's formula: offset n.c0, then n.o (bitwise the same t).
+    const double num = Dot(n, c[0]) - Dot(n, o), den = Dot(n, d);
     if (den == 0.0)
     {
-      if (-num * inSide < 0.0)
+      // Parallel: outside iff o lies on the outer side (outward normal . (c0 - o) < 0).
+      // Exactly in the plane: decided by the symbolic displacement of the ray;
+      // the two cells sharing the face see opposite outward normals.
+      const int side = num != 0.0 ? (num > 0.0 ? -1 : 1) : PerturbedSide(n, pert);
+      if (side == 0 || (side > 0) != inward)
       {
-        return 0; // parallel to the plane, on its outer side
+        return 0;
       }
       continue;
     }
     const double t = num / den;
-    if (den * inSide > 0.0)
+    if ((den > 0.0) == inward)
     {
       tIn = std::max(tIn, t);
     }
@@ -255,17 +326,18 @@ int ClipConvex(CellShape shape, const double* points, const std::int64_t* ids, c
 /// General cells: sorted crossings, gaps classified by their midpoint.
 int SplitAndClassify(CellShape shape, const double* points, const std::int64_t* ids,
   const double o[3], const double d[3], double tMin, double tMax, RayCellInterval* out,
-  unsigned planarFaces)
+  unsigned planarFaces, const RayPerturbation& pert)
 {
   double cand[2 * 6 + 2];
+  double push[3] = { 0.0, 0.0, 0.0 }; // rays in a planar face's plane: see FaceCrossingsImpl
   int nCand = 0;
   cand[nCand++] = tMin;
   for (int f = 0, nf = CellFaceCount(shape); f < nf; ++f)
   {
     const FaceData face = GetFace(shape, points, ids, f);
     double t[2];
-    const int nt =
-      FaceRayCrossingsKnown(face.N, face.C, face.Ids, o, d, t, (planarFaces >> f) & 1u);
+    const int nt = FaceCrossingsImpl(
+      face.N, face.C, face.Ids, o, d, t, (planarFaces >> f) & 1u, &pert, push);
     for (int i = 0; i < nt; ++i)
     {
       if (t[i] > tMin && t[i] < tMax)
@@ -286,7 +358,8 @@ int SplitAndClassify(CellShape shape, const double* points, const std::int64_t* 
       continue; // zero-length gap: does not interrupt an interval
     }
     const double mid = 0.5 * (a + b);
-    const double x[3] = { o[0] + mid * d[0], o[1] + mid * d[1], o[2] + mid * d[2] };
+    const double x[3] = { o[0] + mid * d[0] + push[0], o[1] + mid * d[1] + push[1],
+      o[2] + mid * d[2] + push[2] };
     double pc[3];
     CellParametricCenter(shape, pc);
     const bool inside =
@@ -345,22 +418,8 @@ int FaceRayCrossingsKnown(int cornerCount, const double* const corners[4],
   const std::int64_t ids[4], const double origin[3], const double direction[3], double t[2],
   bool planar)
 {
-  const double* c[4];
-  Canonical(cornerCount, corners, ids, c);
-  if (cornerCount == 4 && !planar)
-  {
-    return PatchCrossings(c, origin, direction, t);
-  }
-  double n[3], toBase[3];
-  FacePlane(cornerCount, c, n);
-  Sub(c[0], origin, toBase);
-  const double den = Dot(n, direction);
-  if (den == 0.0)
-  {
-    return 0;
-  }
-  t[0] = Dot(n, toBase) / den;
-  return std::isfinite(t[0]) ? 1 : 0;
+  return FaceCrossingsImpl(
+    cornerCount, corners, ids, origin, direction, t, planar, nullptr, nullptr);
 }
 
 unsigned PlanarFaceMask(CellShape shape, const double* points)
@@ -378,6 +437,23 @@ unsigned PlanarFaceMask(CellShape shape, const double* points)
   return mask;
 }
 
+RayPerturbation DefaultRayPerturbation(const double direction[3])
+{
+  RayPerturbation p;
+  int k = 0; // the axis along which d is smallest: X is not parallel to d
+  for (int i = 1; i < 3; ++i)
+  {
+    if (std::fabs(direction[i]) < std::fabs(direction[k]))
+    {
+      k = i;
+    }
+  }
+  p.X[0] = p.X[1] = p.X[2] = 0.0;
+  p.X[k] = 1.0;
+  Cross(direction, p.X, p.Y);
+  return p;
+}
+
 int RayCellIntervals(CellShape shape, const double* points, const std::int64_t* cornerIds,
   const double origin[3], const double direction[3], double tMin, double tMax,
   RayCellInterval* out)
@@ -390,6 +466,14 @@ int RayCellIntervals(CellShape shape, const double* points, const std::int64_t* 
   const double origin[3], const double direction[3], double tMin, double tMax,
   RayCellInterval* out, unsigned planarFaces)
 {
+  return RayCellIntervals(shape, points, cornerIds, origin, direction, tMin, tMax, out,
+    planarFaces, DefaultRayPerturbation(direction));
+}
+
+int RayCellIntervals(CellShape shape, const double* points, const std::int64_t* cornerIds,
+  const double origin[3], const double direction[3], double tMin, double tMax,
+  RayCellInterval* out, unsigned planarFaces, const RayPerturbation& perturbation)
+{
   if (!(tMin <= tMax) || !std::isfinite(tMin) || !std::isfinite(tMax) ||
     !(Dot(direction, direction) > 0.0))
   {
@@ -397,7 +481,8 @@ int RayCellIntervals(CellShape shape, const double* points, const std::int64_t* 
   }
   const unsigned all = (1u << CellFaceCount(shape)) - 1u;
   return (planarFaces & all) == all
-    ? ClipConvex(shape, points, cornerIds, origin, direction, tMin, tMax, out)
-    : SplitAndClassify(shape, points, cornerIds, origin, direction, tMin, tMax, out, planarFaces);
+    ? ClipConvex(shape, points, cornerIds, origin, direction, tMin, tMax, out, perturbation)
+    : SplitAndClassify(
+        shape, points, cornerIds, origin, direction, tMin, tMax, out, planarFaces, perturbation);
 }
 }

@@ -21,7 +21,11 @@
  * of one cell equals the entry t of the other EXACTLY.
  *  - Plane crossing (triangles, planar quads): n = (c1 - c0) x (c2 - c0)
  *    (triangle) or (c2 - c0) x (c3 - c1) (quad, diagonals),
- *    t = n.(c0 - o) / n.d; n.d == 0: no crossing (parallel).
+ *    t = (n.c0 - n.o) / n.d (the formula, corner order and operation order of
+ *    the linear-tetrahedron fast path, vtkHighOrderTetraSetup/TileGeometry:
+ *    a triangle shared by a tetrahedron of that path and a general cell gives
+ *    bit-identical crossing times; for a triangle, ascending ids = the
+ *    canonical order); n.d == 0: no crossing (parallel).
  *  - Bilinear patch P(u,v) = c0 + u e10 + v e01 + uv q (e10 = c1 - c0,
  *    e01 = c3 - c0, q = c2 - c1 - c3 + c0): eliminating t and v gives
  *      u^2 d.(e10 x q) + u [d.((c0-o) x q) + d.(e10 x e01)] + d.((c0-o) x e01) = 0
@@ -34,6 +38,24 @@
  * tIn = max over entering faces, tOut = min over leaving faces (entering if
  * n.d has the sign of n.(centroid - c0)); a ray parallel to a face plane and
  * on its outer side misses. One interval at most.
+ *
+ * Rays lying in a face plane (n.d == 0 and n.c0 - n.o == 0 exactly): the ray
+ * is displaced symbolically by e X + e^2 Y (e -> 0+, RayPerturbation; the
+ * renderer passes vtkHighOrderViewRays' PerturbX/PerturbY, the rule of the
+ * tetrahedron fast path): it lies on the side of sign(n.X), or sign(n.Y) if
+ * n.X == 0 (neither: outside). Two cells sharing a planar face compute the
+ * same canonical n and opposite sides, so exactly one of them takes the ray
+ * (no crack, no double counting). Overloads without a perturbation use
+ * DefaultRayPerturbation(d). Rays not in a face plane are not affected.
+ * Cells with a non-planar quad (classified by midpoints, below): a ray in the
+ * plane of one of their PLANAR faces (n.d == 0, |n.c0 - n.o| within rounding)
+ * has its midpoints pushed off the plane by 1e-7 of the face's extent to the
+ * side given by the sign of n.c0 - n.o or, if 0, the perturbation; the push
+ * depends only on the face, so the neighbour across it decides the same
+ * side (points within that distance of another face of the cell may be
+ * misclassified). A ray lying IN a non-planar bilinear patch touches it along
+ * a ruling (a set of rays of measure zero): no tie rule, its crossings are
+ * whatever FindRoots reports and both neighbours may count or skip it.
  *
  * Cells with a non-planar quad: all crossings (extra candidates, e.g. a plane
  * or patch met outside the face, only split intervals and are harmless;
@@ -76,6 +98,21 @@ constexpr int MaxRayCellIntervals = 8;
 constexpr double PatchSlack = 1e-6;
 /// A gap midpoint is inside if it lies at most this far outside the parametric domain.
 constexpr double InsideSlack = 1e-9;
+
+/**
+ * Symbolic displacement of a ray, o + e X + e^2 Y (e -> 0+), deciding rays
+ * that lie exactly in a face plane. X, Y and the ray direction must be
+ * linearly independent.
+ */
+struct RayPerturbation
+{
+  double X[3] = { 1.0, 0.0, 0.0 };
+  double Y[3] = { 0.0, 1.0, 0.0 };
+};
+
+/// A valid perturbation for direction @p d: X the axis of d's smallest
+/// component, Y = d x X. Used by the overloads without a perturbation.
+HOV_EXPORT RayPerturbation DefaultRayPerturbation(const double direction[3]);
 
 /// One inside interval of the ray.
 struct RayCellInterval
@@ -124,6 +161,12 @@ HOV_EXPORT int RayCellIntervals(CellShape shape, const double* points,
 HOV_EXPORT int RayCellIntervals(CellShape shape, const double* points,
   const std::int64_t* cornerIds, const double origin[3], const double direction[3], double tMin,
   double tMax, RayCellInterval* out, unsigned planarFaces);
+
+/// RayCellIntervals() with the tie rule of rays in a face plane given
+/// (@p perturbation: see the file doc).
+HOV_EXPORT int RayCellIntervals(CellShape shape, const double* points,
+  const std::int64_t* cornerIds, const double origin[3], const double direction[3], double tMin,
+  double tMax, RayCellInterval* out, unsigned planarFaces, const RayPerturbation& perturbation);
 
 /// Faces of a cell (by GeometryShape): count, and the corners of face @p f.
 HOV_EXPORT int CellFaceCount(CellShape shape);
