@@ -2,6 +2,7 @@
 
 #include "vtkHighOrderProjectorTile.h" // BoxMargin
 #include "vtkHighOrderTetraSetup.h"    // tetrahedra face planes
+#include "vtkHighOrderTileGeometry.h"  // ClipRayFaces
 
 #include "hovCompositing.h" // CompositeBehind
 
@@ -22,35 +23,8 @@ constexpr double BoxMargin = vtkHighOrderProjectorTile::BoxMargin;
 bool ClipTetra(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& px,
   const glm::dvec3& py, double& tIn, double& tOut)
 {
-  tIn = 0.0;
-  tOut = tMax;
-  for (int k = 0; k < 4; ++k)
-  {
-    const glm::dvec3& normal = tet.Normal[k];
-    const double denom = glm::dot(normal, ray.Direction);
-    const double num = tet.Offset[k] - glm::dot(normal, ray.Origin);
-    if (denom > 0.0)
-    {
-      tOut = std::min(tOut, num / denom);
-    }
-    else if (denom < 0.0)
-    {
-      tIn = std::max(tIn, num / denom);
-    }
-    else if (num < 0.0)
-    {
-      return false;
-    }
-    else if (num == 0.0)
-    {
-      const double nx = glm::dot(normal, px);
-      if (nx > 0.0 || (nx == 0.0 && glm::dot(normal, py) >= 0.0))
-      {
-        return false;
-      }
-    }
-  }
-  return tIn < tOut;
+  return hovTileGeometry::ClipRayFaces(
+    [&](int k) { return tet.Normal[k]; }, tet.Offset, ray, tMax, px, py, tIn, tOut);
 }
 
 /// Window-x span of the convex hull of the 4 projected vertices on the row at
@@ -105,21 +79,8 @@ void vtkHighOrderFeatureTile::Init(const Frame& frame, int tileIndex)
       // As vtkHighOrderProjectorTile::Init: the same rays and ray ranges.
       const int pi = this->X0 + i, pj = this->Y0 + j;
       const size_t p = static_cast<size_t>(j) * this->W + i;
-      this->Rays[p] = rays.PixelRay(pi, pj);
-      double tMax = this->Rays[p].TFar;
       const double z = frame.Depth ? frame.Depth[static_cast<size_t>(pj) * width + pi] : 1.0;
-      if (z < 1.0)
-      {
-        tMax = std::min(tMax, rays.DepthToT(pi, pj, this->Rays[p], z));
-      }
-      if (rays.HasClipping())
-      {
-        double tMin = 0.0;
-        rays.ClipRange(this->Rays[p], tMin, tMax);
-        this->Rays[p].Origin += tMin * this->Rays[p].Direction;
-        tMax = tMax > tMin ? tMax - tMin : 0.0;
-      }
-      this->TMax[p] = tMax;
+      this->Rays[p] = rays.TracedPixelRay(pi, pj, z, this->TMax[p]);
     }
   }
 }

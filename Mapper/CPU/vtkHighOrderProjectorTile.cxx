@@ -161,22 +161,8 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
     {
       const int pi = this->X0 + i, pj = this->Y0 + j;
       const size_t p = static_cast<size_t>(j) * this->W + i;
-      this->Rays[p] = rays.PixelRay(pi, pj);
-      double tMax = this->Rays[p].TFar;
       const double z = frame.Depth ? frame.Depth[static_cast<size_t>(pj) * width + pi] : 1.0;
-      if (z < 1.0)
-      {
-        tMax = std::min(tMax, rays.DepthToT(pi, pj, this->Rays[p], z));
-      }
-      if (rays.HasClipping())
-      {
-        // The ray starts where clipping lets it (same segments, shifted t).
-        double tMin = 0.0;
-        rays.ClipRange(this->Rays[p], tMin, tMax);
-        this->Rays[p].Origin += tMin * this->Rays[p].Direction;
-        tMax = tMax > tMin ? tMax - tMin : 0.0;
-      }
-      this->TMax[p] = tMax;
+      this->Rays[p] = rays.TracedPixelRay(pi, pj, z, this->TMax[p]);
     }
   }
 #ifdef HOV_CLIP_LANES

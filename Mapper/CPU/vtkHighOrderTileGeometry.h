@@ -22,21 +22,23 @@ namespace hovTileGeometry
 using Ray = vtkHighOrderViewRays::Ray;
 using CellRecord = vtkHighOrderProjectorTile::CellRecord;
 
-/// Exact clip of a ray against the four face planes; false if it misses.
-/// A ray parallel to a face and exactly in its plane (num == 0) is resolved
-/// by the symbolic displacement e px + e^2 py of vtkHighOrderViewRays: inside
-/// iff n.px < 0, or n.px == 0 and n.py < 0. The two cells sharing a face hold
-/// opposite canonical normals, so exactly one of them takes such a ray.
-inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const glm::dvec3& px,
-  const glm::dvec3& py, double& tIn, double& tOut)
+/// Exact clip of a ray against four face planes, normalOf(k) . x <= offset[k];
+/// false if it misses. A ray parallel to a face and exactly in its plane
+/// (num == 0) is resolved by the symbolic displacement e px + e^2 py of
+/// vtkHighOrderViewRays: inside iff n.px < 0, or n.px == 0 and n.py < 0. The
+/// two cells sharing a face hold opposite canonical normals, so exactly one of
+/// them takes such a ray.
+template <typename NormalOf>
+inline bool ClipRayFaces(NormalOf&& normalOf, const double* offset, const Ray& ray, double tMax,
+  const glm::dvec3& px, const glm::dvec3& py, double& tIn, double& tOut)
 {
   tIn = 0.0;
   tOut = tMax;
   for (int k = 0; k < 4; ++k)
   {
-    const glm::dvec3 normal(cell.NX[k], cell.NY[k], cell.NZ[k]);
+    const glm::dvec3 normal = normalOf(k);
     const double denom = glm::dot(normal, ray.Direction);
-    const double num = cell.Offset[k] - glm::dot(normal, ray.Origin);
+    const double num = offset[k] - glm::dot(normal, ray.Origin);
     if (denom > 0.0)
     {
       tOut = std::min(tOut, num / denom);
@@ -59,6 +61,15 @@ inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const g
     }
   }
   return tIn < tOut;
+}
+
+/// ClipRayFaces() on a cell record's planes.
+inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const glm::dvec3& px,
+  const glm::dvec3& py, double& tIn, double& tOut)
+{
+  return ClipRayFaces(
+    [&](int k) { return glm::dvec3(cell.NX[k], cell.NY[k], cell.NZ[k]); }, cell.Offset, ray,
+    tMax, px, py, tIn, tOut);
 }
 
 #if defined(__GNUC__) // GCC and Clang: vector extensions

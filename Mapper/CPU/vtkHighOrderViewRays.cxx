@@ -153,3 +153,22 @@ void vtkHighOrderViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera*
     }
   }
 }
+
+vtkHighOrderViewRays::Ray vtkHighOrderViewRays::TracedPixelRay(
+  int i, int j, double windowDepth, double& tMax) const
+{
+  Ray ray = this->PixelRay(i, j);
+  tMax = ray.TFar;
+  if (windowDepth < 1.0)
+  {
+    tMax = std::min(tMax, this->DepthToT(i, j, ray, windowDepth));
+  }
+  if (this->HasClipping())
+  {
+    double tMin = 0.0;
+    this->ClipRange(ray, tMin, tMax);
+    ray.Origin += tMin * ray.Direction;
+    tMax = tMax > tMin ? tMax - tMin : 0.0;
+  }
+  return ray;
+}

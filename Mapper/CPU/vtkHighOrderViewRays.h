@@ -65,6 +65,15 @@ public:
   double DepthToT(int i, int j, const Ray& ray, double windowDepth) const;
 
   /**
+   * The ray of pixel (i, j) as the CPU tiles trace it: PixelRay(), ending at
+   * TFar, at the opaque window depth @p windowDepth (1: nothing drawn) and at
+   * the clipping; with clipping the origin moves to the clipped entry, so the
+   * ray starts at t = 0 (same segments, shifted t). @p tMax receives its end
+   * (0: nothing to trace).
+   */
+  Ray TracedPixelRay(int i, int j, double windowDepth, double& tMax) const;
+
+  /**
    * Project a dataset point to window coordinates (pixels, centres at
    * half-integers). Returns false if the point is at or behind the eye plane
    * (its projection is then unbounded).
