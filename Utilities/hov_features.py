@@ -3,9 +3,12 @@
   isosurfaces.png  tjunction (P2 tetrahedra, array `speed`): three shaded
                    semitransparent isosurfaces embedded in a faint volume
   clipping.png     the same with a clipping plane (half the pipe removed)
+  fields.png       the same pipe, extinction from `speed`, colour from a second array,
+                   `velocity_potential` (three-field rendering, HIAC 4)
   splat_off.png / splat_on.png
                    the bracket (56071 linear tetrahedra) at a size where most
                    cells are smaller than a pixel, exact and splatted
+  splat_off_on.png the two side by side, enlarged 3x
 
 Run (the images are the mapper's float images, composited over black):
   PYTHONPATH=<build>/lib/python3/dist-packages \\
@@ -18,7 +21,9 @@ import sys
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkPlane
-from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkImagingCore import vtkImageResize
+from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkVolume,
                                          vtkVolumeProperty)
@@ -105,6 +110,33 @@ def tjunction(out, size):
     write(mapper, os.path.join(out, "clipping.png"))
 
 
+def fields(out, size):
+    grid = read("tjunction_tet10_dolfinx.vtu", "speed")
+    lo, hi = grid.GetPointData().GetArray("speed").GetRange()
+    plo, phi = grid.GetPointData().GetArray("velocity_potential").GetRange()
+    mapper = vtkHighOrderVolumeMapper()
+    mapper.SetInputData(grid)
+    volume = volume_for(mapper, lo, hi, 0.35, 0.5)
+    alpha = volume.GetProperty().GetScalarOpacity()
+    alpha.RemoveAllPoints()  # extinction grows with the speed
+    alpha.AddPoint(lo, 0.05)
+    alpha.AddPoint(hi, 0.9)
+    color = volume.GetProperty().GetRGBTransferFunction()
+    color.RemoveAllPoints()  # colour follows the potential
+    color.AddRGBPoint(plo, 0.2, 0.4, 1.0)
+    color.AddRGBPoint(0.5 * (plo + phi), 0.95, 0.95, 0.95)
+    color.AddRGBPoint(phi, 1.0, 0.5, 0.1)
+    mapper.SetColorArrayName("velocity_potential")
+    cam = vtkCamera()
+    cam.SetFocalPoint(0.0, 0.6, 0.0)
+    cam.SetPosition(1.4, 2.2, 3.4)
+    cam.SetViewUp(0, 1, 0)
+    cam.SetViewAngle(35)
+    cam.SetClippingRange(1, 20)
+    mapper.RenderImage(cam, volume, size, size)
+    write(mapper, os.path.join(out, "fields.png"))
+
+
 def bracket(out, size):
     grid = read("bracket_tet4_ccx.vtu", "von_mises")
     mapper = vtkHighOrderVolumeMapper()
@@ -125,6 +157,27 @@ def bracket(out, size):
         print("  splatted %d of %d cells" % (mapper.GetNumberOfSplattedCells(),
                                                mapper.GetNumberOfRenderedCells()))
         write(mapper, os.path.join(out, "splat_on.png" if splat else "splat_off.png"))
+    side_by_side([os.path.join(out, n) for n in ("splat_off.png", "splat_on.png")],
+                 os.path.join(out, "splat_off_on.png"), 3)
+
+
+def side_by_side(paths, path, magnification):
+    """The PNGs next to each other, each enlarged by an integer factor."""
+    append = vtkImageAppend()
+    append.SetAppendAxis(0)
+    for name in paths:
+        reader = vtkPNGReader()
+        reader.SetFileName(name)
+        resize = vtkImageResize()
+        resize.SetInputConnection(reader.GetOutputPort())
+        resize.SetResizeMethodToMagnificationFactors()
+        resize.SetMagnificationFactors(magnification, magnification, 1)
+        append.AddInputConnection(resize.GetOutputPort())
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputConnection(append.GetOutputPort())
+    writer.Write()
+    print("wrote", path)
 
 
 def main():
@@ -136,6 +189,7 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     tjunction(args.out, args.size)
+    fields(args.out, args.size)
     bracket(args.out, args.splat_size)
 
 
