@@ -210,6 +210,160 @@ void Fit(const FitContext& ctx, double a, double b, int depth)
 }
 }
 
+bool AffineFieldBasis(CellShape shape, double* basis)
+{
+  if (GeometryShape(shape) == CellShape::Pyramid)
+  {
+    return false;
+  }
+  const int n = CellNodeCount(shape);
+  // Shape functions at pc = (a, b, c) / 2, a, b, c in {0, 1, 2}.
+  double f[AffineFieldTerms][MaxCellNodes];
+  for (int m = 0; m < AffineFieldTerms; ++m)
+  {
+    const double pc[3] = { 0.5 * (m / 9), 0.5 * ((m / 3) % 3), 0.5 * (m % 3) };
+    CellShapeFunctions(shape, pc, f[m]);
+  }
+  // Values at x = 0, 1/2, 1 -> coefficients of 1, x, x^2, one axis at a time.
+  const int stride[3] = { 9, 3, 1 };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int m = 0; m < AffineFieldTerms; ++m)
+    {
+      if ((m / stride[axis]) % 3 != 0)
+      {
+        continue; // m is the first of a line along this axis
+      }
+      double* f0 = f[m];
+      double* f1 = f[m + stride[axis]];
+      double* f2 = f[m + 2 * stride[axis]];
+      for (int i = 0; i < n; ++i)
+      {
+        const double v0 = f0[i], v1 = f1[i], v2 = f2[i];
+        f1[i] = -3.0 * v0 + 4.0 * v1 - v2;
+        f2[i] = 2.0 * v0 - 4.0 * v1 + 2.0 * v2;
+      }
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    for (int m = 0; m < AffineFieldTerms; ++m)
+    {
+      // Structural zeros (terms absent from the shape) exactly 0.
+      basis[AffineFieldTerms * i + m] = std::fabs(f[m][i]) < 1e-12 ? 0.0 : f[m][i];
+    }
+  }
+  return true;
+}
+
+void AffineFieldCoefficients(
+  const double* basis, int nodeCount, const double* scalars, double c[AffineFieldTerms])
+{
+  for (int m = 0; m < AffineFieldTerms; ++m)
+  {
+    c[m] = 0.0;
+  }
+  for (int i = 0; i < nodeCount; ++i)
+  {
+    const double* b = basis + AffineFieldTerms * i;
+    for (int m = 0; m < AffineFieldTerms; ++m)
+    {
+      c[m] += scalars[i] * b[m];
+    }
+  }
+}
+
+Polynomial RestrictAffineField(
+  const double c[AffineFieldTerms], const double start[3], const double step[3])
+{
+  const double ar = start[0], br = step[0], as = start[1], bs = step[1], at = start[2],
+               bt = step[2];
+  double out[7] = {};
+  int degree = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    // R(tau) = sum_j s(tau)^j (c_ij0 + c_ij1 t(tau) + c_ij2 t(tau)^2), degree <= 4.
+    double r[5] = {};
+    int rDeg = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      const double* cc = c + 9 * i + 3 * j;
+      if (cc[0] == 0.0 && cc[1] == 0.0 && cc[2] == 0.0)
+      {
+        continue;
+      }
+      const double q[3] = { cc[0] + at * (cc[1] + cc[2] * at), bt * (cc[1] + 2.0 * cc[2] * at),
+        cc[2] * bt * bt };
+      const int qDeg = cc[2] != 0.0 ? 2 : (cc[1] != 0.0 ? 1 : 0);
+      if (j == 0)
+      {
+        for (int k = 0; k <= qDeg; ++k)
+        {
+          r[k] += q[k];
+        }
+      }
+      else if (j == 1)
+      {
+        for (int k = 0; k <= qDeg; ++k)
+        {
+          r[k] += as * q[k];
+          r[k + 1] += bs * q[k];
+        }
+      }
+      else
+      {
+        const double p0 = as * as, p1 = 2.0 * as * bs, p2 = bs * bs;
+        for (int k = 0; k <= qDeg; ++k)
+        {
+          r[k] += p0 * q[k];
+          r[k + 1] += p1 * q[k];
+          r[k + 2] += p2 * q[k];
+        }
+      }
+      rDeg = std::max(rDeg, qDeg + j);
+    }
+    if (rDeg < 0)
+    {
+      continue;
+    }
+    // out += r(tau)^i R(tau).
+    if (i == 0)
+    {
+      for (int k = 0; k <= rDeg; ++k)
+      {
+        out[k] += r[k];
+      }
+    }
+    else if (i == 1)
+    {
+      for (int k = 0; k <= rDeg; ++k)
+      {
+        out[k] += ar * r[k];
+        out[k + 1] += br * r[k];
+      }
+    }
+    else
+    {
+      const double p0 = ar * ar, p1 = 2.0 * ar * br, p2 = br * br;
+      for (int k = 0; k <= rDeg; ++k)
+      {
+        out[k] += p0 * r[k];
+        out[k + 1] += p1 * r[k];
+        out[k + 2] += p2 * r[k];
+      }
+    }
+    degree = std::max(degree, rDeg + i);
+  }
+  Polynomial s;
+  for (int k = 0; k <= degree; ++k)
+  {
+    s.C[k] = out[k];
+  }
+  s.Degree = degree;
+  s.Degree = EffectiveDegree(s);
+  return s;
+}
+
 bool IsGeometryAffine(CellShape shape, const double* points, double relativeTolerance)
 {
   if (GeometryShape(shape) == CellShape::Pyramid)
