@@ -109,16 +109,31 @@ struct FitContext
   CellRestrictionStatus* Status;
 };
 
+/// cos(Pi m / ChebN), m = 0 .. 2 ChebN - 1 (the nodes and the DCT-I kernel).
+struct CosTable
+{
+  double V[2 * ChebN];
+  CosTable()
+  {
+    for (int m = 0; m < 2 * ChebN; ++m)
+    {
+      this->V[m] = std::cos(Pi * m / ChebN);
+    }
+  }
+};
+
 /// Chebyshev coefficients of the degree-ChebN interpolant of s on [a, b].
 void SampleChebyshev(const FitContext& ctx, double a, double b, double c[ChebN + 1])
 {
+  static const CosTable cosines; // thread-safe initialisation (C++11)
+  const double* cs = cosines.V;
   const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
   double f[ChebN + 1];
   double pc[3];
   CellParametricCenter(ctx.Shape, pc);
   for (int j = 0; j <= ChebN; ++j)
   {
-    const double t = (j == 0) ? b : (j == ChebN) ? a : mid + half * std::cos(Pi * j / ChebN);
+    const double t = (j == 0) ? b : (j == ChebN) ? a : mid + half * cs[j];
     const double x[3] = { ctx.O[0] + t * ctx.D[0], ctx.O[1] + t * ctx.D[1],
       ctx.O[2] + t * ctx.D[2] };
     if (!InvertGeometry(ctx.Shape, ctx.Points, x, pc)) // warm start from the previous sample
@@ -132,7 +147,7 @@ void SampleChebyshev(const FitContext& ctx, double a, double b, double c[ChebN +
     double sum = 0.5 * (f[0] + ((k % 2) ? -f[ChebN] : f[ChebN]));
     for (int j = 1; j < ChebN; ++j)
     {
-      sum += f[j] * std::cos(Pi * ((j * k) % (2 * ChebN)) / ChebN);
+      sum += f[j] * cs[(j * k) % (2 * ChebN)];
     }
     c[k] = sum * 2.0 / ChebN;
   }
