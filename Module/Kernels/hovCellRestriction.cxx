@@ -288,9 +288,47 @@ void AffineFieldCoefficients(
   }
 }
 
+namespace
+{
+/// True if every term of total degree > 2 is zero (tetrahedra, linear wedges).
+bool TotalDegreeAtMost2(const double c[AffineFieldTerms])
+{
+  // The 17 indices 9 i + 3 j + k with i + j + k > 2.
+  static constexpr int High[17] = { 5, 7, 8, 11, 13, 14, 15, 16, 17, 19, 20, 21, 22, 23, 24, 25, 26 };
+  bool any = false;
+  for (int m : High)
+  {
+    any = any || c[m] != 0.0;
+  }
+  return !any;
+}
+
+/// A field c0 + g.pc + (quadratic form) along pc = a + tau b, as [s, s', s''/2].
+Polynomial RestrictQuadraticForm(const double c[AffineFieldTerms], const double a[3], const double b[3])
+{
+  const double cr = c[9], cs = c[3], ct = c[1];
+  const double crr = c[18], css = c[6], ctt = c[2], crs = c[12], crt = c[10], cst = c[4];
+  const double r = a[0], s = a[1], t = a[2], br = b[0], bs = b[1], bt = b[2];
+  Polynomial p;
+  p.C[0] = c[0] + cr * r + cs * s + ct * t +
+    (r * (crr * r + crs * s + crt * t) + s * (css * s + cst * t) + ctt * t * t);
+  p.C[1] = cr * br + cs * bs + ct * bt +
+    (2.0 * (crr * r * br + css * s * bs + ctt * t * bt) + crs * (r * bs + s * br) +
+      crt * (r * bt + t * br) + cst * (s * bt + t * bs));
+  p.C[2] = br * (crr * br + crs * bs + crt * bt) + bs * (css * bs + cst * bt) + ctt * bt * bt;
+  p.Degree = 2;
+  p.Degree = EffectiveDegree(p);
+  return p;
+}
+}
+
 Polynomial RestrictAffineField(
   const double c[AffineFieldTerms], const double start[3], const double step[3])
 {
+  if (TotalDegreeAtMost2(c))
+  {
+    return RestrictQuadraticForm(c, start, step);
+  }
   const double ar = start[0], br = step[0], as = start[1], bs = step[1], at = start[2],
                bt = step[2];
   double out[7] = {};
