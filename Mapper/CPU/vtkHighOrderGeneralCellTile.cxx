@@ -75,12 +75,12 @@ bool HullRowSpan(const glm::dvec2* corners, int n, double y, double& xMin, doubl
  * hov::RestrictCellScalar's exact affine path with the cell's inverse
  * Jacobian precomputed (vtkHighOrderGeneralCells): the parametric point moves
  * linearly along the ray, pc(t0 + tau) = pc0 + J^-1 (o + t0 d - x0) + tau J^-1 d
- * (x0, pc0: corner 0), and the shape functions expanded along that line
- * (hov::CellShapeFunctionsAlongLine) give s as one polynomial in tau, exact
- * to rounding.
+ * (x0, pc0: corner 0), and the cell's field as a polynomial in pcoords
+ * (hov::RestrictAffineField, set up per cell) gives s as one polynomial in
+ * tau, exact to rounding.
  */
 void RestrictAffine(const vtkHighOrderGeneralCells::Cell& cell, const double* nodes,
-  const double* scalars, const double o[3], const double d[3], double t0, double t1,
+  const double o[3], const double d[3], double t0, double t1,
   std::vector<hov::RestrictedPiece>& out)
 {
   const double* inv = cell.InverseJacobian;
@@ -95,24 +95,11 @@ void RestrictAffine(const vtkHighOrderGeneralCells::Cell& cell, const double* no
     start[i] = pc0[i] + (inv[3 * i] * rel[0] + inv[3 * i + 1] * rel[1] + inv[3 * i + 2] * rel[2]);
     step[i] = inv[3 * i] * d[0] + inv[3 * i + 1] * d[1] + inv[3 * i + 2] * d[2];
   }
-  hov::Polynomial w[hov::MaxCellNodes];
-  hov::CellShapeFunctionsAlongLine(cell.Shape, start, step, w);
   out.resize(1);
   hov::RestrictedPiece& piece = out[0];
   piece.T0 = t0;
   piece.T1 = t1;
-  piece.S = hov::Polynomial();
-  int degree = 0;
-  for (int i = 0; i < cell.NodeCount; ++i)
-  {
-    for (int k = 0; k <= w[i].Degree; ++k)
-    {
-      piece.S.C[k] += scalars[i] * w[i].C[k];
-    }
-    degree = std::max(degree, w[i].Degree);
-  }
-  piece.S.Degree = degree;
-  piece.S.Degree = hov::EffectiveDegree(piece.S);
+  piece.S = hov::RestrictAffineField(cell.Field, start, step);
 }
 }
 
@@ -234,8 +221,7 @@ hov::RGBA vtkHighOrderGeneralCellTile::Integrate(const FrameData& frame, int g,
   const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
   if (cell.Affine)
   {
-    RestrictAffine(cell, cells.GetNodes(cell), cells.GetScalars(cell), origin, direction, t0, t1,
-      this->Pieces);
+    RestrictAffine(cell, cells.GetNodes(cell), origin, direction, t0, t1, this->Pieces);
   }
   else
   {

@@ -51,7 +51,8 @@ double Det3(const double j[9])
 }
 
 /// The per-pixel work's view-independent data of a valid cell (class doc).
-void PrepareRays(vtkHighOrderGeneralCells::Cell& cell, const double* nodes)
+void PrepareRays(vtkHighOrderGeneralCells::Cell& cell, const double* nodes,
+  const double* scalars, const std::vector<double>& basis)
 {
   cell.PlanarFaces = hov::PlanarFaceMask(cell.Shape, nodes);
   cell.Affine = hov::IsGeometryAffine(cell.Shape, nodes);
@@ -75,6 +76,12 @@ void PrepareRays(vtkHighOrderGeneralCells::Cell& cell, const double* nodes)
   inv[6] = (j[3] * j[7] - j[4] * j[6]) / det;
   inv[7] = (j[1] * j[6] - j[0] * j[7]) / det;
   inv[8] = (j[0] * j[4] - j[1] * j[3]) / det;
+  if (cell.Affine)
+  {
+    // The field as a polynomial in pcoords: per-pixel restriction without
+    // expanding every shape function along the ray.
+    hov::AffineFieldCoefficients(basis.data(), cell.NodeCount, scalars, cell.Field);
+  }
 }
 
 /// Per-cell result of the geometric checks.
@@ -167,6 +174,7 @@ void vtkHighOrderGeneralCells::Build(vtkUnstructuredGridBase* grid,
   }
   double referenceSign[32];
   bool known[32] = {};
+  std::vector<std::vector<double>> bases(32); // hov::AffineFieldBasis per type
   // Offsets of every candidate's nodes in the pools (skipped cells leave a hole).
   std::vector<Cell> all(count);
   vtkIdType next = 0;
@@ -181,6 +189,8 @@ void vtkHighOrderGeneralCells::Build(vtkUnstructuredGridBase* grid,
     if (!known[type])
     {
       referenceSign[type] = ReferenceOrientation(all[k].Shape);
+      bases[type].assign(hov::AffineFieldTerms * hov::MaxCellNodes, 0.0);
+      hov::AffineFieldBasis(all[k].Shape, bases[type].data());
       known[type] = true;
     }
   }
@@ -239,7 +249,7 @@ void vtkHighOrderGeneralCells::Build(vtkUnstructuredGridBase* grid,
       status[k] = checks[k].Result;
       if (status[k] == Ok)
       {
-        PrepareRays(cell, x);
+        PrepareRays(cell, x, s, bases[static_cast<int>(cell.Shape)]);
       }
     }
   });

@@ -77,6 +77,7 @@ public:
     unsigned PlanarFaces;        ///< hov::PlanarFaceMask (view-independent)
     bool Affine;                 ///< hov::IsGeometryAffine: the field is a polynomial along rays
     double InverseJacobian[9];   ///< affine cells: d(pcoords)/dx, row-major
+    double Field[27];            ///< affine cells: hov::AffineFieldCoefficients
   };
 
   struct Statistics

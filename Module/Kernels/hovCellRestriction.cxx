@@ -109,16 +109,31 @@ struct FitContext
   CellRestrictionStatus* Status;
 };
 
+/// cos(Pi m / ChebN), m = 0 .. 2 ChebN - 1 (the nodes and the DCT-I kernel).
+struct CosTable
+{
+  double V[2 * ChebN];
+  CosTable()
+  {
+    for (int m = 0; m < 2 * ChebN; ++m)
+    {
+      this->V[m] = std::cos(Pi * m / ChebN);
+    }
+  }
+};
+
 /// Chebyshev coefficients of the degree-ChebN interpolant of s on [a, b].
 void SampleChebyshev(const FitContext& ctx, double a, double b, double c[ChebN + 1])
 {
+  static const CosTable cosines; // thread-safe initialisation (C++11)
+  const double* cs = cosines.V;
   const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
   double f[ChebN + 1];
   double pc[3];
   CellParametricCenter(ctx.Shape, pc);
   for (int j = 0; j <= ChebN; ++j)
   {
-    const double t = (j == 0) ? b : (j == ChebN) ? a : mid + half * std::cos(Pi * j / ChebN);
+    const double t = (j == 0) ? b : (j == ChebN) ? a : mid + half * cs[j];
     const double x[3] = { ctx.O[0] + t * ctx.D[0], ctx.O[1] + t * ctx.D[1],
       ctx.O[2] + t * ctx.D[2] };
     if (!InvertGeometry(ctx.Shape, ctx.Points, x, pc)) // warm start from the previous sample
@@ -132,7 +147,7 @@ void SampleChebyshev(const FitContext& ctx, double a, double b, double c[ChebN +
     double sum = 0.5 * (f[0] + ((k % 2) ? -f[ChebN] : f[ChebN]));
     for (int j = 1; j < ChebN; ++j)
     {
-      sum += f[j] * std::cos(Pi * ((j * k) % (2 * ChebN)) / ChebN);
+      sum += f[j] * cs[(j * k) % (2 * ChebN)];
     }
     c[k] = sum * 2.0 / ChebN;
   }
@@ -208,6 +223,198 @@ void Fit(const FitContext& ctx, double a, double b, int depth)
   piece.ErrorBound = bound;
   ctx.Out->push_back(piece);
 }
+}
+
+bool AffineFieldBasis(CellShape shape, double* basis)
+{
+  if (GeometryShape(shape) == CellShape::Pyramid)
+  {
+    return false;
+  }
+  const int n = CellNodeCount(shape);
+  // Shape functions at pc = (a, b, c) / 2, a, b, c in {0, 1, 2}.
+  double f[AffineFieldTerms][MaxCellNodes];
+  for (int m = 0; m < AffineFieldTerms; ++m)
+  {
+    const double pc[3] = { 0.5 * (m / 9), 0.5 * ((m / 3) % 3), 0.5 * (m % 3) };
+    CellShapeFunctions(shape, pc, f[m]);
+  }
+  // Values at x = 0, 1/2, 1 -> coefficients of 1, x, x^2, one axis at a time.
+  const int stride[3] = { 9, 3, 1 };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int m = 0; m < AffineFieldTerms; ++m)
+    {
+      if ((m / stride[axis]) % 3 != 0)
+      {
+        continue; // m is the first of a line along this axis
+      }
+      double* f0 = f[m];
+      double* f1 = f[m + stride[axis]];
+      double* f2 = f[m + 2 * stride[axis]];
+      for (int i = 0; i < n; ++i)
+      {
+        const double v0 = f0[i], v1 = f1[i], v2 = f2[i];
+        f1[i] = -3.0 * v0 + 4.0 * v1 - v2;
+        f2[i] = 2.0 * v0 - 4.0 * v1 + 2.0 * v2;
+      }
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    for (int m = 0; m < AffineFieldTerms; ++m)
+    {
+      // Structural zeros (terms absent from the shape) exactly 0.
+      basis[AffineFieldTerms * i + m] = std::fabs(f[m][i]) < 1e-12 ? 0.0 : f[m][i];
+    }
+  }
+  return true;
+}
+
+void AffineFieldCoefficients(
+  const double* basis, int nodeCount, const double* scalars, double c[AffineFieldTerms])
+{
+  for (int m = 0; m < AffineFieldTerms; ++m)
+  {
+    c[m] = 0.0;
+  }
+  for (int i = 0; i < nodeCount; ++i)
+  {
+    const double* b = basis + AffineFieldTerms * i;
+    for (int m = 0; m < AffineFieldTerms; ++m)
+    {
+      c[m] += scalars[i] * b[m];
+    }
+  }
+}
+
+namespace
+{
+/// True if every term of total degree > 2 is zero (tetrahedra, linear wedges).
+bool TotalDegreeAtMost2(const double c[AffineFieldTerms])
+{
+  // The 17 indices 9 i + 3 j + k with i + j + k > 2.
+  static constexpr int High[17] = { 5, 7, 8, 11, 13, 14, 15, 16, 17, 19, 20, 21, 22, 23, 24, 25, 26 };
+  bool any = false;
+  for (int m : High)
+  {
+    any = any || c[m] != 0.0;
+  }
+  return !any;
+}
+
+/// A field c0 + g.pc + (quadratic form) along pc = a + tau b, as [s, s', s''/2].
+Polynomial RestrictQuadraticForm(const double c[AffineFieldTerms], const double a[3], const double b[3])
+{
+  const double cr = c[9], cs = c[3], ct = c[1];
+  const double crr = c[18], css = c[6], ctt = c[2], crs = c[12], crt = c[10], cst = c[4];
+  const double r = a[0], s = a[1], t = a[2], br = b[0], bs = b[1], bt = b[2];
+  Polynomial p;
+  p.C[0] = c[0] + cr * r + cs * s + ct * t +
+    (r * (crr * r + crs * s + crt * t) + s * (css * s + cst * t) + ctt * t * t);
+  p.C[1] = cr * br + cs * bs + ct * bt +
+    (2.0 * (crr * r * br + css * s * bs + ctt * t * bt) + crs * (r * bs + s * br) +
+      crt * (r * bt + t * br) + cst * (s * bt + t * bs));
+  p.C[2] = br * (crr * br + crs * bs + crt * bt) + bs * (css * bs + cst * bt) + ctt * bt * bt;
+  p.Degree = 2;
+  p.Degree = EffectiveDegree(p);
+  return p;
+}
+}
+
+Polynomial RestrictAffineField(
+  const double c[AffineFieldTerms], const double start[3], const double step[3])
+{
+  if (TotalDegreeAtMost2(c))
+  {
+    return RestrictQuadraticForm(c, start, step);
+  }
+  const double ar = start[0], br = step[0], as = start[1], bs = step[1], at = start[2],
+               bt = step[2];
+  double out[7] = {};
+  int degree = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    // R(tau) = sum_j s(tau)^j (c_ij0 + c_ij1 t(tau) + c_ij2 t(tau)^2), degree <= 4.
+    double r[5] = {};
+    int rDeg = -1;
+    for (int j = 0; j < 3; ++j)
+    {
+      const double* cc = c + 9 * i + 3 * j;
+      if (cc[0] == 0.0 && cc[1] == 0.0 && cc[2] == 0.0)
+      {
+        continue;
+      }
+      const double q[3] = { cc[0] + at * (cc[1] + cc[2] * at), bt * (cc[1] + 2.0 * cc[2] * at),
+        cc[2] * bt * bt };
+      const int qDeg = cc[2] != 0.0 ? 2 : (cc[1] != 0.0 ? 1 : 0);
+      if (j == 0)
+      {
+        for (int k = 0; k <= qDeg; ++k)
+        {
+          r[k] += q[k];
+        }
+      }
+      else if (j == 1)
+      {
+        for (int k = 0; k <= qDeg; ++k)
+        {
+          r[k] += as * q[k];
+          r[k + 1] += bs * q[k];
+        }
+      }
+      else
+      {
+        const double p0 = as * as, p1 = 2.0 * as * bs, p2 = bs * bs;
+        for (int k = 0; k <= qDeg; ++k)
+        {
+          r[k] += p0 * q[k];
+          r[k + 1] += p1 * q[k];
+          r[k + 2] += p2 * q[k];
+        }
+      }
+      rDeg = std::max(rDeg, qDeg + j);
+    }
+    if (rDeg < 0)
+    {
+      continue;
+    }
+    // out += r(tau)^i R(tau).
+    if (i == 0)
+    {
+      for (int k = 0; k <= rDeg; ++k)
+      {
+        out[k] += r[k];
+      }
+    }
+    else if (i == 1)
+    {
+      for (int k = 0; k <= rDeg; ++k)
+      {
+        out[k] += ar * r[k];
+        out[k + 1] += br * r[k];
+      }
+    }
+    else
+    {
+      const double p0 = ar * ar, p1 = 2.0 * ar * br, p2 = br * br;
+      for (int k = 0; k <= rDeg; ++k)
+      {
+        out[k] += p0 * r[k];
+        out[k + 1] += p1 * r[k];
+        out[k + 2] += p2 * r[k];
+      }
+    }
+    degree = std::max(degree, rDeg + i);
+  }
+  Polynomial s;
+  for (int k = 0; k <= degree; ++k)
+  {
+    s.C[k] = out[k];
+  }
+  s.Degree = degree;
+  s.Degree = EffectiveDegree(s);
+  return s;
 }
 
 bool IsGeometryAffine(CellShape shape, const double* points, double relativeTolerance)

@@ -99,6 +99,41 @@ struct CellRestrictionStatus
 HOV_EXPORT bool IsGeometryAffine(
   CellShape shape, const double* points, double relativeTolerance = AffineTolerance);
 
+/// Coefficients of a field of degree <= 2 in each parametric coordinate:
+/// index 9 i + 3 j + k holds the coefficient of r^i s^j t^k.
+constexpr int AffineFieldTerms = 27;
+
+/**
+ * The shape functions of @p shape in that monomial basis: @p basis[27 n + m]
+ * is coefficient m of node n's shape function (n < CellNodeCount). Exact for
+ * every supported shape except pyramids (their shape functions are rational):
+ * the coefficients are small integers, recovered from the shape functions at
+ * the dyadic points {0, 1/2, 1}^3 by integer transforms. False for pyramids.
+ * @p basis must hold 27 MaxCellNodes values.
+ */
+HOV_EXPORT bool AffineFieldBasis(CellShape shape, double* basis);
+
+/**
+ * Per-cell set-up of RestrictAffineField: @p c[m] = sum_n scalars[n]
+ * basis[27 n + m] (the interpolated field as a polynomial in the parametric
+ * coordinates; rounding <= NodeCount eps sum |basis| |s_n|).
+ */
+HOV_EXPORT void AffineFieldCoefficients(
+  const double* basis, int nodeCount, const double* scalars, double c[AffineFieldTerms]);
+
+/**
+ * The field c (AffineFieldCoefficients) along the parametric line
+ * pc(tau) = @p start + tau @p step as one polynomial in tau (degree <= 6):
+ * the same polynomial as the expansion of the shape functions along the line
+ * (CellShapeFunctionsAlongLine) weighted by the scalars, up to rounding, at a
+ * fraction of the cost. The affine cells' per-pixel restriction. Fields of
+ * total degree <= 2 (tetrahedra, linear wedges: every coefficient of
+ * i + j + k > 2 exactly 0) take the quadratic form directly
+ * (s(a), s'(a) . b, b^T H b: ~50 flops).
+ */
+HOV_EXPORT Polynomial RestrictAffineField(
+  const double c[AffineFieldTerms], const double start[3], const double step[3]);
+
 /**
  * The restriction of the cell's scalar to [@p t0, @p t1] (see file doc);
  * @p out is cleared first. Returns the number of pieces (0 for invalid input).

@@ -19,7 +19,8 @@
  *    integration by parts, valid for any uC with uC(0) = 0, uC(1) = 1;
  *  - Wilhelms-Van Gelder: C = h (gA V0 + gB V1), V0 = int (1 - uC) e^-D,
  *    V1 = int uC e^-D.
- * Quadrature: Gauss-Kronrod 7-15 panels, initial panels at D = 1, 2, ..., 32,
+ * Quadrature: Gauss-Kronrod panels (the 3-7 pair first, the 7-15 pair when
+ * |K7 - G3| misses the panel's budget), initial panels at D = 1, 2, ..., 32,
  * cut at D = 64, bisection until the weighted |K15 - G7| meets the budget
  * (all constants and their reasons in the .cxx).
  *

@@ -227,27 +227,6 @@ Polynomial Polynomial::FromCoefficients(std::initializer_list<double> c)
   return p;
 }
 
-int EffectiveDegree(const Polynomial& p)
-{
-  int n = std::min(std::max(p.Degree, 0), Polynomial::MaxDegree);
-  while (n > 0 && p.C[n] == 0.0)
-  {
-    --n;
-  }
-  return n;
-}
-
-double Evaluate(const Polynomial& p, double t)
-{
-  const int n = std::min(std::max(p.Degree, 0), Polynomial::MaxDegree);
-  double r = p.C[n];
-  for (int i = n - 1; i >= 0; --i)
-  {
-    r = r * t + p.C[i];
-  }
-  return r;
-}
-
 void EvaluateWithDerivative(const Polynomial& p, double t, double& value, double& slope)
 {
   const int n = std::min(std::max(p.Degree, 0), Polynomial::MaxDegree);
@@ -295,35 +274,6 @@ double EvaluateCompensated(const Polynomial& p, double t, double level, double* 
       16.0 * std::numeric_limits<double>::denorm_min();
   }
   return result;
-}
-
-Polynomial Derivative(const Polynomial& p)
-{
-  Polynomial d;
-  const int n = std::min(std::max(p.Degree, 0), Polynomial::MaxDegree);
-  d.Degree = std::max(n - 1, 0);
-  for (int i = 1; i <= n; ++i)
-  {
-    d.C[i - 1] = i * p.C[i];
-  }
-  return d;
-}
-
-bool Antiderivative(const Polynomial& p, Polynomial& out)
-{
-  const int n = EffectiveDegree(p);
-  if (n + 1 > Polynomial::MaxDegree)
-  {
-    return false;
-  }
-  Polynomial a;
-  a.Degree = n + 1;
-  for (int i = 0; i <= n; ++i)
-  {
-    a.C[i + 1] = p.C[i] / (i + 1);
-  }
-  out = a;
-  return true;
 }
 
 Polynomial ComposeAffine(const Polynomial& p, double offset, double scale)

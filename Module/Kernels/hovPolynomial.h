@@ -54,6 +54,7 @@
 
 #include "hovConfig.h"
 
+#include <algorithm>        // std::min, std::max (inline helpers)
 #include <initializer_list> // FromCoefficients
 
 namespace hov
@@ -77,10 +78,10 @@ constexpr double NearDoubleRootEps = 4.0 * 2.220446049250313e-16;
 constexpr double RootEndSlackUlps = 4.0;
 
 /// Highest index with a non-zero coefficient (0 for the zero polynomial).
-HOV_EXPORT int EffectiveDegree(const Polynomial& p);
+inline int EffectiveDegree(const Polynomial& p);
 
 /// p(t) by Horner's rule.
-HOV_EXPORT double Evaluate(const Polynomial& p, double t);
+inline double Evaluate(const Polynomial& p, double t);
 
 /// p(t) and p'(t) by Horner's rule.
 HOV_EXPORT void EvaluateWithDerivative(const Polynomial& p, double t, double& value, double& slope);
@@ -95,11 +96,11 @@ HOV_EXPORT double EvaluateCompensated(
   const Polynomial& p, double t, double level = 0.0, double* errorBound = nullptr);
 
 /// p'.
-HOV_EXPORT Polynomial Derivative(const Polynomial& p);
+inline Polynomial Derivative(const Polynomial& p);
 
 /// The antiderivative vanishing at 0. False (and @p out untouched) if its
 /// degree would exceed MaxDegree.
-HOV_EXPORT bool Antiderivative(const Polynomial& p, Polynomial& out);
+inline bool Antiderivative(const Polynomial& p, Polynomial& out);
 
 /// q(t) = p(offset + scale t), accumulated in long double.
 HOV_EXPORT Polynomial ComposeAffine(const Polynomial& p, double offset, double scale);
@@ -120,6 +121,57 @@ HOV_EXPORT int FindRoots(const Polynomial& p, double level, double lo, double hi
  * the evaluation error of the level counts as the root).
  */
 HOV_EXPORT double SolveMonotone(const Polynomial& p, double level, double lo, double hi);
+
+// Small helpers inline (called per piece and per quadrature node).
+inline int EffectiveDegree(const Polynomial& p)
+{
+  int n = std::min(std::max(p.Degree, 0), Polynomial::MaxDegree);
+  while (n > 0 && p.C[n] == 0.0)
+  {
+    --n;
+  }
+  return n;
+}
+
+inline double Evaluate(const Polynomial& p, double t)
+{
+  const int n = std::min(std::max(p.Degree, 0), Polynomial::MaxDegree);
+  double r = p.C[n];
+  for (int i = n - 1; i >= 0; --i)
+  {
+    r = r * t + p.C[i];
+  }
+  return r;
+}
+
+inline Polynomial Derivative(const Polynomial& p)
+{
+  Polynomial d;
+  const int n = std::min(std::max(p.Degree, 0), Polynomial::MaxDegree);
+  d.Degree = std::max(n - 1, 0);
+  for (int i = 1; i <= n; ++i)
+  {
+    d.C[i - 1] = i * p.C[i];
+  }
+  return d;
+}
+
+inline bool Antiderivative(const Polynomial& p, Polynomial& out)
+{
+  const int n = EffectiveDegree(p);
+  if (n + 1 > Polynomial::MaxDegree)
+  {
+    return false;
+  }
+  Polynomial a;
+  a.Degree = n + 1;
+  for (int i = 0; i <= n; ++i)
+  {
+    a.C[i + 1] = p.C[i] / (i + 1);
+  }
+  out = a;
+  return true;
+}
 }
 
 #endif

@@ -154,13 +154,26 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
   double ends[Polynomial::MaxDegree + 2];
   int nEnds = 0;
   ends[nEnds++] = 0.0;
-  double crit[Polynomial::MaxDegree];
-  const int nCrit = FindRoots(Derivative(field), 0.0, 0.0, length, crit);
-  for (int i = 0; i < nCrit; ++i)
+  if (degree == 2)
   {
-    if (crit[i] > ends[nEnds - 1] && crit[i] < length)
+    // The vertex -c1 / (2 c2): FindRoots on s' gives this same value (its
+    // power-of-two scaling is exact) and drops it unless inside (0, L).
+    const double vertex = -field.C[1] / (2.0 * field.C[2]);
+    if (vertex > 0.0 && vertex < length)
     {
-      ends[nEnds++] = crit[i];
+      ends[nEnds++] = vertex;
+    }
+  }
+  else
+  {
+    double crit[Polynomial::MaxDegree];
+    const int nCrit = FindRoots(Derivative(field), 0.0, 0.0, length, crit);
+    for (int i = 0; i < nCrit; ++i)
+    {
+      if (crit[i] > ends[nEnds - 1] && crit[i] < length)
+      {
+        ends[nEnds++] = crit[i];
+      }
     }
   }
   ends[nEnds++] = length;

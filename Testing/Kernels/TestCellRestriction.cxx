@@ -127,6 +127,73 @@ TEST(CellRestriction, AffineCellsAreExactPolynomials)
   hovtest::ReportMeasured("CellRestriction.AffineRelError", worst);
 }
 
+// The per-cell polynomial in pcoords (AffineFieldBasis/Coefficients) along a
+// parametric line against the shape functions evaluated directly and against
+// their expansion along the line (CellShapeFunctionsAlongLine).
+TEST(CellRestriction, AffineFieldMatchesShapeFunctions)
+{
+  using S = CellShape;
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  hovtest::Worst worst;
+  std::vector<double> basis(hov::AffineFieldTerms * hov::MaxCellNodes);
+  EXPECT_FALSE(hov::AffineFieldBasis(S::Pyramid, basis.data()));
+  for (S shape : { S::Tetra, S::QuadraticTetra, S::Voxel, S::Hexahedron, S::Wedge,
+         S::QuadraticHexahedron, S::QuadraticWedge, S::TriQuadraticHexahedron })
+  {
+    ASSERT_TRUE(hov::AffineFieldBasis(shape, basis.data())) << ShapeName(shape);
+    const int n = hov::CellNodeCount(shape);
+    for (int trial = 0; trial < 40; ++trial)
+    {
+      std::vector<double> scalars(n);
+      for (double& v : scalars)
+      {
+        v = 50.0 + 30.0 * u(rng);
+      }
+      double c[hov::AffineFieldTerms];
+      hov::AffineFieldCoefficients(basis.data(), n, scalars.data(), c);
+      double start[3], step[3];
+      hovtest::RandomInteriorPC(shape, rng, 0.05, start);
+      for (int k = 0; k < 3; ++k)
+      {
+        step[k] = 0.3 * u(rng);
+      }
+      const hov::Polynomial s = hov::RestrictAffineField(c, start, step);
+      EXPECT_LE(s.Degree, ExpectedMaxDegree(shape)) << ShapeName(shape);
+      hov::Polynomial w[hov::MaxCellNodes];
+      hov::CellShapeFunctionsAlongLine(shape, start, step, w);
+      hov::Polynomial expanded;
+      expanded.Degree = hov::Polynomial::MaxDegree;
+      for (int i = 0; i < n; ++i)
+      {
+        for (int k = 0; k <= w[i].Degree; ++k)
+        {
+          expanded.C[k] += scalars[i] * w[i].C[k];
+        }
+      }
+      const auto mm = std::minmax_element(scalars.begin(), scalars.end());
+      const double range = *mm.second - *mm.first;
+      for (int k = 0; k <= hov::Polynomial::MaxDegree; ++k)
+      {
+        const double ck = k <= s.Degree ? s.C[k] : 0.0;
+        EXPECT_LT(std::fabs(ck - expanded.C[k]), 1e-13 * range) << ShapeName(shape) << " c" << k;
+      }
+      for (int j = 0; j <= 20; ++j)
+      {
+        const double tau = j / 20.0;
+        const double pc[3] = { start[0] + tau * step[0], start[1] + tau * step[1],
+          start[2] + tau * step[2] };
+        const double e =
+          std::fabs(hov::Evaluate(s, tau) - hov::InterpolateCellScalar(shape, scalars.data(), pc)) /
+          range;
+        worst.Add(e, ShapeName(shape));
+        EXPECT_LT(e, 1e-13) << ShapeName(shape) << " trial " << trial << " tau " << tau;
+      }
+    }
+  }
+  hovtest::ReportMeasured("CellRestriction.AffineFieldRelError", worst);
+}
+
 TEST(CellRestriction, NonAffineBoundHoldsAndIsTight)
 {
   using S = CellShape;
