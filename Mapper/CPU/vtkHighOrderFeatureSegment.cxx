@@ -20,24 +20,6 @@ using Ray = vtkHighOrderViewRays::Ray;
 /// |scalar| on a piece are rounding noise (keeps affine linear fields exact-linear).
 constexpr double NegligibleRelative = 8.0 * 2.220446049250313e-16;
 
-void TrimNegligible(hov::Polynomial& s, double h, double tol)
-{
-  while (s.Degree > 1)
-  {
-    double size = std::abs(s.C[s.Degree]);
-    for (int k = 0; k < s.Degree; ++k)
-    {
-      size *= h;
-    }
-    if (!(size <= tol))
-    {
-      break;
-    }
-    s.C[s.Degree] = 0.0;
-    --s.Degree;
-  }
-}
-
 hov::Polynomial Linear(double value, double slope)
 {
   hov::Polynomial p;
@@ -142,7 +124,7 @@ void vtkHighOrderFeatureSegment::RestrictField(const FrameData& frame, int g, co
   const double tol = NegligibleRelative * std::max(std::abs(lo), std::abs(hi));
   for (hov::RestrictedPiece& piece : out)
   {
-    TrimNegligible(piece.S, piece.T1 - piece.T0, tol);
+    hov::TrimNegligibleTerms(piece.S, piece.T1 - piece.T0, tol);
   }
 }
 

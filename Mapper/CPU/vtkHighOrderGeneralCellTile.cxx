@@ -17,30 +17,6 @@ constexpr double BoxMargin = vtkHighOrderProjectorTile::BoxMargin;
 /// bound is 32 eps sum |s_i|) and are dropped.
 constexpr double NegligibleRelative = 8.0 * 2.220446049250313e-16;
 
-/**
- * Drop the highest terms of @p s while they stay below @p tol on [0, h]: a
- * field that is linear along the ray up to rounding (an affine cell with a
- * linear field) then takes the linear cells' exact closed form instead of
- * quadrature for a cubic with ~1e-17 coefficients.
- */
-void TrimNegligible(hov::Polynomial& s, double h, double tol)
-{
-  while (s.Degree > 1)
-  {
-    double size = std::abs(s.C[s.Degree]);
-    for (int k = 0; k < s.Degree; ++k)
-    {
-      size *= h;
-    }
-    if (!(size <= tol))
-    {
-      break;
-    }
-    s.C[s.Degree] = 0.0;
-    --s.Degree;
-  }
-}
-
 /// Window-x span of the convex hull of @p n projected corners on the row at
 /// height @p y (a row meets a hull of points in the span of its crossings
 /// with all segments between them); false if the row misses it.
@@ -232,7 +208,7 @@ hov::RGBA vtkHighOrderGeneralCellTile::Integrate(const FrameData& frame, int g,
     NegligibleRelative * std::max(std::abs(cell.ScalarMin), std::abs(cell.ScalarMax));
   for (hov::RestrictedPiece& piece : this->Pieces)
   {
-    TrimNegligible(piece.S, piece.T1 - piece.T0, tol);
+    hov::TrimNegligibleTerms(piece.S, piece.T1 - piece.T0, tol);
     const hov::PolynomialSegmentResult r =
       hov::IntegratePolynomialScalar(*frame.TF, piece.S, piece.T1 - piece.T0, frame.Segment);
     pieces += r.Pieces;

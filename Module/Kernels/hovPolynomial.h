@@ -55,6 +55,7 @@
 #include "hovConfig.h"
 
 #include <algorithm>        // std::min, std::max (inline helpers)
+#include <cmath>            // std::abs (inline helpers)
 #include <initializer_list> // FromCoefficients
 
 namespace hov
@@ -79,6 +80,14 @@ constexpr double RootEndSlackUlps = 4.0;
 
 /// Highest index with a non-zero coefficient (0 for the zero polynomial).
 inline int EffectiveDegree(const Polynomial& p);
+
+/**
+ * Drop the highest terms of @p s while |c_k| h^k <= @p tol (their largest
+ * value on [0, h]); never below degree 1. A field that is linear along a ray
+ * up to rounding (an affine cell with a linear field) then takes the linear
+ * exact path instead of quadrature for a cubic with ~1e-17 coefficients.
+ */
+inline void TrimNegligibleTerms(Polynomial& s, double h, double tol);
 
 /// p(t) by Horner's rule.
 inline double Evaluate(const Polynomial& p, double t);
@@ -171,6 +180,23 @@ inline bool Antiderivative(const Polynomial& p, Polynomial& out)
   }
   out = a;
   return true;
+}
+inline void TrimNegligibleTerms(Polynomial& s, double h, double tol)
+{
+  while (s.Degree > 1)
+  {
+    double size = std::abs(s.C[s.Degree]);
+    for (int k = 0; k < s.Degree; ++k)
+    {
+      size *= h;
+    }
+    if (!(size <= tol))
+    {
+      break;
+    }
+    s.C[s.Degree] = 0.0;
+    --s.Degree;
+  }
 }
 }
 
