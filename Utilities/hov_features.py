@@ -85,6 +85,17 @@ def volume_for(mapper, lo, hi, opacity, unit):
     return volume
 
 
+def pipe_camera():
+    """The view of the T-junction used by every pipe image."""
+    cam = vtkCamera()
+    cam.SetFocalPoint(0.0, 0.6, 0.0)
+    cam.SetPosition(1.4, 2.2, 3.4)
+    cam.SetViewUp(0, 1, 0)
+    cam.SetViewAngle(35)
+    cam.SetClippingRange(1, 20)
+    return cam
+
+
 def tjunction(out, size):
     grid = read("tjunction_tet10_dolfinx.vtu", "speed")
     lo, hi = grid.GetPointData().GetArray("speed").GetRange()
@@ -94,12 +105,7 @@ def tjunction(out, size):
     for value, rgb, opacity in ((0.75, (0.3, 0.6, 1.0), 0.3), (1.3, (1.0, 0.8, 0.3), 0.5),
                                 (2.0, (1.0, 0.3, 0.2), 0.9)):
         mapper.AddIsosurface(value, *rgb, opacity)
-    cam = vtkCamera()
-    cam.SetFocalPoint(0.0, 0.6, 0.0)
-    cam.SetPosition(1.4, 2.2, 3.4)
-    cam.SetViewUp(0, 1, 0)
-    cam.SetViewAngle(35)
-    cam.SetClippingRange(1, 20)
+    cam = pipe_camera()
     mapper.RenderImage(cam, volume, size, size)
     write(mapper, os.path.join(out, "isosurfaces.png"))
     plane = vtkPlane()
@@ -127,12 +133,7 @@ def fields(out, size):
     color.AddRGBPoint(0.5 * (plo + phi), 0.95, 0.95, 0.95)
     color.AddRGBPoint(phi, 1.0, 0.5, 0.1)
     mapper.SetColorArrayName("velocity_potential")
-    cam = vtkCamera()
-    cam.SetFocalPoint(0.0, 0.6, 0.0)
-    cam.SetPosition(1.4, 2.2, 3.4)
-    cam.SetViewUp(0, 1, 0)
-    cam.SetViewAngle(35)
-    cam.SetClippingRange(1, 20)
+    cam = pipe_camera()
     mapper.RenderImage(cam, volume, size, size)
     write(mapper, os.path.join(out, "fields.png"))
 

@@ -270,18 +270,6 @@ void vtkHighOrderFeatureTile::Render(
       }
     }
   }
-  const int width = frame.Rays->GetWidth();
-  for (int j = 0; j < this->H; ++j)
-  {
-    for (int i = 0; i < this->W; ++i)
-    {
-      const size_t p = static_cast<size_t>(j) * this->W + i;
-      double* out = &rgba[4 * (static_cast<size_t>(this->Y0 + j) * width + this->X0 + i)];
-      out[0] = this->Accum[p].R;
-      out[1] = this->Accum[p].G;
-      out[2] = this->Accum[p].B;
-      out[3] = this->Accum[p].A;
-      st.WitnessViolations += this->Violated[p];
-    }
-  }
+  vtkHighOrderProjectorTile::WriteTile(this->Accum.data(), this->Violated.data(), this->X0,
+    this->Y0, this->W, this->H, frame.Rays->GetWidth(), rgba, st.WitnessViolations);
 }

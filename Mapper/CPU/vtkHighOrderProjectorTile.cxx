@@ -186,22 +186,29 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
 #endif
 }
 
+void vtkHighOrderProjectorTile::WriteTile(const hov::RGBA* accum, const unsigned char* violated,
+  int x0, int y0, int w, int h, int width, std::vector<double>& rgba, vtkIdType& violations)
+{
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const size_t p = static_cast<size_t>(j) * w + i;
+      double* out = &rgba[4 * (static_cast<size_t>(y0 + j) * width + x0 + i)];
+      out[0] = accum[p].R;
+      out[1] = accum[p].G;
+      out[2] = accum[p].B;
+      out[3] = accum[p].A;
+      violations += violated[p];
+    }
+  }
+}
+
 void vtkHighOrderProjectorTile::Write(
   std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const
 {
-  for (int j = 0; j < this->H; ++j)
-  {
-    for (int i = 0; i < this->W; ++i)
-    {
-      const size_t p = static_cast<size_t>(j) * this->W + i;
-      double* out = &rgba[4 * (static_cast<size_t>(this->Y0 + j) * width + this->X0 + i)];
-      out[0] = this->Accum[p].R;
-      out[1] = this->Accum[p].G;
-      out[2] = this->Accum[p].B;
-      out[3] = this->Accum[p].A;
-      st.WitnessViolations += this->Violated[p];
-    }
-  }
+  WriteTile(this->Accum.data(), this->Violated.data(), this->X0, this->Y0, this->W, this->H, width,
+    rgba, st.WitnessViolations);
 }
 
 /// Visit every (pixel, segment) of ordered cell k in this tile.

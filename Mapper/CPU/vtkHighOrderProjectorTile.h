@@ -111,6 +111,14 @@ public:
   /// Largest tile side (vtkHighOrderVolumeMapper clamps TileSize to it).
   static constexpr int MaxTileSize = 256;
 
+  /**
+   * Copy a tile's accumulated pixels (@p w x @p h, row-major, origin
+   * (@p x0, @p y0)) into the image @p rgba of width @p width and add its
+   * witness flags to @p violations. Shared by every tile renderer.
+   */
+  static void WriteTile(const hov::RGBA* accum, const unsigned char* violated, int x0, int y0,
+    int w, int h, int width, std::vector<double>& rgba, vtkIdType& violations);
+
   /// Render tile @p tileIndex of @p frame and write it into @p rgba.
   void Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
     vtkHighOrderCellProjector::Statistics& stats);
