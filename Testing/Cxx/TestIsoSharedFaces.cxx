@@ -36,30 +36,10 @@ double Height(double, double, double z)
 /// The plane z = level seen by pixel (i, j): where the ray crosses it (x, y).
 void Crossing(vtkCamera* cam, int i, int j, double level, double& x, double& y)
 {
-  // Orthographic: the ray through pixel (i, j) is p0 + t v, p0 on the plane
-  // through the focal point perpendicular to v.
-  double f[3], up[3], v[3], right[3];
-  cam->GetFocalPoint(f);
-  cam->GetViewUp(up);
-  cam->GetDirectionOfProjection(v);
-  right[0] = v[1] * up[2] - v[2] * up[1];
-  right[1] = v[2] * up[0] - v[0] * up[2];
-  right[2] = v[0] * up[1] - v[1] * up[0];
-  // Orthonormal up (VTK orthogonalises the view up).
-  const double s = cam->GetParallelScale();
-  const double u = (i + 0.5 - N / 2.0) * (2.0 * s / N), w = (j + 0.5 - N / 2.0) * (2.0 * s / N);
-  double nup[3] = { right[1] * v[2] - right[2] * v[1], right[2] * v[0] - right[0] * v[2],
-    right[0] * v[1] - right[1] * v[0] };
-  const double nr = std::sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
-  const double nu = std::sqrt(nup[0] * nup[0] + nup[1] * nup[1] + nup[2] * nup[2]);
   double p[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    p[k] = f[k] + u * right[k] / nr + w * nup[k] / nu;
-  }
-  const double t = (level - p[2]) / v[2];
-  x = p[0] + t * v[0];
-  y = p[1] + t * v[1];
+  hovTest::OrthoRayPlaneCrossing(cam, N, i, j, 2, level, p);
+  x = p[0];
+  y = p[1];
 }
 }
 

@@ -4,10 +4,12 @@
 
 #include "hovCellShapes.h" // node parametric coordinates, corner map
 
+#include "vtkCamera.h"
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
 
+#include <cmath>
 #include <utility>
 
 namespace hovTest
@@ -190,5 +192,34 @@ Image RenderDouble(
     img.V.assign(rgba->GetPointer(0), rgba->GetPointer(0) + 4 * static_cast<size_t>(w) * h);
   }
   return img;
+}
+
+void OrthoRayPlaneCrossing(vtkCamera* cam, int n, int i, int j, int axis, double level, double p[3])
+{
+  // The ray through pixel (i, j) is p0 + t v, p0 on the plane through the
+  // focal point perpendicular to v; VTK orthogonalises the view up.
+  double f[3], up[3], v[3], right[3];
+  cam->GetFocalPoint(f);
+  cam->GetViewUp(up);
+  cam->GetDirectionOfProjection(v);
+  right[0] = v[1] * up[2] - v[2] * up[1];
+  right[1] = v[2] * up[0] - v[0] * up[2];
+  right[2] = v[0] * up[1] - v[1] * up[0];
+  const double s = cam->GetParallelScale();
+  const double u = (i + 0.5 - n / 2.0) * (2.0 * s / n), w = (j + 0.5 - n / 2.0) * (2.0 * s / n);
+  const double nup[3] = { right[1] * v[2] - right[2] * v[1], right[2] * v[0] - right[0] * v[2],
+    right[0] * v[1] - right[1] * v[0] };
+  const double nr = std::sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
+  const double nu = std::sqrt(nup[0] * nup[0] + nup[1] * nup[1] + nup[2] * nup[2]);
+  double p0[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    p0[k] = f[k] + u * right[k] / nr + w * nup[k] / nu;
+  }
+  const double t = (level - p0[axis]) / v[axis];
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = p0[k] + t * v[k];
+  }
 }
 }

@@ -61,6 +61,13 @@ std::array<vtkIdType, 8> LatticeCube(
 /// RenderImage and the double-precision image (GetDoubleImage); status in @p status.
 Image RenderDouble(vtkHighOrderVolumeMapper* mapper, vtkCamera* cam, vtkVolume* vol, int w,
   int h, int* status = nullptr);
+
+/**
+ * Where the orthographic ray of pixel (i, j) of an n x n image of @p cam
+ * (built from the camera's parameters, not the module's rays) crosses the
+ * plane x[axis] = level: the point's coordinates in @p p.
+ */
+void OrthoRayPlaneCrossing(vtkCamera* cam, int n, int i, int j, int axis, double level, double p[3]);
 }
 
 #endif
