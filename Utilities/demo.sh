@@ -9,5 +9,5 @@ build="${HOV_BUILD_DIR:-$root/build}"
 # The demo needs the module and its Python package only.
 "$root/Utilities/build.sh" vtkRenderingHighOrderVolumePython
 PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
-  xvfb-run -a -s "-screen 0 1280x1024x24" \
+  xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
   /usr/bin/python3 "$root/Utilities/hov_demo.py" --out "$build/demo" "$@"

@@ -29,7 +29,7 @@ vtkDataSetTriangleFilter (its time reported apart). It writes
 
 Run (Debian's python has VTK; an X server is needed even offscreen):
   PYTHONPATH=<build>/lib/python3/dist-packages \
-    xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 Utilities/hov_demo.py --out /tmp/demo
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" /usr/bin/python3 Utilities/hov_demo.py --out /tmp/demo
 
 Opacity semantics: vtkProjectedTetrahedraMapper and the unstructured ray caster turn the
 opacity a(s) into extinction a(s)/u (u = scalar opacity unit distance); the comparison rows

@@ -12,7 +12,7 @@
 
 Run (the images are the mapper's float images, composited over black):
   PYTHONPATH=<build>/lib/python3/dist-packages \\
-    xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 Utilities/hov_features.py --out /tmp/features
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" /usr/bin/python3 Utilities/hov_features.py --out /tmp/features
 """
 import argparse
 import os

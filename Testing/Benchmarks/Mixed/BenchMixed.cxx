@@ -21,7 +21,7 @@
 // before each render; the table shows the median of frames 1..N and the
 // ratios peer / ours. Ours is also timed on the tessellated input.
 //
-//   xvfb-run -a -s "-screen 0 1280x1024x24" bin/hovBenchMixed [--frames N]
+//   xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" bin/hovBenchMixed [--frames N]
 //     [--size S] [--turn DEG] [--data DIR] [--skip-rc]
 #include "hovTestReferenceDatasets.h"
 

@@ -18,7 +18,7 @@
 //
 // Usage: hovBenchRender [--data DIR] [--frames N] [--size S] [--extent E] [--azimuth DEG]
 //                       [--mesh bracket|rt|all] [--skip-raycast-large] [--out DIR]
-// Run under xvfb-run -a -s "-screen 0 1280x1024x24" (Debian's VTK renders only via GLX).
+// Run under xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" (Debian's VTK renders only via GLX).
 // Exit status: 0 if every render succeeded without VTK errors and gave a non-black image.
 //
 // Sources: this file (options, main), BenchRenderScene.cxx (meshes, transfer function,
