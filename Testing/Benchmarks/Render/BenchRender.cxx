@@ -6,13 +6,16 @@
 //       48^3 = 110,592 voxels) -> vtkDataSetTriangleFilter (5 tetrahedra per voxel),
 // with
 //   - vtkHighOrderVolumeMapper, exact integral, VTK_UNSTRUCTURED opacity semantics,
-//     VISIBILITY_SORT (vtkCellCenterDepthSort, the default) and PER_PIXEL_SORT,
+//     VISIBILITY_SORT (the exact vtkSteinVisibilitySort, the default) and PER_PIXEL_SORT,
 //   - vtkProjectedTetrahedraMapper (OpenGL, vtkCellCenterDepthSort),
 //   - vtkUnstructuredGridVolumeRayCastMapper + vtkUnstructuredGridLinearRayIntegrator,
-// all with the same camera and the same vtkVolumeProperty, and prints a Markdown table:
-//   first frame (fresh mapper, GL context already created), median of N frames each after
-//   a camera azimuth step (view-dependent caches cannot be reused), median of N frames of
-//   the same view, and the ratios mapper time / our mapper time.
+// all with the same camera and the same vtkVolumeProperty, each in its own offscreen window,
+// and prints a Markdown table: first frame (fresh mapper, GL context already created),
+// median of N frames each after a camera azimuth step (view-dependent caches cannot be
+// reused), median of N frames of the same view, and the ratios mapper time / our mapper
+// time. The timed frames are interleaved: in each round every mapper renders one frame, so
+// a change of machine load (other processes, a noisy host) hits all mappers alike; the
+// per-round ratios of the rotating frames are paired and reported as median [min, max].
 // Every timed frame is renderWindow->Render() followed by WaitForCompletion() (glFinish),
 // so asynchronous OpenGL work is counted.
 //
@@ -62,7 +65,7 @@ void Usage(const char* argv0)
        "  --mesh M              bracket, rt or all (default all)\n"
        "  --skip-raycast-large  skip vtkUnstructuredGridVolumeRayCastMapper on the generated mesh\n"
        "  --out DIR             write the last frame of every run as PNG into DIR\n"
-       "Run under xvfb-run -a -s \"-screen 0 1280x1024x24\".\n";
+       "Run under xvfb-run -a -s \"-screen 0 1280x1024x24 -noreset\".\n";
 }
 } // namespace
 
@@ -166,41 +169,48 @@ int main(int argc, char* argv[])
   for (const Mesh& mesh : meshes)
   {
     std::cout << mesh.Name << " (" << mesh.Tetras << " tets):\n";
+    std::vector<std::unique_ptr<Run>> runs;
     for (const bool perPixel : { false, true })
     {
-      vtkNew<vtkHighOrderVolumeMapper> m;
+      auto m = vtkSmartPointer<vtkHighOrderVolumeMapper>::New();
       m->SetIntegrationMethodToExact();
       m->SetOpacitySemanticsToVTKUnstructured();
       m->SetCellOrdering(perPixel ? vtkHighOrderVolumeMapper::PER_PIXEL_SORT
                                   : vtkHighOrderVolumeMapper::VISIBILITY_SORT);
-      rows.push_back(RunOne(opt, mesh, perPixel ? "hov_pix" : "hov_vis",
+      runs.push_back(Prepare(opt, mesh, perPixel ? "hov_pix" : "hov_vis",
         std::string("vtkHighOrderVolumeMapper (exact, VTK-unstructured, ") +
           (perPixel ? "per-pixel" : "visibility") + " sort)",
         m, errors));
     }
-    {
-      vtkNew<vtkProjectedTetrahedraMapper> m;
-      rows.push_back(RunOne(opt, mesh, "pt", "vtkProjectedTetrahedraMapper", m, errors));
-    }
+    runs.push_back(Prepare(opt, mesh, "pt", "vtkProjectedTetrahedraMapper",
+      vtkSmartPointer<vtkProjectedTetrahedraMapper>::New(), errors));
+    const std::string rcLabel = "vtkUnstructuredGridVolumeRayCastMapper + linear integrator";
+    Row skipped;
     const bool large = mesh.Name != "bracket";
     if (large && opt.SkipRayCastLarge)
     {
-      Row r;
-      r.Mesh = mesh.Name;
-      r.Key = "rc";
-      r.Mapper = "vtkUnstructuredGridVolumeRayCastMapper + linear integrator";
-      r.Problem = "skipped (--skip-raycast-large)";
-      rows.push_back(r);
+      skipped.Mesh = mesh.Name;
+      skipped.Key = "rc";
+      skipped.Mapper = rcLabel;
+      skipped.Problem = "skipped (--skip-raycast-large)";
     }
     else
     {
-      vtkNew<vtkUnstructuredGridVolumeRayCastMapper> m;
+      auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
       vtkNew<vtkUnstructuredGridLinearRayIntegrator> integrator;
       m->SetRayIntegrator(integrator);
       m->SetAutoAdjustSampleDistances(0); // one ray per pixel, no LOD
       m->SetImageSampleDistance(1.0);
-      rows.push_back(RunOne(opt, mesh, "rc",
-        "vtkUnstructuredGridVolumeRayCastMapper + linear integrator", m, errors));
+      runs.push_back(Prepare(opt, mesh, "rc", rcLabel, m, errors));
+    }
+    TimeInterleaved(opt, runs);
+    for (auto& run : runs)
+    {
+      rows.push_back(Finish(opt, mesh, *run, errors));
+    }
+    if (!skipped.Mesh.empty())
+    {
+      rows.push_back(skipped);
     }
   }
 

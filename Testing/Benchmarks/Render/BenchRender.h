@@ -15,6 +15,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,18 @@ struct Row
   double CpuRotating = -1; // our mapper: median GetLastImageTime() of the rotating frames
   vtkIdType Witness = -1;  // our mapper: witness violations of the last rotating frame
   double Coverage = 0;     // fraction of non-black pixels of the last frame
+  std::vector<double> RotatingTimes; // per rotating frame, in frame order (paired ratios)
+};
+
+/// A mapper set up for timing in its own offscreen window (see Prepare()).
+struct Run
+{
+  Row Result;
+  vtkSmartPointer<vtkAbstractVolumeMapper> Mapper;
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkCamera> Camera;
+  size_t ErrorsBefore = 0;
+  std::vector<double> Same, Cpu;
 };
 
 /// Collects VTK errors of the objects it observes (the message is not printed twice).
@@ -112,11 +125,23 @@ double Coverage(vtkRenderWindow* win, const std::string& png);
 /// @p s with every character that is not alphanumeric replaced by '_'.
 std::string FileSafe(std::string s);
 
-/// Times @p mapper on @p mesh: first frame, median of opt.Frames frames of the same view
-/// and of opt.Frames frames each after an azimuth step; errors seen by @p errors and an
-/// all-black image make the row fail.
-Row RunOne(const Options& opt, const Mesh& mesh, const std::string& key, const std::string& label,
-  vtkAbstractVolumeMapper* mapper, ErrorCounter& errors);
+/// Sets @p mapper up on @p mesh in its own offscreen window (OpenGL context created by
+/// rendering once without the volume, so the first timed frame measures the mapper).
+std::unique_ptr<Run> Prepare(const Options& opt, const Mesh& mesh, const std::string& key,
+  const std::string& label, vtkAbstractVolumeMapper* mapper, ErrorCounter& errors);
+
+/// Wall-clock seconds of one frame of @p run: Render() + WaitForCompletion().
+double TimeFrame(Run& run);
+
+/// Times the runs of one mesh: each one's first frame, then opt.Frames rounds in which every
+/// run renders the same view once, then opt.Frames rounds in which every run steps its camera
+/// by the same azimuth and renders. Rounds interleave the mappers, so a change of machine
+/// load hits all of them alike and the per-frame ratios are paired.
+void TimeInterleaved(const Options& opt, std::vector<std::unique_ptr<Run>>& runs);
+
+/// Medians, coverage (PNG into opt.OutDir), errors seen by @p errors since Prepare() and an
+/// all-black image (both make the row fail); releases the window. Returns the row.
+Row Finish(const Options& opt, const Mesh& mesh, Run& run, ErrorCounter& errors);
 
 // --- BenchRenderTable.cxx ----------------------------------------------------
 
@@ -125,6 +150,9 @@ std::string Fmt(double v, int prec = 3);
 
 /// "a/b" as "%.2fx", or "-" unless both are positive.
 std::string Ratio(double a, double b);
+
+/// "median [min, max]" of the per-round ratios r / base of the rotating frames, or "-".
+std::string PairedRatio(const Row& r, const Row* base);
 
 /// Prints the Markdown table of @p rows; true if every run succeeded.
 bool PrintTable(const Options& opt, const std::vector<Mesh>& meshes, const std::vector<Row>& rows);

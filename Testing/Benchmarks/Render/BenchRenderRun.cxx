@@ -108,18 +108,17 @@ std::string FileSafe(std::string s)
   return s;
 }
 
-Row RunOne(const Options& opt, const Mesh& mesh, const std::string& key, const std::string& label,
-  vtkAbstractVolumeMapper* mapper, ErrorCounter& errors)
+std::unique_ptr<Run> Prepare(const Options& opt, const Mesh& mesh, const std::string& key,
+  const std::string& label, vtkAbstractVolumeMapper* mapper, ErrorCounter& errors)
 {
-  Row row;
+  auto run = std::make_unique<Run>();
+  Row& row = run->Result;
   row.Mesh = mesh.Name;
   row.Mapper = label;
   row.Key = key;
   row.Ran = true;
-  const size_t errorsBefore = errors.Messages.size();
-  std::cout << "  " << label << " ..." << std::flush;
-
-  auto* hov = vtkHighOrderVolumeMapper::SafeDownCast(mapper);
+  run->ErrorsBefore = errors.Messages.size();
+  run->Mapper = mapper;
   errors.Watch(mapper);
   mapper->SetInputDataObject(mesh.Grid);
   vtkSmartPointer<vtkVolumeProperty> prop = MakeProperty(mesh.Range, mesh.UnitDistance);
@@ -129,10 +128,11 @@ Row RunOne(const Options& opt, const Mesh& mesh, const std::string& key, const s
   vtkNew<vtkRenderer> ren;
   ren->SetBackground(0.0, 0.0, 0.0);
   ren->AddVolume(volume);
-  vtkNew<vtkCamera> cam;
-  SetupCamera(cam, mesh.Grid->GetBounds());
-  ren->SetActiveCamera(cam);
-  vtkNew<vtkRenderWindow> win;
+  run->Camera = vtkSmartPointer<vtkCamera>::New();
+  SetupCamera(run->Camera, mesh.Grid->GetBounds());
+  ren->SetActiveCamera(run->Camera);
+  run->Window = vtkSmartPointer<vtkRenderWindow>::New();
+  vtkRenderWindow* win = run->Window;
   win->SetOffScreenRendering(1);
   win->SetMultiSamples(0);
   win->SetSize(opt.Size, opt.Size);
@@ -146,55 +146,87 @@ Row RunOne(const Options& opt, const Mesh& mesh, const std::string& key, const s
   win->Render();
   win->WaitForCompletion();
   volume->VisibilityOn();
+  return run;
+}
 
-  auto frame = [&]() {
-    win->Render();
-    win->WaitForCompletion();
-  };
-  row.First = Seconds(frame);
+double TimeFrame(Run& run)
+{
+  return Seconds([&]() {
+    run.Window->Render();
+    run.Window->WaitForCompletion();
+  });
+}
 
-  std::vector<double> same, rotating, cpu;
-  for (int i = 0; i < opt.Frames; ++i)
+void TimeInterleaved(const Options& opt, std::vector<std::unique_ptr<Run>>& runs)
+{
+  for (auto& run : runs)
   {
-    same.push_back(Seconds(frame));
+    std::cout << "  " << run->Result.Mapper << ": first frame ..." << std::flush;
+    run->Result.First = TimeFrame(*run);
+    std::cout << " " << run->Result.First << " s\n";
   }
+  std::cout << "  interleaved rounds:" << std::flush;
   for (int i = 0; i < opt.Frames; ++i)
   {
-    cam->Azimuth(opt.AzimuthStep);
-    cam->OrthogonalizeViewUp();
-    rotating.push_back(Seconds(frame));
-    if (hov)
+    for (auto& run : runs)
     {
-      cpu.push_back(hov->GetLastImageTime());
+      run->Same.push_back(TimeFrame(*run));
     }
+    std::cout << " s" << i + 1 << std::flush;
   }
-  row.Same = Median(same);
-  row.Rotating = Median(rotating);
-  if (hov)
+  for (int i = 0; i < opt.Frames; ++i)
   {
-    row.CpuRotating = Median(cpu);
+    for (auto& run : runs)
+    {
+      run->Camera->Azimuth(opt.AzimuthStep);
+      run->Camera->OrthogonalizeViewUp();
+      run->Result.RotatingTimes.push_back(TimeFrame(*run));
+      if (auto* hov = vtkHighOrderVolumeMapper::SafeDownCast(run->Mapper))
+      {
+        run->Cpu.push_back(hov->GetLastImageTime());
+      }
+    }
+    std::cout << " r" << i + 1 << std::flush;
+  }
+  std::cout << "\n";
+}
+
+Row Finish(const Options& opt, const Mesh& mesh, Run& run, ErrorCounter& errors)
+{
+  Row& row = run.Result;
+  row.Same = Median(run.Same);
+  row.Rotating = Median(row.RotatingTimes);
+  if (auto* hov = vtkHighOrderVolumeMapper::SafeDownCast(run.Mapper))
+  {
+    row.CpuRotating = Median(run.Cpu);
     row.Witness = hov->GetWitnessViolations();
   }
   std::string png;
   if (!opt.OutDir.empty())
   {
-    png = opt.OutDir + "/bench_" + FileSafe(mesh.Name) + "_" + key + ".png";
+    png = opt.OutDir + "/bench_" + FileSafe(mesh.Name) + "_" + row.Key + ".png";
   }
-  row.Coverage = Coverage(win, png);
-  if (errors.Messages.size() != errorsBefore)
+  row.Coverage = Coverage(run.Window, png);
+  // Errors of this run (the runs of a mesh share the counter: attribute by emitter).
+  for (size_t e = run.ErrorsBefore; e < errors.Messages.size() && row.Ok; ++e)
   {
-    row.Ok = false;
-    row.Problem = errors.Messages[errorsBefore];
+    const std::string& msg = errors.Messages[e];
+    if (msg.rfind(run.Mapper->GetClassName(), 0) == 0 ||
+      msg.rfind(run.Window->GetClassName(), 0) == 0 || msg.rfind("vtkOpenGLRenderer", 0) == 0)
+    {
+      row.Ok = false;
+      row.Problem = msg;
+    }
   }
-  else if (row.Coverage <= 0.0)
+  if (row.Ok && row.Coverage <= 0.0)
   {
     row.Ok = false;
     row.Problem = "all-black image";
   }
-  std::cout << " first " << row.First << " s, rotating median " << row.Rotating
-            << " s, same-view median " << row.Same << " s" << (row.Ok ? "" : "  FAILED: ")
-            << row.Problem << "\n";
-  win->Finalize();
+  std::cout << "  " << row.Mapper << ": first " << row.First << " s, rotating median "
+            << row.Rotating << " s, same-view median " << row.Same << " s"
+            << (row.Ok ? "" : "  FAILED: ") << row.Problem << "\n";
+  run.Window->Finalize();
   return row;
 }
 }

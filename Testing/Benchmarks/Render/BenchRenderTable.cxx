@@ -1,6 +1,7 @@
 // hovBenchRender: the Markdown table of the results (see BenchRender.h).
 #include "BenchRender.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -25,6 +26,28 @@ std::string Ratio(double a, double b)
   return buf;
 }
 
+std::string PairedRatio(const Row& r, const Row* base)
+{
+  if (!base || r.RotatingTimes.size() != base->RotatingTimes.size() || r.RotatingTimes.empty())
+  {
+    return "-";
+  }
+  std::vector<double> ratios;
+  for (size_t i = 0; i < r.RotatingTimes.size(); ++i)
+  {
+    if (!(base->RotatingTimes[i] > 0.0))
+    {
+      return "-";
+    }
+    ratios.push_back(r.RotatingTimes[i] / base->RotatingTimes[i]);
+  }
+  char buf[96];
+  std::snprintf(buf, sizeof(buf), "%.2fx [%.2f, %.2f]", Median(ratios),
+    *std::min_element(ratios.begin(), ratios.end()),
+    *std::max_element(ratios.begin(), ratios.end()));
+  return buf;
+}
+
 bool PrintTable(const Options& opt, const std::vector<Mesh>& meshes, const std::vector<Row>& rows)
 {
   std::ostringstream t;
@@ -36,11 +59,13 @@ bool PrintTable(const Options& opt, const std::vector<Mesh>& meshes, const std::
        "frames, each after a camera azimuth step. Same view: median of N frames without a camera "
        "change. CPU image: our mapper's GetLastImageTime() (median, rotating). Ratios: this "
        "mapper's time / our mapper's time (>1: ours is faster); 'vis' = our visibility sort, "
-       "'pix' = our per-pixel sort.\n\n";
+       "'pix' = our per-pixel sort. Paired: the frames are interleaved (each round renders one "
+       "frame with every mapper), so each rotating round gives a ratio under the same machine "
+       "load; median [min, max] over the rounds.\n\n";
   t << "| mesh | tets | mapper | first | rotating median | same-view median | CPU image "
-       "| first / vis | rotating / vis | same-view / vis | rotating / pix | witness | covered px "
-       "| status |\n";
-  t << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "| first / vis | rotating / vis | paired rotating / vis | same-view / vis | rotating / pix "
+       "| witness | covered px | status |\n";
+  t << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   bool allOk = true;
   for (const Mesh& mesh : meshes)
   {
@@ -66,14 +91,15 @@ bool PrintTable(const Options& opt, const std::vector<Mesh>& meshes, const std::
       t << "| " << r.Mesh << " | " << mesh.Tetras << " | " << r.Mapper << " | ";
       if (!r.Ran)
       {
-        t << "- | - | - | - | - | - | - | - | - | - | - | " << r.Problem << " |\n";
+        t << "- | - | - | - | - | - | - | - | - | - | - | - | " << r.Problem << " |\n";
         continue;
       }
       allOk = allOk && r.Ok;
       t << Fmt(r.First) << " | " << Fmt(r.Rotating) << " | " << Fmt(r.Same) << " | "
         << (r.CpuRotating >= 0 ? Fmt(r.CpuRotating) : std::string("-")) << " | "
         << (vis ? Ratio(r.First, vis->First) : "-") << " | "
-        << (vis ? Ratio(r.Rotating, vis->Rotating) : "-") << " | "
+        << (vis ? Ratio(r.Rotating, vis->Rotating) : "-") << " | " << PairedRatio(r, vis)
+        << " | "
         << (vis ? Ratio(r.Same, vis->Same) : "-") << " | "
         << (pix ? Ratio(r.Rotating, pix->Rotating) : "-") << " | "
         << (r.Witness >= 0 ? std::to_string(r.Witness) : std::string("-")) << " | "
