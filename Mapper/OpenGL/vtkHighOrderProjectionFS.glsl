@@ -4,14 +4,16 @@
 // opacity of the fragment's ray segment from the 2D texture
 // M(X, Y) = 1 - exp(-exp(X + Y)), X = ln(L / lengthScale),
 // Y = ln(tau_avg lengthScale) (methods M1-M3) or interpolated (M0); output
-// premultiplied (k alpha, alpha), or (C, alpha) when the colour is already
-// premultiplied (Wilhelms-Van Gelder emission). Fragments behind the opaque
+// premultiplied (k alpha, alpha) (Williams-Max), or (g L phi, alpha) for the
+// effective glow g of Wilhelms-Van Gelder emission (hovProjectionColor.h). Fragments behind the opaque
 // geometry already drawn (scene depth, one texel per pixel) are discarded.
-in vec2 lengthTauVS;
+in vec4 rayVS;
+in vec2 tauVS;
 in vec4 colorAlphaVS;
 uniform sampler2D opacityTable;
 uniform sampler2D sceneDepth;
 uniform int useDepth;
+uniform int perspective;
 uniform int textureOpacity;
 uniform int premultipliedColor;
 uniform float lengthScale;
@@ -58,8 +60,24 @@ void main()
   {
     discard;
   }
-  float alpha = textureOpacity == 1 ? hovOpacityFromTexture(lengthTauVS.x, lengthTauVS.y)
+  // Segment length and average extinction (vtkHighOrderProjectionRegions):
+  // parallel projection: interpolated directly; perspective: from the front
+  // point P relative to the eye, mu = |P|/|Q|, tauFront and tauBack mu.
+  float len = rayVS.x;
+  float tauAvg = tauVS.y;
+  if (perspective == 1)
+  {
+    float mu = max(rayVS.w, 1e-30);
+    len = length(rayVS.xyz) * max(1.0 - mu, 0.0) / mu;
+    tauAvg = 0.5 * (tauVS.x + tauVS.y / mu);
+  }
+  float alpha = textureOpacity == 1 ? hovOpacityFromTexture(len, tauAvg)
                                     : clamp(colorAlphaVS.a, 0.0, 1.0);
-  vec3 rgb = premultipliedColor == 1 ? colorAlphaVS.rgb : colorAlphaVS.rgb * alpha;
+  // Williams-Max: chromaticity k times alpha. Wilhelms-Van Gelder: effective
+  // glow g times L phi(D) = L (1 - e^-D)/D, D = L tau_avg (= alpha / tau_avg;
+  // its series below D = 1e-3, where alpha / tau_avg loses digits).
+  float depth = len * tauAvg;
+  float glow = depth > 1e-3 ? alpha / tauAvg : len * (1.0 - 0.5 * depth);
+  vec3 rgb = colorAlphaVS.rgb * (premultipliedColor == 1 ? glow : alpha);
   gl_FragData[0] = vec4(rgb, alpha);
 }

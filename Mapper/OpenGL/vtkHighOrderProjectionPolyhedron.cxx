@@ -436,11 +436,35 @@ void vtkHighOrderProjectionPolyhedron::EmitVertex(const glm::dvec2& p, const Fac
   out[1] = static_cast<float>(p.y * w);
   out[2] = static_cast<float>(zFront * w);
   out[3] = static_cast<float>(w);
-  out[4] = static_cast<float>(length);
   // An opaque medium (infinite extinction) stays finite: alpha is 1 either way.
-  out[5] = static_cast<float>(std::min(0.5 * (ef.Tau + eb.Tau), 1e30));
-  out[6] = static_cast<float>(v.Color[0]);
-  out[7] = static_cast<float>(v.Color[1]);
-  out[8] = static_cast<float>(v.Color[2]);
-  out[9] = static_cast<float>(v.Alpha);
+  const double tauFront = std::min(ef.Tau, 1e30), tauBack = std::min(eb.Tau, 1e30);
+  if (f.Parallel)
+  {
+    // L and tau_avg are linear over the region: interpolate them directly.
+    out[4] = static_cast<float>(length);
+    out[5] = out[6] = out[7] = 0.0f;
+    out[8] = 0.0f;
+    out[9] = static_cast<float>(0.5 * (tauFront + tauBack));
+  }
+  else
+  {
+    // Quantities linear in the front point (perspective-correct
+    // interpolation is exact for them): the front point relative to the eye
+    // P, mu = |P| / |Q| (Q: the back point; 1/mu is linear along the back
+    // plane), tauFront, and nu = tauBack mu. The shader recovers
+    // L = |P| (1/mu - 1) and tau_avg = (tauFront + nu/mu)/2 exactly.
+    const glm::dvec3 rel = pf - f.Eye;
+    const double front = glm::length(rel), back = glm::length(pb - f.Eye);
+    const double mu = back > 0.0 ? front / back : 1.0;
+    out[4] = static_cast<float>(rel.x);
+    out[5] = static_cast<float>(rel.y);
+    out[6] = static_cast<float>(rel.z);
+    out[7] = static_cast<float>(mu);
+    out[8] = static_cast<float>(tauFront);
+    out[9] = static_cast<float>(tauBack * mu);
+  }
+  out[10] = static_cast<float>(v.Color[0]);
+  out[11] = static_cast<float>(v.Color[1]);
+  out[12] = static_cast<float>(v.Color[2]);
+  out[13] = static_cast<float>(v.Alpha);
 }

@@ -61,6 +61,8 @@ public:
     const hov::TransferFunction* Tf = nullptr;
     hov::ProjectionColorMethod Method = hov::ProjectionColorMethod::ExactColor;
     hov::EmissionModel Emission = hov::EmissionModel::WilliamsMax;
+    bool Parallel = false;
+    glm::dvec3 Eye{ 0.0 }; ///< perspective: camera position (dataset coordinates)
   };
 
   /// A linear tetrahedron; false if a corner is on or behind the eye plane.

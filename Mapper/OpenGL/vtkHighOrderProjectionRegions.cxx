@@ -110,6 +110,8 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
   frame.Tf = &tf;
   frame.Method = settings.Method;
   frame.Emission = settings.Emission;
+  frame.Parallel = settings.Parallel;
+  frame.Eye = settings.Eye;
 
   vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
     SlabOrder order;

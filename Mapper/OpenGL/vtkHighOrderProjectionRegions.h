@@ -38,7 +38,9 @@
  *
  * Cells with a corner on or behind the eye plane (clip w <= 0) are skipped
  * and counted. Output vertex layout: FloatsPerVertex floats: clip position
- * (x, y, z, w), L, tau_avg, colour (r, g, b), alpha (M0).
+ * (x, y, z, w); ray (parallel: L, 0, 0, 0; perspective: P, mu); extinction
+ * (parallel: 0, tau_avg; perspective: tauFront, tauBack mu); colour (r, g,
+ * b); alpha (M0).
  *
  * Thread safety: Build() runs the cells in parallel (vtkSMPTools, chunks
  * concatenated in order: the output does not depend on the thread count).
@@ -64,7 +66,7 @@ class TransferFunction;
 class vtkHighOrderProjectionRegions
 {
 public:
-  static constexpr int FloatsPerVertex = 10;
+  static constexpr int FloatsPerVertex = 14;
 
   struct Settings
   {

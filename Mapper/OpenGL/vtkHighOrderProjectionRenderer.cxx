@@ -105,10 +105,13 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(
     this->Program, this->Vertices, "vertexClip", 0, stride, VTK_FLOAT, 4, false);
   ok = ok &&
     this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "lengthTau", 4 * sizeof(float), stride, VTK_FLOAT, 2, false);
+      this->Program, this->Vertices, "rayIn", 4 * sizeof(float), stride, VTK_FLOAT, 4, false);
   ok = ok &&
     this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "colorAlpha", 6 * sizeof(float), stride, VTK_FLOAT, 4, false);
+      this->Program, this->Vertices, "tauIn", 8 * sizeof(float), stride, VTK_FLOAT, 2, false);
+  ok = ok &&
+    this->VertexArray->AddAttributeArray(
+      this->Program, this->Vertices, "colorAlpha", 10 * sizeof(float), stride, VTK_FLOAT, 4, false);
   if (!ok)
   {
     this->VertexArray->Release();
@@ -127,6 +130,7 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(
     this->Program->SetUniformi("sceneDepth", tableUnit); // never sampled
   }
   this->Program->SetUniformi("useDepth", useDepth ? 1 : 0);
+  this->Program->SetUniformi("perspective", options.Parallel ? 0 : 1);
   this->Program->SetUniformi("textureOpacity", options.TextureOpacity ? 1 : 0);
   this->Program->SetUniformi("premultipliedColor", options.PremultipliedColor ? 1 : 0);
   this->Program->SetUniformf("lengthScale", static_cast<float>(options.LengthScale));

@@ -47,8 +47,9 @@ public:
   struct Options
   {
     bool TextureOpacity = true;      ///< false: M0 (interpolated vertex opacity)
-    bool PremultipliedColor = false; ///< true: the vertex colour is C (Wilhelms-Van Gelder)
+    bool PremultipliedColor = false; ///< true: the vertex colour is an effective glow (Wilhelms-Van Gelder)
     double LengthScale = 1.0;        ///< of the opacity texture (hov::OpacityTexture)
+    bool Parallel = false;           ///< the vertex layout of vtkHighOrderProjectionRegions
   };
 
   vtkHighOrderProjectionRenderer();

@@ -1,18 +1,21 @@
 //VTK::System::Dec
 // Vertex shader of vtkHighOrderProjectionRenderer: region vertices of the
 // OpenGL cell projection (HIAC section 7) arrive in clip coordinates (front
-// point of the ray segment), with the segment length L, the average
-// extinction tau_avg, the colour and the vertex opacity (method M0). Default
-// (perspective-correct) interpolation: the attributes are linear on the
-// front face.
+// point of the ray segment) with the ray and extinction quantities of
+// vtkHighOrderProjectionRegions (linear on the front face, so the default
+// perspective-correct interpolation is exact for them), the colour and the
+// vertex opacity (method M0).
 in vec4 vertexClip;
-in vec2 lengthTau;
+in vec4 rayIn;
+in vec2 tauIn;
 in vec4 colorAlpha;
-out vec2 lengthTauVS;
+out vec4 rayVS;
+out vec2 tauVS;
 out vec4 colorAlphaVS;
 void main()
 {
   gl_Position = vertexClip;
-  lengthTauVS = lengthTau;
+  rayVS = rayIn;
+  tauVS = tauIn;
   colorAlphaVS = colorAlpha;
 }

@@ -119,6 +119,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   vtkHighOrderProjectionRenderer::Options options;
   options.TextureOpacity = this->ProjectionColorMethod != INTERPOLATED_OPACITY;
   options.PremultipliedColor = this->EmissionModel == WILHELMS_VAN_GELDER;
+  options.Parallel = camera->GetParallelProjection() != 0;
   options.LengthScale = setup && setup->GetDiagonal() > 0.0 ? setup->GetDiagonal() : 1.0;
   if (!proj.Renderer.Render(ren, proj.Vertices, options, depth, width, height, &proj.Image))
   {

@@ -19,13 +19,12 @@ double Bilinear(const std::vector<double>& t, int i, int j, double fx, double fy
   return a * (1.0 - fy) + b * fy;
 }
 
-/// Wilhelms-Van Gelder radiance of constant glow g over length L and constant
-/// optical depth D = L tau: L g (1 - e^-D)/D (-> L g as D -> 0).
-double ConstantGlow(double length, double glow, double depth)
+/// phi(D) = (1 - e^-D)/D (-> 1 as D -> 0): a constant glow g over length L
+/// and optical depth D gives the radiance L g phi(D).
+double GlowFactor(double depth)
 {
   // Below 1e-8 the ratio is 1 - D/2 + ... = 1 to double precision.
-  const double ratio = depth > 1e-8 ? -std::expm1(-depth) / depth : 1.0;
-  return length * glow * ratio;
+  return depth > 1e-8 ? -std::expm1(-depth) / depth : 1.0;
 }
 }
 
@@ -73,46 +72,44 @@ ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method, Emis
   const double depth = length * tauAvg;
   out.Alpha = -std::expm1(-depth);
   const bool wvg = emission == EmissionModel::WilhelmsVanGelder;
-  double avg[3];
-  for (int c = 0; c < 3; ++c)
+  // Wilhelms-Van Gelder: the radiance C becomes the effective glow C / (L phi(D)).
+  const double glowScale = length * GlowFactor(depth);
+  for (int c = 0; c < 3; ++c) // M0, M1, and the fallbacks of M2 and M3
   {
-    avg[c] = 0.5 * (front.Color[c] + back.Color[c]);
+    out.Color[c] = 0.5 * (front.Color[c] + back.Color[c]);
   }
   double beta = 0.5, vFront = 0.0, vBack = 0.0;
   if (method == ProjectionColorMethod::TableColor &&
     table.Lookup(front.Tau * length, back.Tau * length, beta, vFront, vBack))
   {
-    for (int c = 0; c < 3; ++c)
+    if (wvg && glowScale > 0.0)
     {
-      out.Color[c] = wvg ? length * (vFront * front.Color[c] + vBack * back.Color[c])
-                         : (1.0 - beta) * front.Color[c] + beta * back.Color[c];
+      for (int c = 0; c < 3; ++c)
+      {
+        out.Color[c] = length * (vFront * front.Color[c] + vBack * back.Color[c]) / glowScale;
+      }
     }
-    return out;
+    else if (!wvg)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        out.Color[c] = (1.0 - beta) * front.Color[c] + beta * back.Color[c];
+      }
+    }
   }
-  if (method == ProjectionColorMethod::ExactColor)
+  else if (method == ProjectionColorMethod::ExactColor)
   {
     const RGBA c = IntegrateSegment(length, front, back, emission, SegmentMethod::Exact);
-    if (wvg)
+    // The thin-segment series keeps C and A relatively accurate, so the
+    // ratios are accurate for any positive denominator; at zero the limit is
+    // the average.
+    const double denominator = wvg ? glowScale : c.A;
+    if (denominator > 0.0)
     {
-      out.Color[0] = c.R;
-      out.Color[1] = c.G;
-      out.Color[2] = c.B;
-      return out;
+      out.Color[0] = c.R / denominator;
+      out.Color[1] = c.G / denominator;
+      out.Color[2] = c.B / denominator;
     }
-    if (c.A > 0.0)
-    {
-      // The thin-segment series keeps C and A relatively accurate, so C/A is
-      // accurate for any positive A.
-      out.Color[0] = c.R / c.A;
-      out.Color[1] = c.G / c.A;
-      out.Color[2] = c.B / c.A;
-      return out;
-    }
-    // A = 0 (zero length or no extinction): the limit is the average.
-  }
-  for (int c = 0; c < 3; ++c) // M0, M1, and the fallbacks of M2 and M3
-  {
-    out.Color[c] = wvg ? ConstantGlow(length, avg[c], depth) : avg[c];
   }
   return out;
 }

@@ -21,11 +21,12 @@
  *    over the optical depths (tauFront L, tauBack L); outside its range M1;
  *  - M3 (ExactColor): k = C / A with C, A from hov::IntegrateSegment (the
  *    kernel the CPU path uses, never a separate formula).
- * Wilhelms-Van Gelder emission (glow not proportional to extinction, so C/A
- * is unbounded where nothing absorbs): the vertex carries the premultiplied
- * radiance C itself: M0/M1 C = L g_avg (1 - e^-D)/D with D = L tau_avg (exact
- * for constant g and tau); M2 C = L (VFront gFront + VBack gBack) with the
- * weights from the table; M3 C from hov::IntegrateSegment.
+ * Wilhelms-Van Gelder emission (glow g not proportional to extinction, so
+ * C/A is unbounded where nothing absorbs): the vertex carries the effective
+ * glow g_eff = C / (L phi(D)), phi(D) = (1 - e^-D)/D, D = L tau_avg, and the
+ * fragment's radiance is g_eff L phi(D) = g_eff A / tau_avg (exact for
+ * constant glow and extinction): M0/M1 g_eff = (gFront + gBack)/2; M2 C from
+ * the table's VFront, VBack; M3 C from hov::IntegrateSegment.
  *
  * Opacity texture (OpacityTexture*): a Size x Size float texture of
  * M = 1 - exp(-exp(X + Y)) on the nodes X, Y = LogMin + i (LogMax - LogMin) /
@@ -68,7 +69,7 @@ enum class ProjectionColorMethod
 struct ProjectionVertexColor
 {
   double Alpha = 0.0;                 ///< 1 - exp(-L tau_avg): interpolated by M0 only
-  double Color[3] = { 0.0, 0.0, 0.0 }; ///< chromaticity k (Williams-Max) or premultiplied C (WVG)
+  double Color[3] = { 0.0, 0.0, 0.0 }; ///< chromaticity k (Williams-Max) or effective glow (WVG)
 };
 
 /**

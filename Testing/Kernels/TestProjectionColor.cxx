@@ -83,8 +83,11 @@ TEST(ProjectionColor, ExactMethodIsTheSegmentKernel)
       const double want[3] = { c.R, c.G, c.B };
       for (int k = 0; k < 3; ++k)
       {
-        // Williams-Max: k = C / A, so k A reproduces C.
-        const double g = em == 0 ? got[k] * c.A : got[k];
+        // Williams-Max: k = C / A, so k A reproduces C; Wilhelms-Van Gelder:
+        // the effective glow times L phi(D) = L A / D reproduces C.
+        const double depth = 0.5 * (f.Tau + b.Tau) * length;
+        const double phi = depth > 1e-8 ? -std::expm1(-depth) / depth : 1.0;
+        const double g = em == 0 ? got[k] * c.A : got[k] * length * phi;
         EXPECT_NEAR(g, want[k], 1e-13 + 1e-11 * std::fabs(want[k])) << "trial " << trial;
       }
     }
@@ -128,16 +131,17 @@ TEST(ProjectionColor, MethodOrderAndLimits)
     EXPECT_DOUBLE_EQ(v.Color[0], 0.5);
     EXPECT_DOUBLE_EQ(v.Color[2], 0.5);
   }
-  // Wilhelms-Van Gelder, constant glow and extinction: M1 is exact.
+  // Wilhelms-Van Gelder, constant glow and extinction: every method gives
+  // the glow itself (the fragment's L phi(D) makes the exact radiance).
   const hov::SegmentEnd g = End(0.7, 0.3, 0.6, 0.9);
-  const hov::RGBA c = hov::IntegrateSegment(
-    2.0, g, g, hov::EmissionModel::WilhelmsVanGelder, hov::SegmentMethod::Exact);
-  const auto w1 = hov::ComputeProjectionVertex(hov::ProjectionColorMethod::AverageColor,
-    hov::EmissionModel::WilhelmsVanGelder, 2.0, g, g, table);
-  EXPECT_NEAR(w1.Color[1], c.G, 1e-14);
-  // Non-absorbing glow: C = L g.
   const hov::SegmentEnd clear = End(0.0, 0.3, 0.6, 0.9);
-  const auto w0 = hov::ComputeProjectionVertex(hov::ProjectionColorMethod::AverageColor,
-    hov::EmissionModel::WilhelmsVanGelder, 2.0, clear, clear, table);
-  EXPECT_DOUBLE_EQ(w0.Color[2], 1.8);
+  for (int m = 0; m < 4; ++m)
+  {
+    for (const hov::SegmentEnd& e : { g, clear })
+    {
+      const auto w = hov::ComputeProjectionVertex(static_cast<hov::ProjectionColorMethod>(m),
+        hov::EmissionModel::WilhelmsVanGelder, 2.0, e, e, table);
+      EXPECT_NEAR(w.Color[1], 0.6, 1e-3 * (m == 2) + 1e-13) << "M" << m << " tau " << e.Tau;
+    }
+  }
 }
