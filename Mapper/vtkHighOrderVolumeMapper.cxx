@@ -3,6 +3,7 @@
 #include "vtkHighOrderCellProjector.h" // CPU path
 #include "vtkHighOrderFeatureSetup.h"  // isosurfaces, fields, splatting
 #include "vtkHighOrderImageDisplay.h"  // OpenGL blit of the float image
+#include "vtkHighOrderProjection.h"    // OPENGL_PROJECTION mode
 #include "vtkHighOrderTetraSetup.h"    // per-cell preparation
 #include "vtkHighOrderTransferFunction.h"
 #include "vtkHighOrderViewRays.h" // pixel rays
@@ -66,7 +67,8 @@ struct vtkHighOrderVolumeMapper::Internals
 };
 
 vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
-  : Impl(new Internals)
+  : ProjectionImpl(new vtkHighOrderProjection)
+  , Impl(new Internals)
   , FeatureImpl(new vtkHighOrderFeatureSetup)
 {
   vtkSteinVisibilitySort* sort = vtkSteinVisibilitySort::New();
@@ -416,8 +418,27 @@ int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, 
     camera, volume, width, height, height > 0 ? static_cast<double>(width) / height : 1.0, nullptr);
 }
 
+bool vtkHighOrderVolumeMapper::PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume,
+  bool exactOrder, const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
+  vtkHighOrderTransferFunction** tf)
+{
+  Internals& impl = *this->Impl;
+  *setup = &impl.Setup;
+  *frontToBack = &impl.FrontToBack;
+  *tf = impl.TransferFunction;
+  this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
+  return this->ValidateInputs(camera, volume, 1, 1) && impl.Setup.GetNumberOfRenderedCells() > 0 &&
+    this->PrepareTransferFunction(volume->GetProperty()) &&
+    (!exactOrder || this->PrepareOrder(camera, volume));
+}
+
 void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
+  if (this->RenderMode == OPENGL_PROJECTION)
+  {
+    this->RenderProjection(ren, vol);
+    return;
+  }
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   int width = 0, height = 0, x0 = 0, y0 = 0;
@@ -460,12 +481,15 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 void vtkHighOrderVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Impl->Display.ReleaseGraphicsResources(win);
+  this->ProjectionImpl->Renderer.ReleaseGraphicsResources(win);
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
 void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "RenderMode: " << this->RenderMode << " (projection colour method "
+     << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ")\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";

@@ -113,6 +113,8 @@ class vtkCamera;
 class vtkDataArray;
 class vtkDoubleArray;
 class vtkHighOrderFeatureSetup;
+struct vtkHighOrderProjection;
+class vtkHighOrderTetraSetup;
 class vtkHighOrderTransferFunction;
 class vtkImageData;
 class vtkVisibilitySort;
@@ -341,6 +343,68 @@ public:
   vtkGetMacro(NumberOfSplattedCells, vtkIdType);
   ///@}
 
+  enum RenderModeType
+  {
+    CPU_ACCURATE = 0,
+    OPENGL_PROJECTION = 1
+  };
+  ///@{
+  /**
+   * CPU_ACCURATE (default): the exact CPU path described above.
+   * OPENGL_PROJECTION: HIAC section 7's hardware polyhedron projection, for
+   * interaction: every cell (linear tetrahedra; hexahedra, wedges, pyramids
+   * and voxels whole when no transfer-function node lies inside their scalar
+   * range, else split into tetrahedra of their corners) and each of its
+   * transfer-function slabs (HIAC Fig. 3; all three opacity semantics, GPU-
+   * compatible through the refined table) is divided into the homogeneous
+   * regions of its projection, drawn with per-vertex segment length L, average
+   * extinction and colour by ProjectionColorMethod, opacity per fragment from a
+   * float texture of 1 - exp(-L tau_avg), premultiplied blending into a
+   * GL_RGBA32F target in the order ProjectionOrder gives, composited over the
+   * scene; fragments behind opaque geometry are dropped (whole fragments: a
+   * cell cut by an opaque surface is not shortened). The float image is in
+   * GetFloatImage() after every render (not GetDoubleImage()). Not applied in
+   * this mode: isosurfaces, separate colour/isosurface fields, splatting,
+   * clipping planes, view-depth clipping (a warning names them once);
+   * RenderImage() always uses the CPU path. See
+   * vtkHighOrderProjectionRegions for the exact construction and accuracy.
+   */
+  vtkSetClampMacro(RenderMode, int, CPU_ACCURATE, OPENGL_PROJECTION);
+  vtkGetMacro(RenderMode, int);
+  void SetRenderModeToCPUAccurate() { this->SetRenderMode(CPU_ACCURATE); }
+  void SetRenderModeToOpenGLProjection() { this->SetRenderMode(OPENGL_PROJECTION); }
+  ///@}
+
+  enum ProjectionColorMethodType
+  {
+    INTERPOLATED_OPACITY = 0, ///< M0: vertex opacity interpolated, average colour, no texture
+    AVERAGE_COLOR = 1,        ///< M1: average chromaticity
+    TABLE_COLOR = 2,          ///< M2: table-based eq. 8
+    EXACT_COLOR = 3           ///< M3: exact eq. 8 per region vertex (default)
+  };
+  ///@{
+  /// Colour per region vertex in OPENGL_PROJECTION mode (HIAC 7; hovProjectionColor.h).
+  vtkSetClampMacro(ProjectionColorMethod, int, INTERPOLATED_OPACITY, EXACT_COLOR);
+  vtkGetMacro(ProjectionColorMethod, int);
+  ///@}
+
+  enum ProjectionOrderType
+  {
+    EXACT_ORDER = 0,      ///< the VisibilitySort (default: vtkSteinVisibilitySort)
+    APPROXIMATE_ORDER = 1 ///< centroid distance from the eye (fast, for interaction)
+  };
+  ///@{
+  /// Cell order of OPENGL_PROJECTION mode.
+  vtkSetClampMacro(ProjectionOrder, int, EXACT_ORDER, APPROXIMATE_ORDER);
+  vtkGetMacro(ProjectionOrder, int);
+  ///@}
+
+  ///@{
+  /// OPENGL_PROJECTION diagnostics of the last render.
+  vtkGetMacro(NumberOfProjectedTriangles, vtkIdType);
+  vtkGetMacro(NumberOfProjectedSlabs, vtkIdType);
+  ///@}
+
   /**
    * Compute the float image for @p camera and @p volume at @p width x
    * @p height pixels without any OpenGL (the projection aspect is
@@ -380,6 +444,11 @@ protected:
   vtkHighOrderVolumeMapper();
   ~vtkHighOrderVolumeMapper() override;
 
+  int RenderMode = CPU_ACCURATE;
+  int ProjectionColorMethod = EXACT_COLOR;
+  int ProjectionOrder = EXACT_ORDER;
+  vtkIdType NumberOfProjectedTriangles = 0;
+  vtkIdType NumberOfProjectedSlabs = 0;
   int OpacitySemantics = GPU_COMPATIBLE;
   int CellOrdering = VISIBILITY_SORT;
   double GPUOpacityTolerance = 1e-4;
@@ -423,6 +492,15 @@ private:
   void PublishImage(int width, int height);
   /// Feature set-up of a frame: -1 error (reported), 0 no feature active, 1 active.
   int PrepareFeatures(vtkCamera* camera, vtkVolume* volume);
+
+  // OPENGL_PROJECTION mode (Mapper/OpenGL/vtkHighOrderVolumeMapperProjection.cxx).
+  void RenderProjection(vtkRenderer* ren, vtkVolume* vol);
+  /// Cells, transfer function and (exact order) front-to-back order of a
+  /// projection frame; false if nothing is to be drawn (errors reported).
+  bool PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume, bool exactOrder,
+    const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
+    vtkHighOrderTransferFunction** tf);
+  std::unique_ptr<vtkHighOrderProjection> ProjectionImpl;
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -1,0 +1,30 @@
+/**
+ * @class   vtkHighOrderProjection
+ * @brief   State of vtkHighOrderVolumeMapper's OpenGL projection mode
+ *          (HIAC section 7): the region builder, the OpenGL renderer and the
+ *          per-frame buffers (reused across frames).
+ *
+ * Thread safety: rendering thread only.
+ * @sa vtkHighOrderProjectionRegions, vtkHighOrderProjectionRenderer
+ */
+#ifndef vtkHighOrderProjection_h
+#define vtkHighOrderProjection_h
+
+#include "vtkHighOrderProjectionRegions.h"  // CPU regions
+#include "vtkHighOrderProjectionRenderer.h" // OpenGL
+
+#include <vector> // buffers
+
+struct vtkHighOrderProjection
+{
+  vtkHighOrderProjectionRegions Regions;
+  vtkHighOrderProjectionRenderer Renderer;
+  vtkHighOrderProjectionRegions::Statistics Statistics;
+  std::vector<float> Vertices;
+  std::vector<float> Image;
+  std::vector<float> Depth;
+  std::vector<vtkIdType> BackToFront;
+  bool WarnedFeatures = false;
+};
+
+#endif

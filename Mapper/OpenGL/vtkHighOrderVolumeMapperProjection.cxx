@@ -1,0 +1,139 @@
+// vtkHighOrderVolumeMapper: the OPENGL_PROJECTION render mode (HIAC section 7).
+// Builds the region triangles on the CPU (vtkHighOrderProjectionRegions),
+// draws them with OpenGL (vtkHighOrderProjectionRenderer) and publishes the
+// float image.
+#include "vtkHighOrderVolumeMapper.h"
+
+#include "vtkHighOrderImageDisplay.h" // ReadDepth
+#include "vtkHighOrderProjection.h"   // mode state
+#include "vtkHighOrderTetraSetup.h"   // cells
+#include "vtkHighOrderTransferFunction.h"
+
+#include "hovTransferFunction.h" // the table
+
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPlaneCollection.h"
+#include "vtkPointData.h"
+#include "vtkRenderer.h"
+#include "vtkTimerLog.h"
+#include "vtkVolume.h"
+
+#include <algorithm> // std::reverse_copy
+#include <cstring>   // std::memcpy
+
+namespace
+{
+/// VTK's row-major matrix as glm's column-major one.
+glm::dmat4 ToGlm(vtkMatrix4x4* m)
+{
+  glm::dmat4 g(1.0);
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      g[j][i] = m->GetElement(i, j);
+    }
+  }
+  return g;
+}
+
+/// The view in dataset coordinates: composite matrix, eye, direction of projection.
+void ViewSettings(vtkCamera* camera, vtkVolume* volume, double aspect,
+  vtkHighOrderProjectionRegions::Settings& settings)
+{
+  const glm::dmat4 model = ToGlm(volume->GetMatrix());
+  settings.Composite =
+    ToGlm(camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0)) * model;
+  const glm::dmat4 inverseModel = glm::inverse(model);
+  double eye[3], dop[3];
+  camera->GetPosition(eye);
+  camera->GetDirectionOfProjection(dop);
+  const glm::dvec4 e = inverseModel * glm::dvec4(eye[0], eye[1], eye[2], 1.0);
+  settings.Eye = glm::dvec3(e) / e.w;
+  settings.Direction = glm::dvec3(inverseModel * glm::dvec4(dop[0], dop[1], dop[2], 0.0));
+  settings.Parallel = camera->GetParallelProjection() != 0;
+}
+}
+
+void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  vtkHighOrderProjection& proj = *this->ProjectionImpl;
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+  this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  this->NumberOfSplattedCells = 0;
+  this->NumberOfProjectedTriangles = this->NumberOfProjectedSlabs = 0;
+  if (!proj.WarnedFeatures &&
+    (this->GetNumberOfIsosurfaces() > 0 || this->Splatting || this->ViewDepthClipping ||
+      (this->ColorArrayName && *this->ColorArrayName) ||
+      (this->ClippingPlanes && this->ClippingPlanes->GetNumberOfItems() > 0)))
+  {
+    proj.WarnedFeatures = true;
+    vtkWarningMacro("OPENGL_PROJECTION ignores isosurfaces, separate fields, splatting, clipping "
+                    "planes and view-depth clipping; use CPU_ACCURATE for them.");
+  }
+  const float* depth = nullptr;
+  if (this->UseDepthBuffer)
+  {
+    proj.Depth.resize(static_cast<size_t>(width) * height);
+    if (vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, proj.Depth.data()))
+    {
+      depth = proj.Depth.data();
+    }
+  }
+  vtkCamera* camera = ren->GetActiveCamera();
+  const bool exactOrder = this->ProjectionOrder == EXACT_ORDER;
+  const vtkHighOrderTetraSetup* setup = nullptr;
+  const std::vector<vtkIdType>* frontToBack = nullptr;
+  vtkHighOrderTransferFunction* tf = nullptr;
+  proj.Vertices.clear();
+  if (this->PrepareProjectionFrame(camera, vol, exactOrder, &setup, &frontToBack, &tf))
+  {
+    vtkHighOrderProjectionRegions::Settings settings;
+    ViewSettings(camera, vol, ren->GetTiledAspectRatio(), settings);
+    settings.Method = static_cast<hov::ProjectionColorMethod>(this->ProjectionColorMethod);
+    settings.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
+    if (exactOrder)
+    {
+      proj.BackToFront.resize(frontToBack->size());
+      std::reverse_copy(frontToBack->begin(), frontToBack->end(), proj.BackToFront.begin());
+    }
+    else
+    {
+      vtkHighOrderProjectionRegions::CentroidOrder(*setup, settings, proj.BackToFront);
+    }
+    proj.Statistics =
+      proj.Regions.Build(*setup, proj.BackToFront, tf->GetTable(), settings, proj.Vertices);
+    this->NumberOfProjectedTriangles = proj.Statistics.Triangles;
+    this->NumberOfProjectedSlabs = proj.Statistics.Slabs;
+  }
+  vtkHighOrderProjectionRenderer::Options options;
+  options.TextureOpacity = this->ProjectionColorMethod != INTERPOLATED_OPACITY;
+  options.PremultipliedColor = this->EmissionModel == WILHELMS_VAN_GELDER;
+  options.Parallel = camera->GetParallelProjection() != 0;
+  options.LengthScale = setup && setup->GetDiagonal() > 0.0 ? setup->GetDiagonal() : 1.0;
+  if (!proj.Renderer.Render(ren, proj.Vertices, options, depth, width, height, &proj.Image))
+  {
+    vtkErrorMacro("Could not draw the cell projection with OpenGL.");
+    proj.Image.assign(static_cast<size_t>(width) * height * 4, 0.0f);
+  }
+  vtkImageData* image = this->GetFloatImage();
+  image->SetDimensions(width, height, 1);
+  vtkNew<vtkFloatArray> array;
+  array->SetName("RGBA");
+  array->SetNumberOfComponents(4);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  std::memcpy(array->GetPointer(0), proj.Image.data(), proj.Image.size() * sizeof(float));
+  image->GetPointData()->SetScalars(array);
+  timer->StopTimer();
+  this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
+}

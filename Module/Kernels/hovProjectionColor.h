@@ -1,0 +1,122 @@
+/**
+ * @file hovProjectionColor.h
+ * @brief Per-vertex quantities of the OpenGL cell projection (HIAC section 7):
+ * the colour of a region vertex by methods M0-M3, the table of method M2, and
+ * the opacity texture M(u, v) = 1 - exp(-u v).
+ *
+ * A region vertex of a projected convex cell (or transfer-function slab) is a
+ * ray segment of length L (dataset units) from a front point to a back point,
+ * on which extinction tau and colour vary linearly (hovSegmentIntegral.h).
+ * The rasteriser interpolates u = L and v = tau_avg = (tauFront + tauBack)/2
+ * over the region (both are linear there for a parallel projection), looks up
+ * the opacity A = M(u, v) = 1 - exp(-u v) per fragment and blends
+ * (A k, A) with premultiplied "over".
+ *
+ * Colour per vertex, Williams-Max emission (k = an effective chromaticity):
+ *  - M0 (InterpolatedOpacity): k = (kFront + kBack)/2 and the opacity itself
+ *    interpolated from the vertices, no texture (Shirley-Tuchman);
+ *  - M1 (AverageColor): k = (kFront + kBack)/2;
+ *  - M2 (TableColor): k = (1 - beta) kFront + beta kBack with the back weight
+ *    beta = WBack / A of eq. 8 looked up bilinearly in a SegmentColorTable
+ *    over the optical depths (tauFront L, tauBack L); outside its range M1;
+ *  - M3 (ExactColor): k = C / A with C, A from hov::IntegrateSegment (the
+ *    kernel the CPU path uses, never a separate formula).
+ * Wilhelms-Van Gelder emission (glow g not proportional to extinction, so
+ * C/A is unbounded where nothing absorbs): the vertex carries the effective
+ * glow g_eff = C / (L phi(D)), phi(D) = (1 - e^-D)/D, D = L tau_avg, and the
+ * fragment's radiance is g_eff L phi(D) = g_eff A / tau_avg (exact for
+ * constant glow and extinction): M0/M1 g_eff = (gFront + gBack)/2; M2 C from
+ * the table's VFront, VBack; M3 C from hov::IntegrateSegment.
+ *
+ * Opacity texture (OpacityTexture*): a Size x Size float texture of
+ * M = 1 - exp(-exp(X + Y)) on the nodes X, Y = LogMin + i (LogMax - LogMin) /
+ * (Size - 1), with X = ln(L / lengthScale), Y = ln(tau_avg lengthScale)
+ * (any positive lengthScale; the mapper uses the data diagonal). Since M
+ * depends on X + Y only, a coordinate outside [LogMin, LogMax] is moved inside
+ * and the other one shifted by the same amount, which is exact: there is no
+ * clamping artefact for thick or dense cells. If X + Y is below 2 LogMin the
+ * opacity is taken as exp(X + Y) (< 1.3e-14 off), above 2 LogMax it is 1
+ * (1 - exp(-e^16) = 1 in double). Bilinear interpolation between nodes
+ * (spacing 0.047 in log units) is within 2e-4 of the exact opacity
+ * (TestProjectionColor measures it). OpacityFromTexture is the reference of
+ * the lookup the fragment shader performs (vtkHighOrderProjectionFS.glsl,
+ * hovOpacityFromTexture, a port of this function).
+ *
+ * Thread safety: all functions are re-entrant; a SegmentColorTable is
+ * read-only after construction.
+ * @sa hovSegmentIntegral.h, vtkHighOrderProjectionRegions
+ */
+#ifndef hovProjectionColor_h
+#define hovProjectionColor_h
+
+#include "hovConfig.h"
+#include "hovSegmentIntegral.h" // SegmentEnd, EmissionModel
+
+#include <vector> // table storage
+
+namespace hov
+{
+/// HIAC section 7's colour methods, in increasing order of accuracy.
+enum class ProjectionColorMethod
+{
+  InterpolatedOpacity = 0, ///< M0
+  AverageColor = 1,        ///< M1
+  TableColor = 2,          ///< M2
+  ExactColor = 3           ///< M3
+};
+
+/// What one region vertex carries (see file doc).
+struct ProjectionVertexColor
+{
+  double Alpha = 0.0;                 ///< 1 - exp(-L tau_avg): interpolated by M0 only
+  double Color[3] = { 0.0, 0.0, 0.0 }; ///< chromaticity k (Williams-Max) or effective glow (WVG)
+};
+
+/**
+ * Table of the eq. 8 weights over the optical depths a = tauFront L and
+ * c = tauBack L in [0, MaxDepth]^2 (Size^2 nodes, bilinear), computed with
+ * hov::ExactSegmentWeights: the back fraction WBack / A (Williams-Max) and
+ * VFront, VBack (Wilhelms-Van Gelder).
+ */
+class HOV_EXPORT SegmentColorTable
+{
+public:
+  static constexpr int Size = 33;
+  static constexpr double MaxDepth = 8.0;
+  SegmentColorTable();
+  /// False (outputs untouched) if a depth is outside [0, MaxDepth] or not finite.
+  bool Lookup(double depthFront, double depthBack, double& backFraction, double& vFront,
+    double& vBack) const;
+
+private:
+  std::vector<double> BackFraction, VFront, VBack;
+};
+
+/**
+ * The vertex quantities of a segment of length @p length from @p front to
+ * @p back (see file doc); @p table is used by M2 only.
+ */
+HOV_EXPORT ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method,
+  EmissionModel emission, double length, const SegmentEnd& front, const SegmentEnd& back,
+  const SegmentColorTable& table);
+
+/// Layout of the opacity texture (see file doc).
+struct OpacityTexture
+{
+  static constexpr int Size = 512;
+  static constexpr double LogMin = -16.0;
+  static constexpr double LogMax = 8.0;
+  /// Size * Size texels, row j (Y) after row j-1, M(X_i, Y_j) at i + Size j.
+  static std::vector<float> Texels();
+};
+
+/**
+ * The opacity the fragment shader computes for length @p length and average
+ * extinction @p tau from the texels of OpacityTexture::Texels() (same
+ * shifting, same bilinear interpolation; in double here).
+ */
+HOV_EXPORT double OpacityFromTexture(
+  const std::vector<float>& texels, double length, double tau, double lengthScale);
+}
+
+#endif
