@@ -1,7 +1,8 @@
 // Boundary face pairs of vtkSteinVisibilitySort's ADJACENCY_GRAPH (see hovSteinBoundaryPairs.h).
 #include "hovSteinBoundaryPairs.h"
 
-#include "hovSteinObstructs.h"      // Obstruction
+#include "hovSteinObstructs.h" // Obstruction
+#include "hovSteinRounding.h"  // FloatDown, FloatUp
 
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -25,17 +26,6 @@ struct FaceData
   std::uint8_t NumIds;
   std::uint8_t Exact;   ///< 1: Triple spans the exact face plane
 };
-
-inline float FloatDown(double x)
-{
-  float f = static_cast<float>(x);
-  return f > x ? std::nextafter(f, -VTK_FLOAT_MAX) : f;
-}
-inline float FloatUp(double x)
-{
-  float f = static_cast<float>(x);
-  return f < x ? std::nextafter(f, VTK_FLOAT_MAX) : f;
-}
 
 void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData& d)
 {

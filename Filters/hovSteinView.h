@@ -59,6 +59,10 @@ struct View
   int VisiblePoints(const Geometry& g, vtkIdType c, double* xyz) const;
   /// Depth of a world point.
   double Depth(const double* x) const;
+
+private:
+  /// Status, depth range and screen extents of cells [begin, end) from the projected points.
+  void CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end);
 };
 }
 
