@@ -86,11 +86,6 @@ int EyeSide(const Geometry& g, const ViewFrame& f, vtkIdType c, int face)
   return mode == FaceNewell ? NewellSide(g, f, c, face) : EyeUndecided;
 }
 
-inline bool Ordered(const View& v, vtkIdType c)
-{
-  return v.Status[c] == StatusVisible || v.Status[c] == StatusStraddle;
-}
-
 /// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
 void FaceDirections(const Geometry& g, const Topology& t, const View& v, std::vector<std::int8_t>& dir)
 {
@@ -146,112 +141,149 @@ int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
   return -1;
 }
 
+/// Counters of one block of cells in CellPass.
+struct BlockCounts
+{
+  vtkIdType Faces = 0, ExitCells = 0, EntryCells = 0, FaceEdges = 0, Undecided = 0;
+};
+
 /**
- * The faces of step 3 (see hovSteinBoundaryPairs.h): boundary faces of
- * ordered cells with the eye strictly inside (EXIT), strictly outside (ENTRY)
- * or undecided (both), and both sides of undecided interior faces.
+ * One cell's part of the DAG and of step 3: its outgoing face edges and
+ * incoming face edge count (from @p dir), the roles of its faces in step 3
+ * (boundary faces with the eye strictly inside: EXIT (1), strictly outside:
+ * ENTRY (2), undecided: both (3); both sides of undecided interior faces: 3)
+ * in @p roles (MaxFaces per cell).
  */
-void ViewFaces(const Geometry& g, const Topology& t, const View& v, const std::vector<std::int8_t>& dir,
-  std::vector<ViewFace>& faces, GraphStats& stats)
+void CellPart(const Geometry& g, const Topology& t, const View& v, const std::int8_t* dir,
+  vtkIdType c, Digraph& d, std::uint8_t* roles, BlockCounts& counts)
+{
+  std::uint8_t* r = roles + MaxFaces * c;
+  std::fill(r, r + MaxFaces, 0);
+  d.FaceCount[c] = 0;
+  d.InDegree[c] = 0;
+  if (!Ordered(v, c))
+  {
+    return;
+  }
+  const std::uint8_t mask = t.BoundaryFaces[c];
+  for (int f = 0; mask && f < MaxFaces; ++f)
+  {
+    if (mask & (1 << f))
+    {
+      const int side = EyeSide(g, v.Frame, c, f);
+      r[f] = side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
+    }
+  }
+  const vtkIdType* e = t.CellFaces.data() + t.CellFaceOffsets[c];
+  const vtkIdType* last = t.CellFaces.data() + t.CellFaceOffsets[c + 1];
+  vtkIdType* out = d.FaceTargets.data() + t.CellFaceOffsets[c];
+  int numOut = 0, numIn = 0;
+  for (; e != last; ++e)
+  {
+    const vtkIdType i = *e >> 1;
+    const bool isB = (*e & 1) != 0;
+    const std::int8_t s = dir[i];
+    if (s == 1 || s == -1)
+    {
+      // s == 1: A -> B, s == -1: B -> A.
+      if ((s == 1) != isB)
+      {
+        out[numOut++] = isB ? t.A[i] : t.B[i];
+      }
+      else
+      {
+        ++numIn;
+      }
+    }
+    else if (s == 2)
+    {
+      const int f = isB ? MatchingFace(g, t.A[i], t.FaceA[i], c) : t.FaceA[i];
+      if (f >= 0)
+      {
+        r[f] = 3;
+      }
+      counts.Undecided += !isB;
+    }
+  }
+  d.FaceCount[c] = static_cast<std::uint8_t>(numOut);
+  d.InDegree[c] = numIn;
+  std::uint8_t cellRoles = 0;
+  for (int f = 0; f < MaxFaces; ++f)
+  {
+    cellRoles |= r[f];
+    counts.Faces += r[f] != 0;
+  }
+  counts.FaceEdges += numOut;
+  counts.ExitCells += cellRoles & 1;
+  counts.EntryCells += (cellRoles >> 1) & 1;
+}
+
+/**
+ * Per cell, in parallel over fixed blocks of cells: the face edges of the DAG
+ * (CellPart) and the faces of step 3 (see hovSteinBoundaryPairs.h), in cell
+ * order whatever the number of threads.
+ */
+void CellPass(const Geometry& g, const Topology& t, const View& v, const std::vector<std::int8_t>& dir,
+  Digraph& d, std::vector<ViewFace>& faces, GraphStats& stats)
 {
   const vtkIdType n = g.NumberOfCells;
-  std::vector<std::uint8_t> roles(MaxFaces * n, 0);
-  vtkSMPTools::For(0, n, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end; ++c)
+  d.FaceOffsets = t.CellFaceOffsets.data();
+  d.FaceTargets.resize(t.CellFaces.size());
+  d.FaceCount.resize(n);
+  d.InDegree.resize(n);
+  std::vector<std::uint8_t> roles(MaxFaces * n);
+  constexpr vtkIdType blockSize = 2048;
+  const vtkIdType numBlocks = (n + blockSize - 1) / blockSize;
+  std::vector<BlockCounts> counts(numBlocks);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
     {
-      const std::uint8_t mask = t.BoundaryFaces[c];
-      if (!mask || !Ordered(v, c))
+      for (vtkIdType c = blk * blockSize; c < std::min(n, (blk + 1) * blockSize); ++c)
       {
-        continue;
+        CellPart(g, t, v, dir.data(), c, d, roles.data(), counts[blk]);
       }
-      for (int f = 0; f < MaxFaces; ++f)
+    }
+  });
+  std::vector<vtkIdType> first(numBlocks + 1, 0);
+  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
+  {
+    first[blk + 1] = first[blk] + counts[blk].Faces;
+    stats.ExitCells += counts[blk].ExitCells;
+    stats.EntryCells += counts[blk].EntryCells;
+    stats.FaceEdges += counts[blk].FaceEdges;
+    stats.Undecided += counts[blk].Undecided;
+  }
+  faces.resize(first[numBlocks]);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      ViewFace* out = faces.data() + first[blk];
+      for (vtkIdType c = blk * blockSize; c < std::min(n, (blk + 1) * blockSize); ++c)
       {
-        if (mask & (1 << f))
+        for (int f = 0; f < MaxFaces; ++f)
         {
-          const int side = EyeSide(g, v.Frame, c, f);
-          roles[MaxFaces * c + f] = side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
+          const std::uint8_t r = roles[MaxFaces * c + f];
+          if (r)
+          {
+            *out++ = { c, static_cast<std::uint8_t>(f), r };
+          }
         }
       }
     }
   });
-  for (size_t i = 0; i < dir.size(); ++i)
-  {
-    if (dir[i] == 2)
-    {
-      roles[MaxFaces * t.A[i] + t.FaceA[i]] = 3;
-      const int fb = MatchingFace(g, t.A[i], t.FaceA[i], t.B[i]);
-      if (fb >= 0)
-      {
-        roles[MaxFaces * t.B[i] + fb] = 3;
-      }
-    }
-  }
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    std::uint8_t cellRoles = 0;
-    for (int f = 0; f < MaxFaces; ++f)
-    {
-      const std::uint8_t r = roles[MaxFaces * c + f];
-      if (r)
-      {
-        faces.push_back({ c, static_cast<std::uint8_t>(f), r });
-        cellRoles |= r;
-      }
-    }
-    stats.ExitCells += cellRoles & 1;
-    stats.EntryCells += (cellRoles >> 1) & 1;
-  }
-}
 }
 
-namespace
+/// Cells not ordered by the DAG (bad, hidden), back to front by rearmost depth,
+/// appended to @p order; returns the number of the others.
+vtkIdType AppendUnordered(const View& v, vtkIdType n, std::vector<vtkIdType>& order)
 {
-/// Compressed adjacency of the face edges and the Obstructs() edges.
-void BuildDigraph(const Topology& t, const std::vector<std::int8_t>& dir,
-  const std::vector<std::pair<vtkIdType, vtkIdType>>& extra, vtkIdType n, Digraph& d)
-{
-  d.Offsets.assign(n + 1, 0);
-  const vtkIdType m = t.NumberOfInteriorFaces();
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    if (dir[i] == 1 || dir[i] == -1)
-    {
-      ++d.Offsets[(dir[i] == 1 ? t.A[i] : t.B[i]) + 1];
-    }
-  }
-  for (const auto& e : extra)
-  {
-    ++d.Offsets[e.first + 1];
-  }
+  std::vector<vtkIdType> first;
   for (vtkIdType c = 0; c < n; ++c)
   {
-    d.Offsets[c + 1] += d.Offsets[c];
-  }
-  d.Targets.resize(d.Offsets[n]);
-  std::vector<vtkIdType> cursor(d.Offsets.begin(), d.Offsets.end() - 1);
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    if (dir[i] == 1)
+    if (!Ordered(v, c))
     {
-      d.Targets[cursor[t.A[i]]++] = t.B[i];
+      first.push_back(c);
     }
-    else if (dir[i] == -1)
-    {
-      d.Targets[cursor[t.B[i]]++] = t.A[i];
-    }
-  }
-  for (const auto& e : extra)
-  {
-    d.Targets[cursor[e.first]++] = e.second;
-  }
-}
-
-/// Cells split into ordered ones (by id) and the others (back to front by rearmost depth).
-void SplitCells(const View& v, vtkIdType n, std::vector<vtkIdType>& first, std::vector<vtkIdType>& rough)
-{
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    (Ordered(v, c) ? rough : first).push_back(c);
   }
   std::vector<float> keys(first.size());
   for (size_t i = 0; i < first.size(); ++i)
@@ -259,6 +291,8 @@ void SplitCells(const View& v, vtkIdType n, std::vector<vtkIdType>& first, std::
     keys[i] = static_cast<float>(v.Rear[first[i]]);
   }
   RadixSortDescending(first, keys);
+  order.insert(order.end(), first.begin(), first.end());
+  return n - static_cast<vtkIdType>(first.size());
 }
 }
 
@@ -269,30 +303,23 @@ void SortByGraph(const Geometry& g, const Topology& t, const View& v,
   stats = GraphStats();
   order.clear();
   order.reserve(n);
-  std::vector<vtkIdType> first, rough;
-  SplitCells(v, n, first, rough);
-  order.insert(order.end(), first.begin(), first.end());
-  if (rough.empty())
+  const vtkIdType numOrdered = AppendUnordered(v, n, order);
+  if (numOrdered == 0)
   {
     return;
   }
   std::vector<std::int8_t> dir;
   FaceDirections(g, t, v, dir);
+  Digraph d;
   std::vector<ViewFace> faces;
-  ViewFaces(g, t, v, dir, faces, stats);
+  CellPass(g, t, v, dir, d, faces, stats);
   std::vector<std::pair<vtkIdType, vtkIdType>> extra;
   PairStats pairStats;
   BoundaryEdges(g, v, faces, extra, pairStats);
   stats.Tests = pairStats.Tests;
   stats.FacePairs = pairStats.FacePairs;
-  for (std::int8_t s : dir)
-  {
-    stats.FaceEdges += s == 1 || s == -1;
-    stats.Undecided += s == 2;
-  }
   stats.ObstructEdges = static_cast<vtkIdType>(extra.size());
-  Digraph d;
-  BuildDigraph(t, dir, extra, n, d);
-  TopologicalOrder(d, rough, v.Rear, order, stats);
+  d.AddExtraEdges(extra, n);
+  TopologicalOrder(d, v, numOrdered, order, stats);
 }
 }

@@ -36,6 +36,10 @@
 #include "hovSteinTopology.h" // Topology
 #include "hovSteinView.h"     // Geometry, View
 
+#include <cstdint> // std::int32_t, std::uint8_t
+#include <utility> // std::pair
+#include <vector>  // storage
+
 namespace hovStein
 {
 struct GraphStats
@@ -54,21 +58,50 @@ struct GraphStats
 void SortByGraph(const Geometry& g, const Topology& t, const View& v,
   std::vector<vtkIdType>& order, GraphStats& stats);
 
-/// Edges (from, to) as a compressed adjacency: from precedes to.
+/// Cells that take part in the DAG (the others are output first).
+inline bool Ordered(const View& v, vtkIdType c)
+{
+  return v.Status[c] == StatusVisible || v.Status[c] == StatusStraddle;
+}
+
+/**
+ * The per-view visibility DAG: an edge u -> w means u is drawn before w (back
+ * to front). The face edges of u are FaceTargets[FaceOffsets[u] + k],
+ * k < FaceCount[u], in increasing interior face index (the slots are the
+ * view-independent Topology::CellFaceOffsets); then come its Obstructs()
+ * edges ExtraTargets[ExtraOffsets[u] ...], in increasing target id.
+ */
 struct Digraph
 {
-  std::vector<vtkIdType> Offsets; ///< per node + 1
-  std::vector<vtkIdType> Targets;
+  const vtkIdType* FaceOffsets = nullptr;
+  std::vector<vtkIdType> FaceTargets;
+  std::vector<std::uint8_t> FaceCount;
+  std::vector<vtkIdType> ExtraOffsets; ///< per cell + 1
+  std::vector<vtkIdType> ExtraTargets;
+  std::vector<std::int32_t> InDegree; ///< per cell: edges into it (consumed by the sort)
+
+  vtkIdType Degree(vtkIdType u) const
+  {
+    return this->FaceCount[u] + this->ExtraOffsets[u + 1] - this->ExtraOffsets[u];
+  }
+  /// Target of the k-th edge of @p u (k < Degree(u)).
+  vtkIdType Target(vtkIdType u, vtkIdType k) const
+  {
+    return k < this->FaceCount[u] ? this->FaceTargets[this->FaceOffsets[u] + k]
+                                  : this->ExtraTargets[this->ExtraOffsets[u] + k - this->FaceCount[u]];
+  }
+  /// Adds the edges (from, to) of @p edges (sorted by to) to the CSR and the in-degrees.
+  void AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n);
 };
 
 /**
- * Topological order of the nodes listed in @p cells (the others are ignored
- * and must have no edges); the initial sources, and the cells of each cyclic
- * component, back to front by @p rear (ties by id); appends to @p order.
- * Cycles: see the file doc.
+ * Topological order of the @p numOrdered cells with Ordered(v, c) (the others
+ * must have no edges); the initial sources, and the cells of each cyclic
+ * component, back to front by rearmost depth (ties by id); appends to
+ * @p order. Consumes d.InDegree. Cycles: see the file doc.
  */
-void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& cells,
-  const std::vector<double>& rear, std::vector<vtkIdType>& order, GraphStats& stats);
+void TopologicalOrder(Digraph& d, const View& v, vtkIdType numOrdered,
+  std::vector<vtkIdType>& order, GraphStats& stats);
 }
 
 #endif

@@ -10,20 +10,19 @@ namespace
 {
 /**
  * Strongly connected components of the nodes with !done (iterative Tarjan,
- * roots in the order of @p rough). Components are appended to @p comps /
+ * roots by increasing id). Components are appended to @p comps /
  * @p compStart in emission order, i.e. reverse topological order.
  */
-void Tarjan(const Digraph& d, const std::vector<vtkIdType>& rough,
-  const std::vector<std::uint8_t>& done, std::vector<vtkIdType>& comps,
+void Tarjan(const Digraph& d, const std::vector<std::uint8_t>& done, std::vector<vtkIdType>& comps,
   std::vector<vtkIdType>& compStart)
 {
-  const vtkIdType n = static_cast<vtkIdType>(d.Offsets.size()) - 1;
+  const vtkIdType n = static_cast<vtkIdType>(done.size());
   std::vector<vtkIdType> index(n, -1), low(n, 0);
   std::vector<std::uint8_t> onStack(n, 0);
   std::vector<vtkIdType> stack;
   std::vector<std::pair<vtkIdType, vtkIdType>> calls; // node, next edge
   vtkIdType counter = 0;
-  for (vtkIdType root : rough)
+  for (vtkIdType root = 0; root < n; ++root)
   {
     if (done[root] || index[root] >= 0)
     {
@@ -32,15 +31,15 @@ void Tarjan(const Digraph& d, const std::vector<vtkIdType>& rough,
     index[root] = low[root] = counter++;
     stack.push_back(root);
     onStack[root] = 1;
-    calls.emplace_back(root, d.Offsets[root]);
+    calls.emplace_back(root, 0);
     while (!calls.empty())
     {
       const vtkIdType v = calls.back().first;
       const vtkIdType it = calls.back().second;
-      if (it < d.Offsets[v + 1])
+      if (it < d.Degree(v))
       {
         calls.back().second = it + 1;
-        const vtkIdType w = d.Targets[it];
+        const vtkIdType w = d.Target(v, it);
         if (done[w])
         {
           continue;
@@ -50,7 +49,7 @@ void Tarjan(const Digraph& d, const std::vector<vtkIdType>& rough,
           index[w] = low[w] = counter++;
           stack.push_back(w);
           onStack[w] = 1;
-          calls.emplace_back(w, d.Offsets[w]);
+          calls.emplace_back(w, 0);
         }
         else if (onStack[w])
         {
@@ -82,56 +81,83 @@ void Tarjan(const Digraph& d, const std::vector<vtkIdType>& rough,
 }
 }
 
-void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& rough,
-  const std::vector<double>& rear, std::vector<vtkIdType>& order, GraphStats& stats)
+void Digraph::AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n)
 {
-  const vtkIdType n = static_cast<vtkIdType>(d.Offsets.size()) - 1;
+  this->ExtraOffsets.assign(n + 1, 0);
+  for (const auto& e : edges)
+  {
+    ++this->ExtraOffsets[e.first + 1];
+    ++this->InDegree[e.second];
+  }
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    this->ExtraOffsets[c + 1] += this->ExtraOffsets[c];
+  }
+  this->ExtraTargets.resize(edges.size());
+  std::vector<vtkIdType> cursor(this->ExtraOffsets.begin(), this->ExtraOffsets.end() - 1);
+  for (const auto& e : edges)
+  {
+    this->ExtraTargets[cursor[e.first]++] = e.second;
+  }
+}
+
+void TopologicalOrder(Digraph& d, const View& v, vtkIdType numOrdered,
+  std::vector<vtkIdType>& order, GraphStats& stats)
+{
+  const vtkIdType n = static_cast<vtkIdType>(d.FaceCount.size());
+  const std::vector<double>& rear = v.Rear;
   // Back to front by rearmost depth, ties by id.
   auto behind = [&](vtkIdType a, vtkIdType b) { return rear[a] > rear[b] || (rear[a] == rear[b] && a < b); };
-  std::vector<std::int32_t> indeg(n, 0);
-  for (vtkIdType t : d.Targets)
+  // Kahn's algorithm with @p order itself as the FIFO queue.
+  const size_t start = order.size();
+  for (vtkIdType c = 0; c < n; ++c)
   {
-    ++indeg[t];
-  }
-  std::vector<vtkIdType> queue;
-  queue.reserve(rough.size());
-  for (vtkIdType c : rough)
-  {
-    if (indeg[c] == 0)
+    if (d.InDegree[c] == 0 && Ordered(v, c))
     {
-      queue.push_back(c);
+      order.push_back(c);
     }
   }
-  std::sort(queue.begin(), queue.end(), behind);
-  for (size_t head = 0; head < queue.size(); ++head)
+  std::sort(order.begin() + start, order.end(), behind);
+  std::int32_t* indeg = d.InDegree.data();
+  const vtkIdType* targets = d.FaceTargets.data();
+  const vtkIdType* extraOffsets = d.ExtraOffsets.data();
+  const vtkIdType* extraTargets = d.ExtraTargets.data();
+  for (size_t head = start; head < order.size(); ++head)
   {
-    const vtkIdType u = queue[head];
-    for (vtkIdType e = d.Offsets[u]; e < d.Offsets[u + 1]; ++e)
+    const vtkIdType u = order[head];
+    const vtkIdType* t = targets + d.FaceOffsets[u];
+    for (const vtkIdType* last = t + d.FaceCount[u]; t != last; ++t)
     {
-      if (--indeg[d.Targets[e]] == 0)
+      if (--indeg[*t] == 0)
       {
-        queue.push_back(d.Targets[e]);
+        order.push_back(*t);
+      }
+    }
+    for (vtkIdType e = extraOffsets[u]; e < extraOffsets[u + 1]; ++e)
+    {
+      if (--indeg[extraTargets[e]] == 0)
+      {
+        order.push_back(extraTargets[e]);
       }
     }
   }
-  order.insert(order.end(), queue.begin(), queue.end());
-  if (queue.size() == rough.size())
+  if (static_cast<vtkIdType>(order.size() - start) == numOrdered)
   {
     return;
   }
   // Kahn stalled: the rest contains cycles. Output the strongly connected
   // components in topological order of the condensation, each by rearmost depth.
   std::vector<std::uint8_t> done(n, 1);
-  for (vtkIdType c : rough)
+  for (vtkIdType c = 0; c < n; ++c)
   {
-    done[c] = 0;
+    done[c] = !Ordered(v, c);
   }
-  for (vtkIdType c : queue)
+  for (size_t k = start; k < order.size(); ++k)
   {
-    done[c] = 1;
+    done[order[k]] = 1;
   }
   std::vector<vtkIdType> comps, compStart;
-  Tarjan(d, rough, done, comps, compStart);
+  Tarjan(d, done, comps, compStart);
   for (size_t k = compStart.size() - 1; k-- > 0;)
   {
     auto first = comps.begin() + compStart[k], last = comps.begin() + compStart[k + 1];

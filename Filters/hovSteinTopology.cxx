@@ -225,5 +225,28 @@ void Topology::Build(const Geometry& g)
   {
     this->NumberOfBoundaryCells += this->BoundaryFaces[c] != 0;
   }
+  this->BuildCellFaces(n);
+}
+
+void Topology::BuildCellFaces(vtkIdType numCells)
+{
+  const vtkIdType m = this->NumberOfInteriorFaces();
+  this->CellFaceOffsets.assign(numCells + 1, 0);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    ++this->CellFaceOffsets[this->A[i] + 1];
+    ++this->CellFaceOffsets[this->B[i] + 1];
+  }
+  for (vtkIdType c = 0; c < numCells; ++c)
+  {
+    this->CellFaceOffsets[c + 1] += this->CellFaceOffsets[c];
+  }
+  this->CellFaces.resize(2 * m);
+  std::vector<vtkIdType> cursor(this->CellFaceOffsets.begin(), this->CellFaceOffsets.end() - 1);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    this->CellFaces[cursor[this->A[i]]++] = 2 * i;
+    this->CellFaces[cursor[this->B[i]]++] = 2 * i + 1;
+  }
 }
 }

@@ -36,12 +36,19 @@ struct Topology
   /// side test then reads one contiguous record instead of the cell's tables).
   std::vector<std::uint8_t> ModeA;
   std::vector<vtkIdType> TripleA; ///< 3 per interior face
+  /// Per cell: its interior faces (CSR, in increasing interior face index) as
+  /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
+  std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
+  std::vector<vtkIdType> CellFaces;
   /// Per cell: bit f set when face f is a boundary face.
   std::vector<std::uint8_t> BoundaryFaces;
   vtkIdType NumberOfBoundaryCells = 0;
 
   vtkIdType NumberOfInteriorFaces() const { return static_cast<vtkIdType>(this->A.size()); }
   void Build(const Geometry& g);
+
+private:
+  void BuildCellFaces(vtkIdType numCells);
 };
 }
 
