@@ -174,28 +174,23 @@ void CellPart(const Geometry& g, const Topology& t, const View& v, const std::in
       r[f] = side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
     }
   }
-  const vtkIdType* e = t.CellFaces.data() + t.CellFaceOffsets[c];
-  const vtkIdType* last = t.CellFaces.data() + t.CellFaceOffsets[c + 1];
-  vtkIdType* out = d.FaceTargets.data() + t.CellFaceOffsets[c];
+  const vtkIdType first = t.CellFaceOffsets[c], last = t.CellFaceOffsets[c + 1];
+  const vtkIdType* faces = t.CellFaces.data();
+  const vtkIdType* neighbours = t.CellNeighbours.data();
+  vtkIdType* out = d.FaceTargets.data() + first;
   int numOut = 0, numIn = 0;
-  for (; e != last; ++e)
+  for (vtkIdType e = first; e < last; ++e)
   {
-    const vtkIdType i = *e >> 1;
-    const bool isB = (*e & 1) != 0;
+    const vtkIdType i = faces[e] >> 1;
+    const bool isB = (faces[e] & 1) != 0;
     const std::int8_t s = dir[i];
-    if (s == 1 || s == -1)
-    {
-      // s == 1: A -> B, s == -1: B -> A.
-      if ((s == 1) != isB)
-      {
-        out[numOut++] = isB ? t.A[i] : t.B[i];
-      }
-      else
-      {
-        ++numIn;
-      }
-    }
-    else if (s == 2)
+    // s == 1: A -> B, s == -1: B -> A (branch-free: the side is a coin flip).
+    const int edge = s == 1 || s == -1;
+    const int outgoing = edge & static_cast<int>((s == 1) != isB);
+    out[numOut] = neighbours[e]; // kept only if outgoing (the slot exists: e < last)
+    numOut += outgoing;
+    numIn += edge - outgoing;
+    if (s == 2)
     {
       const int f = isB ? MatchingFace(g, t.A[i], t.FaceA[i], c) : t.FaceA[i];
       if (f >= 0)
@@ -238,10 +233,12 @@ void CellPass(const Geometry& g, const Topology& t, const View& v, const std::ve
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
+      BlockCounts local; // not counts[blk]: neighbouring blocks share cache lines
       for (vtkIdType c = blk * blockSize; c < std::min(n, (blk + 1) * blockSize); ++c)
       {
-        CellPart(g, t, v, dir.data(), c, d, roles.data(), counts[blk]);
+        CellPart(g, t, v, dir.data(), c, d, roles.data(), local);
       }
+      counts[blk] = local;
     }
   });
   std::vector<vtkIdType> first(numBlocks + 1, 0);
@@ -302,7 +299,7 @@ void SortByGraph(const Geometry& g, const Topology& t, const View& v,
   const vtkIdType n = g.NumberOfCells;
   stats = GraphStats();
   order.clear();
-  order.reserve(n);
+  order.reserve(n + 1); // + 1: see TopologicalOrder
   const vtkIdType numOrdered = AppendUnordered(v, n, order);
   if (numOrdered == 0)
   {

@@ -8,6 +8,67 @@ namespace hovStein
 {
 namespace
 {
+/// A hint to fetch the cache line of @p p (no effect where unsupported).
+inline void Prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
+/**
+ * Kahn's algorithm: @p queue holds the @p tail sources and has room for every
+ * cell of the DAG plus one; appends each cell whose in-degree drops to zero (FIFO) and
+ * returns the final tail. The push is branch-free (whether a count reaches
+ * zero is a coin flip), and the queue, known ahead, drives prefetches (the
+ * loop is otherwise bound by cache misses on cells scattered through memory).
+ */
+vtkIdType Kahn(Digraph& d, vtkIdType* queue, vtkIdType tail)
+{
+  std::int32_t* indeg = d.InDegree.data();
+  const vtkIdType* offsets = d.FaceOffsets;
+  const std::uint8_t* counts = d.FaceCount.data();
+  const vtkIdType* targets = d.FaceTargets.data();
+  const vtkIdType* extraOffsets = d.ExtraOffsets.data();
+  const vtkIdType* extraTargets = d.ExtraTargets.data();
+  for (vtkIdType head = 0; head < tail; ++head)
+  {
+    // Edge offsets 16 places on, edges 8 places on, target in-degrees 4 places on.
+    if (head + 16 < tail)
+    {
+      Prefetch(offsets + queue[head + 16]);
+      Prefetch(counts + queue[head + 16]);
+    }
+    if (head + 8 < tail)
+    {
+      Prefetch(targets + offsets[queue[head + 8]]);
+    }
+    if (head + 4 < tail)
+    {
+      const vtkIdType w = queue[head + 4];
+      for (int k = 0; k < counts[w]; ++k)
+      {
+        Prefetch(indeg + targets[offsets[w] + k]);
+      }
+    }
+    const vtkIdType u = queue[head];
+    const vtkIdType* t = targets + offsets[u];
+    for (const vtkIdType* last = t + counts[u]; t != last; ++t)
+    {
+      queue[tail] = *t; // kept only if its count drops to zero
+      tail += --indeg[*t] == 0;
+    }
+    for (vtkIdType e = extraOffsets[u]; e < extraOffsets[u + 1]; ++e)
+    {
+      queue[tail] = extraTargets[e];
+      tail += --indeg[extraTargets[e]] == 0;
+    }
+  }
+  return tail;
+}
+
 /**
  * Strongly connected components of the nodes with !done (iterative Tarjan,
  * roots by increasing id). Components are appended to @p comps /
@@ -118,30 +179,11 @@ void TopologicalOrder(Digraph& d, const View& v, vtkIdType numOrdered,
     }
   }
   std::sort(order.begin() + start, order.end(), behind);
-  std::int32_t* indeg = d.InDegree.data();
-  const vtkIdType* targets = d.FaceTargets.data();
-  const vtkIdType* extraOffsets = d.ExtraOffsets.data();
-  const vtkIdType* extraTargets = d.ExtraTargets.data();
-  for (size_t head = start; head < order.size(); ++head)
-  {
-    const vtkIdType u = order[head];
-    const vtkIdType* t = targets + d.FaceOffsets[u];
-    for (const vtkIdType* last = t + d.FaceCount[u]; t != last; ++t)
-    {
-      if (--indeg[*t] == 0)
-      {
-        order.push_back(*t);
-      }
-    }
-    for (vtkIdType e = extraOffsets[u]; e < extraOffsets[u + 1]; ++e)
-    {
-      if (--indeg[extraTargets[e]] == 0)
-      {
-        order.push_back(extraTargets[e]);
-      }
-    }
-  }
-  if (static_cast<vtkIdType>(order.size() - start) == numOrdered)
+  const vtkIdType sources = static_cast<vtkIdType>(order.size() - start);
+  order.resize(start + numOrdered + 1); // + 1: Kahn's branch-free push writes one past
+  const vtkIdType numDone = Kahn(d, order.data() + start, sources);
+  order.resize(start + numDone);
+  if (numDone == numOrdered)
   {
     return;
   }

@@ -242,11 +242,15 @@ void Topology::BuildCellFaces(vtkIdType numCells)
     this->CellFaceOffsets[c + 1] += this->CellFaceOffsets[c];
   }
   this->CellFaces.resize(2 * m);
+  this->CellNeighbours.resize(2 * m);
   std::vector<vtkIdType> cursor(this->CellFaceOffsets.begin(), this->CellFaceOffsets.end() - 1);
   for (vtkIdType i = 0; i < m; ++i)
   {
-    this->CellFaces[cursor[this->A[i]]++] = 2 * i;
-    this->CellFaces[cursor[this->B[i]]++] = 2 * i + 1;
+    const vtkIdType a = cursor[this->A[i]]++, b = cursor[this->B[i]]++;
+    this->CellFaces[a] = 2 * i;
+    this->CellNeighbours[a] = this->B[i];
+    this->CellFaces[b] = 2 * i + 1;
+    this->CellNeighbours[b] = this->A[i];
   }
 }
 }

@@ -40,6 +40,7 @@ struct Topology
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
   std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
   std::vector<vtkIdType> CellFaces;
+  std::vector<vtkIdType> CellNeighbours; ///< beside CellFaces: the cell on the other side
   /// Per cell: bit f set when face f is a boundary face.
   std::vector<std::uint8_t> BoundaryFaces;
   vtkIdType NumberOfBoundaryCells = 0;
