@@ -252,37 +252,57 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
   });
 }
 
+using CellPairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
+}
+
+/// The per-view buffers (kept between views).
+struct BoundaryPairs::Buffers
+{
+  std::vector<FaceData> Data;
+  std::vector<TileRange> Ranges;
+  TileLists Lists;
+  std::vector<EntryRecord> Entries;
+  std::vector<CellPairs> BlockPairs;
+  std::vector<vtkIdType> BlockCount;
+  CellPairs Pairs;
+  std::vector<std::uint8_t> Used, Hit;
+  std::vector<vtkIdType> Cells;
+  HullCache Hulls;
+};
+
+namespace
+{
 /**
  * The cell pairs (EXIT cell, ENTRY cell) of the face pairs that pass the tests
  * of the file doc, per tile the EXIT faces against the ENTRY records (each
  * face pair in the tile of the lower-left corner of the intersection of the
  * extents), in parallel over fixed blocks of tiles; appended in tile order.
  */
-void FindCellPairs(const Geometry& g, const std::vector<ViewFace>& faces,
-  const std::vector<FaceData>& data, const PairGrid& grid, const TileLists& lists,
-  const std::vector<EntryRecord>& entries, std::vector<std::pair<vtkIdType, vtkIdType>>& pairs,
-  PairStats& stats)
+void FindCellPairs(const Geometry& g, const std::vector<ViewFace>& faces, const PairGrid& grid,
+  BoundaryPairs::Buffers& b, PairStats& stats)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
-  std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>> blockPairs(numBlocks);
-  std::vector<vtkIdType> blockCount(numBlocks, 0);
-  const vtkIdType* exitStart = lists.Start[0].data();
-  const vtkIdType* entryStart = lists.Start[1].data();
+  b.BlockPairs.resize(numBlocks);
+  b.BlockCount.resize(numBlocks);
+  const vtkIdType* exitStart = b.Lists.Start[0].data();
+  const vtkIdType* entryStart = b.Lists.Start[1].data();
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
-      std::vector<std::pair<vtkIdType, vtkIdType>> found; // local: no shared cache lines
+      CellPairs found; // local (no shared cache lines), with the block's old capacity
+      found.swap(b.BlockPairs[blk]);
+      found.clear();
       vtkIdType count = 0;
       for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
       {
         const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
-        const EntryRecord* first = entries.data() + entryStart[tile];
-        const EntryRecord* last = entries.data() + entryStart[tile + 1];
+        const EntryRecord* first = b.Entries.data() + entryStart[tile];
+        const EntryRecord* last = b.Entries.data() + entryStart[tile + 1];
         for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
         {
-          const vtkIdType fi = lists.Items[0][i];
-          const FaceData& F = data[fi];
+          const vtkIdType fi = b.Lists.Items[0][i];
+          const FaceData& F = b.Data[fi];
           const vtkIdType a = faces[fi].Cell;
           const double front = F.Front - 1e-9 * (std::abs(F.Front) + g.Diagonal);
           for (const EntryRecord* G = first; G != last; ++G)
@@ -294,21 +314,23 @@ void FindCellPairs(const Geometry& g, const std::vector<ViewFace>& faces,
               continue;
             }
             ++count;
-            if (SomeCornerOutside(g, F, data[G->Face]) && SomeCornerOutside(g, data[G->Face], F))
+            const FaceData& D = b.Data[G->Face];
+            if (SomeCornerOutside(g, F, D) && SomeCornerOutside(g, D, F))
             {
               found.emplace_back(a, G->Cell);
             }
           }
         }
       }
-      blockPairs[blk].swap(found);
-      blockCount[blk] = count;
+      b.BlockPairs[blk].swap(found);
+      b.BlockCount[blk] = count;
     }
   });
+  b.Pairs.clear();
   for (vtkIdType blk = 0; blk < numBlocks; ++blk)
   {
-    stats.FacePairs += blockCount[blk];
-    pairs.insert(pairs.end(), blockPairs[blk].begin(), blockPairs[blk].end());
+    stats.FacePairs += b.BlockCount[blk];
+    b.Pairs.insert(b.Pairs.end(), b.BlockPairs[blk].begin(), b.BlockPairs[blk].end());
   }
 }
 
@@ -316,37 +338,35 @@ void FindCellPairs(const Geometry& g, const std::vector<ViewFace>& faces,
  * Obstructs(a, b) for the sorted distinct cell pairs, in parallel (the hulls
  * of their cells computed once first); appends the edges (b, a) in pair order.
  */
-void DecidePairs(const Geometry& g, const View& v,
-  const std::vector<std::pair<vtkIdType, vtkIdType>>& pairs,
-  std::vector<std::pair<vtkIdType, vtkIdType>>& edges)
+void DecidePairs(const Geometry& g, const View& v, BoundaryPairs::Buffers& b, CellPairs& edges)
 {
+  const CellPairs& pairs = b.Pairs;
   const vtkIdType np = static_cast<vtkIdType>(pairs.size());
-  std::vector<std::uint8_t> used(g.NumberOfCells, 0);
+  b.Used.assign(g.NumberOfCells, 0);
   for (const auto& p : pairs)
   {
-    used[p.first] = used[p.second] = 1;
+    b.Used[p.first] = b.Used[p.second] = 1;
   }
-  std::vector<vtkIdType> cells;
+  b.Cells.clear();
   for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
   {
-    if (used[c])
+    if (b.Used[c])
     {
-      cells.push_back(c);
+      b.Cells.push_back(c);
     }
   }
-  HullCache hulls;
-  hulls.Build(g, v, cells);
-  std::vector<std::uint8_t> hit(np, 0);
+  b.Hulls.Build(g, v, b.Cells);
+  b.Hit.resize(np);
   vtkSMPTools::For(0, np, 64, [&](vtkIdType begin, vtkIdType end) {
-    Obstruction ob(g, v, &hulls);
+    Obstruction ob(g, v, &b.Hulls);
     for (vtkIdType i = begin; i < end; ++i)
     {
-      hit[i] = ob.Obstructs(pairs[i].first, pairs[i].second);
+      b.Hit[i] = ob.Obstructs(pairs[i].first, pairs[i].second);
     }
   });
   for (vtkIdType i = 0; i < np; ++i)
   {
-    if (hit[i])
+    if (b.Hit[i])
     {
       edges.emplace_back(pairs[i].second, pairs[i].first);
     }
@@ -354,53 +374,59 @@ void DecidePairs(const Geometry& g, const View& v,
 }
 }
 
-void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
-  std::vector<std::pair<vtkIdType, vtkIdType>>& edges, PairStats& stats)
+BoundaryPairs::BoundaryPairs()
+  : B(new Buffers)
+{
+}
+
+BoundaryPairs::~BoundaryPairs() = default;
+
+void BoundaryPairs::Edges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
+  CellPairs& edges, PairStats& stats)
 {
   const vtkIdType nf = static_cast<vtkIdType>(faces.size());
   if (nf < 2)
   {
     return;
   }
-  std::vector<FaceData> data(nf);
+  Buffers& b = *this->B;
+  b.Data.resize(nf); // every record is filled
   vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
-      FillFaceData(g, v, faces[i], data[i]);
+      FillFaceData(g, v, faces[i], b.Data[i]);
     }
   });
-  const PairGrid grid = MakePairGrid(v, data);
-  std::vector<TileRange> ranges(nf);
+  const PairGrid grid = MakePairGrid(v, b.Data);
+  b.Ranges.resize(nf);
   vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
-      const float* b = data[i].Box;
-      ranges[i] = { grid.IX(b[0]), grid.IX(b[1]), grid.IY(b[2]), grid.IY(b[3]) };
+      const float* box = b.Data[i].Box;
+      b.Ranges[i] = { grid.IX(box[0]), grid.IX(box[1]), grid.IY(box[2]), grid.IY(box[3]) };
     }
   });
-  TileLists lists;
-  BinFaces(grid, faces, ranges, lists);
+  BinFaces(grid, faces, b.Ranges, b.Lists);
   // The ENTRY faces as contiguous records in tile order (the search streams
   // through them and rejects almost every candidate on them).
-  const std::vector<vtkIdType>& entryLists = lists.Items[1];
-  std::vector<EntryRecord> entries(entryLists.size());
+  const std::vector<vtkIdType>& entryLists = b.Lists.Items[1];
+  b.Entries.resize(entryLists.size());
   vtkSMPTools::For(0, static_cast<vtkIdType>(entryLists.size()), 4096,
     [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
         const vtkIdType gi = entryLists[i];
-        EntryRecord& e = entries[i];
-        std::copy(data[gi].Box, data[gi].Box + 4, e.Box);
-        e.Rear = data[gi].Rear;
+        EntryRecord& e = b.Entries[i];
+        std::copy(b.Data[gi].Box, b.Data[gi].Box + 4, e.Box);
+        e.Rear = b.Data[gi].Rear;
         e.Cell = faces[gi].Cell;
         e.Face = gi;
       }
     });
-  std::vector<std::pair<vtkIdType, vtkIdType>> pairs;
-  FindCellPairs(g, faces, data, grid, lists, entries, pairs, stats);
-  vtkSMPTools::Sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  stats.Tests += static_cast<vtkIdType>(pairs.size());
-  DecidePairs(g, v, pairs, edges);
+  FindCellPairs(g, faces, grid, b, stats);
+  vtkSMPTools::Sort(b.Pairs.begin(), b.Pairs.end());
+  b.Pairs.erase(std::unique(b.Pairs.begin(), b.Pairs.end()), b.Pairs.end());
+  stats.Tests += static_cast<vtkIdType>(b.Pairs.size());
+  DecidePairs(g, v, b, edges);
 }
 }

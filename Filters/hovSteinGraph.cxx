@@ -86,39 +86,6 @@ int EyeSide(const Geometry& g, const ViewFrame& f, vtkIdType c, int face)
   return mode == FaceNewell ? NewellSide(g, f, c, face) : EyeUndecided;
 }
 
-/// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
-void FaceDirections(const Geometry& g, const Topology& t, const View& v, std::vector<std::int8_t>& dir)
-{
-  const vtkIdType m = t.NumberOfInteriorFaces();
-  dir.resize(m);
-  vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      if (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i]))
-      {
-        dir[i] = 0;
-        continue;
-      }
-      // EyeSide(g, v.Frame, t.A[i], t.FaceA[i]), exact faces from the topology's record.
-      int side;
-      if (t.ModeA[i] == FaceExact)
-      {
-        const vtkIdType* ids = t.TripleA.data() + 3 * i;
-        const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *c = g.Point(ids[2]);
-        const ViewFrame& f = v.Frame;
-        const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
-        side = f.Parallel ? hov::Orient3dDirection(a, b, c, back) : hov::Orient3d(a, b, c, f.Eye);
-      }
-      else
-      {
-        side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
-      }
-      // Eye on B's side (outside A's face): B is nearer, A comes first.
-      dir[i] = static_cast<std::int8_t>(side == EyeOutside ? 1 : side == EyeInside ? -1 : side == EyeOn ? 0 : 2);
-    }
-  });
-}
-
 /// Face @p of cell @p c whose corners are those of face @p fa of cell @p a, or -1.
 int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
 {
@@ -141,11 +108,68 @@ int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
   return -1;
 }
 
-/// Counters of one block of cells in CellPass.
-struct BlockCounts
+/// Cells not ordered by the DAG (bad, hidden), back to front by rearmost depth,
+/// appended to @p order; returns the number of the others.
+vtkIdType AppendUnordered(const View& v, vtkIdType n, std::vector<vtkIdType>& order)
 {
-  vtkIdType Faces = 0, ExitCells = 0, EntryCells = 0, FaceEdges = 0, Undecided = 0;
-};
+  std::vector<vtkIdType> first;
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    if (!Ordered(v, c))
+    {
+      first.push_back(c);
+    }
+  }
+  std::vector<float> keys(first.size());
+  for (size_t i = 0; i < first.size(); ++i)
+  {
+    keys[i] = static_cast<float>(v.Rear[first[i]]);
+  }
+  RadixSortDescending(first, keys);
+  order.insert(order.end(), first.begin(), first.end());
+  return n - static_cast<vtkIdType>(first.size());
+}
+}
+
+/// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
+void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v)
+{
+  std::vector<std::int8_t>& dir = this->Directions;
+  const ViewFrame& f = v.Frame;
+  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
+  const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
+  const vtkIdType m = t.NumberOfInteriorFaces();
+  dir.resize(m);
+  vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      if (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i]))
+      {
+        dir[i] = 0;
+        continue;
+      }
+      // EyeSide(g, v.Frame, t.A[i], t.FaceA[i]), exact faces from the topology's record.
+      int side;
+      if (t.ModeA[i] == FaceExact)
+      {
+        side = t.PlaneA[i].Side(x, f.Parallel);
+        if (side == 0) // not decided by the filter: the exact predicate
+        {
+          const vtkIdType* ids = t.TripleA.data() + 3 * i;
+          const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *c = g.Point(ids[2]);
+          side = f.Parallel ? hov::Orient3dDirection(a, b, c, x) : hov::Orient3d(a, b, c, x);
+        }
+      }
+      else
+      {
+        side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
+      }
+      // Eye on B's side (outside A's face): B is nearer, A comes first.
+      dir[i] = static_cast<std::int8_t>(side == EyeOutside ? 1 : side == EyeInside ? -1 : side == EyeOn ? 0 : 2);
+    }
+  });
+}
+
 
 /**
  * One cell's part of the DAG and of step 3: its outgoing face edges and
@@ -154,10 +178,12 @@ struct BlockCounts
  * ENTRY (2), undecided: both (3); both sides of undecided interior faces: 3)
  * in @p roles (MaxFaces per cell).
  */
-void CellPart(const Geometry& g, const Topology& t, const View& v, const std::int8_t* dir,
-  vtkIdType c, Digraph& d, std::uint8_t* roles, BlockCounts& counts)
+void GraphSort::CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
+  BlockCounts& counts)
 {
-  std::uint8_t* r = roles + MaxFaces * c;
+  Digraph& d = this->Graph;
+  const std::int8_t* dir = this->Directions.data();
+  std::uint8_t* r = this->Roles.data() + MaxFaces * c;
   std::fill(r, r + MaxFaces, 0);
   d.FaceCount[c] = 0;
   d.InDegree[c] = 0;
@@ -218,25 +244,26 @@ void CellPart(const Geometry& g, const Topology& t, const View& v, const std::in
  * (CellPart) and the faces of step 3 (see hovSteinBoundaryPairs.h), in cell
  * order whatever the number of threads.
  */
-void CellPass(const Geometry& g, const Topology& t, const View& v, const std::vector<std::int8_t>& dir,
-  Digraph& d, std::vector<ViewFace>& faces, GraphStats& stats)
+void GraphSort::CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats)
 {
   const vtkIdType n = g.NumberOfCells;
+  Digraph& d = this->Graph;
   d.FaceOffsets = t.CellFaceOffsets.data();
   d.FaceTargets.resize(t.CellFaces.size());
   d.FaceCount.resize(n);
   d.InDegree.resize(n);
-  std::vector<std::uint8_t> roles(MaxFaces * n);
+  this->Roles.resize(MaxFaces * n); // every entry is written
   constexpr vtkIdType blockSize = 2048;
   const vtkIdType numBlocks = (n + blockSize - 1) / blockSize;
-  std::vector<BlockCounts> counts(numBlocks);
+  std::vector<BlockCounts>& counts = this->Counts;
+  counts.resize(numBlocks);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
       BlockCounts local; // not counts[blk]: neighbouring blocks share cache lines
       for (vtkIdType c = blk * blockSize; c < std::min(n, (blk + 1) * blockSize); ++c)
       {
-        CellPart(g, t, v, dir.data(), c, d, roles.data(), local);
+        this->CellPart(g, t, v, c, local);
       }
       counts[blk] = local;
     }
@@ -250,6 +277,7 @@ void CellPass(const Geometry& g, const Topology& t, const View& v, const std::ve
     stats.FaceEdges += counts[blk].FaceEdges;
     stats.Undecided += counts[blk].Undecided;
   }
+  std::vector<ViewFace>& faces = this->Faces;
   faces.resize(first[numBlocks]);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
@@ -259,7 +287,7 @@ void CellPass(const Geometry& g, const Topology& t, const View& v, const std::ve
       {
         for (int f = 0; f < MaxFaces; ++f)
         {
-          const std::uint8_t r = roles[MaxFaces * c + f];
+          const std::uint8_t r = this->Roles[MaxFaces * c + f];
           if (r)
           {
             *out++ = { c, static_cast<std::uint8_t>(f), r };
@@ -270,30 +298,7 @@ void CellPass(const Geometry& g, const Topology& t, const View& v, const std::ve
   });
 }
 
-/// Cells not ordered by the DAG (bad, hidden), back to front by rearmost depth,
-/// appended to @p order; returns the number of the others.
-vtkIdType AppendUnordered(const View& v, vtkIdType n, std::vector<vtkIdType>& order)
-{
-  std::vector<vtkIdType> first;
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    if (!Ordered(v, c))
-    {
-      first.push_back(c);
-    }
-  }
-  std::vector<float> keys(first.size());
-  for (size_t i = 0; i < first.size(); ++i)
-  {
-    keys[i] = static_cast<float>(v.Rear[first[i]]);
-  }
-  RadixSortDescending(first, keys);
-  order.insert(order.end(), first.begin(), first.end());
-  return n - static_cast<vtkIdType>(first.size());
-}
-}
-
-void SortByGraph(const Geometry& g, const Topology& t, const View& v,
+void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   std::vector<vtkIdType>& order, GraphStats& stats)
 {
   const vtkIdType n = g.NumberOfCells;
@@ -305,18 +310,15 @@ void SortByGraph(const Geometry& g, const Topology& t, const View& v,
   {
     return;
   }
-  std::vector<std::int8_t> dir;
-  FaceDirections(g, t, v, dir);
-  Digraph d;
-  std::vector<ViewFace> faces;
-  CellPass(g, t, v, dir, d, faces, stats);
-  std::vector<std::pair<vtkIdType, vtkIdType>> extra;
+  this->FaceDirections(g, t, v);
+  this->CellPass(g, t, v, stats);
+  this->Extra.clear();
   PairStats pairStats;
-  BoundaryEdges(g, v, faces, extra, pairStats);
+  this->Boundary.Edges(g, v, this->Faces, this->Extra, pairStats);
   stats.Tests = pairStats.Tests;
   stats.FacePairs = pairStats.FacePairs;
-  stats.ObstructEdges = static_cast<vtkIdType>(extra.size());
-  d.AddExtraEdges(extra, n);
-  TopologicalOrder(d, v, numOrdered, order, stats);
+  stats.ObstructEdges = static_cast<vtkIdType>(this->Extra.size());
+  this->Graph.AddExtraEdges(this->Extra, n);
+  TopologicalOrder(this->Graph, v, numOrdered, order, stats);
 }
 }

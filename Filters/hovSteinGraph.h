@@ -28,13 +28,18 @@
  *    topological order of the condensation, each component's cells by
  *    rearmost depth; nontrivial components are reported as cycles.
  *
- * Thread safety: SortByGraph runs in parallel internally; not re-entrant.
+ * GraphSort keeps its per-view buffers between views (a re-sort allocates
+ * and page-faults nothing once the first view has sized them).
+ *
+ * Thread safety: GraphSort::Sort runs in parallel internally; one sort per
+ * GraphSort at a time.
  */
 #ifndef hovSteinGraph_h
 #define hovSteinGraph_h
 
-#include "hovSteinTopology.h" // Topology
-#include "hovSteinView.h"     // Geometry, View
+#include "hovSteinBoundaryPairs.h" // BoundaryPairs, ViewFace
+#include "hovSteinTopology.h"      // Topology
+#include "hovSteinView.h"          // Geometry, View
 
 #include <cstdint> // std::int32_t, std::uint8_t
 #include <utility> // std::pair
@@ -53,10 +58,6 @@ struct GraphStats
   vtkIdType Cycles = 0;              ///< nontrivial strongly connected components
   std::vector<vtkIdType> CycleCells; ///< their cells, each id once
 };
-
-/// Back-to-front order of all cells of @p g for the view @p v.
-void SortByGraph(const Geometry& g, const Topology& t, const View& v,
-  std::vector<vtkIdType>& order, GraphStats& stats);
 
 /// Cells that take part in the DAG (the others are output first).
 inline bool Ordered(const View& v, vtkIdType c)
@@ -92,6 +93,34 @@ struct Digraph
   }
   /// Adds the edges (from, to) of @p edges (sorted by to) to the CSR and the in-degrees.
   void AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n);
+};
+
+/// The ADJACENCY_GRAPH sort with its per-view buffers.
+class GraphSort
+{
+public:
+  /// Back-to-front order of all cells of @p g for the view @p v.
+  void Sort(const Geometry& g, const Topology& t, const View& v, std::vector<vtkIdType>& order,
+    GraphStats& stats);
+
+private:
+  /// Counters of one block of cells in CellPass.
+  struct BlockCounts
+  {
+    vtkIdType Faces = 0, ExitCells = 0, EntryCells = 0, FaceEdges = 0, Undecided = 0;
+  };
+  void FaceDirections(const Geometry& g, const Topology& t, const View& v);
+  void CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats);
+  void CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
+    BlockCounts& counts);
+
+  std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
+  std::vector<std::uint8_t> Roles;     ///< MaxFaces per cell: the face's role in step 2
+  std::vector<BlockCounts> Counts;
+  std::vector<ViewFace> Faces;
+  Digraph Graph;
+  std::vector<std::pair<vtkIdType, vtkIdType>> Extra;
+  BoundaryPairs Boundary;
 };
 
 /**

@@ -210,13 +210,16 @@ void Topology::Build(const Geometry& g)
   const vtkIdType numInterior = this->NumberOfInteriorFaces();
   this->ModeA.resize(numInterior);
   this->TripleA.assign(3 * numInterior, 0);
+  this->PlaneA.resize(numInterior);
   vtkSMPTools::For(0, numInterior, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       this->ModeA[i] = g.FaceCode(this->A[i], this->FaceA[i]) & 3;
       if (this->ModeA[i] == FaceExact)
       {
-        g.ExactTriple(this->A[i], this->FaceA[i], this->TripleA.data() + 3 * i);
+        vtkIdType* t = this->TripleA.data() + 3 * i;
+        g.ExactTriple(this->A[i], this->FaceA[i], t);
+        this->PlaneA[i].Set(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]));
       }
     }
   });

@@ -19,7 +19,8 @@
 #ifndef hovSteinTopology_h
 #define hovSteinTopology_h
 
-#include "hovSteinGeometry.h" // Geometry
+#include "hovSteinGeometry.h"    // Geometry
+#include "hovSteinPlaneFilter.h" // FilteredPlane
 
 #include <cstdint> // std::uint8_t
 #include <vector>  // storage
@@ -36,6 +37,7 @@ struct Topology
   /// side test then reads one contiguous record instead of the cell's tables).
   std::vector<std::uint8_t> ModeA;
   std::vector<vtkIdType> TripleA; ///< 3 per interior face
+  std::vector<FilteredPlane> PlaneA; ///< per interior face: the exact face's filtered plane
   /// Per cell: its interior faces (CSR, in increasing interior face index) as
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
   std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
