@@ -110,8 +110,9 @@ int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
 
 /// Cells not ordered by the DAG (bad, hidden), back to front by rearmost depth,
 /// appended to @p order; returns the number of the others.
-vtkIdType AppendUnordered(const View& v, vtkIdType n, std::vector<vtkIdType>& order)
+vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdType>& order)
 {
+  const vtkIdType n = g.NumberOfCells;
   std::vector<vtkIdType> first;
   for (vtkIdType c = 0; c < n; ++c)
   {
@@ -123,7 +124,7 @@ vtkIdType AppendUnordered(const View& v, vtkIdType n, std::vector<vtkIdType>& or
   std::vector<float> keys(first.size());
   for (size_t i = 0; i < first.size(); ++i)
   {
-    keys[i] = static_cast<float>(v.Rear[first[i]]);
+    keys[i] = static_cast<float>(v.RearDepth(g, first[i]));
   }
   RadixSortDescending(first, keys);
   order.insert(order.end(), first.begin(), first.end());
@@ -305,7 +306,7 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   stats = GraphStats();
   order.clear();
   order.reserve(n + 1); // + 1: see TopologicalOrder
-  const vtkIdType numOrdered = AppendUnordered(v, n, order);
+  const vtkIdType numOrdered = AppendUnordered(g, v, order);
   if (numOrdered == 0)
   {
     return;
@@ -319,6 +320,6 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   stats.FacePairs = pairStats.FacePairs;
   stats.ObstructEdges = static_cast<vtkIdType>(this->Extra.size());
   this->Graph.AddExtraEdges(this->Extra, n);
-  TopologicalOrder(this->Graph, v, numOrdered, order, stats);
+  TopologicalOrder(this->Graph, g, v, numOrdered, order, stats);
 }
 }

@@ -129,7 +129,7 @@ private:
  * component, back to front by rearmost depth (ties by id); appends to
  * @p order. Consumes d.InDegree. Cycles: see the file doc.
  */
-void TopologicalOrder(Digraph& d, const View& v, vtkIdType numOrdered,
+void TopologicalOrder(Digraph& d, const Geometry& g, const View& v, vtkIdType numOrdered,
   std::vector<vtkIdType>& order, GraphStats& stats);
 }
 

@@ -385,13 +385,16 @@ int Obstruction::RayTest(vtkIdType p, vtkIdType q) const
     dir[k] = f.Parallel ? f.Dop[k] : f.Dop[k] + centre[0] * f.Right[k] + centre[1] * f.Up[k];
   }
   double tp[2], tq[2];
+  double front, rear;
   if (!this->RayInterval(p, origin, dir, tp))
   {
-    tp[0] = tp[1] = 0.5 * (this->V.Front[p] + this->V.Rear[p]);
+    this->V.DepthRange(this->G, p, front, rear);
+    tp[0] = tp[1] = 0.5 * (front + rear);
   }
   if (!this->RayInterval(q, origin, dir, tq))
   {
-    tq[0] = tq[1] = 0.5 * (this->V.Front[q] + this->V.Rear[q]);
+    this->V.DepthRange(this->G, q, front, rear);
+    tq[0] = tq[1] = 0.5 * (front + rear);
   }
   const double mp = tp[0] + tp[1], mq = tq[0] + tq[1];
   return mp < mq ? 1 : (mq < mp ? -1 : 0);

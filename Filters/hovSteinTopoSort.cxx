@@ -18,6 +18,24 @@ inline void Prefetch(const void* p)
 #endif
 }
 
+/// Cells [first, last) back to front by rearmost depth, ties by id.
+void SortBackToFront(const Geometry& g, const View& v, vtkIdType* first, vtkIdType* last)
+{
+  std::vector<std::pair<double, vtkIdType>> keyed(last - first);
+  for (vtkIdType* c = first; c != last; ++c)
+  {
+    keyed[c - first] = { v.RearDepth(g, *c), *c };
+  }
+  std::sort(keyed.begin(), keyed.end(), [](const std::pair<double, vtkIdType>& a,
+                                          const std::pair<double, vtkIdType>& b) {
+    return a.first > b.first || (a.first == b.first && a.second < b.second);
+  });
+  for (vtkIdType* c = first; c != last; ++c)
+  {
+    *c = keyed[c - first].second;
+  }
+}
+
 /**
  * Kahn's algorithm: @p queue holds the @p tail sources and has room for every
  * cell of the DAG plus one; appends each cell whose in-degree drops to zero (FIFO) and
@@ -162,13 +180,10 @@ void Digraph::AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& 
   }
 }
 
-void TopologicalOrder(Digraph& d, const View& v, vtkIdType numOrdered,
+void TopologicalOrder(Digraph& d, const Geometry& g, const View& v, vtkIdType numOrdered,
   std::vector<vtkIdType>& order, GraphStats& stats)
 {
   const vtkIdType n = static_cast<vtkIdType>(d.FaceCount.size());
-  const std::vector<double>& rear = v.Rear;
-  // Back to front by rearmost depth, ties by id.
-  auto behind = [&](vtkIdType a, vtkIdType b) { return rear[a] > rear[b] || (rear[a] == rear[b] && a < b); };
   // Kahn's algorithm with @p order itself as the FIFO queue.
   const size_t start = order.size();
   for (vtkIdType c = 0; c < n; ++c)
@@ -178,7 +193,7 @@ void TopologicalOrder(Digraph& d, const View& v, vtkIdType numOrdered,
       order.push_back(c);
     }
   }
-  std::sort(order.begin() + start, order.end(), behind);
+  SortBackToFront(g, v, order.data() + start, order.data() + order.size());
   const vtkIdType sources = static_cast<vtkIdType>(order.size() - start);
   order.resize(start + numOrdered + 1); // + 1: Kahn's branch-free push writes one past
   const vtkIdType numDone = Kahn(d, order.data() + start, sources);
@@ -203,7 +218,7 @@ void TopologicalOrder(Digraph& d, const View& v, vtkIdType numOrdered,
   for (size_t k = compStart.size() - 1; k-- > 0;)
   {
     auto first = comps.begin() + compStart[k], last = comps.begin() + compStart[k + 1];
-    std::sort(first, last, behind);
+    SortBackToFront(g, v, comps.data() + compStart[k], comps.data() + compStart[k + 1]);
     order.insert(order.end(), first, last);
     if (last - first > 1)
     {

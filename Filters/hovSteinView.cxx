@@ -179,7 +179,60 @@ void View::CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end)
   }
 }
 
-void View::Setup(const Geometry& g, vtkCamera* camera)
+void View::CellStatus(const Geometry& g, vtkIdType begin, vtkIdType end, bool allValid)
+{
+  const std::uint8_t* kinds = g.Kinds.data();
+  std::uint8_t* status = this->Status.data();
+  if (allValid)
+  {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      status[c] = kinds[c] == KindBad ? StatusBad : StatusVisible;
+    }
+    return;
+  }
+  const std::uint8_t* valid = this->Valid.data();
+  for (vtkIdType c = begin; c < end; ++c)
+  {
+    const vtkIdType* ids = g.CellCorners(c);
+    const int m = g.NumberOfCorners(c);
+    int numValid = 0;
+    for (int i = 0; i < m; ++i)
+    {
+      numValid += ids[i] >= 0 && valid[ids[i]];
+    }
+    status[c] = kinds[c] == KindBad ? StatusBad
+      : numValid == m               ? StatusVisible
+      : numValid == 0               ? StatusHidden
+                                    : StatusStraddle;
+  }
+}
+
+void View::DepthRange(const Geometry& g, vtkIdType c, double& front, double& rear) const
+{
+  if (this->HasCellExtents || this->ClipIndex[c] >= 0)
+  {
+    front = this->Front[c];
+    rear = this->Rear[c];
+    return;
+  }
+  // As CellExtents.
+  const vtkIdType* ids = g.CellCorners(c);
+  const int m = g.NumberOfCorners(c);
+  double zmin = VTK_DOUBLE_MAX, zmax = -VTK_DOUBLE_MAX;
+  for (int i = 0; i < m; ++i)
+  {
+    if (ids[i] >= 0)
+    {
+      zmin = std::min(zmin, this->Proj[3 * ids[i] + 2]);
+      zmax = std::max(zmax, this->Proj[3 * ids[i] + 2]);
+    }
+  }
+  front = zmin;
+  rear = std::isnan(zmax) ? VTK_DOUBLE_MAX : zmax;
+}
+
+void View::Setup(const Geometry& g, vtkCamera* camera, bool cellExtents)
 {
   this->Frame.FromCamera(camera, g.Diagonal);
   const ViewFrame& f = this->Frame;
@@ -214,12 +267,26 @@ void View::Setup(const Geometry& g, vtkCamera* camera)
   this->Box.resize(4 * n);
   this->ClipIndex.assign(n, -1);
   this->Clipped.clear();
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) { this->CellExtents(g, begin, end); });
+  this->HasCellExtents = cellExtents;
+  if (cellExtents)
+  {
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) { this->CellExtents(g, begin, end); });
+  }
+  else
+  {
+    const bool allValid = std::find(this->Valid.begin(), this->Valid.end(), 0) == this->Valid.end();
+    vtkSMPTools::For(
+      0, n, [&](vtkIdType begin, vtkIdType end) { this->CellStatus(g, begin, end, allValid); });
+  }
   for (vtkIdType c = 0; c < n; ++c)
   {
     if (this->Status[c] != StatusStraddle)
     {
       continue;
+    }
+    if (!cellExtents)
+    {
+      this->CellExtents(g, c, c + 1); // Rear (Front and Box follow)
     }
     this->ClipIndex[c] = static_cast<int>(this->Clipped.size());
     this->Clipped.push_back(ClipCell(g, *this, c));

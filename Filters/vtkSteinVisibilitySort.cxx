@@ -108,7 +108,9 @@ void vtkSteinVisibilitySort::InitTraversal()
     this->LastSortSeconds = Seconds(t0);
     return; // nothing changed: hand out the same order again
   }
-  im.View.Setup(im.Geometry, this->Camera);
+  // The adjacency graph needs the cells' depth ranges and extents only for a
+  // few cells (View::DepthRange); the merge needs them all.
+  im.View.Setup(im.Geometry, this->Camera, this->Algorithm != ADJACENCY_GRAPH);
   if (this->Algorithm == ADJACENCY_GRAPH)
   {
     this->SortGraph();
