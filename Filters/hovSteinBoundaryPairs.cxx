@@ -153,18 +153,18 @@ inline bool Disjoint(const float* a, const float* b)
   return a[1] <= b[0] || b[1] <= a[0] || a[3] <= b[2] || b[3] <= a[2];
 }
 
-/// A face in the ENTRY lists of the tiles: what the pair search rejects on,
-/// stored contiguously in tile order (the search streams through it).
-struct EntryRecord
+/// The tiles a face's extents cover: ix0, ix1, iy0, iy1 (inclusive).
+using TileRange = std::array<int, 4>;
+
+/// A face in the lists of the tiles: what the pair search rejects on, stored
+/// contiguously in tile order (the search streams through them).
+struct TileRecord
 {
   float Box[4];
-  double Rear;
+  double Depth; ///< ENTRY: rear depth; EXIT: front depth less the rounding margin
   vtkIdType Cell;
   vtkIdType Face; ///< index into the faces
 };
-
-/// The tiles a face's extents cover: ix0, ix1, iy0, iy1 (inclusive).
-using TileRange = std::array<int, 4>;
 
 /// Tile lists (CSR) of the EXIT ([0]) and ENTRY ([1]) faces, face indices in
 /// increasing order within each tile.
@@ -261,25 +261,24 @@ struct BoundaryPairs::Buffers
   std::vector<FaceData> Data;
   std::vector<TileRange> Ranges;
   TileLists Lists;
-  std::vector<EntryRecord> Entries;
   std::vector<CellPairs> BlockPairs;
   std::vector<vtkIdType> BlockCount;
   CellPairs Pairs;
   std::vector<std::uint8_t> Used, Hit;
   std::vector<vtkIdType> Cells;
   HullCache Hulls;
+  std::vector<TileRecord> Records[2]; ///< EXIT, ENTRY: beside Lists.Items
 };
 
 namespace
 {
 /**
  * The cell pairs (EXIT cell, ENTRY cell) of the face pairs that pass the tests
- * of the file doc, per tile the EXIT faces against the ENTRY records (each
+ * of the file doc, per tile the EXIT records against the ENTRY records (each
  * face pair in the tile of the lower-left corner of the intersection of the
  * extents), in parallel over fixed blocks of tiles; appended in tile order.
  */
-void FindCellPairs(const Geometry& g, const std::vector<ViewFace>& faces, const PairGrid& grid,
-  BoundaryPairs::Buffers& b, PairStats& stats)
+void FindCellPairs(const Geometry& g, const PairGrid& grid, BoundaryPairs::Buffers& b, PairStats& stats)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
@@ -297,27 +296,25 @@ void FindCellPairs(const Geometry& g, const std::vector<ViewFace>& faces, const 
       for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
       {
         const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
-        const EntryRecord* first = b.Entries.data() + entryStart[tile];
-        const EntryRecord* last = b.Entries.data() + entryStart[tile + 1];
+        const TileRecord* first = b.Records[1].data() + entryStart[tile];
+        const TileRecord* last = b.Records[1].data() + entryStart[tile + 1];
         for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
         {
-          const vtkIdType fi = b.Lists.Items[0][i];
-          const FaceData& F = b.Data[fi];
-          const vtkIdType a = faces[fi].Cell;
-          const double front = F.Front - 1e-9 * (std::abs(F.Front) + g.Diagonal);
-          for (const EntryRecord* G = first; G != last; ++G)
+          const TileRecord& F = b.Records[0][i];
+          for (const TileRecord* G = first; G != last; ++G)
           {
-            if (G->Cell == a || G->Rear < front || Disjoint(F.Box, G->Box) ||
+            if (G->Cell == F.Cell || G->Depth < F.Depth || Disjoint(F.Box, G->Box) ||
               grid.IX(std::max(F.Box[0], G->Box[0])) != ix ||
               grid.IY(std::max(F.Box[2], G->Box[2])) != iy)
             {
               continue;
             }
             ++count;
-            const FaceData& D = b.Data[G->Face];
-            if (SomeCornerOutside(g, F, D) && SomeCornerOutside(g, D, F))
+            const FaceData& DF = b.Data[F.Face];
+            const FaceData& DG = b.Data[G->Face];
+            if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
             {
-              found.emplace_back(a, G->Cell);
+              found.emplace_back(F.Cell, G->Cell);
             }
           }
         }
@@ -407,23 +404,28 @@ void BoundaryPairs::Edges(const Geometry& g, const View& v, const std::vector<Vi
     }
   });
   BinFaces(grid, faces, b.Ranges, b.Lists);
-  // The ENTRY faces as contiguous records in tile order (the search streams
-  // through them and rejects almost every candidate on them).
-  const std::vector<vtkIdType>& entryLists = b.Lists.Items[1];
-  b.Entries.resize(entryLists.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(entryLists.size()), 4096,
-    [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const vtkIdType gi = entryLists[i];
-        EntryRecord& e = b.Entries[i];
-        std::copy(b.Data[gi].Box, b.Data[gi].Box + 4, e.Box);
-        e.Rear = b.Data[gi].Rear;
-        e.Cell = faces[gi].Cell;
-        e.Face = gi;
-      }
-    });
-  FindCellPairs(g, faces, grid, b, stats);
+  // The EXIT and ENTRY faces as contiguous records in tile order (the search
+  // streams through them and rejects almost every candidate on them).
+  for (int k = 0; k < 2; ++k)
+  {
+    const std::vector<vtkIdType>& items = b.Lists.Items[k];
+    std::vector<TileRecord>& records = b.Records[k];
+    records.resize(items.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(items.size()), 4096,
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const vtkIdType fi = items[i];
+          const FaceData& d = b.Data[fi];
+          TileRecord& r = records[i];
+          std::copy(d.Box, d.Box + 4, r.Box);
+          r.Depth = k == 1 ? d.Rear : d.Front - 1e-9 * (std::abs(d.Front) + g.Diagonal);
+          r.Cell = faces[fi].Cell;
+          r.Face = fi;
+        }
+      });
+  }
+  FindCellPairs(g, grid, b, stats);
   vtkSMPTools::Sort(b.Pairs.begin(), b.Pairs.end());
   b.Pairs.erase(std::unique(b.Pairs.begin(), b.Pairs.end()), b.Pairs.end());
   stats.Tests += static_cast<vtkIdType>(b.Pairs.size());

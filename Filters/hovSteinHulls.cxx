@@ -70,38 +70,53 @@ bool InHull(const double hull[][2], int n, const double* x)
 
 int ClipPolygon(double poly[][2], int n, const double clip[][2], int m)
 {
-  double tmp[2 * MaxVisiblePoints][2];
+  // Each vertex's side once per clip edge; edges with every vertex inside
+  // leave the polygon as it is; two buffers in turn instead of copies.
+  double buffer[HullCapacity][2], side[HullCapacity];
+  double(*in)[2] = poly;
+  double(*out)[2] = buffer;
+  n = std::min(n, MaxVisiblePoints);
   for (int e = 0; e < m && n > 0; ++e)
   {
     const double* a = clip[e];
-    const double* b = clip[(e + 1) % m];
-    auto side = [&](const double* x) {
-      return (b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0]);
-    };
+    const double* b = clip[e + 1 < m ? e + 1 : 0];
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    bool inside = true;
+    for (int i = 0; i < n; ++i)
+    {
+      side[i] = dx * (in[i][1] - a[1]) - dy * (in[i][0] - a[0]);
+      inside = inside && side[i] >= 0;
+    }
+    if (inside)
+    {
+      continue;
+    }
     int k = 0;
     for (int i = 0; i < n && k < 2 * MaxVisiblePoints - 2; ++i)
     {
-      const double* u = poly[i];
-      const double* v = poly[(i + 1) % n];
-      const double su = side(u), sv = side(v);
+      const int j = i + 1 < n ? i + 1 : 0;
+      const double su = side[i], sv = side[j];
       if (su >= 0)
       {
-        tmp[k][0] = u[0];
-        tmp[k++][1] = u[1];
+        out[k][0] = in[i][0];
+        out[k++][1] = in[i][1];
       }
       if ((su >= 0) != (sv >= 0))
       {
         const double t = su / (su - sv);
-        tmp[k][0] = u[0] + t * (v[0] - u[0]);
-        tmp[k++][1] = u[1] + t * (v[1] - u[1]);
+        out[k][0] = in[i][0] + t * (in[j][0] - in[i][0]);
+        out[k++][1] = in[i][1] + t * (in[j][1] - in[i][1]);
       }
     }
     n = std::min(k, MaxVisiblePoints);
-    std::copy(&tmp[0][0], &tmp[0][0] + 2 * n, &poly[0][0]);
+    std::swap(in, out);
+  }
+  if (in != poly)
+  {
+    std::copy(&in[0][0], &in[0][0] + 2 * n, &poly[0][0]);
   }
   return n;
 }
-
 
 void HullCache::Build(const Geometry& g, const View& v, const std::vector<vtkIdType>& cells)
 {
