@@ -156,7 +156,8 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
         side = t.PlaneA[i].Side(x, f.Parallel);
         if (side == 0) // not decided by the filter: the exact predicate
         {
-          const vtkIdType* ids = t.TripleA.data() + 3 * i;
+          vtkIdType ids[3];
+          g.ExactTriple(t.A[i], t.FaceA[i], ids);
           const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *c = g.Point(ids[2]);
           side = f.Parallel ? hov::Orient3dDirection(a, b, c, x) : hov::Orient3d(a, b, c, x);
         }
@@ -179,27 +180,76 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
  * ENTRY (2), undecided: both (3); both sides of undecided interior faces: 3)
  * in @p roles (MaxFaces per cell).
  */
+namespace
+{
+/// Role in step 2 of a face with the eye on @p side: EXIT 1, ENTRY 2, both 3, none 0.
+inline std::uint8_t Role(int side)
+{
+  return side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
+}
+
+constexpr vtkIdType BoundaryBlock = 4096; ///< boundary faces per block
+constexpr vtkIdType CellBlock = 2048;     ///< cells per block
+}
+
+/**
+ * The role of every boundary face (0 for cells not ordered), exact faces from
+ * their filtered planes, in parallel over fixed blocks; per block the number
+ * of faces with a role (RoleStart, then made a prefix sum).
+ */
+void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& v)
+{
+  const vtkIdType nb = t.NumberOfBoundaryFaces;
+  const vtkIdType numBlocks = (nb + BoundaryBlock - 1) / BoundaryBlock;
+  this->Roles.resize(nb);
+  this->RoleStart.assign(numBlocks + 1, 0);
+  const ViewFrame& f = v.Frame;
+  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
+  const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      vtkIdType count = 0;
+      for (vtkIdType k = blk * BoundaryBlock; k < std::min(nb, (blk + 1) * BoundaryBlock); ++k)
+      {
+        const Topology::BoundaryFace& bf = t.Boundary[k];
+        std::uint8_t role = 0;
+        if (Ordered(v, bf.Cell))
+        {
+          int side = bf.Mode == FaceExact ? bf.Plane.Side(x, f.Parallel) : 0;
+          if (side == 0) // not decided by the filter, or not an exact face
+          {
+            side = EyeSide(g, f, bf.Cell, bf.Face);
+          }
+          role = Role(side);
+        }
+        this->Roles[k] = role;
+        count += role != 0;
+      }
+      this->RoleStart[blk + 1] = count;
+    }
+  });
+  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
+  {
+    this->RoleStart[blk + 1] += this->RoleStart[blk];
+  }
+}
+
+/**
+ * One cell's part of the DAG: its outgoing face edges and incoming face edge
+ * count (from Directions); both sides of its undecided interior faces go to
+ * @p undecided (role 3).
+ */
 void GraphSort::CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
-  BlockCounts& counts)
+  BlockCounts& counts, std::vector<ViewFace>& undecided)
 {
   Digraph& d = this->Graph;
   const std::int8_t* dir = this->Directions.data();
-  std::uint8_t* r = this->Roles.data() + MaxFaces * c;
-  std::fill(r, r + MaxFaces, 0);
   d.FaceCount[c] = 0;
   d.InDegree[c] = 0;
   if (!Ordered(v, c))
   {
     return;
-  }
-  const std::uint8_t mask = t.BoundaryFaces[c];
-  for (int f = 0; mask && f < MaxFaces; ++f)
-  {
-    if (mask & (1 << f))
-    {
-      const int side = EyeSide(g, v.Frame, c, f);
-      r[f] = side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
-    }
   }
   const vtkIdType first = t.CellFaceOffsets[c], last = t.CellFaceOffsets[c + 1];
   const vtkIdType* faces = t.CellFaces.data();
@@ -222,81 +272,102 @@ void GraphSort::CellPart(const Geometry& g, const Topology& t, const View& v, vt
       const int f = isB ? MatchingFace(g, t.A[i], t.FaceA[i], c) : t.FaceA[i];
       if (f >= 0)
       {
-        r[f] = 3;
+        undecided.push_back({ c, static_cast<std::uint8_t>(f), 3 });
       }
       counts.Undecided += !isB;
     }
   }
   d.FaceCount[c] = static_cast<std::uint8_t>(numOut);
   d.InDegree[c] = numIn;
-  std::uint8_t cellRoles = 0;
-  for (int f = 0; f < MaxFaces; ++f)
-  {
-    cellRoles |= r[f];
-    counts.Faces += r[f] != 0;
-  }
   counts.FaceEdges += numOut;
-  counts.ExitCells += cellRoles & 1;
-  counts.EntryCells += (cellRoles >> 1) & 1;
 }
 
 /**
- * Per cell, in parallel over fixed blocks of cells: the face edges of the DAG
- * (CellPart) and the faces of step 3 (see hovSteinBoundaryPairs.h), in cell
- * order whatever the number of threads.
+ * In parallel over fixed blocks of cells: the roles of the boundary faces,
+ * the face edges of the DAG (CellPart), then the faces of step 3 (see
+ * hovSteinBoundaryPairs.h) in cell order whatever the number of threads.
  */
 void GraphSort::CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats)
 {
+  this->BoundaryRoles(g, t, v);
   const vtkIdType n = g.NumberOfCells;
   Digraph& d = this->Graph;
   d.FaceOffsets = t.CellFaceOffsets.data();
   d.FaceTargets.resize(t.CellFaces.size());
   d.FaceCount.resize(n);
   d.InDegree.resize(n);
-  this->Roles.resize(MaxFaces * n); // every entry is written
-  constexpr vtkIdType blockSize = 2048;
-  const vtkIdType numBlocks = (n + blockSize - 1) / blockSize;
-  std::vector<BlockCounts>& counts = this->Counts;
-  counts.resize(numBlocks);
+  const vtkIdType numBlocks = (n + CellBlock - 1) / CellBlock;
+  this->Counts.resize(numBlocks);
+  this->Undecided.resize(numBlocks);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
-      BlockCounts local; // not counts[blk]: neighbouring blocks share cache lines
-      for (vtkIdType c = blk * blockSize; c < std::min(n, (blk + 1) * blockSize); ++c)
+      // Locals, not Counts[blk] / Undecided[blk]: neighbouring blocks share cache lines.
+      BlockCounts local;
+      std::vector<ViewFace> undecided;
+      undecided.swap(this->Undecided[blk]); // its capacity
+      undecided.clear();
+      for (vtkIdType c = blk * CellBlock; c < std::min(n, (blk + 1) * CellBlock); ++c)
       {
-        this->CellPart(g, t, v, c, local);
+        this->CellPart(g, t, v, c, local, undecided);
       }
-      counts[blk] = local;
+      this->Counts[blk] = local;
+      this->Undecided[blk].swap(undecided);
     }
   });
-  std::vector<vtkIdType> first(numBlocks + 1, 0);
-  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
+  for (const BlockCounts& counts : this->Counts)
   {
-    first[blk + 1] = first[blk] + counts[blk].Faces;
-    stats.ExitCells += counts[blk].ExitCells;
-    stats.EntryCells += counts[blk].EntryCells;
-    stats.FaceEdges += counts[blk].FaceEdges;
-    stats.Undecided += counts[blk].Undecided;
+    stats.FaceEdges += counts.FaceEdges;
+    stats.Undecided += counts.Undecided;
   }
+  this->CollectFaces(t, stats);
+}
+
+/**
+ * The faces of step 3: the boundary faces with a role, compacted in parallel,
+ * and (rarely) the undecided interior faces merged in by (cell, face); the
+ * counts of cells with EXIT and ENTRY faces.
+ */
+void GraphSort::CollectFaces(const Topology& t, GraphStats& stats)
+{
   std::vector<ViewFace>& faces = this->Faces;
-  faces.resize(first[numBlocks]);
+  const vtkIdType nb = t.NumberOfBoundaryFaces;
+  const vtkIdType numBlocks = static_cast<vtkIdType>(this->RoleStart.size()) - 1;
+  faces.resize(this->RoleStart[numBlocks]);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
-      ViewFace* out = faces.data() + first[blk];
-      for (vtkIdType c = blk * blockSize; c < std::min(n, (blk + 1) * blockSize); ++c)
+      ViewFace* out = faces.data() + this->RoleStart[blk];
+      for (vtkIdType k = blk * BoundaryBlock; k < std::min(nb, (blk + 1) * BoundaryBlock); ++k)
       {
-        for (int f = 0; f < MaxFaces; ++f)
+        if (this->Roles[k])
         {
-          const std::uint8_t r = this->Roles[MaxFaces * c + f];
-          if (r)
-          {
-            *out++ = { c, static_cast<std::uint8_t>(f), r };
-          }
+          *out++ = { t.Boundary[k].Cell, t.Boundary[k].Face, this->Roles[k] };
         }
       }
     }
   });
+  if (stats.Undecided > 0)
+  {
+    for (const std::vector<ViewFace>& marks : this->Undecided)
+    {
+      faces.insert(faces.end(), marks.begin(), marks.end());
+    }
+    std::sort(faces.begin(), faces.end(), [](const ViewFace& a, const ViewFace& b) {
+      return a.Cell < b.Cell || (a.Cell == b.Cell && a.Face < b.Face);
+    });
+  }
+  std::uint8_t cellRoles = 0;
+  for (size_t k = 0; k < faces.size(); ++k)
+  {
+    cellRoles |= faces[k].Roles;
+    if (k + 1 == faces.size() || faces[k + 1].Cell != faces[k].Cell)
+    {
+      stats.ExitCells += cellRoles & 1;
+      stats.EntryCells += (cellRoles >> 1) & 1;
+      cellRoles = 0;
+    }
+  }
 }
 
 void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,

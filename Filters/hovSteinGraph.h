@@ -107,16 +107,20 @@ private:
   /// Counters of one block of cells in CellPass.
   struct BlockCounts
   {
-    vtkIdType Faces = 0, ExitCells = 0, EntryCells = 0, FaceEdges = 0, Undecided = 0;
+    vtkIdType FaceEdges = 0, Undecided = 0;
   };
   void FaceDirections(const Geometry& g, const Topology& t, const View& v);
+  void BoundaryRoles(const Geometry& g, const Topology& t, const View& v);
   void CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats);
   void CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
-    BlockCounts& counts);
+    BlockCounts& counts, std::vector<ViewFace>& undecided);
+  void CollectFaces(const Topology& t, GraphStats& stats);
 
   std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
-  std::vector<std::uint8_t> Roles;     ///< MaxFaces per cell: the face's role in step 2
+  std::vector<std::uint8_t> Roles;     ///< per boundary face: its role in step 2 (0: none)
+  std::vector<vtkIdType> RoleStart;    ///< per block of boundary faces + 1: first face in Faces
   std::vector<BlockCounts> Counts;
+  std::vector<std::vector<ViewFace>> Undecided; ///< per block of cells: undecided interior faces
   std::vector<ViewFace> Faces;
   Digraph Graph;
   std::vector<std::pair<vtkIdType, vtkIdType>> Extra;
