@@ -141,10 +141,11 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
   const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
+  const bool allOrdered = v.AllOrdered; // skips two random reads per face
   vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
-      if (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i]))
+      if (!allOrdered && (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i])))
       {
         dir[i] = 0;
         continue;
@@ -166,8 +167,9 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
       {
         side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
       }
-      // Eye on B's side (outside A's face): B is nearer, A comes first.
-      dir[i] = static_cast<std::int8_t>(side == EyeOutside ? 1 : side == EyeInside ? -1 : side == EyeOn ? 0 : 2);
+      // Eye on B's side (outside A's face, EyeOutside = -1): B is nearer, A
+      // comes first (1); EyeInside (1): -1; EyeOn: 0 (no branch on the side).
+      dir[i] = static_cast<std::int8_t>(side == EyeUndecided ? 2 : -side);
     }
   });
 }

@@ -71,11 +71,10 @@ struct FilteredPlane
     const double weight = this->Q[0] * std::fabs(x[0]) + this->Q[1] * std::fabs(x[1]) +
       this->Q[2] * std::fabs(x[2]) + (parallel ? 0.0 : static_cast<double>(this->R));
     const double magnitude = std::fabs(s);
-    if (magnitude * (1 - 4 * u) > 8 * u * weight && magnitude > 1e-280)
-    {
-      return s > 0 ? -1 : 1;
-    }
-    return 0; // also NaN and infinities
+    const bool decided = magnitude * (1 - 4 * u) > 8 * u * weight && magnitude > 1e-280;
+    // -sign(s) without a branch (the sign is a coin flip); 0 when not decided
+    // (also for NaN and infinities).
+    return decided ? static_cast<int>(s < 0) - static_cast<int>(s > 0) : 0;
   }
 };
 }

@@ -268,13 +268,15 @@ void View::Setup(const Geometry& g, vtkCamera* camera, bool cellExtents)
   this->ClipIndex.assign(n, -1);
   this->Clipped.clear();
   this->HasCellExtents = cellExtents;
+  // Every point in front of the near plane and no bad cell: all cells visible.
+  const bool allValid = std::find(this->Valid.begin(), this->Valid.end(), 0) == this->Valid.end();
+  this->AllOrdered = allValid && g.NumberOfBadCells == 0;
   if (cellExtents)
   {
     vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) { this->CellExtents(g, begin, end); });
   }
   else
   {
-    const bool allValid = std::find(this->Valid.begin(), this->Valid.end(), 0) == this->Valid.end();
     vtkSMPTools::For(
       0, n, [&](vtkIdType begin, vtkIdType end) { this->CellStatus(g, begin, end, allValid); });
   }

@@ -49,6 +49,7 @@ struct View
   std::vector<double> Proj;            ///< per point: screen x, y, depth z
   std::vector<std::uint8_t> Valid;     ///< per point: in front of the near plane
   std::vector<std::uint8_t> Status;    ///< per cell
+  bool AllOrdered = false; ///< every cell visible or straddling (none hidden or bad)
   /// Per cell: depth range of the visible part and screen extents (xmin, xmax,
   /// ymin, ymax, outward). For every cell after Setup(..., true); otherwise
   /// only for straddling cells (use DepthRange()).
