@@ -1,15 +1,15 @@
 // Boundary face pairs of vtkSteinVisibilitySort's ADJACENCY_GRAPH (see hovSteinBoundaryPairs.h).
 #include "hovSteinBoundaryPairs.h"
 
-#include "hovSteinObstructs.h"      // Obstruction
+#include "hovSteinHulls.h"     // HullCache
+#include "hovSteinObstructs.h" // Obstruction
+#include "hovSteinRounding.h"  // FloatDown, FloatUp
 
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <memory>
 
 namespace hovStein
 {
@@ -25,17 +25,6 @@ struct FaceData
   std::uint8_t NumIds;
   std::uint8_t Exact;   ///< 1: Triple spans the exact face plane
 };
-
-inline float FloatDown(double x)
-{
-  float f = static_cast<float>(x);
-  return f > x ? std::nextafter(f, -VTK_FLOAT_MAX) : f;
-}
-inline float FloatUp(double x)
-{
-  float f = static_cast<float>(x);
-  return f < x ? std::nextafter(f, VTK_FLOAT_MAX) : f;
-}
 
 void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData& d)
 {
@@ -164,172 +153,282 @@ inline bool Disjoint(const float* a, const float* b)
   return a[1] <= b[0] || b[1] <= a[0] || a[3] <= b[2] || b[3] <= a[2];
 }
 
-/// A face in the ENTRY lists of the tiles: what the pair search rejects on,
-/// stored contiguously in tile order (the search streams through it).
-struct EntryRecord
+/// The tiles a face's extents cover: ix0, ix1, iy0, iy1 (inclusive).
+using TileRange = std::array<int, 4>;
+
+/// A face in the lists of the tiles: what the pair search rejects on, stored
+/// contiguously in tile order (the search streams through them).
+struct TileRecord
 {
   float Box[4];
-  double Rear;
+  double Depth; ///< ENTRY: rear depth; EXIT: front depth less the rounding margin
   vtkIdType Cell;
   vtkIdType Face; ///< index into the faces
 };
 
-/// The tiles a face's extents cover: ix0, ix1, iy0, iy1 (inclusive).
-using TileRange = std::array<int, 4>;
+/// Tile lists (CSR) of the EXIT ([0]) and ENTRY ([1]) faces, face indices in
+/// increasing order within each tile.
+struct TileLists
+{
+  std::vector<vtkIdType> Start[2]; ///< per tile + 1
+  std::vector<vtkIdType> Items[2];
+};
 
-/// Tile lists (CSR) of the faces with role @p role (1 EXIT, 2 ENTRY);
-/// @p lists holds the face indices, in face order within each tile.
+/**
+ * Bins the faces into the tiles they cover, in parallel over bands of tile
+ * rows: each band scans all faces and keeps its own rows, so the lists come
+ * out in face order whatever the number of bands and threads.
+ */
 void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
-  const std::vector<TileRange>& ranges, int role, std::vector<vtkIdType>& start,
-  std::vector<vtkIdType>& lists)
+  const std::vector<TileRange>& ranges, TileLists& lists)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
-  start.assign(nt + 1, 0);
-  auto forTiles = [&](const TileRange& r, auto&& fn) {
-    for (int iy = r[2]; iy <= r[3]; ++iy)
+  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
+  // Bands: enough to balance the threads; each scans all faces (the lists do
+  // not depend on the number of bands).
+  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const int numBands = threads > 1 ? std::min(grid.NY, 2 * threads) : 1;
+  // First tile of band b (rows b * NY / numBands ...); band numBands: nt.
+  auto bandStart = [&](vtkIdType b) { return b * grid.NY / numBands * grid.NX; };
+  // Calls fn(face, roles, tile) for the tiles of band b, face by face.
+  auto forBand = [&](vtkIdType b, auto&& fn) {
+    const int y0 = static_cast<int>(bandStart(b) / grid.NX);
+    const int y1 = static_cast<int>(bandStart(b + 1) / grid.NX);
+    for (vtkIdType i = 0; i < nf; ++i)
     {
-      for (int ix = r[0]; ix <= r[1]; ++ix)
+      const TileRange& r = ranges[i];
+      const int roles = faces[i].Roles & 3;
+      for (int iy = std::max(r[2], y0); roles && iy <= std::min(r[3], y1 - 1); ++iy)
       {
-        fn(static_cast<vtkIdType>(iy) * grid.NX + ix);
+        for (int ix = r[0]; ix <= r[1]; ++ix)
+        {
+          fn(i, roles, static_cast<vtkIdType>(iy) * grid.NX + ix);
+        }
       }
     }
   };
-  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
-  for (vtkIdType i = 0; i < nf; ++i)
+  for (int k = 0; k < 2; ++k)
   {
-    if (faces[i].Roles & role)
+    lists.Start[k].assign(nt + 1, 0);
+  }
+  vtkIdType* count[2] = { lists.Start[0].data() + 1, lists.Start[1].data() + 1 };
+  vtkSMPTools::For(0, numBands, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType b = b0; b < b1; ++b)
     {
-      forTiles(ranges[i], [&](vtkIdType tile) { ++start[tile + 1]; });
+      forBand(b, [&](vtkIdType, int roles, vtkIdType tile) {
+        count[0][tile] += roles & 1;
+        count[1][tile] += roles >> 1;
+      });
+    }
+  });
+  for (int k = 0; k < 2; ++k)
+  {
+    std::vector<vtkIdType>& start = lists.Start[k];
+    for (vtkIdType i = 0; i < nt; ++i)
+    {
+      start[i + 1] += start[i];
+    }
+    lists.Items[k].resize(start[nt]);
+  }
+  vtkSMPTools::For(0, numBands, 1, [&](vtkIdType b0, vtkIdType b1) {
+    std::vector<vtkIdType> cursor[2];
+    for (vtkIdType b = b0; b < b1; ++b)
+    {
+      const vtkIdType first = bandStart(b), last = bandStart(b + 1);
+      for (int k = 0; k < 2; ++k)
+      {
+        cursor[k].assign(lists.Start[k].begin() + first, lists.Start[k].begin() + last);
+      }
+      forBand(b, [&](vtkIdType i, int roles, vtkIdType tile) {
+        for (int k = 0; k < 2; ++k)
+        {
+          if (roles & (1 << k))
+          {
+            lists.Items[k][cursor[k][tile - first]++] = i;
+          }
+        }
+      });
+    }
+  });
+}
+
+using CellPairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
+}
+
+/// The per-view buffers (kept between views).
+struct BoundaryPairs::Buffers
+{
+  std::vector<FaceData> Data;
+  std::vector<TileRange> Ranges;
+  TileLists Lists;
+  std::vector<CellPairs> BlockPairs;
+  std::vector<vtkIdType> BlockCount;
+  CellPairs Pairs;
+  std::vector<std::uint8_t> Used, Hit;
+  std::vector<vtkIdType> Cells;
+  HullCache Hulls;
+  std::vector<TileRecord> Records[2]; ///< EXIT, ENTRY: beside Lists.Items
+};
+
+namespace
+{
+/**
+ * The cell pairs (EXIT cell, ENTRY cell) of the face pairs that pass the tests
+ * of the file doc, per tile the EXIT records against the ENTRY records (each
+ * face pair in the tile of the lower-left corner of the intersection of the
+ * extents), in parallel over fixed blocks of tiles; appended in tile order.
+ */
+void FindCellPairs(const Geometry& g, const PairGrid& grid, BoundaryPairs::Buffers& b, PairStats& stats)
+{
+  const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
+  const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
+  b.BlockPairs.resize(numBlocks);
+  b.BlockCount.resize(numBlocks);
+  const vtkIdType* exitStart = b.Lists.Start[0].data();
+  const vtkIdType* entryStart = b.Lists.Start[1].data();
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      CellPairs found; // local (no shared cache lines), with the block's old capacity
+      found.swap(b.BlockPairs[blk]);
+      found.clear();
+      vtkIdType count = 0;
+      for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
+      {
+        const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
+        const TileRecord* first = b.Records[1].data() + entryStart[tile];
+        const TileRecord* last = b.Records[1].data() + entryStart[tile + 1];
+        for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
+        {
+          const TileRecord& F = b.Records[0][i];
+          for (const TileRecord* G = first; G != last; ++G)
+          {
+            if (G->Cell == F.Cell || G->Depth < F.Depth || Disjoint(F.Box, G->Box) ||
+              grid.IX(std::max(F.Box[0], G->Box[0])) != ix ||
+              grid.IY(std::max(F.Box[2], G->Box[2])) != iy)
+            {
+              continue;
+            }
+            ++count;
+            const FaceData& DF = b.Data[F.Face];
+            const FaceData& DG = b.Data[G->Face];
+            if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
+            {
+              found.emplace_back(F.Cell, G->Cell);
+            }
+          }
+        }
+      }
+      b.BlockPairs[blk].swap(found);
+      b.BlockCount[blk] = count;
+    }
+  });
+  b.Pairs.clear();
+  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
+  {
+    stats.FacePairs += b.BlockCount[blk];
+    b.Pairs.insert(b.Pairs.end(), b.BlockPairs[blk].begin(), b.BlockPairs[blk].end());
+  }
+}
+
+/**
+ * Obstructs(a, b) for the sorted distinct cell pairs, in parallel (the hulls
+ * of their cells computed once first); appends the edges (b, a) in pair order.
+ */
+void DecidePairs(const Geometry& g, const View& v, BoundaryPairs::Buffers& b, CellPairs& edges)
+{
+  const CellPairs& pairs = b.Pairs;
+  const vtkIdType np = static_cast<vtkIdType>(pairs.size());
+  b.Used.assign(g.NumberOfCells, 0);
+  for (const auto& p : pairs)
+  {
+    b.Used[p.first] = b.Used[p.second] = 1;
+  }
+  b.Cells.clear();
+  for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
+  {
+    if (b.Used[c])
+    {
+      b.Cells.push_back(c);
     }
   }
-  for (vtkIdType i = 0; i < nt; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  lists.resize(start[nt]);
-  std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
-  for (vtkIdType i = 0; i < nf; ++i)
-  {
-    if (faces[i].Roles & role)
+  b.Hulls.Build(g, v, b.Cells);
+  b.Hit.resize(np);
+  vtkSMPTools::For(0, np, 64, [&](vtkIdType begin, vtkIdType end) {
+    Obstruction ob(g, v, &b.Hulls);
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      forTiles(ranges[i], [&](vtkIdType tile) { lists[cursor[tile]++] = i; });
+      b.Hit[i] = ob.Obstructs(pairs[i].first, pairs[i].second);
+    }
+  });
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    if (b.Hit[i])
+    {
+      edges.emplace_back(pairs[i].second, pairs[i].first);
     }
   }
 }
 }
 
-void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
-  std::vector<std::pair<vtkIdType, vtkIdType>>& edges, PairStats& stats)
+BoundaryPairs::BoundaryPairs()
+  : B(new Buffers)
+{
+}
+
+BoundaryPairs::~BoundaryPairs() = default;
+
+void BoundaryPairs::Edges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
+  CellPairs& edges, PairStats& stats)
 {
   const vtkIdType nf = static_cast<vtkIdType>(faces.size());
   if (nf < 2)
   {
     return;
   }
-  std::vector<FaceData> data(nf);
+  Buffers& b = *this->B;
+  b.Data.resize(nf); // every record is filled
   vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
-      FillFaceData(g, v, faces[i], data[i]);
+      FillFaceData(g, v, faces[i], b.Data[i]);
     }
   });
-
-  const PairGrid grid = MakePairGrid(v, data);
-  // Per tile, the EXIT faces against the ENTRY faces: two lists, the entries
-  // as contiguous records (the search rejects almost every candidate on them).
-  std::vector<TileRange> ranges(nf);
+  const PairGrid grid = MakePairGrid(v, b.Data);
+  b.Ranges.resize(nf);
   vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
-      const float* b = data[i].Box;
-      ranges[i] = { grid.IX(b[0]), grid.IX(b[1]), grid.IY(b[2]), grid.IY(b[3]) };
+      const float* box = b.Data[i].Box;
+      b.Ranges[i] = { grid.IX(box[0]), grid.IX(box[1]), grid.IY(box[2]), grid.IY(box[3]) };
     }
   });
-  std::vector<vtkIdType> exitStart, exitLists, entryStart, entryLists;
-  BinFaces(grid, faces, ranges, 1, exitStart, exitLists);
-  BinFaces(grid, faces, ranges, 2, entryStart, entryLists);
-  std::vector<EntryRecord> entries(entryLists.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(entryLists.size()), 4096,
-    [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const vtkIdType gi = entryLists[i];
-        EntryRecord& e = entries[i];
-        std::copy(data[gi].Box, data[gi].Box + 4, e.Box);
-        e.Rear = data[gi].Rear;
-        e.Cell = faces[gi].Cell;
-        e.Face = gi;
-      }
-    });
-
-  const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
-  const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
-  std::vector<std::vector<std::pair<vtkIdType, vtkIdType>>> blockPairs(numBlocks);
-  std::vector<vtkIdType> blockCount(numBlocks, 0);
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    for (vtkIdType blk = b0; blk < b1; ++blk)
-    {
-      for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
-      {
-        const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
-        const EntryRecord* first = entries.data() + entryStart[tile];
-        const EntryRecord* last = entries.data() + entryStart[tile + 1];
-        for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
+  BinFaces(grid, faces, b.Ranges, b.Lists);
+  // The EXIT and ENTRY faces as contiguous records in tile order (the search
+  // streams through them and rejects almost every candidate on them).
+  for (int k = 0; k < 2; ++k)
+  {
+    const std::vector<vtkIdType>& items = b.Lists.Items[k];
+    std::vector<TileRecord>& records = b.Records[k];
+    records.resize(items.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(items.size()), 4096,
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          const vtkIdType fi = exitLists[i];
-          const FaceData& F = data[fi];
-          const vtkIdType a = faces[fi].Cell;
-          const double front = F.Front - 1e-9 * (std::abs(F.Front) + g.Diagonal);
-          for (const EntryRecord* G = first; G != last; ++G)
-          {
-            if (G->Cell == a || G->Rear < front || Disjoint(F.Box, G->Box) ||
-              grid.IX(std::max(F.Box[0], G->Box[0])) != ix ||
-              grid.IY(std::max(F.Box[2], G->Box[2])) != iy)
-            {
-              continue;
-            }
-            ++blockCount[blk];
-            if (SomeCornerOutside(g, F, data[G->Face]) && SomeCornerOutside(g, data[G->Face], F))
-            {
-              blockPairs[blk].emplace_back(a, G->Cell);
-            }
-          }
+          const vtkIdType fi = items[i];
+          const FaceData& d = b.Data[fi];
+          TileRecord& r = records[i];
+          std::copy(d.Box, d.Box + 4, r.Box);
+          r.Depth = k == 1 ? d.Rear : d.Front - 1e-9 * (std::abs(d.Front) + g.Diagonal);
+          r.Cell = faces[fi].Cell;
+          r.Face = fi;
         }
-      }
-    }
-  });
-
-  std::vector<std::pair<vtkIdType, vtkIdType>> pairs;
-  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
-  {
-    stats.FacePairs += blockCount[blk];
-    pairs.insert(pairs.end(), blockPairs[blk].begin(), blockPairs[blk].end());
+      });
   }
-  vtkSMPTools::Sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  const vtkIdType np = static_cast<vtkIdType>(pairs.size());
-
-  stats.Tests += np;
-  std::vector<std::uint8_t> hit(np, 0);
-  vtkSMPThreadLocal<std::shared_ptr<Obstruction>> local;
-  vtkSMPTools::For(0, np, 64, [&](vtkIdType begin, vtkIdType end) {
-    std::shared_ptr<Obstruction>& ob = local.Local();
-    if (!ob)
-    {
-      ob.reset(new Obstruction(g, v));
-    }
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      hit[i] = ob->Obstructs(pairs[i].first, pairs[i].second);
-    }
-  });
-
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    if (hit[i])
-    {
-      edges.emplace_back(pairs[i].second, pairs[i].first);
-    }
-  }
+  FindCellPairs(g, grid, b, stats);
+  vtkSMPTools::Sort(b.Pairs.begin(), b.Pairs.end());
+  b.Pairs.erase(std::unique(b.Pairs.begin(), b.Pairs.end()), b.Pairs.end());
+  stats.Tests += static_cast<vtkIdType>(b.Pairs.size());
+  DecidePairs(g, v, b, edges);
 }
 }

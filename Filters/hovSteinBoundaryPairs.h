@@ -30,7 +30,8 @@
  * against the ENTRY faces (each pair in the tile of
  * the lower-left corner of the intersection of the extents), in parallel over
  * blocks of tiles; the cell pairs are sorted and made unique, then tested in
- * parallel. Results do not depend on the thread count.
+ * parallel, the hulls of their cells computed once (hovSteinHulls.h). Results
+ * do not depend on the thread count.
  */
 #ifndef hovSteinBoundaryPairs_h
 #define hovSteinBoundaryPairs_h
@@ -38,6 +39,7 @@
 #include "hovSteinView.h" // Geometry, View
 
 #include <cstdint> // std::uint8_t
+#include <memory>  // std::unique_ptr
 #include <utility> // std::pair
 #include <vector>  // storage
 
@@ -58,9 +60,27 @@ struct PairStats
   vtkIdType Tests = 0;     ///< distinct cell pairs tested with Obstructs()
 };
 
-/// Edges (b, a), b before a, for the cell pairs that need them (see the file doc).
-void BoundaryEdges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
-  std::vector<std::pair<vtkIdType, vtkIdType>>& edges, PairStats& stats);
+/**
+ * Finds the edges of step 3 for one view after another, keeping its buffers
+ * between views (no allocation once the first view has sized them).
+ */
+class BoundaryPairs
+{
+public:
+  BoundaryPairs();
+  ~BoundaryPairs();
+  /// Appends to @p edges the edges (b, a), b before a, for the cell pairs that
+  /// need them (see the file doc), in a fixed order.
+  void Edges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
+    std::vector<std::pair<vtkIdType, vtkIdType>>& edges, PairStats& stats);
+
+  struct Buffers; ///< opaque: the per-view buffers
+
+private:
+  BoundaryPairs(const BoundaryPairs&) = delete;
+  void operator=(const BoundaryPairs&) = delete;
+  std::unique_ptr<Buffers> B;
+};
 }
 
 #endif

@@ -86,44 +86,6 @@ int EyeSide(const Geometry& g, const ViewFrame& f, vtkIdType c, int face)
   return mode == FaceNewell ? NewellSide(g, f, c, face) : EyeUndecided;
 }
 
-inline bool Ordered(const View& v, vtkIdType c)
-{
-  return v.Status[c] == StatusVisible || v.Status[c] == StatusStraddle;
-}
-
-/// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
-void FaceDirections(const Geometry& g, const Topology& t, const View& v, std::vector<std::int8_t>& dir)
-{
-  const vtkIdType m = t.NumberOfInteriorFaces();
-  dir.resize(m);
-  vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      if (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i]))
-      {
-        dir[i] = 0;
-        continue;
-      }
-      // EyeSide(g, v.Frame, t.A[i], t.FaceA[i]), exact faces from the topology's record.
-      int side;
-      if (t.ModeA[i] == FaceExact)
-      {
-        const vtkIdType* ids = t.TripleA.data() + 3 * i;
-        const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *c = g.Point(ids[2]);
-        const ViewFrame& f = v.Frame;
-        const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
-        side = f.Parallel ? hov::Orient3dDirection(a, b, c, back) : hov::Orient3d(a, b, c, f.Eye);
-      }
-      else
-      {
-        side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
-      }
-      // Eye on B's side (outside A's face): B is nearer, A comes first.
-      dir[i] = static_cast<std::int8_t>(side == EyeOutside ? 1 : side == EyeInside ? -1 : side == EyeOn ? 0 : 2);
-    }
-  });
-}
-
 /// Face @p of cell @p c whose corners are those of face @p fa of cell @p a, or -1.
 int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
 {
@@ -146,153 +108,291 @@ int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
   return -1;
 }
 
-/**
- * The faces of step 3 (see hovSteinBoundaryPairs.h): boundary faces of
- * ordered cells with the eye strictly inside (EXIT), strictly outside (ENTRY)
- * or undecided (both), and both sides of undecided interior faces.
- */
-void ViewFaces(const Geometry& g, const Topology& t, const View& v, const std::vector<std::int8_t>& dir,
-  std::vector<ViewFace>& faces, GraphStats& stats)
+/// Cells not ordered by the DAG (bad, hidden), back to front by rearmost depth,
+/// appended to @p order; returns the number of the others.
+vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdType>& order)
 {
   const vtkIdType n = g.NumberOfCells;
-  std::vector<std::uint8_t> roles(MaxFaces * n, 0);
-  vtkSMPTools::For(0, n, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end; ++c)
-    {
-      const std::uint8_t mask = t.BoundaryFaces[c];
-      if (!mask || !Ordered(v, c))
-      {
-        continue;
-      }
-      for (int f = 0; f < MaxFaces; ++f)
-      {
-        if (mask & (1 << f))
-        {
-          const int side = EyeSide(g, v.Frame, c, f);
-          roles[MaxFaces * c + f] = side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
-        }
-      }
-    }
-  });
-  for (size_t i = 0; i < dir.size(); ++i)
-  {
-    if (dir[i] == 2)
-    {
-      roles[MaxFaces * t.A[i] + t.FaceA[i]] = 3;
-      const int fb = MatchingFace(g, t.A[i], t.FaceA[i], t.B[i]);
-      if (fb >= 0)
-      {
-        roles[MaxFaces * t.B[i] + fb] = 3;
-      }
-    }
-  }
+  std::vector<vtkIdType> first;
   for (vtkIdType c = 0; c < n; ++c)
   {
-    std::uint8_t cellRoles = 0;
-    for (int f = 0; f < MaxFaces; ++f)
+    if (!Ordered(v, c))
     {
-      const std::uint8_t r = roles[MaxFaces * c + f];
-      if (r)
-      {
-        faces.push_back({ c, static_cast<std::uint8_t>(f), r });
-        cellRoles |= r;
-      }
+      first.push_back(c);
     }
-    stats.ExitCells += cellRoles & 1;
-    stats.EntryCells += (cellRoles >> 1) & 1;
-  }
-}
-}
-
-namespace
-{
-/// Compressed adjacency of the face edges and the Obstructs() edges.
-void BuildDigraph(const Topology& t, const std::vector<std::int8_t>& dir,
-  const std::vector<std::pair<vtkIdType, vtkIdType>>& extra, vtkIdType n, Digraph& d)
-{
-  d.Offsets.assign(n + 1, 0);
-  const vtkIdType m = t.NumberOfInteriorFaces();
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    if (dir[i] == 1 || dir[i] == -1)
-    {
-      ++d.Offsets[(dir[i] == 1 ? t.A[i] : t.B[i]) + 1];
-    }
-  }
-  for (const auto& e : extra)
-  {
-    ++d.Offsets[e.first + 1];
-  }
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    d.Offsets[c + 1] += d.Offsets[c];
-  }
-  d.Targets.resize(d.Offsets[n]);
-  std::vector<vtkIdType> cursor(d.Offsets.begin(), d.Offsets.end() - 1);
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    if (dir[i] == 1)
-    {
-      d.Targets[cursor[t.A[i]]++] = t.B[i];
-    }
-    else if (dir[i] == -1)
-    {
-      d.Targets[cursor[t.B[i]]++] = t.A[i];
-    }
-  }
-  for (const auto& e : extra)
-  {
-    d.Targets[cursor[e.first]++] = e.second;
-  }
-}
-
-/// Cells split into ordered ones (by id) and the others (back to front by rearmost depth).
-void SplitCells(const View& v, vtkIdType n, std::vector<vtkIdType>& first, std::vector<vtkIdType>& rough)
-{
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    (Ordered(v, c) ? rough : first).push_back(c);
   }
   std::vector<float> keys(first.size());
   for (size_t i = 0; i < first.size(); ++i)
   {
-    keys[i] = static_cast<float>(v.Rear[first[i]]);
+    keys[i] = static_cast<float>(v.RearDepth(g, first[i]));
   }
   RadixSortDescending(first, keys);
+  order.insert(order.end(), first.begin(), first.end());
+  return n - static_cast<vtkIdType>(first.size());
 }
 }
 
-void SortByGraph(const Geometry& g, const Topology& t, const View& v,
+/// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
+void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v)
+{
+  std::vector<std::int8_t>& dir = this->Directions;
+  const ViewFrame& f = v.Frame;
+  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
+  const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
+  const vtkIdType m = t.NumberOfInteriorFaces();
+  dir.resize(m);
+  const bool allOrdered = v.AllOrdered; // skips two random reads per face
+  vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      if (!allOrdered && (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i])))
+      {
+        dir[i] = 0;
+        continue;
+      }
+      // EyeSide(g, v.Frame, t.A[i], t.FaceA[i]), exact faces from the topology's record.
+      int side;
+      if (t.ModeA[i] == FaceExact)
+      {
+        side = t.PlaneA[i].Side(x, f.Parallel);
+        if (side == 0) // not decided by the filter: the exact predicate
+        {
+          vtkIdType ids[3];
+          g.ExactTriple(t.A[i], t.FaceA[i], ids);
+          const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *c = g.Point(ids[2]);
+          side = f.Parallel ? hov::Orient3dDirection(a, b, c, x) : hov::Orient3d(a, b, c, x);
+        }
+      }
+      else
+      {
+        side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
+      }
+      // Eye on B's side (outside A's face, EyeOutside = -1): B is nearer, A
+      // comes first (1); EyeInside (1): -1; EyeOn: 0 (no branch on the side).
+      dir[i] = static_cast<std::int8_t>(side == EyeUndecided ? 2 : -side);
+    }
+  });
+}
+
+
+/**
+ * One cell's part of the DAG and of step 3: its outgoing face edges and
+ * incoming face edge count (from @p dir), the roles of its faces in step 3
+ * (boundary faces with the eye strictly inside: EXIT (1), strictly outside:
+ * ENTRY (2), undecided: both (3); both sides of undecided interior faces: 3)
+ * in @p roles (MaxFaces per cell).
+ */
+namespace
+{
+/// Role in step 2 of a face with the eye on @p side: EXIT 1, ENTRY 2, both 3, none 0.
+inline std::uint8_t Role(int side)
+{
+  return side == EyeInside ? 1 : side == EyeOutside ? 2 : side == EyeOn ? 0 : 3;
+}
+
+constexpr vtkIdType BoundaryBlock = 4096; ///< boundary faces per block
+constexpr vtkIdType CellBlock = 2048;     ///< cells per block
+}
+
+/**
+ * The role of every boundary face (0 for cells not ordered), exact faces from
+ * their filtered planes, in parallel over fixed blocks; per block the number
+ * of faces with a role (RoleStart, then made a prefix sum).
+ */
+void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& v)
+{
+  const vtkIdType nb = t.NumberOfBoundaryFaces;
+  const vtkIdType numBlocks = (nb + BoundaryBlock - 1) / BoundaryBlock;
+  this->Roles.resize(nb);
+  this->RoleStart.assign(numBlocks + 1, 0);
+  const ViewFrame& f = v.Frame;
+  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
+  const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      vtkIdType count = 0;
+      for (vtkIdType k = blk * BoundaryBlock; k < std::min(nb, (blk + 1) * BoundaryBlock); ++k)
+      {
+        const Topology::BoundaryFace& bf = t.Boundary[k];
+        std::uint8_t role = 0;
+        if (Ordered(v, bf.Cell))
+        {
+          int side = bf.Mode == FaceExact ? bf.Plane.Side(x, f.Parallel) : 0;
+          if (side == 0) // not decided by the filter, or not an exact face
+          {
+            side = EyeSide(g, f, bf.Cell, bf.Face);
+          }
+          role = Role(side);
+        }
+        this->Roles[k] = role;
+        count += role != 0;
+      }
+      this->RoleStart[blk + 1] = count;
+    }
+  });
+  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
+  {
+    this->RoleStart[blk + 1] += this->RoleStart[blk];
+  }
+}
+
+/**
+ * One cell's part of the DAG: its outgoing face edges and incoming face edge
+ * count (from Directions); both sides of its undecided interior faces go to
+ * @p undecided (role 3).
+ */
+void GraphSort::CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
+  BlockCounts& counts, std::vector<ViewFace>& undecided)
+{
+  Digraph& d = this->Graph;
+  const std::int8_t* dir = this->Directions.data();
+  d.FaceCount[c] = 0;
+  d.InDegree[c] = 0;
+  if (!Ordered(v, c))
+  {
+    return;
+  }
+  const vtkIdType first = t.CellFaceOffsets[c], last = t.CellFaceOffsets[c + 1];
+  const vtkIdType* faces = t.CellFaces.data();
+  const vtkIdType* neighbours = t.CellNeighbours.data();
+  vtkIdType* out = d.FaceTargets.data() + first;
+  int numOut = 0, numIn = 0;
+  for (vtkIdType e = first; e < last; ++e)
+  {
+    const vtkIdType i = faces[e] >> 1;
+    const bool isB = (faces[e] & 1) != 0;
+    const std::int8_t s = dir[i];
+    // s == 1: A -> B, s == -1: B -> A (branch-free: the side is a coin flip).
+    const int edge = s == 1 || s == -1;
+    const int outgoing = edge & static_cast<int>((s == 1) != isB);
+    out[numOut] = neighbours[e]; // kept only if outgoing (the slot exists: e < last)
+    numOut += outgoing;
+    numIn += edge - outgoing;
+    if (s == 2)
+    {
+      const int f = isB ? MatchingFace(g, t.A[i], t.FaceA[i], c) : t.FaceA[i];
+      if (f >= 0)
+      {
+        undecided.push_back({ c, static_cast<std::uint8_t>(f), 3 });
+      }
+      counts.Undecided += !isB;
+    }
+  }
+  d.FaceCount[c] = static_cast<std::uint8_t>(numOut);
+  d.InDegree[c] = numIn;
+  counts.FaceEdges += numOut;
+}
+
+/**
+ * In parallel over fixed blocks of cells: the roles of the boundary faces,
+ * the face edges of the DAG (CellPart), then the faces of step 3 (see
+ * hovSteinBoundaryPairs.h) in cell order whatever the number of threads.
+ */
+void GraphSort::CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats)
+{
+  this->BoundaryRoles(g, t, v);
+  const vtkIdType n = g.NumberOfCells;
+  Digraph& d = this->Graph;
+  d.FaceOffsets = t.CellFaceOffsets.data();
+  d.FaceTargets.resize(t.CellFaces.size());
+  d.FaceCount.resize(n);
+  d.InDegree.resize(n);
+  const vtkIdType numBlocks = (n + CellBlock - 1) / CellBlock;
+  this->Counts.resize(numBlocks);
+  this->Undecided.resize(numBlocks);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      // Locals, not Counts[blk] / Undecided[blk]: neighbouring blocks share cache lines.
+      BlockCounts local;
+      std::vector<ViewFace> undecided;
+      undecided.swap(this->Undecided[blk]); // its capacity
+      undecided.clear();
+      for (vtkIdType c = blk * CellBlock; c < std::min(n, (blk + 1) * CellBlock); ++c)
+      {
+        this->CellPart(g, t, v, c, local, undecided);
+      }
+      this->Counts[blk] = local;
+      this->Undecided[blk].swap(undecided);
+    }
+  });
+  for (const BlockCounts& counts : this->Counts)
+  {
+    stats.FaceEdges += counts.FaceEdges;
+    stats.Undecided += counts.Undecided;
+  }
+  this->CollectFaces(t, stats);
+}
+
+/**
+ * The faces of step 3: the boundary faces with a role, compacted in parallel,
+ * and (rarely) the undecided interior faces merged in by (cell, face); the
+ * counts of cells with EXIT and ENTRY faces.
+ */
+void GraphSort::CollectFaces(const Topology& t, GraphStats& stats)
+{
+  std::vector<ViewFace>& faces = this->Faces;
+  const vtkIdType nb = t.NumberOfBoundaryFaces;
+  const vtkIdType numBlocks = static_cast<vtkIdType>(this->RoleStart.size()) - 1;
+  faces.resize(this->RoleStart[numBlocks]);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      ViewFace* out = faces.data() + this->RoleStart[blk];
+      for (vtkIdType k = blk * BoundaryBlock; k < std::min(nb, (blk + 1) * BoundaryBlock); ++k)
+      {
+        if (this->Roles[k])
+        {
+          *out++ = { t.Boundary[k].Cell, t.Boundary[k].Face, this->Roles[k] };
+        }
+      }
+    }
+  });
+  if (stats.Undecided > 0)
+  {
+    for (const std::vector<ViewFace>& marks : this->Undecided)
+    {
+      faces.insert(faces.end(), marks.begin(), marks.end());
+    }
+    std::sort(faces.begin(), faces.end(), [](const ViewFace& a, const ViewFace& b) {
+      return a.Cell < b.Cell || (a.Cell == b.Cell && a.Face < b.Face);
+    });
+  }
+  std::uint8_t cellRoles = 0;
+  for (size_t k = 0; k < faces.size(); ++k)
+  {
+    cellRoles |= faces[k].Roles;
+    if (k + 1 == faces.size() || faces[k + 1].Cell != faces[k].Cell)
+    {
+      stats.ExitCells += cellRoles & 1;
+      stats.EntryCells += (cellRoles >> 1) & 1;
+      cellRoles = 0;
+    }
+  }
+}
+
+void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   std::vector<vtkIdType>& order, GraphStats& stats)
 {
   const vtkIdType n = g.NumberOfCells;
   stats = GraphStats();
   order.clear();
-  order.reserve(n);
-  std::vector<vtkIdType> first, rough;
-  SplitCells(v, n, first, rough);
-  order.insert(order.end(), first.begin(), first.end());
-  if (rough.empty())
+  order.reserve(n + 1); // + 1: see TopologicalOrder
+  const vtkIdType numOrdered = AppendUnordered(g, v, order);
+  if (numOrdered == 0)
   {
     return;
   }
-  std::vector<std::int8_t> dir;
-  FaceDirections(g, t, v, dir);
-  std::vector<ViewFace> faces;
-  ViewFaces(g, t, v, dir, faces, stats);
-  std::vector<std::pair<vtkIdType, vtkIdType>> extra;
+  this->FaceDirections(g, t, v);
+  this->CellPass(g, t, v, stats);
+  this->Extra.clear();
   PairStats pairStats;
-  BoundaryEdges(g, v, faces, extra, pairStats);
+  this->Boundary.Edges(g, v, this->Faces, this->Extra, pairStats);
   stats.Tests = pairStats.Tests;
   stats.FacePairs = pairStats.FacePairs;
-  for (std::int8_t s : dir)
-  {
-    stats.FaceEdges += s == 1 || s == -1;
-    stats.Undecided += s == 2;
-  }
-  stats.ObstructEdges = static_cast<vtkIdType>(extra.size());
-  Digraph d;
-  BuildDigraph(t, dir, extra, n, d);
-  TopologicalOrder(d, rough, v.Rear, order, stats);
+  stats.ObstructEdges = static_cast<vtkIdType>(this->Extra.size());
+  this->Graph.AddExtraEdges(this->Extra, n);
+  TopologicalOrder(this->Graph, g, v, numOrdered, order, stats);
 }
 }

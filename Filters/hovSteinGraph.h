@@ -28,13 +28,22 @@
  *    topological order of the condensation, each component's cells by
  *    rearmost depth; nontrivial components are reported as cycles.
  *
- * Thread safety: SortByGraph runs in parallel internally; not re-entrant.
+ * GraphSort keeps its per-view buffers between views (a re-sort allocates
+ * and page-faults nothing once the first view has sized them).
+ *
+ * Thread safety: GraphSort::Sort runs in parallel internally; one sort per
+ * GraphSort at a time.
  */
 #ifndef hovSteinGraph_h
 #define hovSteinGraph_h
 
-#include "hovSteinTopology.h" // Topology
-#include "hovSteinView.h"     // Geometry, View
+#include "hovSteinBoundaryPairs.h" // BoundaryPairs, ViewFace
+#include "hovSteinTopology.h"      // Topology
+#include "hovSteinView.h"          // Geometry, View
+
+#include <cstdint> // std::int32_t, std::uint8_t
+#include <utility> // std::pair
+#include <vector>  // storage
 
 namespace hovStein
 {
@@ -50,25 +59,82 @@ struct GraphStats
   std::vector<vtkIdType> CycleCells; ///< their cells, each id once
 };
 
-/// Back-to-front order of all cells of @p g for the view @p v.
-void SortByGraph(const Geometry& g, const Topology& t, const View& v,
-  std::vector<vtkIdType>& order, GraphStats& stats);
+/// Cells that take part in the DAG (the others are output first).
+inline bool Ordered(const View& v, vtkIdType c)
+{
+  return v.Status[c] == StatusVisible || v.Status[c] == StatusStraddle;
+}
 
-/// Edges (from, to) as a compressed adjacency: from precedes to.
+/**
+ * The per-view visibility DAG: an edge u -> w means u is drawn before w (back
+ * to front). The face edges of u are FaceTargets[FaceOffsets[u] + k],
+ * k < FaceCount[u], in increasing interior face index (the slots are the
+ * view-independent Topology::CellFaceOffsets); then come its Obstructs()
+ * edges ExtraTargets[ExtraOffsets[u] ...], in increasing target id.
+ */
 struct Digraph
 {
-  std::vector<vtkIdType> Offsets; ///< per node + 1
-  std::vector<vtkIdType> Targets;
+  const vtkIdType* FaceOffsets = nullptr;
+  std::vector<vtkIdType> FaceTargets;
+  std::vector<std::uint8_t> FaceCount;
+  std::vector<vtkIdType> ExtraOffsets; ///< per cell + 1
+  std::vector<vtkIdType> ExtraTargets;
+  std::vector<std::int32_t> InDegree; ///< per cell: edges into it (consumed by the sort)
+
+  vtkIdType Degree(vtkIdType u) const
+  {
+    return this->FaceCount[u] + this->ExtraOffsets[u + 1] - this->ExtraOffsets[u];
+  }
+  /// Target of the k-th edge of @p u (k < Degree(u)).
+  vtkIdType Target(vtkIdType u, vtkIdType k) const
+  {
+    return k < this->FaceCount[u] ? this->FaceTargets[this->FaceOffsets[u] + k]
+                                  : this->ExtraTargets[this->ExtraOffsets[u] + k - this->FaceCount[u]];
+  }
+  /// Adds the edges (from, to) of @p edges (sorted by to) to the CSR and the in-degrees.
+  void AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n);
+};
+
+/// The ADJACENCY_GRAPH sort with its per-view buffers.
+class GraphSort
+{
+public:
+  /// Back-to-front order of all cells of @p g for the view @p v.
+  void Sort(const Geometry& g, const Topology& t, const View& v, std::vector<vtkIdType>& order,
+    GraphStats& stats);
+
+private:
+  /// Counters of one block of cells in CellPass.
+  struct BlockCounts
+  {
+    vtkIdType FaceEdges = 0, Undecided = 0;
+  };
+  void FaceDirections(const Geometry& g, const Topology& t, const View& v);
+  void BoundaryRoles(const Geometry& g, const Topology& t, const View& v);
+  void CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats);
+  void CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
+    BlockCounts& counts, std::vector<ViewFace>& undecided);
+  void CollectFaces(const Topology& t, GraphStats& stats);
+
+  std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
+  std::vector<std::uint8_t> Roles;     ///< per boundary face: its role in step 2 (0: none)
+  std::vector<vtkIdType> RoleStart;    ///< per block of boundary faces + 1: first face in Faces
+  std::vector<BlockCounts> Counts;
+  std::vector<std::vector<ViewFace>> Undecided; ///< per block of cells: undecided interior faces
+  std::vector<ViewFace> Faces;
+  Digraph Graph;
+  std::vector<std::pair<vtkIdType, vtkIdType>> Extra;
+  BoundaryPairs Boundary;
 };
 
 /**
- * Topological order of the nodes listed in @p cells (the others are ignored
- * and must have no edges); the initial sources, and the cells of each cyclic
- * component, back to front by @p rear (ties by id); appends to @p order.
- * Cycles: see the file doc.
+ * Topological order of the @p numOrdered cells with Ordered(v, c) (the others
+ * must have no edges); the initial sources, and the cells of each cyclic
+ * component, back to front by rearmost depth (ties by id); appends to
+ * @p order. Consumes d.InDegree. Cycles: see the file doc.
  */
-void TopologicalOrder(const Digraph& d, const std::vector<vtkIdType>& cells,
-  const std::vector<double>& rear, std::vector<vtkIdType>& order, GraphStats& stats);
+void TopologicalOrder(Digraph& d, const Geometry& g, const View& v, vtkIdType numOrdered,
+  std::vector<vtkIdType>& order, GraphStats& stats);
 }
 
 #endif

@@ -85,6 +85,10 @@ TileGrid MakeGrid(const View& v, const std::vector<vtkIdType>& cells, int nx, in
 void RadixSortDescending(std::vector<vtkIdType>& ids, const std::vector<float>& keys)
 {
   const size_t n = ids.size();
+  if (n < 2)
+  {
+    return; // nothing to sort (and no 65537-entry histograms to clear)
+  }
   std::vector<std::uint64_t> a(n), b(n);
   for (size_t i = 0; i < n; ++i)
   {

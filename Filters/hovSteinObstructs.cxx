@@ -2,6 +2,7 @@
 #include "hovSteinObstructs.h"
 
 #include "hovGeometricPredicates.h" // exact Orient2d / Orient3d
+#include "hovSteinHulls.h"          // Hull2d, InHull, ClipPolygon, Area, HullCache
 
 #include <algorithm>
 #include <array>
@@ -12,103 +13,6 @@ namespace hovStein
 {
 namespace
 {
-constexpr int MaxPts = 32; // visible part of a clipped hexahedron: 8 corners + 12 crossings
-
-/// Convex hull (counterclockwise, no collinear points) of 2D points; returns its size.
-int Hull2d(const double* xyz, int n, double hull[][2])
-{
-  std::array<double, 2> p[MaxPts];
-  for (int i = 0; i < n; ++i)
-  {
-    p[i] = { xyz[3 * i], xyz[3 * i + 1] };
-  }
-  std::sort(p, p + n);
-  int k = 0;
-  for (int i = 0; i < n; ++i)
-  {
-    while (k >= 2 && hov::Orient2d(hull[k - 2], hull[k - 1], p[i].data()) <= 0)
-    {
-      --k;
-    }
-    hull[k][0] = p[i][0];
-    hull[k++][1] = p[i][1];
-  }
-  const int lower = k + 1;
-  for (int i = n - 2; i >= 0; --i)
-  {
-    while (k >= lower && hov::Orient2d(hull[k - 2], hull[k - 1], p[i].data()) <= 0)
-    {
-      --k;
-    }
-    hull[k][0] = p[i][0];
-    hull[k++][1] = p[i][1];
-  }
-  return std::max(k - 1, 0);
-}
-
-double Area(const double poly[][2], int n)
-{
-  double a = 0;
-  for (int i = 0; i < n; ++i)
-  {
-    const int j = (i + 1) % n;
-    a += poly[i][0] * poly[j][1] - poly[j][0] * poly[i][1];
-  }
-  return 0.5 * a;
-}
-
-/// Inside or on the boundary of a counterclockwise convex polygon (exact).
-bool InHull(const double hull[][2], int n, const double* x)
-{
-  if (n < 3)
-  {
-    return false;
-  }
-  for (int i = 0; i < n; ++i)
-  {
-    if (hov::Orient2d(hull[i], hull[(i + 1) % n], x) < 0)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-/// Sutherland-Hodgman: @p poly clipped by the convex counterclockwise @p clip.
-int ClipPolygon(double poly[][2], int n, const double clip[][2], int m)
-{
-  double tmp[2 * MaxPts][2];
-  for (int e = 0; e < m && n > 0; ++e)
-  {
-    const double* a = clip[e];
-    const double* b = clip[(e + 1) % m];
-    auto side = [&](const double* x) {
-      return (b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0]);
-    };
-    int k = 0;
-    for (int i = 0; i < n && k < 2 * MaxPts - 2; ++i)
-    {
-      const double* u = poly[i];
-      const double* v = poly[(i + 1) % n];
-      const double su = side(u), sv = side(v);
-      if (su >= 0)
-      {
-        tmp[k][0] = u[0];
-        tmp[k++][1] = u[1];
-      }
-      if ((su >= 0) != (sv >= 0))
-      {
-        const double t = su / (su - sv);
-        tmp[k][0] = u[0] + t * (v[0] - u[0]);
-        tmp[k++][1] = u[1] + t * (v[1] - u[1]);
-      }
-    }
-    n = std::min(k, MaxPts);
-    std::copy(&tmp[0][0], &tmp[0][0] + 2 * n, &poly[0][0]);
-  }
-  return n;
-}
-
 /// Ray-triangle intersection parameter (Moller-Trumbore, slightly inclusive).
 bool RayTriangle(const double* o, const double* d, const double* a, const double* b,
   const double* c, double& t)
@@ -159,9 +63,10 @@ double CoordinateScale(const Geometry& g, vtkIdType a, vtkIdType b)
 }
 }
 
-Obstruction::Obstruction(const Geometry& g, const View& v)
+Obstruction::Obstruction(const Geometry& g, const View& v, const HullCache* hulls)
   : G(g)
   , V(v)
+  , Hulls(hulls)
 {
 }
 
@@ -359,12 +264,28 @@ int Obstruction::CrossingOrder(const double* a, const double* b, const double* c
   return zp < zq ? 1 : -1;
 }
 
+const double (*Obstruction::Hull(vtkIdType c, double hull[][2], int& size, double& area) const)[2]
+{
+  const double(*cached)[2] = this->Hulls ? this->Hulls->Find(c, size, area) : nullptr;
+  if (cached)
+  {
+    return cached;
+  }
+  double xyz[3 * MaxVisiblePoints];
+  size = Hull2d(xyz, this->V.VisiblePoints(this->G, c, xyz), hull);
+  area = Area(hull, size);
+  return hull;
+}
+
 bool Obstruction::ProjectionsTouchOnly(vtkIdType p, vtkIdType q) const
 {
-  double xp[3 * MaxPts], xq[3 * MaxPts], hp[2 * MaxPts + 2][2], hq[2 * MaxPts + 2][2];
+  double xp[3 * MaxVisiblePoints], xq[3 * MaxVisiblePoints], bp[HullCapacity][2], bq[HullCapacity][2];
   const int np = this->V.VisiblePoints(this->G, p, xp);
   const int nq = this->V.VisiblePoints(this->G, q, xq);
-  const int mp = Hull2d(xp, np, hp), mq = Hull2d(xq, nq, hq);
+  int mp, mq;
+  double areaP, areaQ;
+  const double(*hp)[2] = this->Hull(p, bp, mp, areaP);
+  const double(*hq)[2] = this->Hull(q, bq, mq, areaQ);
   for (int i = 0; i < np; ++i)
   {
     if (InHull(hq, mq, xp + 3 * i))
@@ -384,16 +305,21 @@ bool Obstruction::ProjectionsTouchOnly(vtkIdType p, vtkIdType q) const
 
 bool Obstruction::Overlap(vtkIdType p, vtkIdType q, double centre[2]) const
 {
-  double xp[3 * MaxPts], xq[3 * MaxPts], hp[2 * MaxPts + 2][2], hq[2 * MaxPts + 2][2];
-  const int mp = Hull2d(xp, this->V.VisiblePoints(this->G, p, xp), hp);
-  const int mq = Hull2d(xq, this->V.VisiblePoints(this->G, q, xq), hq);
+  double poly[HullCapacity][2], bq[HullCapacity][2];
+  int mp, mq;
+  double areaP, areaQ;
+  const double(*hp)[2] = this->Hull(p, poly, mp, areaP);
+  const double(*hq)[2] = this->Hull(q, bq, mq, areaQ);
   if (mp < 3 || mq < 3)
   {
     return false; // a projection without area hides nothing
   }
-  const double areaP = Area(hp, mp), areaQ = Area(hq, mq);
-  const int m = ClipPolygon(hp, mp, hq, mq);
-  const double area = m >= 3 ? Area(hp, m) : 0.0;
+  if (hp != poly)
+  {
+    std::copy(&hp[0][0], &hp[0][0] + 2 * mp, &poly[0][0]); // clipped in place below
+  }
+  const int m = ClipPolygon(poly, mp, hq, mq);
+  const double area = m >= 3 ? Area(poly, m) : 0.0;
   if (!(area > 1e-10 * std::min(areaP, areaQ)))
   {
     return false;
@@ -402,9 +328,9 @@ bool Obstruction::Overlap(vtkIdType p, vtkIdType q, double centre[2]) const
   for (int i = 0; i < m; ++i)
   {
     const int j = (i + 1) % m;
-    const double w = hp[i][0] * hp[j][1] - hp[j][0] * hp[i][1];
-    cx += (hp[i][0] + hp[j][0]) * w;
-    cy += (hp[i][1] + hp[j][1]) * w;
+    const double w = poly[i][0] * poly[j][1] - poly[j][0] * poly[i][1];
+    cx += (poly[i][0] + poly[j][0]) * w;
+    cy += (poly[i][1] + poly[j][1]) * w;
   }
   centre[0] = cx / (6 * area);
   centre[1] = cy / (6 * area);
@@ -459,13 +385,16 @@ int Obstruction::RayTest(vtkIdType p, vtkIdType q) const
     dir[k] = f.Parallel ? f.Dop[k] : f.Dop[k] + centre[0] * f.Right[k] + centre[1] * f.Up[k];
   }
   double tp[2], tq[2];
+  double front, rear;
   if (!this->RayInterval(p, origin, dir, tp))
   {
-    tp[0] = tp[1] = 0.5 * (this->V.Front[p] + this->V.Rear[p]);
+    this->V.DepthRange(this->G, p, front, rear);
+    tp[0] = tp[1] = 0.5 * (front + rear);
   }
   if (!this->RayInterval(q, origin, dir, tq))
   {
-    tq[0] = tq[1] = 0.5 * (this->V.Front[q] + this->V.Rear[q]);
+    this->V.DepthRange(this->G, q, front, rear);
+    tq[0] = tq[1] = 0.5 * (front + rear);
   }
   const double mp = tp[0] + tp[1], mq = tq[0] + tq[1];
   return mp < mq ? 1 : (mq < mp ? -1 : 0);

@@ -36,10 +36,13 @@
 
 namespace hovStein
 {
+class HullCache;
+
 class Obstruction
 {
 public:
-  Obstruction(const Geometry& g, const View& v);
+  /// @p hulls (optional): the cells' hulls computed ahead for this view.
+  Obstruction(const Geometry& g, const View& v, const HullCache* hulls = nullptr);
   /// P must be drawn after Q (cells by id; their screen extents overlap).
   bool Obstructs(vtkIdType p, vtkIdType q);
 
@@ -54,6 +57,8 @@ private:
   int FaceSeparates(vtkIdType x, int f, vtkIdType y, double tol) const;
   int EdgeCrossings(vtkIdType p, vtkIdType q, bool& crossed) const;
   int CrossingOrder(const double* a, const double* b, const double* c, const double* d) const;
+  /// The hull of cell c: cached, or computed into @p hull; its size and area.
+  const double (*Hull(vtkIdType c, double hull[][2], int& size, double& area) const)[2];
   bool ProjectionsTouchOnly(vtkIdType p, vtkIdType q) const;
   bool Overlap(vtkIdType p, vtkIdType q, double centre[2]) const;
   int RayTest(vtkIdType p, vtkIdType q) const;
@@ -61,6 +66,7 @@ private:
 
   const Geometry& G;
   const View& V;
+  const HullCache* Hulls;
 };
 }
 

@@ -209,14 +209,16 @@ void Topology::Build(const Geometry& g)
   }
   const vtkIdType numInterior = this->NumberOfInteriorFaces();
   this->ModeA.resize(numInterior);
-  this->TripleA.assign(3 * numInterior, 0);
+  this->PlaneA.reset(new FilteredPlane[numInterior]); // default-initialised: not written here
   vtkSMPTools::For(0, numInterior, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       this->ModeA[i] = g.FaceCode(this->A[i], this->FaceA[i]) & 3;
       if (this->ModeA[i] == FaceExact)
       {
-        g.ExactTriple(this->A[i], this->FaceA[i], this->TripleA.data() + 3 * i);
+        vtkIdType t[3];
+        g.ExactTriple(this->A[i], this->FaceA[i], t);
+        this->PlaneA[i].Set(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]));
       }
     }
   });
@@ -225,5 +227,73 @@ void Topology::Build(const Geometry& g)
   {
     this->NumberOfBoundaryCells += this->BoundaryFaces[c] != 0;
   }
+  this->BuildCellFaces(n);
+  this->BuildBoundary(g);
+}
+
+void Topology::BuildCellFaces(vtkIdType numCells)
+{
+  const vtkIdType m = this->NumberOfInteriorFaces();
+  this->CellFaceOffsets.assign(numCells + 1, 0);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    ++this->CellFaceOffsets[this->A[i] + 1];
+    ++this->CellFaceOffsets[this->B[i] + 1];
+  }
+  for (vtkIdType c = 0; c < numCells; ++c)
+  {
+    this->CellFaceOffsets[c + 1] += this->CellFaceOffsets[c];
+  }
+  this->CellFaces.resize(2 * m);
+  this->CellNeighbours.resize(2 * m);
+  std::vector<vtkIdType> cursor(this->CellFaceOffsets.begin(), this->CellFaceOffsets.end() - 1);
+  for (vtkIdType i = 0; i < m; ++i)
+  {
+    const vtkIdType a = cursor[this->A[i]]++, b = cursor[this->B[i]]++;
+    this->CellFaces[a] = 2 * i;
+    this->CellNeighbours[a] = this->B[i];
+    this->CellFaces[b] = 2 * i + 1;
+    this->CellNeighbours[b] = this->A[i];
+  }
+}
+
+void Topology::BuildBoundary(const Geometry& g)
+{
+  const vtkIdType n = g.NumberOfCells;
+  std::vector<vtkIdType> start(n + 1, 0);
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    std::uint8_t mask = this->BoundaryFaces[c];
+    vtkIdType count = 0;
+    for (; mask; mask &= mask - 1)
+    {
+      ++count;
+    }
+    start[c + 1] = start[c] + count;
+  }
+  this->NumberOfBoundaryFaces = start[n];
+  this->Boundary.reset(new BoundaryFace[start[n]]);
+  vtkSMPTools::For(0, n, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      BoundaryFace* out = this->Boundary.get() + start[c];
+      for (int f = 0; f < MaxFaces; ++f)
+      {
+        if (this->BoundaryFaces[c] & (1 << f))
+        {
+          out->Cell = c;
+          out->Face = static_cast<std::uint8_t>(f);
+          out->Mode = g.FaceCode(c, f) & 3;
+          if (out->Mode == FaceExact)
+          {
+            vtkIdType t[3];
+            g.ExactTriple(c, f, t);
+            out->Plane.Set(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]));
+          }
+          ++out;
+        }
+      }
+    }
+  });
 }
 }

@@ -1,6 +1,8 @@
 // Per-view data of vtkSteinVisibilitySort (see hovSteinView.h).
 #include "hovSteinView.h"
 
+#include "hovSteinRounding.h" // FloatDown, FloatUp
+
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkSMPTools.h"
@@ -8,41 +10,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <limits>
 
 namespace hovStein
 {
 namespace
 {
-/// The float after @p f towards -inf (@p down) or +inf: std::nextafter on the
-/// bits, inline (the library call was a tenth of the per-cell work). @p f is
-/// not NaN and not already the infinity it moves towards.
-inline float FloatStep(float f, bool down)
-{
-  if (f == 0.0f)
-  {
-    return down ? -std::numeric_limits<float>::denorm_min()
-                : std::numeric_limits<float>::denorm_min();
-  }
-  std::uint32_t bits;
-  std::memcpy(&bits, &f, sizeof(bits));
-  bits = (f > 0.0f) == down ? bits - 1 : bits + 1; // magnitude down or up
-  std::memcpy(&f, &bits, sizeof(bits));
-  return f;
-}
-
-/// Largest float <= x and smallest float >= x.
-inline float FloatDown(double x)
-{
-  float f = static_cast<float>(x);
-  return f > x ? FloatStep(f, true) : f;
-}
-inline float FloatUp(double x)
-{
-  float f = static_cast<float>(x);
-  return f < x ? FloatStep(f, false) : f;
-}
 inline double Dot(const double* a, const double* b)
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -155,7 +127,112 @@ std::vector<double> ClipCell(const Geometry& g, const View& v, vtkIdType c)
 }
 }
 
-void View::Setup(const Geometry& g, vtkCamera* camera)
+void View::CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end)
+{
+  // Local pointers: the byte stores to Status would otherwise make the
+  // compiler reload every vector's data pointer after each cell.
+  const double* proj = this->Proj.data();
+  const std::uint8_t* valid = this->Valid.data();
+  const vtkIdType* offsets = g.CornerOffsets.data();
+  const vtkIdType* corners = g.Corners.data();
+  const std::uint8_t* kinds = g.Kinds.data();
+  std::uint8_t* status = this->Status.data();
+  double* front = this->Front.data();
+  double* rear = this->Rear.data();
+  float* boxes = this->Box.data();
+  for (vtkIdType c = begin; c < end; ++c)
+  {
+    const vtkIdType* ids = corners + offsets[c];
+    const int m = static_cast<int>(offsets[c + 1] - offsets[c]);
+    double zmin = VTK_DOUBLE_MAX, zmax = -VTK_DOUBLE_MAX;
+    double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    int numValid = 0;
+    for (int i = 0; i < m; ++i)
+    {
+      if (ids[i] < 0)
+      {
+        continue;
+      }
+      const double* p = proj + 3 * ids[i];
+      zmin = std::min(zmin, p[2]);
+      zmax = std::max(zmax, p[2]);
+      if (valid[ids[i]])
+      {
+        ++numValid;
+        box[0] = std::min(box[0], p[0]);
+        box[1] = std::max(box[1], p[0]);
+        box[2] = std::min(box[2], p[1]);
+        box[3] = std::max(box[3], p[1]);
+      }
+    }
+    front[c] = zmin;
+    rear[c] = std::isnan(zmax) ? VTK_DOUBLE_MAX : zmax;
+    status[c] = kinds[c] == KindBad ? StatusBad
+      : numValid == m               ? StatusVisible
+      : numValid == 0               ? StatusHidden
+                                    : StatusStraddle;
+    float* b = boxes + 4 * c;
+    b[0] = FloatDown(box[0]);
+    b[1] = FloatUp(box[1]);
+    b[2] = FloatDown(box[2]);
+    b[3] = FloatUp(box[3]);
+  }
+}
+
+void View::CellStatus(const Geometry& g, vtkIdType begin, vtkIdType end, bool allValid)
+{
+  const std::uint8_t* kinds = g.Kinds.data();
+  std::uint8_t* status = this->Status.data();
+  if (allValid)
+  {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      status[c] = kinds[c] == KindBad ? StatusBad : StatusVisible;
+    }
+    return;
+  }
+  const std::uint8_t* valid = this->Valid.data();
+  for (vtkIdType c = begin; c < end; ++c)
+  {
+    const vtkIdType* ids = g.CellCorners(c);
+    const int m = g.NumberOfCorners(c);
+    int numValid = 0;
+    for (int i = 0; i < m; ++i)
+    {
+      numValid += ids[i] >= 0 && valid[ids[i]];
+    }
+    status[c] = kinds[c] == KindBad ? StatusBad
+      : numValid == m               ? StatusVisible
+      : numValid == 0               ? StatusHidden
+                                    : StatusStraddle;
+  }
+}
+
+void View::DepthRange(const Geometry& g, vtkIdType c, double& front, double& rear) const
+{
+  if (this->HasCellExtents || this->ClipIndex[c] >= 0)
+  {
+    front = this->Front[c];
+    rear = this->Rear[c];
+    return;
+  }
+  // As CellExtents.
+  const vtkIdType* ids = g.CellCorners(c);
+  const int m = g.NumberOfCorners(c);
+  double zmin = VTK_DOUBLE_MAX, zmax = -VTK_DOUBLE_MAX;
+  for (int i = 0; i < m; ++i)
+  {
+    if (ids[i] >= 0)
+    {
+      zmin = std::min(zmin, this->Proj[3 * ids[i] + 2]);
+      zmax = std::max(zmax, this->Proj[3 * ids[i] + 2]);
+    }
+  }
+  front = zmin;
+  rear = std::isnan(zmax) ? VTK_DOUBLE_MAX : zmax;
+}
+
+void View::Setup(const Geometry& g, vtkCamera* camera, bool cellExtents)
 {
   this->Frame.FromCamera(camera, g.Diagonal);
   const ViewFrame& f = this->Frame;
@@ -190,50 +267,28 @@ void View::Setup(const Geometry& g, vtkCamera* camera)
   this->Box.resize(4 * n);
   this->ClipIndex.assign(n, -1);
   this->Clipped.clear();
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end; ++c)
-    {
-      const int m = g.NumberOfCorners(c);
-      const vtkIdType* ids = g.CellCorners(c);
-      double zmin = VTK_DOUBLE_MAX, zmax = -VTK_DOUBLE_MAX;
-      double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-      int valid = 0;
-      for (int i = 0; i < m; ++i)
-      {
-        if (ids[i] < 0)
-        {
-          continue;
-        }
-        const double* p = this->Proj.data() + 3 * ids[i];
-        zmin = std::min(zmin, p[2]);
-        zmax = std::max(zmax, p[2]);
-        if (this->Valid[ids[i]])
-        {
-          ++valid;
-          box[0] = std::min(box[0], p[0]);
-          box[1] = std::max(box[1], p[0]);
-          box[2] = std::min(box[2], p[1]);
-          box[3] = std::max(box[3], p[1]);
-        }
-      }
-      this->Front[c] = zmin;
-      this->Rear[c] = std::isnan(zmax) ? VTK_DOUBLE_MAX : zmax;
-      this->Status[c] = g.Kinds[c] == KindBad ? StatusBad
-        : valid == m                          ? StatusVisible
-        : valid == 0                          ? StatusHidden
-                                              : StatusStraddle;
-      float* b = this->Box.data() + 4 * c;
-      b[0] = FloatDown(box[0]);
-      b[1] = FloatUp(box[1]);
-      b[2] = FloatDown(box[2]);
-      b[3] = FloatUp(box[3]);
-    }
-  });
+  this->HasCellExtents = cellExtents;
+  // Every point in front of the near plane and no bad cell: all cells visible.
+  const bool allValid = std::find(this->Valid.begin(), this->Valid.end(), 0) == this->Valid.end();
+  this->AllOrdered = allValid && g.NumberOfBadCells == 0;
+  if (cellExtents)
+  {
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) { this->CellExtents(g, begin, end); });
+  }
+  else
+  {
+    vtkSMPTools::For(
+      0, n, [&](vtkIdType begin, vtkIdType end) { this->CellStatus(g, begin, end, allValid); });
+  }
   for (vtkIdType c = 0; c < n; ++c)
   {
     if (this->Status[c] != StatusStraddle)
     {
       continue;
+    }
+    if (!cellExtents)
+    {
+      this->CellExtents(g, c, c + 1); // Rear (Front and Box follow)
     }
     this->ClipIndex[c] = static_cast<int>(this->Clipped.size());
     this->Clipped.push_back(ClipCell(g, *this, c));

@@ -49,16 +49,40 @@ struct View
   std::vector<double> Proj;            ///< per point: screen x, y, depth z
   std::vector<std::uint8_t> Valid;     ///< per point: in front of the near plane
   std::vector<std::uint8_t> Status;    ///< per cell
-  std::vector<double> Front, Rear;     ///< per cell: depth range of the visible part
-  std::vector<float> Box;              ///< per cell: xmin, xmax, ymin, ymax (outward)
+  bool AllOrdered = false; ///< every cell visible or straddling (none hidden or bad)
+  /// Per cell: depth range of the visible part and screen extents (xmin, xmax,
+  /// ymin, ymax, outward). For every cell after Setup(..., true); otherwise
+  /// only for straddling cells (use DepthRange()).
+  std::vector<double> Front, Rear;
+  std::vector<float> Box;
   std::vector<int> ClipIndex;          ///< per cell: index in Clipped, or -1
   std::vector<std::vector<double>> Clipped; ///< visible parts: x, y, z per point
 
-  void Setup(const Geometry& g, vtkCamera* camera);
+  /**
+   * The view of @p camera. @p cellExtents: fill Front, Rear and Box for every
+   * cell (the multitiled merge needs them; the adjacency graph needs them only
+   * for a few cells and calls DepthRange()).
+   */
+  void Setup(const Geometry& g, vtkCamera* camera, bool cellExtents = true);
+  /// Front and Rear of cell @p c (read, or computed as Setup computes them).
+  void DepthRange(const Geometry& g, vtkIdType c, double& front, double& rear) const;
+  double RearDepth(const Geometry& g, vtkIdType c) const
+  {
+    double front, rear;
+    this->DepthRange(g, c, front, rear);
+    return rear;
+  }
   /// Screen points (x, y, z triples) of the visible part of a cell; returns their number.
   int VisiblePoints(const Geometry& g, vtkIdType c, double* xyz) const;
   /// Depth of a world point.
   double Depth(const double* x) const;
+
+private:
+  /// Status, depth range and screen extents of cells [begin, end) from the projected points.
+  void CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end);
+  /// Status only of cells [begin, end); @p allValid: every point is in front of the near plane.
+  void CellStatus(const Geometry& g, vtkIdType begin, vtkIdType end, bool allValid);
+  bool HasCellExtents = false;
 };
 }
 

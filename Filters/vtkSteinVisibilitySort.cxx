@@ -1,7 +1,7 @@
 // Exact visibility ordering (Stein et al., HIAC 6); see vtkSteinVisibilitySort.h.
 #include "vtkSteinVisibilitySort.h"
 
-#include "hovSteinGraph.h" // SortByGraph, Topology
+#include "hovSteinGraph.h" // GraphSort, Topology
 #include "hovSteinMerge.h" // SortBackToFront, Geometry, View
 
 #include "vtkCamera.h"
@@ -22,6 +22,7 @@ struct vtkSteinVisibilitySort::Internals
   hovStein::Geometry Geometry;
   hovStein::View View;
   hovStein::Topology Topology;
+  hovStein::GraphSort GraphSorter; ///< with its per-view buffers
   bool TopologyValid = false;
   std::vector<vtkIdType> Order; ///< back to front
   std::vector<vtkIdType> CycleCells;
@@ -107,7 +108,9 @@ void vtkSteinVisibilitySort::InitTraversal()
     this->LastSortSeconds = Seconds(t0);
     return; // nothing changed: hand out the same order again
   }
-  im.View.Setup(im.Geometry, this->Camera);
+  // The adjacency graph needs the cells' depth ranges and extents only for a
+  // few cells (View::DepthRange); the merge needs them all.
+  im.View.Setup(im.Geometry, this->Camera, this->Algorithm != ADJACENCY_GRAPH);
   if (this->Algorithm == ADJACENCY_GRAPH)
   {
     this->SortGraph();
@@ -159,7 +162,7 @@ void vtkSteinVisibilitySort::SortGraph()
 {
   Internals& im = *this->Impl;
   hovStein::GraphStats stats;
-  hovStein::SortByGraph(im.Geometry, im.Topology, im.View, im.Order, stats);
+  im.GraphSorter.Sort(im.Geometry, im.Topology, im.View, im.Order, stats);
   this->NumberOfCycles = stats.Cycles;
   this->NumberOfObstructsTests = stats.Tests;
   this->NumberOfMoves = 0;

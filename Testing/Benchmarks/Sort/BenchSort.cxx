@@ -3,6 +3,9 @@
 // included) and a re-sort after a 5 degree azimuth, for CCD, the Stein sort's
 // ADJACENCY_GRAPH algorithm (default) and its published MULTITILED_MERGE
 // (tuned tiles; by default only up to 200k cells, --published for all).
+// --repeat N (default 1): N first sorts (fresh sort objects) and N re-sorts
+// (each after a further 5 degrees), medians printed; --bracket-only skips the
+// RT meshes.
 #include "vtkCamera.h"
 #include "vtkCellCenterDepthSort.h"
 #include "vtkDataSetTriangleFilter.h"
@@ -13,6 +16,7 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
+#include <algorithm> // std::nth_element for medians
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -77,7 +81,10 @@ struct SteinRun
   int Tiles[2] = { 0, 0 };
 };
 
-SteinRun RunStein(vtkDataSet* d, int algorithm, int tiles)
+/// One first sort and @p resorts re-sorts of the view turned by 5 degrees (the
+/// camera turns back between them); re-sort times appended to @p times, the
+/// counters are those of the first re-sort.
+SteinRun RunSteinOnce(vtkDataSet* d, int algorithm, int tiles, int resorts, std::vector<double>& times)
 {
   vtkNew<vtkCamera> cam;
   FixedView(d, cam);
@@ -92,14 +99,46 @@ SteinRun RunStein(vtkDataSet* d, int algorithm, int tiles)
   r.Setup = s->GetLastSetupSeconds();
   cam->Azimuth(5);
   r.Resort = Traverse(s);
+  times.push_back(r.Resort);
   r.Tests = s->GetNumberOfObstructsTests();
   r.Moves = s->GetNumberOfMoves();
   r.Cycles = s->GetNumberOfCycles();
   r.Edges = s->GetNumberOfGraphEdges();
   r.Boundary = s->GetNumberOfBoundaryCells();
   s->GetUsedTiles(r.Tiles);
+  for (int k = 1; k < resorts; ++k)
+  {
+    cam->Azimuth(-5);
+    Traverse(s);
+    cam->Azimuth(5);
+    times.push_back(Traverse(s));
+  }
   return r;
 }
+
+double Median(std::vector<double> v)
+{
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+/// Medians of @p repeat runs of RunSteinOnce with @p repeat re-sorts each.
+SteinRun RunStein(vtkDataSet* d, int algorithm, int tiles, int repeat)
+{
+  std::vector<double> first, resort, setup;
+  SteinRun r;
+  for (int k = 0; k < repeat; ++k)
+  {
+    r = RunSteinOnce(d, algorithm, tiles, repeat, resort);
+    first.push_back(r.First);
+    setup.push_back(r.Setup);
+  }
+  r.First = Median(first);
+  r.Setup = Median(setup);
+  r.Resort = Median(resort);
+  return r;
+}
+
 }
 
 int main(int argc, char* argv[])
@@ -108,6 +147,8 @@ int main(int argc, char* argv[])
   vtkIdType maxCells = 2000000;
   vtkIdType publishedMax = 200000; // the published merge takes minutes beyond this
   int tuned = -1;                  // -1: n^(1/3)/2 per direction
+  int repeat = 1;
+  bool bracketOnly = false;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--published"))
@@ -120,6 +161,10 @@ int main(int argc, char* argv[])
       publishedMax = std::atoll(argv[++i]);
     else if (i + 1 < argc && !std::strcmp(argv[i], "--tiles"))
       tuned = std::atoi(argv[++i]);
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--repeat"))
+      repeat = std::max(1, std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--bracket-only"))
+      bracketOnly = true;
   }
   if (publishedMax > maxCells)
     publishedMax = maxCells;
@@ -135,7 +180,7 @@ int main(int argc, char* argv[])
   meshes.push_back({ "bracket", reader->GetOutput() });
   for (int e : { 7, 17, 25, 29 })
   {
-    if (5.0 * std::pow(2 * e, 3) <= maxCells)
+    if (!bracketOnly && 5.0 * std::pow(2 * e, 3) <= maxCells)
       meshes.push_back({ "RT [-" + std::to_string(e) + "," + std::to_string(e) + "]^3", RTMesh(e) });
   }
   std::printf("Graph = ADJACENCY_GRAPH (default), merge = MULTITILED_MERGE (published, tuned "
@@ -151,16 +196,21 @@ int main(int argc, char* argv[])
   {
     vtkUnstructuredGrid* g = m.Grid;
     const vtkIdType n = g->GetNumberOfCells();
-    vtkNew<vtkCamera> cam;
-    FixedView(g, cam);
-    vtkNew<vtkCellCenterDepthSort> ccd;
-    ccd->SetInput(g);
-    ccd->SetCamera(cam);
-    ccd->SetMaxCellsReturned(1000);
-    const double ccdFirst = Traverse(ccd);
-    cam->Azimuth(5);
-    const double ccdResort = Traverse(ccd);
-    const SteinRun gr = RunStein(g, vtkSteinVisibilitySort::ADJACENCY_GRAPH, 0);
+    std::vector<double> ccdFirsts, ccdResorts;
+    for (int k = 0; k < repeat; ++k)
+    {
+      vtkNew<vtkCamera> ccdCam;
+      FixedView(g, ccdCam);
+      vtkNew<vtkCellCenterDepthSort> ccd;
+      ccd->SetInput(g);
+      ccd->SetCamera(ccdCam);
+      ccd->SetMaxCellsReturned(1000);
+      ccdFirsts.push_back(Traverse(ccd));
+      ccdCam->Azimuth(5);
+      ccdResorts.push_back(Traverse(ccd));
+    }
+    const double ccdFirst = Median(ccdFirsts), ccdResort = Median(ccdResorts);
+    const SteinRun gr = RunStein(g, vtkSteinVisibilitySort::ADJACENCY_GRAPH, 0, repeat);
     std::printf("| %s | %lld | %.4f | %.4f | %.4f (%.4f) | %.4f | %.2f | %lld | %lld | %lld | %lld |",
       m.Name.c_str(), static_cast<long long>(n), ccdFirst, ccdResort, gr.First, gr.Setup, gr.Resort,
       gr.Resort / ccdResort, static_cast<long long>(gr.Boundary), static_cast<long long>(gr.Tests),
@@ -168,7 +218,7 @@ int main(int argc, char* argv[])
     if (n <= publishedMax)
     {
       const int t = tuned > 0 ? tuned : std::max(1, static_cast<int>(std::cbrt(double(n)) / 2));
-      const SteinRun mg = RunStein(g, vtkSteinVisibilitySort::MULTITILED_MERGE, t);
+      const SteinRun mg = RunStein(g, vtkSteinVisibilitySort::MULTITILED_MERGE, t, 1);
       std::printf(" %.4f | %.4f | %.2f | %lld |\n", mg.First, mg.Resort, mg.Resort / ccdResort,
         static_cast<long long>(mg.Tests));
     }
