@@ -204,6 +204,22 @@ void vtkHighOrderProjectorTile::WriteTile(const hov::RGBA* accum, const unsigned
   }
 }
 
+void vtkHighOrderProjectorTile::WriteEmptyTile(
+  const Frame& frame, int tileIndex, std::vector<double>& rgba)
+{
+  const Bins& bins = *frame.TileBins;
+  const int width = frame.Rays->GetWidth();
+  const int x0 = (tileIndex % bins.TilesX) * bins.Size;
+  const int y0 = (tileIndex / bins.TilesX) * bins.Size;
+  const int w = std::min(bins.Size, width - x0);
+  const int h = std::min(bins.Size, frame.Rays->GetHeight() - y0);
+  for (int j = 0; j < h; ++j)
+  {
+    double* row = &rgba[4 * (static_cast<size_t>(y0 + j) * width + x0)];
+    std::fill(row, row + 4 * static_cast<size_t>(w), 0.0);
+  }
+}
+
 void vtkHighOrderProjectorTile::Write(
   std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const
 {
@@ -476,10 +492,16 @@ void vtkHighOrderProjectorTile::CompositeFragments(
 void vtkHighOrderProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
   vtkHighOrderCellProjector::Statistics& stats)
 {
-  this->Init(frame, tileIndex);
   const Bins& bins = *frame.TileBins;
   const vtkIdType* cells = bins.Cells.data() + bins.Start[tileIndex];
   const vtkIdType count = bins.Start[tileIndex + 1] - bins.Start[tileIndex];
+  if (count == 0)
+  {
+    // No cell: the tile stays transparent (most tiles around a model); no rays.
+    WriteEmptyTile(frame, tileIndex, rgba);
+    return;
+  }
+  this->Init(frame, tileIndex);
   if (frame.Settings->PerPixelSort)
   {
     this->RenderPerPixel(frame, cells, count, stats);

@@ -143,6 +143,8 @@ private:
   /// Composite a segment's RGBA behind pixel p; marks it done when opaque.
   void Composite(const Frame& frame, size_t p, const hov::RGBA& seg);
   void Write(std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const;
+  /// Write a tile that no cell overlaps: transparent black.
+  static void WriteEmptyTile(const Frame& frame, int tileIndex, std::vector<double>& rgba);
   /// True if ordered cell k is a general cell.
   static bool IsGeneral(const Frame& frame, vtkIdType k)
   {
