@@ -6,6 +6,7 @@
 #include <algorithm> // std::max, std::min
 #include <cmath>     // std::isfinite
 #include <cstring>   // memcpy into vector registers
+#include <utility>   // integer_sequence (one unrolled series per term count)
 
 namespace hov
 {
@@ -29,29 +30,34 @@ constexpr int Lanes = 4;
 #define HOV_LANES_TARGET_CLONES
 #endif
 
+/// Four doubles in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
+typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
+static_assert(Lanes == 4, "one V4 per block");
+
 /**
- * The thin Williams-Max series of hovSegmentIntegral.cxx (ThinWilliamsMax)
- * for Lanes segments with the same number of terms: the same operations in
- * the same order per lane, so each lane's w = WFront (before clamping) and
- * alpha equal the scalar kernel's bit for bit.
+ * The thin Williams-Max series of hovSegmentIntegral.cxx (ThinWilliamsMax<N>)
+ * with N terms for Lanes segments: the same operations in the same order per
+ * lane, so each lane's w = WFront (before clamping) and alpha equal the
+ * scalar kernel's bit for bit. N is a compile-time constant, so that both
+ * loops unroll completely (no loop overhead, independent chains interleaved).
  */
+template <int N>
 inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
-  int terms, const double* a, const double* d1, double* w, double* alpha)
+  const double* a, const double* d1, double* w, double* alpha)
 {
-  // Four lanes in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
-  typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
-  static_assert(Lanes == 4, "one V4 per block");
   V4 va, vd1;
   std::memcpy(&va, a, sizeof(V4));
   std::memcpy(&vd1, d1, sizeof(V4));
   const V4 r = va / vd1;
   const V4 d2 = vd1 * vd1;
   V4 wOdd = {}, wEven = {}, aOdd = {}, aEven = {};
-  for (int n = terms; n >= 1; --n)
+#pragma GCC unroll 16
+  for (int n = N; n >= 1; --n)
   {
     // q_n(r) = sum_j P0[n][n-j] r^j by Horner's rule (the scalar kernel's q[n]).
     const double* p = Thin.P0[n];
     V4 h = V4{} + p[0];
+#pragma GCC unroll 16
     for (int j = 1; j <= n; ++j)
     {
       h = h * r + p[j];
@@ -75,16 +81,34 @@ inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
   std::memcpy(alpha, &valpha, sizeof(V4));
 }
 
-/// ThinWilliamsMaxLanes() on @p blocks consecutive blocks of Lanes segments
-/// (one call per group of equal term counts: no dispatch per block).
+/// ThinWilliamsMaxLanes<N>() on @p blocks consecutive blocks of Lanes segments.
+template <int N>
+inline __attribute__((always_inline)) void ThinBlocks(
+  const double* a, const double* d1, int blocks, double* w, double* alpha)
+{
+  for (int b = 0; b < blocks; ++b)
+  {
+    ThinWilliamsMaxLanes<N>(a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
+  }
+}
+
+/// ThinBlocks<N>() for the run-time N = @p terms (one call per group of
+/// equal term counts: one dispatch per group, not per block).
+template <int... N>
+inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const double* a,
+  const double* d1, int blocks, double* w, double* alpha, std::integer_sequence<int, N...>)
+{
+  // Exactly one N + 1 equals terms (1 <= terms <= MaxThinOrder).
+  (void)((terms == N + 1 ? (ThinBlocks<N + 1>(a, d1, blocks, w, alpha), true) : false) || ...);
+}
+
+/// The thin series of @p blocks blocks of Lanes segments, all with @p terms terms.
 HOV_LANES_TARGET_CLONES
 void ThinWilliamsMaxBlocks(
   int terms, const double* a, const double* d1, int blocks, double* w, double* alpha)
 {
-  for (int b = 0; b < blocks; ++b)
-  {
-    ThinWilliamsMaxLanes(terms, a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
-  }
+  ThinBlocksDispatch(
+    terms, a, d1, blocks, w, alpha, std::make_integer_sequence<int, detail::MaxThinOrder>());
 }
 }
 
