@@ -113,112 +113,247 @@ void ThinWilliamsMaxBlocks(
 }
 
 long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
-  const SegmentJob* jobs, int count, RGBA* out, int* piecesOut)
+  const SegmentJob* jobs, int count, RGBA* out, int* pieces)
 {
-  const bool batched =
-    settings.Emission == EmissionModel::WilliamsMax && settings.Method == SegmentMethod::Exact;
-  long long total = 0;
-  auto count1 = [&](int i, int p) {
-    total += p;
-    if (piecesOut)
-    {
-      piecesOut[i] = p;
-    }
-  };
-  if (this->Items.size() < static_cast<size_t>(count))
-  {
-    this->Items.resize(count); // grows only: no allocation in steady state
-    this->Order.resize(count);
-  }
-  int numItems = 0;
-  int perTerms[detail::MaxThinOrder + 2] = {};
-  const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
+  this->JobS.resize(2 * static_cast<size_t>(count) + 1);
+  this->JobL.resize(count + 1);
+  this->JobK.resize(count + 1);
   for (int i = 0; i < count; ++i)
   {
-    const SegmentJob& job = jobs[i];
-    int k = job.Interval;
+    this->JobS[i] = jobs[i].SFront;
+    this->JobS[count + i] = jobs[i].SBack;
+    this->JobL[i] = jobs[i].Length;
+    this->JobK[i] = jobs[i].Interval;
+  }
+  const Arrays arrays{ this->JobS.data(), this->JobS.data() + count, this->JobL.data(),
+    this->JobK.data() };
+  return this->Integrate(tf, settings, arrays, count, out, pieces);
+}
+
+long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
+  const Arrays& jobs, int count, RGBA* out, int* pieces)
+{
+  if (settings.Emission != EmissionModel::WilliamsMax || settings.Method != SegmentMethod::Exact)
+  {
+    return this->IntegrateScalar(tf, settings, jobs, count, out, pieces);
+  }
+  long long total = this->CollectPieces(tf, jobs, count, out, pieces);
+  this->EvaluatePieces(tf, settings, out);
+  this->ThinSeries();
+  this->WriteThin(out);
+  total += this->CompositeSplits(out, pieces);
+  return total;
+}
+
+long long SegmentBatch::IntegrateScalar(const TransferFunction& tf,
+  const IntegrationSettings& settings, const Arrays& jobs, int count, RGBA* out, int* pieces)
+{
+  long long total = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    int p = 1;
+    if (jobs.Interval[i] >= -1)
+    {
+      out[i] = IntegrateLinearScalarInInterval(
+        tf, jobs.Interval[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i], settings);
+    }
+    else
+    {
+      out[i] = IntegrateLinearScalar(tf, jobs.SFront[i], jobs.SBack[i], jobs.Length[i], settings, &p);
+    }
+    total += p;
+    if (pieces)
+    {
+      pieces[i] = p;
+    }
+  }
+  return total;
+}
+
+/**
+ * Each segment becomes one piece (its interval known, or found as
+ * OnePieceInterval() finds it) or several (SplitSegment()); invalid ones
+ * (IntegrateLinearScalar()'s and IntegrateLinearScalarInInterval()'s early
+ * returns) are written as zero here. Returns the pieces of the unsplit
+ * segments (split ones are counted when composited).
+ */
+long long SegmentBatch::CollectPieces(
+  const TransferFunction& tf, const Arrays& jobs, int count, RGBA* out, int* pieces)
+{
+  this->NumPieces = 0;
+  this->Splits.clear();
+  const std::vector<double>& nodes = tf.GetNodes();
+  const int n = static_cast<int>(nodes.size());
+  long long total = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    const double sFront = jobs.SFront[i], sBack = jobs.SBack[i], length = jobs.Length[i];
+    const bool valid = length > 0.0 && std::isfinite(sFront) && std::isfinite(sBack);
+    int k = jobs.Interval[i];
+    int p = 1;
     if (k < -1)
     {
-      // IntegrateLinearScalar(): nothing for invalid input, a walk over the
-      // intervals if the segment crosses a node, else one piece in k.
-      if (!(job.Length > 0.0) || !std::isfinite(job.SFront) || !std::isfinite(job.SBack) ||
-        tf.GetNumberOfNodes() == 0)
+      if (!valid || n == 0)
       {
-        out[i] = RGBA();
-        count1(i, 0);
-        continue;
+        p = 0;
       }
-      k = OnePieceInterval(tf, job.SFront, job.SBack);
-      if (k < -1)
+      else
       {
-        int p = 0;
-        out[i] = IntegrateLinearScalar(tf, job.SFront, job.SBack, job.Length, settings, &p);
-        count1(i, p);
-        continue;
+        // OnePieceInterval(), inline; the walk starts from the same interval.
+        const bool up = sBack - sFront >= 0.0;
+        k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
+        const bool one =
+          up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack);
+        if (!one)
+        {
+          this->SplitSegment(tf, i, k, sFront, sBack, length);
+          continue; // counted when composited
+        }
       }
     }
-    count1(i, 1);
-    if (!batched || !(job.Length > 0.0) || !std::isfinite(job.SFront) || !std::isfinite(job.SBack))
+    total += p;
+    if (pieces)
     {
-      out[i] = IntegrateLinearScalarInInterval(tf, k, job.SFront, job.SBack, job.Length, settings);
+      pieces[i] = p;
+    }
+    if (!valid || p == 0)
+    {
+      out[i] = RGBA();
       continue;
     }
-    // IntegrateLinearScalarInInterval() -> IntegrateSegment() -> ExactSegmentWeights(),
-    // taking the thin branch aside for the lanes.
-    // Evaluated straight into the next item's slot (taken only if the segment
+    this->AddPiece(Piece{ sFront, sBack, length, k, i });
+  }
+  return total;
+}
+
+/// IntegrateLinearScalar()'s walk over the intervals from @p sFront toward
+/// @p sBack (starting in interval @p k): the same piece ends and lengths.
+void SegmentBatch::SplitSegment(const TransferFunction& tf, int job, int k, double sFront,
+  double sBack, double length)
+{
+  const std::vector<double>& nodes = tf.GetNodes();
+  const int n = static_cast<int>(nodes.size());
+  const double ds = sBack - sFront;
+  const bool up = ds > 0.0;
+  const double scale = std::isfinite(ds) ? 1.0 : 0.5;
+  const double invDs = 1.0 / (scale * sBack - scale * sFront);
+  Split split{ job, static_cast<int>(this->SplitOut.size()), 0 };
+  double xPrev = 0.0, sPrev = sFront;
+  while (true)
+  {
+    double sNext = sBack, xNext = 1.0;
+    bool last = true;
+    if (up && k + 1 < n && nodes[k + 1] < sBack)
+    {
+      sNext = nodes[k + 1];
+      last = false;
+    }
+    else if (!up && k >= 0 && nodes[k] > sBack)
+    {
+      sNext = nodes[k];
+      last = false;
+    }
+    if (!last)
+    {
+      xNext = (scale * sNext - scale * sFront) * invDs;
+    }
+    const double pieceLength = length * (xNext - xPrev);
+    if (pieceLength > 0.0)
+    {
+      this->AddPiece(
+        Piece{ sPrev, sNext, pieceLength, k, -1 - static_cast<int>(this->SplitOut.size()) });
+      this->SplitOut.emplace_back();
+      ++split.Count;
+    }
+    if (last)
+    {
+      break;
+    }
+    xPrev = xNext;
+    sPrev = sNext;
+    k += up ? 1 : -1;
+  }
+  this->Splits.push_back(split);
+}
+
+/**
+ * IntegrateLinearScalarInInterval() -> IntegrateSegment() ->
+ * ExactSegmentWeights() per piece, taking the thin branch aside for the lanes.
+ */
+void SegmentBatch::EvaluatePieces(
+  const TransferFunction& tf, const IntegrationSettings& settings, RGBA* out)
+{
+  if (this->Items.size() < static_cast<size_t>(this->NumPieces))
+  {
+    this->Items.resize(this->NumPieces);
+  }
+  this->NumItems = 0;
+  std::fill(this->PerTerms, this->PerTerms + detail::MaxThinOrder + 2, 0);
+  const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
+  for (int m = 0; m < this->NumPieces; ++m)
+  {
+    const Piece& piece = this->Pieces[m];
+    // Evaluated straight into the next item's slot (taken only if the piece
     // is thin): copying a SegmentEnd off the stack stalled on store forwarding.
-    ThinItem& item = this->Items[numItems];
-    const SegmentEnd& front = item.Front;
-    const SegmentEnd& back = item.Back;
-    tf.Evaluate(k, job.SFront, false, item.Front);
-    tf.Evaluate(k, job.SBack, false, item.Back);
-    const double depthFront = std::max(front.Tau, 0.0) * job.Length;
-    const double depthBack = std::max(back.Tau, 0.0) * job.Length;
+    ThinItem& item = this->Items[this->NumItems];
+    tf.Evaluate(piece.Interval, piece.S0, false, item.Front);
+    tf.Evaluate(piece.Interval, piece.S1, false, item.Back);
+    const double depthFront = std::max(item.Front.Tau, 0.0) * piece.Length;
+    const double depthBack = std::max(item.Back.Tau, 0.0) * piece.Length;
     const double a = std::min(depthFront, detail::DepthCap);
     const double c = std::min(depthBack, detail::DepthCap);
     const double d1 = 0.5 * (a + c);
     if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(d1 > 0.0) ||
       d1 > detail::ThinDepth)
     {
-      out[i] = IntegrateSegment(job.Length, front, back, settings.Emission, settings.Method);
+      this->DestOf(piece.Dest, out) =
+        IntegrateSegment(piece.Length, item.Front, item.Back, settings.Emission, settings.Method);
       continue;
     }
-    ++numItems;
+    ++this->NumItems;
     item.A = a;
     item.D1 = d1;
-    item.Index = i;
+    item.Dest = piece.Dest;
     item.Terms = thinTerms(d1);
-    ++perTerms[item.Terms + 1];
+    ++this->PerTerms[item.Terms + 1];
   }
+}
 
-  // Group the thin segments by number of terms (counting sort), their depths
-  // contiguous, then each group Lanes at a time (lanes are independent: the
-  // grouping does not change any result).
-  for (int t = 0; t <= detail::MaxThinOrder; ++t)
+/**
+ * The thin items grouped by number of terms (counting sort), their depths
+ * contiguous, then each group Lanes at a time (lanes are independent: the
+ * grouping does not change any result). W and Alpha receive the series in
+ * that order.
+ */
+void SegmentBatch::ThinSeries()
+{
+  constexpr int maxOrder = detail::MaxThinOrder;
+  static_assert(maxOrder + 2 <= static_cast<int>(sizeof(PerTerms) / sizeof(int)), "term counts");
+  int* perTerms = this->PerTerms;
+  for (int t = 0; t <= maxOrder; ++t)
   {
     perTerms[t + 1] += perTerms[t];
   }
-  int groupStart[detail::MaxThinOrder + 2];
-  std::copy(perTerms, perTerms + detail::MaxThinOrder + 2, groupStart);
+  int groupStart[maxOrder + 2];
+  std::copy(perTerms, perTerms + maxOrder + 2, groupStart);
+  const int numItems = this->NumItems;
   if (this->SortedA.size() < static_cast<size_t>(numItems + Lanes))
   {
+    this->Order.resize(numItems + Lanes);
     this->SortedA.resize(numItems + Lanes);
     this->SortedD1.resize(numItems + Lanes);
-  }
-  for (int n = 0; n < numItems; ++n)
-  {
-    const ThinItem& item = this->Items[n];
-    const int pos = perTerms[item.Terms]++;
-    this->Order[pos] = n;
-    this->SortedA[pos] = item.A;
-    this->SortedD1[pos] = item.D1;
-  }
-  if (this->W.size() < static_cast<size_t>(numItems + Lanes))
-  {
     this->W.resize(numItems + Lanes);
     this->Alpha.resize(numItems + Lanes);
   }
-  for (int terms = 1; terms <= detail::MaxThinOrder; ++terms)
+  for (int m = 0; m < numItems; ++m)
+  {
+    const ThinItem& item = this->Items[m];
+    const int pos = perTerms[item.Terms]++;
+    this->Order[pos] = m;
+    this->SortedA[pos] = item.A;
+    this->SortedD1[pos] = item.D1;
+  }
+  for (int terms = 1; terms <= maxOrder; ++terms)
   {
     const int first = groupStart[terms], last = groupStart[terms + 1];
     const int full = (last - first) / Lanes;
@@ -239,18 +374,50 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
       std::copy(alpha, alpha + (last - tail), this->Alpha.data() + tail);
     }
   }
-  for (int m = 0; m < numItems; ++m)
+}
+
+/// The thin pieces' RGBA from their weights, as ThinWeights() and IntegrateSegment().
+void SegmentBatch::WriteThin(RGBA* out)
+{
+  for (int m = 0; m < this->NumItems; ++m)
   {
     const ThinItem& item = this->Items[this->Order[m]];
-    // As ThinWeights() and IntegrateSegment().
     const double wf = std::max(0.0, this->W[m]);
     const double wb = std::max(0.0, this->Alpha[m] - this->W[m]);
-    RGBA& o = out[item.Index];
+    RGBA& o = this->DestOf(item.Dest, out);
     o.A = this->Alpha[m];
     o.R = wf * item.Front.Color[0] + wb * item.Back.Color[0];
     o.G = wf * item.Front.Color[1] + wb * item.Back.Color[1];
     o.B = wf * item.Front.Color[2] + wb * item.Back.Color[2];
   }
+}
+
+/// The split segments: pieces composited front to back, stopping once opaque,
+/// as IntegrateLinearScalar() does. Returns the pieces composited.
+long long SegmentBatch::CompositeSplits(RGBA* out, int* pieces)
+{
+  long long total = 0;
+  for (const Split& split : this->Splits)
+  {
+    RGBA accum;
+    int count = 0;
+    for (int m = split.First; m < split.First + split.Count; ++m)
+    {
+      CompositeBehind(accum, this->SplitOut[m]);
+      ++count;
+      if (accum.A >= 1.0)
+      {
+        break; // opaque: nothing behind is visible
+      }
+    }
+    out[split.Job] = accum;
+    total += count;
+    if (pieces)
+    {
+      pieces[split.Job] = count;
+    }
+  }
+  this->SplitOut.clear();
   return total;
 }
 }
