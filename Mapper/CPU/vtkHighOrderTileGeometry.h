@@ -1,8 +1,8 @@
 /**
  * @file    vtkHighOrderTileGeometry.h
  * @brief   Private to vtkHighOrderProjectorTile: exact ray clipping against a
- *          cell's four face planes (scalar, and four pixels at once in vector
- *          lanes) and the window-x span of a projected cell on a pixel row.
+ *          cell's four face planes and the window-x span of a projected cell
+ *          on a pixel row (the pixel lanes: vtkHighOrderProjectorTileLanes.h).
  *
  * Header only (inline helpers of one translation unit), in namespace
  * hovTileGeometry.
@@ -15,7 +15,7 @@
 #include "vtkHighOrderViewRays.h"      // Ray
 
 #include <algorithm> // std::min, std::max
-#include <cstring>   // memcpy into vector registers
+#include <cstring>   // memcpy into vector registers (RowSpan)
 
 namespace hovTileGeometry
 {
@@ -72,83 +72,37 @@ inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const g
     tMax, px, py, tIn, tOut);
 }
 
-#if defined(__GNUC__) // GCC and Clang: vector extensions
-#define HOV_CLIP_LANES 1
-/// Four doubles in a GCC/Clang vector: one AVX instruction, or two SSE2 ones.
-typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
-
-using TileRays = vtkHighOrderProjectorTile::TileRays;
-constexpr int PixelLanes = 4; ///< pixels per ClipPixelLanes() call
-
-/**
- * ClipRay() and the scalars at both ends of the segment for the PixelLanes
- * consecutive pixels from @p p, one pixel per lane, branch free: the same
- * products, sums and quotients in the same order (dot products as glm::dot
- * computes them), and min/max, which do not depend on the order, so the
- * result is bit-identical. hit[l]: 1 hit, 0 miss, -1 undecided (a ray
- * parallel to a face, denominator exactly 0, where ClipRay's tie rules apply).
- */
-__attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell, const TileRays& r, size_t p, double* tIn,
-  double* tOut, double* sIn, double* sOut, signed char* hit)
+/// True if the ray is parallel to a face (a zero denominator, as the lanes
+/// compute it): ClipRay()'s tie rules decide.
+inline bool IsUndecided(const CellRecord& cell, const Ray& ray)
 {
-  V4 ox, oy, oz, dx, dy, dz, tMax;
-  std::memcpy(&ox, r.OX + p, sizeof(V4));
-  std::memcpy(&oy, r.OY + p, sizeof(V4));
-  std::memcpy(&oz, r.OZ + p, sizeof(V4));
-  std::memcpy(&dx, r.DX + p, sizeof(V4));
-  std::memcpy(&dy, r.DY + p, sizeof(V4));
-  std::memcpy(&dz, r.DZ + p, sizeof(V4));
-  std::memcpy(&tMax, r.TMax + p, sizeof(V4));
-  const V4 zero = {};
-  const V4 big = zero + 1e300 * 1e300; // +inf: no constraint
-  V4 enter[4], leave[4];
-  auto parallel = zero < zero; // no lane yet
+  bool parallel = false;
   for (int k = 0; k < 4; ++k)
   {
-    const double nx = cell.NX[k], ny = cell.NY[k], nz = cell.NZ[k];
-    const V4 denom = (nx * dx + ny * dy) + nz * dz;
-    const V4 num = cell.Offset[k] - ((nx * ox + ny * oy) + nz * oz);
-    parallel |= denom == zero;
-    const V4 t = num / denom;
-    enter[k] = denom < zero ? t : -big;
-    leave[k] = denom > zero ? t : big;
+    const double denom =
+      (cell.NX[k] * ray.Direction.x + cell.NY[k] * ray.Direction.y) + cell.NZ[k] * ray.Direction.z;
+    parallel = parallel || denom == 0.0;
   }
-  // std::max(a, b) is a < b ? b : a, std::min(a, b) is b < a ? b : a, per lane.
-  const V4 in0 = zero < enter[0] ? enter[0] : zero;
-  const V4 in12 = enter[1] < enter[2] ? enter[2] : enter[1];
-  const V4 in012 = in0 < in12 ? in12 : in0;
-  const V4 vIn = in012 < enter[3] ? enter[3] : in012;
-  const V4 out0 = leave[0] < tMax ? leave[0] : tMax;
-  const V4 out12 = leave[2] < leave[1] ? leave[2] : leave[1];
-  const V4 out012 = out12 < out0 ? out12 : out0;
-  const V4 vOut = leave[3] < out012 ? leave[3] : out012;
-  const glm::dvec3& g = cell.Gradient;
-  const glm::dvec3& q = cell.RefPoint;
-  const V4 sAtOrigin = cell.RefScalar + ((g.x * (ox - q.x) + g.y * (oy - q.y)) + g.z * (oz - q.z));
-  const V4 slope = (g.x * dx + g.y * dy) + g.z * dz;
-  const V4 vsIn = sAtOrigin + vIn * slope;
-  const V4 vsOut = sAtOrigin + vOut * slope;
-  std::memcpy(tIn, &vIn, sizeof(V4));
-  std::memcpy(tOut, &vOut, sizeof(V4));
-  std::memcpy(sIn, &vsIn, sizeof(V4));
-  std::memcpy(sOut, &vsOut, sizeof(V4));
-  const auto inside = vIn < vOut;
-  for (int l = 0; l < PixelLanes; ++l)
-  {
-    hit[l] = static_cast<signed char>(parallel[l] ? -1 : (inside[l] ? 1 : 0));
-  }
+  return parallel;
 }
+
+#if defined(__GNUC__) // GCC and Clang: vector extensions
+/// Four doubles in a GCC/Clang vector: one AVX instruction, or two SSE2 ones.
+typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
 #endif
 
 /**
  * The six projected edges of a cell, set up once per cell for RowSpan():
  * the projection is the convex hull of the projected vertices, and a row
  * meets a convex hull of points in the span of its crossings with all
- * segments between them.
+ * segments between them. Two more slots (EdgeSlots) hold edges far above
+ * every row, so that RowSpan() takes the edges four at a time.
  */
 struct ProjectedEdges
 {
-  double PX[6], PY[6], QY[6], DX[6], InvDY[6];
+  static constexpr int EdgeSlots = 8;
+  alignas(32) double PX[EdgeSlots], PY[EdgeSlots], QY[EdgeSlots], DX[EdgeSlots],
+    InvDY[EdgeSlots];
   explicit ProjectedEdges(const CellRecord& cell)
   {
     int e = 0;
@@ -165,8 +119,28 @@ struct ProjectedEdges
         this->InvDY[e] = p.y != q.y ? 1.0 / (q.y - p.y) : 0.0; // 0: a horizontal edge
       }
     }
+    for (; e < EdgeSlots; ++e)
+    {
+      this->PX[e] = this->DX[e] = this->InvDY[e] = 0.0;
+      this->PY[e] = this->QY[e] = 1e300; // (PY - y) (QY - y) > 0: no row meets it
+    }
   }
 };
+
+/// Distance, in cells of a tile's list, at which the per-cell data is
+/// prefetched: cells come in visibility (or depth) order, scattered in memory,
+/// and each one's few pixels take less time than a cache miss.
+constexpr vtkIdType PrefetchDistance = 4;
+
+/// Prefetch what the tile loop reads of ordered cell k.
+inline void PrefetchCell(const vtkHighOrderProjectorTile::Frame& frame, vtkIdType k)
+{
+  const char* cell = reinterpret_cast<const char*>(&(*frame.Cells)[k]);
+  for (size_t offset = 0; offset < sizeof(CellRecord); offset += 64)
+  {
+    __builtin_prefetch(cell + offset);
+  }
+}
 
 /// std::ceil / std::floor to int for |v| < 2^30 (beyond: clamped to +-2^30),
 /// without the library call's software rounding on baseline x86-64.
@@ -186,11 +160,42 @@ inline int FloorToInt(double v)
 /// Window-x range of the projected cell on the row at height y; false if
 /// the row misses it. (Round-off here only widens or narrows the candidate
 /// pixels by far less than BoxMargin; the ray clip decides exactly.)
+#if defined(__GNUC__)
+/// Two edges per vector (the SSE2 width: wider vectors are split into scalar
+/// compares on baseline x86-64): per edge the same operations as one at a
+/// time, and min/max, which do not depend on the order (up to the sign of a
+/// zero, which the rounding to pixel centres does not see).
+inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
+{
+  typedef double V2 __attribute__((vector_size(2 * sizeof(double))));
+  V2 lo = V2{} + 1e300, hi = V2{} - 1e300;
+  for (int e = 0; e < ProjectedEdges::EdgeSlots; e += 2)
+  {
+    V2 px, py, qy, dx, inv;
+    std::memcpy(&px, edges.PX + e, sizeof(V2));
+    std::memcpy(&py, edges.PY + e, sizeof(V2));
+    std::memcpy(&qy, edges.QY + e, sizeof(V2));
+    std::memcpy(&dx, edges.DX + e, sizeof(V2));
+    std::memcpy(&inv, edges.InvDY + e, sizeof(V2));
+    const auto meets = (py - y) * (qy - y) <= 0.0; // not entirely above or below the row
+    const auto horizontal = inv == 0.0;
+    const V2 x = px + dx * ((y - py) * inv);
+    const V2 qx = px + dx;
+    const V2 eMin = horizontal ? (qx < px ? qx : px) : x;
+    const V2 eMax = horizontal ? (px < qx ? qx : px) : x;
+    lo = (meets & (eMin < lo)) ? eMin : lo;
+    hi = (meets & (hi < eMax)) ? eMax : hi;
+  }
+  xMin = std::min(lo[0], lo[1]);
+  xMax = std::max(hi[0], hi[1]);
+  return xMin <= xMax;
+}
+#else
 inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
 {
   xMin = 1e300;
   xMax = -1e300;
-  for (int e = 0; e < 6; ++e)
+  for (int e = 0; e < ProjectedEdges::EdgeSlots; ++e)
   {
     if ((edges.PY[e] - y) * (edges.QY[e] - y) > 0.0)
     {
@@ -208,6 +213,7 @@ inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double&
   }
   return xMin <= xMax;
 }
+#endif
 }
 
 #endif
