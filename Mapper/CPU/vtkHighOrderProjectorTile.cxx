@@ -183,26 +183,6 @@ void vtkHighOrderProjectorTile::Write(
     rgba, st.WitnessViolations);
 }
 
-bool vtkHighOrderProjectorTile::RowRange(
-  const CellRecord& cell, const ProjectedEdges& edges, int j, int& r0, int& r1) const
-{
-  const Box& b = cell.PixelBox;
-  r0 = std::max(b[0], this->X0) - this->X0;
-  r1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
-  if (cell.Projectable)
-  {
-    // Only the pixel centres inside the projection (BoxMargin of slack).
-    double xMin, xMax;
-    if (!RowSpan(edges, this->Y0 + j + 0.5, xMin, xMax))
-    {
-      return false;
-    }
-    r0 = std::max(r0, CeilToInt(xMin - 0.5 - BoxMargin) - this->X0);
-    r1 = std::min(r1, FloorToInt(xMax - 0.5 + BoxMargin) - this->X0);
-  }
-  return r0 <= r1;
-}
-
 void vtkHighOrderProjectorTile::ReserveQueue(int n)
 {
   if (n + PixelLanes <= this->QueueCapacity)
@@ -235,15 +215,29 @@ void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType 
   const int j0 = std::max(b[2] - this->Y0, this->RowBegin);
   const int j1 = std::min(b[3] - this->Y0, this->RowEnd - 1);
   const ProjectedEdges edges(cell);
+  // All rows' pixel ranges first (independent rows: their latencies overlap).
+  int first[MaxTileSize], last[MaxTileSize];
+  int total = 0;
   for (int j = j0; j <= j1; ++j)
   {
-    int r0, r1;
-    if (!this->RowRange(cell, edges, j, r0, r1))
+    if (!this->RowRange(cell, edges, j, first[j - j0], last[j - j0]))
+    {
+      last[j - j0] = first[j - j0] - 1;
+    }
+    total += std::max(0, last[j - j0] - first[j - j0] + 1);
+  }
+  if (this->NumQueued + total + PixelLanes > this->QueueCapacity)
+  {
+    this->ReserveQueue(this->NumQueued + total);
+  }
+  for (int j = j0; j <= j1; ++j)
+  {
+    const int r0 = first[j - j0];
+    const int count = last[j - j0] - r0 + 1;
+    if (count <= 0)
     {
       continue;
     }
-    const int count = r1 - r0 + 1;
-    this->ReserveQueue(this->NumQueued + count);
     const size_t p0 = static_cast<size_t>(j) * this->W + r0;
     const int q = this->NumQueued;
     const bool all = ClipSpan(cell, this->LaneRays, p0, count,

@@ -142,7 +142,11 @@ inline bool ClipSpanLanes(const CellRecord& cell, const TileRays& rays, size_t p
 }
 #endif
 
-/// ClipSpanLanes(), compiled also for AVX2 (in vtkHighOrderProjectorTile.cxx).
+/// ClipSpanLanes(), compiled also for AVX2 (in vtkHighOrderProjectorTile.cxx;
+/// hidden: called directly, not through the library's symbol table).
+#if defined(__GNUC__)
+__attribute__((visibility("hidden")))
+#endif
 bool ClipSpan(
   const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q);
 
@@ -155,6 +159,27 @@ inline int LaneHit(const CellRecord& cell, const Ray& ray, double tIn, double tO
   return IsUndecided(cell, ray) ? -1 : (tIn < tOut ? 1 : 0);
 }
 
+}
+
+/// (Inline: called per row of every cell.)
+inline bool vtkHighOrderProjectorTile::RowRange(
+  const CellRecord& cell, const hovTileGeometry::ProjectedEdges& edges, int j, int& r0, int& r1) const
+{
+  const Box& b = cell.PixelBox;
+  r0 = std::max(b[0], this->X0) - this->X0;
+  r1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
+  if (cell.Projectable)
+  {
+    // Only the pixel centres inside the projection (BoxMargin of slack).
+    double xMin, xMax;
+    if (!hovTileGeometry::RowSpan(edges, this->Y0 + j + 0.5, xMin, xMax))
+    {
+      return false;
+    }
+    r0 = std::max(r0, hovTileGeometry::CeilToInt(xMin - 0.5 - BoxMargin) - this->X0);
+    r1 = std::min(r1, hovTileGeometry::FloorToInt(xMax - 0.5 + BoxMargin) - this->X0);
+  }
+  return r0 <= r1;
 }
 
 #endif

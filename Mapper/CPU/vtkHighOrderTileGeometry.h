@@ -15,7 +15,7 @@
 #include "vtkHighOrderViewRays.h"      // Ray
 
 #include <algorithm> // std::min, std::max
-#include <cstring>   // memcpy into vector registers (RowSpan)
+#include <utility>   // std::swap
 
 namespace hovTileGeometry
 {
@@ -95,17 +95,20 @@ typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
  * The six projected edges of a cell, set up once per cell for RowSpan():
  * the projection is the convex hull of the projected vertices, and a row
  * meets a convex hull of points in the span of its crossings with all
- * segments between them. Two more slots (EdgeSlots) hold edges far above
- * every row, so that RowSpan() takes the edges four at a time.
+ * segments between them. A row strictly between two consecutive vertex
+ * heights (band b between the sorted heights BandY[b] and BandY[b + 1])
+ * crosses exactly the edges from a vertex below to a vertex above
+ * (BandEdges[b], 3 or 4 of them), so RowSpan() computes only those.
  */
 struct ProjectedEdges
 {
-  static constexpr int EdgeSlots = 8;
-  alignas(32) double PX[EdgeSlots], PY[EdgeSlots], QY[EdgeSlots], DX[EdgeSlots],
-    InvDY[EdgeSlots];
+  double PX[6], PY[6], QY[6], DX[6], InvDY[6];
+  double BandY[4];
+  int BandEdges[3][4]; ///< 3 or 4 edges (a third one repeated)
   explicit ProjectedEdges(const CellRecord& cell)
   {
     int e = 0;
+    int edgeOf[4][4];
     for (int a = 0; a < 4; ++a)
     {
       for (int b = a + 1; b < 4; ++b, ++e)
@@ -117,12 +120,36 @@ struct ProjectedEdges
         this->QY[e] = q.y;
         this->DX[e] = q.x - p.x;
         this->InvDY[e] = p.y != q.y ? 1.0 / (q.y - p.y) : 0.0; // 0: a horizontal edge
+        edgeOf[a][b] = edgeOf[b][a] = e;
       }
     }
-    for (; e < EdgeSlots; ++e)
+    // Vertices by height (insertion sort of four), then the edges of each band.
+    int v[4] = { 0, 1, 2, 3 };
+    for (int i = 1; i < 4; ++i)
     {
-      this->PX[e] = this->DX[e] = this->InvDY[e] = 0.0;
-      this->PY[e] = this->QY[e] = 1e300; // (PY - y) (QY - y) > 0: no row meets it
+      for (int k = i; k > 0 && cell.Vertex[v[k]].y < cell.Vertex[v[k - 1]].y; --k)
+      {
+        std::swap(v[k], v[k - 1]);
+      }
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      this->BandY[i] = cell.Vertex[v[i]].y;
+    }
+    for (int b = 0; b < 3; ++b)
+    {
+      int count = 0;
+      for (int lo = 0; lo <= b; ++lo)
+      {
+        for (int hi = b + 1; hi < 4; ++hi)
+        {
+          this->BandEdges[b][count++] = edgeOf[v[lo]][v[hi]];
+        }
+      }
+      if (count == 3)
+      {
+        this->BandEdges[b][3] = this->BandEdges[b][0]; // min/max: a repeat changes nothing
+      }
     }
   }
 };
@@ -160,42 +187,11 @@ inline int FloorToInt(double v)
 /// Window-x range of the projected cell on the row at height y; false if
 /// the row misses it. (Round-off here only widens or narrows the candidate
 /// pixels by far less than BoxMargin; the ray clip decides exactly.)
-#if defined(__GNUC__)
-/// Two edges per vector (the SSE2 width: wider vectors are split into scalar
-/// compares on baseline x86-64): per edge the same operations as one at a
-/// time, and min/max, which do not depend on the order (up to the sign of a
-/// zero, which the rounding to pixel centres does not see).
-inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
-{
-  typedef double V2 __attribute__((vector_size(2 * sizeof(double))));
-  V2 lo = V2{} + 1e300, hi = V2{} - 1e300;
-  for (int e = 0; e < ProjectedEdges::EdgeSlots; e += 2)
-  {
-    V2 px, py, qy, dx, inv;
-    std::memcpy(&px, edges.PX + e, sizeof(V2));
-    std::memcpy(&py, edges.PY + e, sizeof(V2));
-    std::memcpy(&qy, edges.QY + e, sizeof(V2));
-    std::memcpy(&dx, edges.DX + e, sizeof(V2));
-    std::memcpy(&inv, edges.InvDY + e, sizeof(V2));
-    const auto meets = (py - y) * (qy - y) <= 0.0; // not entirely above or below the row
-    const auto horizontal = inv == 0.0;
-    const V2 x = px + dx * ((y - py) * inv);
-    const V2 qx = px + dx;
-    const V2 eMin = horizontal ? (qx < px ? qx : px) : x;
-    const V2 eMax = horizontal ? (px < qx ? qx : px) : x;
-    lo = (meets & (eMin < lo)) ? eMin : lo;
-    hi = (meets & (hi < eMax)) ? eMax : hi;
-  }
-  xMin = std::min(lo[0], lo[1]);
-  xMax = std::max(hi[0], hi[1]);
-  return xMin <= xMax;
-}
-#else
-inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
+inline bool RowSpanAllEdges(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
 {
   xMin = 1e300;
   xMax = -1e300;
-  for (int e = 0; e < ProjectedEdges::EdgeSlots; ++e)
+  for (int e = 0; e < 6; ++e)
   {
     if ((edges.PY[e] - y) * (edges.QY[e] - y) > 0.0)
     {
@@ -213,7 +209,31 @@ inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double&
   }
   return xMin <= xMax;
 }
-#endif
+
+/// RowSpanAllEdges() by bands: a row strictly inside a band computes only
+/// the band's edges (the others are entirely above or below it), the same
+/// crossings in the same way; a row through a vertex takes all six.
+inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
+{
+  if (y < edges.BandY[0] || edges.BandY[3] < y)
+  {
+    return false; // no edge reaches the row
+  }
+  const int b = (edges.BandY[1] < y) + (edges.BandY[2] < y);
+  if (!(edges.BandY[b] < y && y < edges.BandY[b + 1]))
+  {
+    return RowSpanAllEdges(edges, y, xMin, xMax); // through a vertex
+  }
+  double x[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    const int e = edges.BandEdges[b][i];
+    x[i] = edges.PX[e] + edges.DX[e] * ((y - edges.PY[e]) * edges.InvDY[e]);
+  }
+  xMin = std::min(std::min(x[0], x[1]), std::min(x[2], x[3]));
+  xMax = std::max(std::max(x[0], x[1]), std::max(x[2], x[3]));
+  return xMin <= xMax;
+}
 }
 
 #endif

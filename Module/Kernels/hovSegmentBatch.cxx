@@ -276,102 +276,125 @@ void SegmentBatch::SplitSegment(const TransferFunction& tf, int job, int k, doub
   this->Splits.push_back(split);
 }
 
+/// The lane arrays for @p n pieces (and a block of padding lanes).
+SegmentBatch::ThinArrays SegmentBatch::ThinLanes(int n)
+{
+  const size_t stride = static_cast<size_t>(n) + Lanes;
+  if (this->ThinStore.size() < static_cast<size_t>(ThinFields) * stride)
+  {
+    this->ThinStore.resize(static_cast<size_t>(ThinFields) * stride); // grows only: none in steady state
+  }
+  if (this->ThinTerms.size() < stride)
+  {
+    this->ThinTerms.resize(stride);
+    this->Order.resize(stride);
+  }
+  double* f = this->ThinStore.data();
+  return ThinArrays{ f, f + stride, f + 2 * stride, f + 3 * stride, f + 4 * stride,
+    f + 5 * stride, f + 6 * stride, f + 7 * stride, f + 8 * stride, f + 9 * stride,
+    this->ThinTerms.data() };
+}
+
 /**
  * IntegrateLinearScalarInInterval() -> IntegrateSegment() ->
- * ExactSegmentWeights() per piece, taking the thin branch aside for the lanes.
+ * ExactSegmentWeights() per piece, taking the thin branch aside for the
+ * lanes: a thin piece's depths, colours and number of terms go to the lane
+ * arrays, any other piece is integrated here by the scalar kernel (Terms 0).
  */
 void SegmentBatch::EvaluatePieces(
   const TransferFunction& tf, const IntegrationSettings& settings, RGBA* out)
 {
-  if (this->Items.size() < static_cast<size_t>(this->NumPieces))
-  {
-    this->Items.resize(this->NumPieces);
-  }
-  this->NumItems = 0;
-  std::fill(this->PerTerms, this->PerTerms + detail::MaxThinOrder + 2, 0);
+  const int n = this->NumPieces;
+  const ThinArrays t = this->ThinLanes(n);
+  double* __restrict a = t.A;
+  double* __restrict d1 = t.D1;
+  double* __restrict front[3] = { t.FrontR, t.FrontG, t.FrontB };
+  double* __restrict back[3] = { t.BackR, t.BackG, t.BackB };
+  int* __restrict terms = t.Terms;
+  int* __restrict perTerms = this->PerTerms;
+  std::fill(perTerms, perTerms + detail::MaxThinOrder + 2, 0);
+  const Piece* __restrict pieces = this->Pieces.data();
   const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
-  for (int m = 0; m < this->NumPieces; ++m)
+  for (int m = 0; m < n; ++m)
   {
-    const Piece& piece = this->Pieces[m];
-    // Evaluated straight into the next item's slot (taken only if the piece
-    // is thin): copying a SegmentEnd off the stack stalled on store forwarding.
-    ThinItem& item = this->Items[this->NumItems];
-    tf.Evaluate(piece.Interval, piece.S0, false, item.Front);
-    tf.Evaluate(piece.Interval, piece.S1, false, item.Back);
-    const double depthFront = std::max(item.Front.Tau, 0.0) * piece.Length;
-    const double depthBack = std::max(item.Back.Tau, 0.0) * piece.Length;
-    const double a = std::min(depthFront, detail::DepthCap);
-    const double c = std::min(depthBack, detail::DepthCap);
-    const double d1 = 0.5 * (a + c);
-    if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(d1 > 0.0) ||
-      d1 > detail::ThinDepth)
+    const Piece piece = pieces[m];
+    SegmentEnd f, b;
+    tf.Evaluate(piece.Interval, piece.S0, false, f);
+    tf.Evaluate(piece.Interval, piece.S1, false, b);
+    const double depthFront = std::max(f.Tau, 0.0) * piece.Length;
+    const double depthBack = std::max(b.Tau, 0.0) * piece.Length;
+    const double am = std::min(depthFront, detail::DepthCap);
+    const double cm = std::min(depthBack, detail::DepthCap);
+    const double dm = 0.5 * (am + cm);
+    if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(dm > 0.0) ||
+      dm > detail::ThinDepth)
     {
       this->DestOf(piece.Dest, out) =
-        IntegrateSegment(piece.Length, item.Front, item.Back, settings.Emission, settings.Method);
+        IntegrateSegment(piece.Length, f, b, settings.Emission, settings.Method);
+      terms[m] = 0;
       continue;
     }
-    ++this->NumItems;
-    item.A = a;
-    item.D1 = d1;
-    item.Dest = piece.Dest;
-    item.Terms = thinTerms(d1);
-    ++this->PerTerms[item.Terms + 1];
+    a[m] = am;
+    d1[m] = dm;
+    terms[m] = thinTerms(dm);
+    ++perTerms[terms[m] + 1];
+    for (int c = 0; c < 3; ++c)
+    {
+      front[c][m] = f.Color[c];
+      back[c][m] = b.Color[c];
+    }
   }
 }
 
 /**
- * The thin items grouped by number of terms (counting sort), their depths
+ * The thin pieces grouped by number of terms (counting sort), their depths
  * contiguous, then each group Lanes at a time (lanes are independent: the
- * grouping does not change any result). W and Alpha receive the series in
- * that order.
+ * grouping does not change any result); the weights go back to the pieces'
+ * lanes (W, Alpha).
  */
 void SegmentBatch::ThinSeries()
 {
   constexpr int maxOrder = detail::MaxThinOrder;
   static_assert(maxOrder + 2 <= static_cast<int>(sizeof(PerTerms) / sizeof(int)), "term counts");
-  int* perTerms = this->PerTerms;
-  for (int t = 0; t <= maxOrder; ++t)
+  const int n = this->NumPieces;
+  const ThinArrays t = this->ThinLanes(n);
+  int* __restrict perTerms = this->PerTerms;
+  for (int k = 0; k <= maxOrder; ++k)
   {
-    perTerms[t + 1] += perTerms[t];
+    perTerms[k + 1] += perTerms[k];
   }
   int groupStart[maxOrder + 2];
   std::copy(perTerms, perTerms + maxOrder + 2, groupStart);
-  const int numItems = this->NumItems;
-  if (this->SortedA.size() < static_cast<size_t>(numItems + Lanes))
+  const int numThin = groupStart[maxOrder + 1];
+  // Sorted depths and weights: the lane arrays' Sorted* fields.
+  double* __restrict sa = t.SortedA;
+  double* __restrict sd = t.SortedD1;
+  int* __restrict order = this->Order.data();
+  for (int m = 0; m < n; ++m)
   {
-    this->Order.resize(numItems + Lanes);
-    this->SortedA.resize(numItems + Lanes);
-    this->SortedD1.resize(numItems + Lanes);
-    this->W.resize(numItems + Lanes);
-    this->Alpha.resize(numItems + Lanes);
+    if (t.Terms[m] > 0)
+    {
+      const int pos = perTerms[t.Terms[m]]++;
+      order[pos] = m;
+      sa[pos] = t.A[m];
+      sd[pos] = t.D1[m];
+    }
   }
-  for (int m = 0; m < numItems; ++m)
+  // Padding after the last group: any valid thin segment.
+  for (int l = 0; l < Lanes; ++l)
   {
-    const ThinItem& item = this->Items[m];
-    const int pos = perTerms[item.Terms]++;
-    this->Order[pos] = m;
-    this->SortedA[pos] = item.A;
-    this->SortedD1[pos] = item.D1;
+    sa[numThin + l] = 0.0;
+    sd[numThin + l] = 1.0 / 8.0;
   }
+  double* w = t.A;      // reused: the series' results in sorted order
+  double* alpha = t.D1; // (A and D1 were copied to sa, sd)
   for (int terms = 1; terms <= maxOrder; ++terms)
   {
     const int first = groupStart[terms], last = groupStart[terms + 1];
-    const int full = (last - first) / Lanes;
-    ThinWilliamsMaxBlocks(terms, this->SortedA.data() + first, this->SortedD1.data() + first,
-      full, this->W.data() + first, this->Alpha.data() + first);
-    const int tail = first + full * Lanes;
-    if (tail < last)
+    if (first < last)
     {
-      double a[Lanes], d1[Lanes];
-      for (int l = 0; l < Lanes; ++l)
-      {
-        a[l] = tail + l < last ? this->SortedA[tail + l] : 0.0; // padding: any valid thin segment
-        d1[l] = tail + l < last ? this->SortedD1[tail + l] : 1.0 / 8.0;
-      }
-      double w[Lanes], alpha[Lanes];
-      ThinWilliamsMaxBlocks(terms, a, d1, 1, w, alpha);
-      std::copy(w, w + (last - tail), this->W.data() + tail);
-      std::copy(alpha, alpha + (last - tail), this->Alpha.data() + tail);
+      ThinWilliamsMaxBlocks(terms, sa + first, sd + first, (last - first + Lanes - 1) / Lanes,
+        w + first, alpha + first);
     }
   }
 }
@@ -379,16 +402,20 @@ void SegmentBatch::ThinSeries()
 /// The thin pieces' RGBA from their weights, as ThinWeights() and IntegrateSegment().
 void SegmentBatch::WriteThin(RGBA* out)
 {
-  for (int m = 0; m < this->NumItems; ++m)
+  const ThinArrays t = this->ThinLanes(this->NumPieces);
+  const int numThin = this->PerTerms[detail::MaxThinOrder + 1];
+  const Piece* __restrict pieces = this->Pieces.data();
+  for (int pos = 0; pos < numThin; ++pos)
   {
-    const ThinItem& item = this->Items[this->Order[m]];
-    const double wf = std::max(0.0, this->W[m]);
-    const double wb = std::max(0.0, this->Alpha[m] - this->W[m]);
-    RGBA& o = this->DestOf(item.Dest, out);
-    o.A = this->Alpha[m];
-    o.R = wf * item.Front.Color[0] + wb * item.Back.Color[0];
-    o.G = wf * item.Front.Color[1] + wb * item.Back.Color[1];
-    o.B = wf * item.Front.Color[2] + wb * item.Back.Color[2];
+    const int m = this->Order[pos];
+    const double w = t.A[pos], alpha = t.D1[pos];
+    const double wf = std::max(0.0, w);
+    const double wb = std::max(0.0, alpha - w);
+    RGBA& o = this->DestOf(pieces[m].Dest, out);
+    o.A = alpha;
+    o.R = wf * t.FrontR[m] + wb * t.BackR[m];
+    o.G = wf * t.FrontG[m] + wb * t.BackG[m];
+    o.B = wf * t.FrontB[m] + wb * t.BackB[m];
   }
 }
 

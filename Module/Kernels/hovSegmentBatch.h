@@ -92,14 +92,16 @@ private:
   {
     int Job, First, Count;
   };
-  /// A thin Williams-Max piece waiting for its block.
-  struct ThinItem
+  /// The pieces as lanes for the thin series (index = piece): depths,
+  /// colours at both ends, number of terms (0: not thin); and the thin ones
+  /// sorted by number of terms (index = position in Order).
+  struct ThinArrays
   {
-    SegmentEnd Front, Back; ///< transfer function at both ends (evaluated in place)
-    double A, D1;           ///< front depth rate tauFront L and total depth D(1)
-    int Dest;               ///< as Piece::Dest
-    int Terms;              ///< series terms (as the scalar kernel)
+    double *A, *D1, *FrontR, *FrontG, *FrontB, *BackR, *BackG, *BackB, *SortedA, *SortedD1;
+    int* Terms;
   };
+  static constexpr int ThinFields = 10;
+  ThinArrays ThinLanes(int n);
 
   long long IntegrateScalar(const TransferFunction& tf, const IntegrationSettings& settings,
     const Arrays& jobs, int count, RGBA* out, int* pieces);
@@ -125,12 +127,10 @@ private:
   int NumPieces = 0;
   std::vector<Split> Splits;
   std::vector<RGBA> SplitOut;
-  std::vector<ThinItem> Items;
-  int NumItems = 0;
-  int PerTerms[24] = {}; ///< thin items per term count (then group starts)
-  std::vector<int> Order; ///< Items grouped by Terms
-  std::vector<double> SortedA, SortedD1; ///< their A and D1 in that order
-  std::vector<double> W, Alpha;          ///< the series' results in that order
+  std::vector<double> ThinStore; ///< the ThinArrays' doubles, one array after the other
+  std::vector<int> ThinTerms;    ///< their Terms
+  int PerTerms[24] = {};         ///< thin pieces per term count, then group starts
+  std::vector<int> Order;        ///< thin pieces (indices) grouped by number of terms
   std::vector<double> JobS, JobL;        ///< SegmentJob input as arrays
   std::vector<int> JobK;
 };
