@@ -1,6 +1,7 @@
 #include "vtkHighOrderProjectorTile.h"
 
-#include "vtkHighOrderTileGeometry.h" // ray clipping, row spans
+#include "vtkHighOrderProjectorTileLanes.h" // pixel lanes
+#include "vtkHighOrderTileGeometry.h"        // ray clipping, row spans
 
 #include "vtkSMPTools.h" // parallel binning
 
@@ -12,65 +13,21 @@ namespace
 using Ray = vtkHighOrderViewRays::Ray;
 using CellRecord = vtkHighOrderProjectorTile::CellRecord;
 using namespace hovTileGeometry;
+}
 
-#ifdef HOV_CLIP_LANES
-#if defined(__x86_64__) && !defined(__APPLE__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__APPLE__)
 #define HOV_SPAN_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define HOV_SPAN_TARGET_CLONES
 #endif
-/**
- * ClipPixelLanes() for the pixels [p, p + count) of a row (the tile's ray
- * arrays are padded for the last block of lanes). Compiled also for AVX2 (one
- * instruction per four-pixel operation), chosen at load time; the operations,
- * hence the results, are the same on every CPU.
- */
+/// ClipSpanLanes(), compiled also for AVX2 (one instruction per four-pixel
+/// operation), chosen at load time; the operations, hence the results, are
+/// the same on every CPU.
 HOV_SPAN_TARGET_CLONES
-void ClipSpan(const CellRecord& cell, const TileRays& rays, size_t p, int count, double* tIn,
-  double* tOut, double* sIn, double* sOut, signed char* hit)
+bool hovTileGeometry::ClipSpan(
+  const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q)
 {
-  for (int i = 0; i < count; i += PixelLanes)
-  {
-    ClipPixelLanes(cell, rays, p + i, tIn + i, tOut + i, sIn + i, sOut + i, hit + i);
-  }
-}
-#endif
-
-/// Distance, in cells of a tile's list, at which the per-cell data is
-/// prefetched: cells come in visibility (or depth) order, scattered in memory,
-/// and each one's few pixels take less time than a cache miss.
-constexpr vtkIdType PrefetchDistance = 4;
-
-/// Prefetch what ForCellSegments reads of ordered cell k.
-inline void PrefetchCell(const vtkHighOrderProjectorTile::Frame& frame, vtkIdType k)
-{
-  const char* cell = reinterpret_cast<const char*>(&(*frame.Cells)[k]);
-  for (size_t offset = 0; offset < sizeof(CellRecord); offset += 64)
-  {
-    __builtin_prefetch(cell + offset);
-  }
-}
-
-/// Insertion sort: linear on the nearly sorted per-pixel lists.
-template <typename T>
-void InsertionSort(T* first, T* last)
-{
-  for (T* i = first + 1; i < last; ++i)
-  {
-    if (!(*i < *(i - 1)))
-    {
-      continue;
-    }
-    const T v = *i;
-    T* j = i;
-    do
-    {
-      *j = *(j - 1);
-      --j;
-    } while (j > first && v < *(j - 1));
-    *j = v;
-  }
-}
+  return ClipSpanLanes(cell, rays, p, count, out, q);
 }
 
 void vtkHighOrderProjectorTile::Bins::Build(
@@ -165,7 +122,7 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
       this->Rays[p] = rays.TracedPixelRay(pi, pj, z, this->TMax[p]);
     }
   }
-#ifdef HOV_CLIP_LANES
+  this->DoneInRow.assign(this->H, 0);
   // The rays again as padded arrays per coordinate, for the pixel lanes.
   const size_t padded = n + PixelLanes;
   this->TMax.resize(padded, 0.0);
@@ -183,7 +140,6 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
   }
   this->LaneRays = { a, a + padded, a + 2 * padded, a + 3 * padded, a + 4 * padded,
     a + 5 * padded, this->TMax.data() };
-#endif
 }
 
 void vtkHighOrderProjectorTile::WriteTile(const hov::RGBA* accum, const unsigned char* violated,
@@ -204,6 +160,22 @@ void vtkHighOrderProjectorTile::WriteTile(const hov::RGBA* accum, const unsigned
   }
 }
 
+void vtkHighOrderProjectorTile::WriteEmptyTile(
+  const Frame& frame, int tileIndex, std::vector<double>& rgba)
+{
+  const Bins& bins = *frame.TileBins;
+  const int width = frame.Rays->GetWidth();
+  const int x0 = (tileIndex % bins.TilesX) * bins.Size;
+  const int y0 = (tileIndex / bins.TilesX) * bins.Size;
+  const int w = std::min(bins.Size, width - x0);
+  const int h = std::min(bins.Size, frame.Rays->GetHeight() - y0);
+  for (int j = 0; j < h; ++j)
+  {
+    double* row = &rgba[4 * (static_cast<size_t>(y0 + j) * width + x0)];
+    std::fill(row, row + 4 * static_cast<size_t>(w), 0.0);
+  }
+}
+
 void vtkHighOrderProjectorTile::Write(
   std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const
 {
@@ -211,95 +183,132 @@ void vtkHighOrderProjectorTile::Write(
     rgba, st.WitnessViolations);
 }
 
-/// Visit every (pixel, segment) of ordered cell k in this tile.
-template <typename Visit>
-void vtkHighOrderProjectorTile::ForCellSegments(
-  const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit)
+void vtkHighOrderProjectorTile::ReserveQueue(int n)
+{
+  if (n + PixelLanes <= this->QueueCapacity)
+  {
+    return;
+  }
+  const int capacity = std::max(2 * this->QueueCapacity, n + PixelLanes + BatchSize);
+  std::vector<double> store(5 * static_cast<size_t>(capacity));
+  for (int f = 0; f < 5; ++f)
+  {
+    const double* from = this->QueueStore.data() + static_cast<size_t>(f) * this->QueueCapacity;
+    std::copy(from, from + this->NumQueued, store.data() + static_cast<size_t>(f) * capacity);
+  }
+  this->QueueStore.swap(store);
+  double* a = this->QueueStore.data();
+  this->QTIn = a;
+  this->QTOut = a + capacity;
+  this->QSIn = a + 2 * static_cast<size_t>(capacity);
+  this->QSOut = a + 3 * static_cast<size_t>(capacity);
+  this->QLength = a + 4 * static_cast<size_t>(capacity);
+  this->QPixel.resize(capacity);
+  this->QInterval.resize(capacity);
+  this->QueueCapacity = capacity;
+}
+
+void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType k)
 {
   const CellRecord& cell = (*frame.Cells)[k];
   const Box& b = cell.PixelBox;
-  const int i0 = std::max(b[0], this->X0) - this->X0;
-  const int i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
   const int j0 = std::max(b[2] - this->Y0, this->RowBegin);
   const int j1 = std::min(b[3] - this->Y0, this->RowEnd - 1);
   const ProjectedEdges edges(cell);
+  // All rows' pixel ranges first (independent rows: their latencies overlap).
+  int first[MaxTileSize], last[MaxTileSize];
+  int total = 0;
   for (int j = j0; j <= j1; ++j)
   {
-    int r0 = i0, r1 = i1;
-    if (cell.Projectable)
+    if (!this->RowRange(cell, edges, j, first[j - j0], last[j - j0]))
     {
-      // Only the pixel centres inside the projection (BoxMargin of slack).
-      double xMin, xMax;
-      if (!RowSpan(edges, this->Y0 + j + 0.5, xMin, xMax))
-      {
-        continue;
-      }
-      r0 = std::max(r0, CeilToInt(xMin - 0.5 - BoxMargin) - this->X0);
-      r1 = std::min(r1, FloorToInt(xMax - 0.5 + BoxMargin) - this->X0);
+      last[j - j0] = first[j - j0] - 1;
     }
-#ifdef HOV_CLIP_LANES
-    double spanIn[MaxTileSize + PixelLanes], spanOut[MaxTileSize + PixelLanes];
-    double spanSIn[MaxTileSize + PixelLanes], spanSOut[MaxTileSize + PixelLanes];
-    signed char spanHit[MaxTileSize + PixelLanes];
-    const size_t rowStart = static_cast<size_t>(j) * this->W;
-    if (r1 >= r0)
+    total += std::max(0, last[j - j0] - first[j - j0] + 1);
+  }
+  if (this->NumQueued + total + PixelLanes > this->QueueCapacity)
+  {
+    this->ReserveQueue(this->NumQueued + total);
+  }
+  for (int j = j0; j <= j1; ++j)
+  {
+    const int r0 = first[j - j0];
+    const int count = last[j - j0] - r0 + 1;
+    if (count <= 0)
     {
-      ClipSpan(cell, this->LaneRays, rowStart + r0, r1 - r0 + 1, spanIn, spanOut, spanSIn,
-        spanSOut, spanHit);
+      continue;
     }
-#endif
-    for (int i = r0; i <= r1; ++i)
+    const size_t p0 = static_cast<size_t>(j) * this->W + r0;
+    const int q = this->NumQueued;
+    const bool all = ClipSpan(cell, this->LaneRays, p0, count,
+      LaneOut{ this->QTIn, this->QTOut, this->QSIn, this->QSOut, this->QLength }, q);
+    int* pixel = this->QPixel.data() + q;
+    int* interval = this->QInterval.data() + q;
+    for (int i = 0; i < count; ++i)
     {
-      const size_t p = static_cast<size_t>(j) * this->W + i;
-      if (skipDone && this->Done[p])
-      {
-        continue;
-      }
-      const Ray& ray = this->Rays[p];
-      double tIn, tOut;
-#ifdef HOV_CLIP_LANES
-      const int hit = spanHit[i - r0];
-      if (hit > 0)
-      {
-        visit(p, spanIn[i - r0], spanOut[i - r0], spanSIn[i - r0], spanSOut[i - r0]);
-        continue;
-      }
-      if (hit == 0 ||
-        !ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
-#else
-      if (!ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
-#endif
-      {
-        continue;
-      }
-      const double sAtOrigin =
-        cell.RefScalar + glm::dot(cell.Gradient, ray.Origin - cell.RefPoint);
-      const double slope = glm::dot(cell.Gradient, ray.Direction);
-      visit(p, tIn, tOut, sAtOrigin + tIn * slope, sAtOrigin + tOut * slope);
+      pixel[i] = static_cast<int>(p0) + i;
+      interval[i] = cell.Interval;
+    }
+    if (all && this->DoneInRow[j] == 0)
+    {
+      this->NumQueued += count; // the common case: every pixel hit, none done
+    }
+    else
+    {
+      this->CompactRow(frame, cell, p0, count);
     }
   }
 }
 
-inline void vtkHighOrderProjectorTile::Queue(
-  size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
+void vtkHighOrderProjectorTile::CompactRow(const Frame& frame, const CellRecord& cell,
+  size_t p0, int count)
 {
-  // Field by field into preallocated slots (no temporary: building a struct
-  // on the stack and copying it stalled on store forwarding).
-  if (this->NumQueued == static_cast<int>(this->Jobs.size()))
+  const int q = this->NumQueued;
+  int next = q;
+  for (int i = 0; i < count; ++i)
   {
-    this->Jobs.resize(2 * this->Jobs.size() + BatchSize);
-    this->Pending.resize(this->Jobs.size());
+    const size_t p = p0 + i;
+    if (this->Done[p])
+    {
+      continue;
+    }
+    const Ray& ray = this->Rays[p];
+    const int hit = LaneHit(cell, ray, this->QTIn[q + i], this->QTOut[q + i]);
+    if (hit == 0)
+    {
+      continue;
+    }
+    if (hit > 0)
+    {
+      if (next != q + i)
+      {
+        this->QTIn[next] = this->QTIn[q + i];
+        this->QTOut[next] = this->QTOut[q + i];
+        this->QSIn[next] = this->QSIn[q + i];
+        this->QSOut[next] = this->QSOut[q + i];
+        this->QLength[next] = this->QLength[q + i];
+        this->QPixel[next] = this->QPixel[q + i];
+      }
+      ++next;
+      continue;
+    }
+    // Undecided (a ray parallel to a face): ClipRay()'s tie rules.
+    double tIn, tOut;
+    if (!ClipRay(cell, ray, this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
+    {
+      continue;
+    }
+    const double sAtOrigin = cell.RefScalar + glm::dot(cell.Gradient, ray.Origin - cell.RefPoint);
+    const double slope = glm::dot(cell.Gradient, ray.Direction);
+    this->QTIn[next] = tIn;
+    this->QTOut[next] = tOut;
+    this->QSIn[next] = sAtOrigin + tIn * slope;
+    this->QSOut[next] = sAtOrigin + tOut * slope;
+    this->QLength[next] = tOut - tIn;
+    this->QPixel[next] = static_cast<int>(p);
+    ++next;
   }
-  hov::SegmentJob& job = this->Jobs[this->NumQueued];
-  job.SFront = sIn;
-  job.SBack = sOut;
-  job.Length = tOut - tIn;
-  job.Interval = interval;
-  PendingSegment& seg = this->Pending[this->NumQueued];
-  seg.TIn = tIn;
-  seg.TOut = tOut;
-  seg.Pixel = static_cast<int>(p);
-  ++this->NumQueued;
+  this->NumQueued = next; // QInterval: the cell's throughout
 }
 
 void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st)
@@ -311,21 +320,24 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
   }
   this->Results.resize(n);
   this->Pieces.resize(n);
-  this->Batch.Integrate(*frame.TF, frame.Settings->Integration, this->Jobs.data(), n,
-    this->Results.data(), this->Pieces.data());
+  const hov::SegmentBatch::Arrays jobs{ this->QSIn, this->QSOut, this->QLength,
+    this->QInterval.data() };
+  this->Batch.Integrate(*frame.TF, frame.Settings->Integration, jobs, n, this->Results.data(),
+    this->Pieces.data());
   // In queue order, skipping pixels that turned opaque meanwhile: exactly
   // what compositing one segment at a time does.
   // (Counted in locals: the byte stores to Done may alias the statistics.)
   vtkIdType segments = 0, pieces = 0;
+  const int* pixel = this->QPixel.data();
   for (int m = 0; m < n; ++m)
   {
-    const PendingSegment& seg = this->Pending[m];
-    if (this->Done[seg.Pixel])
+    const int p = pixel[m];
+    if (this->Done[p])
     {
       continue;
     }
-    this->Witness(frame, seg.Pixel, seg.TIn, seg.TOut);
-    this->Composite(frame, seg.Pixel, this->Results[m]);
+    this->Witness(frame, p, this->QTIn[m], this->QTOut[m]);
+    this->Composite(frame, p, this->Results[m]);
     ++segments;
     pieces += this->Pieces[m];
   }
@@ -351,135 +363,28 @@ void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkI
       this->RenderGeneralCell(frame, k, st);
       continue;
     }
-    const int interval = (*frame.Cells)[k].Interval;
-    this->ForCellSegments(frame, k, true,
-      [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
-        this->Queue(p, tIn, tOut, sIn, sOut, interval);
-      });
+    this->QueueCellSegments(frame, k);
     if (this->NumQueued >= BatchSize)
     {
       this->Flush(frame, st);
     }
   }
   this->Flush(frame, st);
-}
-
-void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdType* cells,
-  vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
-{
-  // Band by band (about BandPixels pixels: whole rows of the tile), so that a band's fragments stay
-  // in the cache while they are bucketed and sorted.
-  this->NumQueued = 0;
-  const int rows = std::max(1, BandPixels / std::max(this->W, 1));
-  for (int band = 0; band < this->H; band += rows)
-  {
-    this->RowBegin = band;
-    this->RowEnd = std::min(band + rows, this->H);
-    this->CollectFragments(frame, cells, count);
-    this->CompositeFragments(frame, st);
-  }
-  this->Flush(frame, st);
-  this->RowBegin = 0;
-  this->RowEnd = this->H;
-}
-
-void vtkHighOrderProjectorTile::CollectFragments(
-  const Frame& frame, const vtkIdType* cells, vtkIdType count)
-{
-  // The projector ordered the cells by depth: fragments arrive nearly sorted.
-  this->NumFragments = 0;
-  const std::vector<CellRecord>& records = *frame.Cells;
-  const int y0 = this->Y0 + this->RowBegin, y1 = this->Y0 + this->RowEnd - 1;
-  for (vtkIdType c = 0; c < count; ++c)
-  {
-    const vtkIdType k = cells[c];
-    if (c + PrefetchDistance < count)
-    {
-      PrefetchCell(frame, cells[c + PrefetchDistance]);
-    }
-    if (records[k].PixelBox[3] < y0 || records[k].PixelBox[2] > y1)
-    {
-      continue; // not in this band
-    }
-    if (IsGeneral(frame, k))
-    {
-      this->CollectGeneralFragments(frame, k);
-      continue;
-    }
-    this->ForCellSegments(frame, k, false,
-      [&](size_t p, double tIn, double tOut, double sIn, double sOut) {
-        if (this->NumFragments == static_cast<int>(this->Fragments.size()))
-        {
-          this->Fragments.resize(2 * this->Fragments.size() + 1024);
-        }
-        Fragment& f = this->Fragments[this->NumFragments++];
-        f.TIn = tIn;
-        f.TOut = tOut;
-        f.SIn = sIn;
-        f.SOut = sOut;
-        f.Pixel = static_cast<int>(p);
-        f.Order = static_cast<int>(k);
-      });
-  }
-}
-
-void vtkHighOrderProjectorTile::CompositeFragments(
-  const Frame& frame, vtkHighOrderCellProjector::Statistics& st)
-{
-  // Counting sort of the band's fragments by pixel (stable).
-  const int first = this->RowBegin * this->W;
-  const int n = (this->RowEnd - this->RowBegin) * this->W;
-  this->PixelStart.assign(n + 1, 0);
-  const Fragment* fragments = this->Fragments.data();
-  for (int m = 0; m < this->NumFragments; ++m)
-  {
-    ++this->PixelStart[fragments[m].Pixel - first + 1];
-  }
-  for (int p = 0; p < n; ++p)
-  {
-    this->PixelStart[p + 1] += this->PixelStart[p];
-  }
-  if (this->ByPixel.size() < static_cast<size_t>(this->NumFragments))
-  {
-    this->ByPixel.resize(this->Fragments.size());
-  }
-  this->Fill.assign(this->PixelStart.begin(), this->PixelStart.end() - 1);
-  for (int m = 0; m < this->NumFragments; ++m)
-  {
-    this->ByPixel[this->Fill[fragments[m].Pixel - first]++] = fragments[m];
-  }
-  // Each pixel's list by entry; the segments of consecutive pixels are
-  // integrated together and composited pixel by pixel in that order.
-  const std::vector<CellRecord>& records = *frame.Cells;
-  for (int p = 0; p < n; ++p)
-  {
-    Fragment* begin = this->ByPixel.data() + this->PixelStart[p];
-    Fragment* end = this->ByPixel.data() + this->PixelStart[p + 1];
-    InsertionSort(begin, end);
-    for (const Fragment* f = begin; f != end; ++f)
-    {
-      if (IsGeneral(frame, f->Order))
-      {
-        this->Flush(frame, st); // keep the pixel's order
-        this->CompositeGeneralInterval(frame, first + p, f->TIn, f->TOut, f->Order, st);
-        continue;
-      }
-      this->Queue(first + p, f->TIn, f->TOut, f->SIn, f->SOut, records[f->Order].Interval);
-    }
-    if (this->NumQueued >= BatchSize)
-    {
-      this->Flush(frame, st);
-    }
-  }
 }
 
 void vtkHighOrderProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
   vtkHighOrderCellProjector::Statistics& stats)
 {
-  this->Init(frame, tileIndex);
   const Bins& bins = *frame.TileBins;
   const vtkIdType* cells = bins.Cells.data() + bins.Start[tileIndex];
   const vtkIdType count = bins.Start[tileIndex + 1] - bins.Start[tileIndex];
+  if (count == 0)
+  {
+    // No cell: the tile stays transparent (most tiles around a model); no rays.
+    WriteEmptyTile(frame, tileIndex, rgba);
+    return;
+  }
+  this->Init(frame, tileIndex);
   if (frame.Settings->PerPixelSort)
   {
     this->RenderPerPixel(frame, cells, count, stats);

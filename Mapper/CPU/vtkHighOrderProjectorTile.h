@@ -49,6 +49,12 @@
 #include <array>  // pixel boxes
 #include <vector> // buffers
 
+namespace hovTileGeometry
+{
+struct ProjectedEdges;
+}
+using hovTileEdges = hovTileGeometry::ProjectedEdges;
+
 class vtkHighOrderProjectorTile
 {
 public:
@@ -131,9 +137,20 @@ private:
     vtkHighOrderCellProjector::Statistics& st);
   void CollectFragments(const Frame& frame, const vtkIdType* cells, vtkIdType count);
   void CompositeFragments(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
+  /// Rows [r0, r1] of the tile's pixels (tile coordinates) where ordered
+  /// cell @p cell may cover pixel centres on tile row @p j; false if none.
+  bool RowRange(const CellRecord& cell, const hovTileEdges& edges, int j, int& r0, int& r1) const;
   /// Visit the segments of ordered cell k in rows [RowBegin, RowEnd) of the tile.
   template <typename Visit>
-  void ForCellSegments(const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit);
+  void ForCellSegments(const Frame& frame, vtkIdType k, Visit&& visit);
+  /// Cell order: queue the segments of ordered cell k at the tile's
+  /// unfinished pixels (clipped straight into the queue's arrays).
+  void QueueCellSegments(const Frame& frame, vtkIdType k);
+  /// QueueCellSegments() for a row where some lane did not simply hit or
+  /// some pixel is done: keep the hits in order, resolve undecided rays.
+  void CompactRow(const Frame& frame, const CellRecord& cell, size_t p0, int count);
+  /// Make room for @p n queued segments (plus a block of padding lanes).
+  void ReserveQueue(int n);
   /// Queue a segment of pixel p for the next Flush().
   inline void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
   /// Integrate the queued segments together, then composite them in queue order.
@@ -143,6 +160,8 @@ private:
   /// Composite a segment's RGBA behind pixel p; marks it done when opaque.
   void Composite(const Frame& frame, size_t p, const hov::RGBA& seg);
   void Write(std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const;
+  /// Write a tile that no cell overlaps: transparent black.
+  static void WriteEmptyTile(const Frame& frame, int tileIndex, std::vector<double>& rgba);
   /// True if ordered cell k is a general cell.
   static bool IsGeneral(const Frame& frame, vtkIdType k)
   {
@@ -192,17 +211,17 @@ private:
   std::vector<Fragment> ByPixel;   ///< bucketed by pixel, then sorted by entry
   std::vector<int> PixelStart;
   std::vector<int> Fill;
+  std::vector<int> DoneInRow;      ///< per tile row: pixels done
   /// Segments queued per Flush(): enough for full four-lane blocks of every
   /// term count, few enough to stay in the L1/L2 cache.
   static constexpr int BatchSize = 256;
-  struct PendingSegment
-  {
-    double TIn, TOut;
-    int Pixel;
-  };
-  std::vector<hov::SegmentJob> Jobs;
-  std::vector<PendingSegment> Pending;
-  int NumQueued = 0; ///< used entries of Jobs and Pending
+  /// The queued segments, one array per field (the pixel lanes write them
+  /// directly); QueueCapacity entries each, NumQueued used.
+  std::vector<double> QueueStore;
+  double *QTIn = nullptr, *QTOut = nullptr, *QSIn = nullptr, *QSOut = nullptr, *QLength = nullptr;
+  std::vector<int> QPixel, QInterval;
+  int QueueCapacity = 0;
+  int NumQueued = 0;
   std::vector<hov::RGBA> Results;
   std::vector<int> Pieces;
   hov::SegmentBatch Batch;
@@ -221,10 +240,28 @@ inline void vtkHighOrderProjectorTile::Witness(const Frame& frame, size_t p, dou
 inline void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
 {
   hov::CompositeBehind(this->Accum[p], seg);
-  if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance)
+  if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance && !this->Done[p])
   {
     this->Done[p] = 1;
+    ++this->DoneInRow[p / static_cast<size_t>(this->W)];
   }
+}
+
+inline void vtkHighOrderProjectorTile::Queue(
+  size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
+{
+  if (this->NumQueued + 1 > this->QueueCapacity)
+  {
+    this->ReserveQueue(this->NumQueued + 1);
+  }
+  const int q = this->NumQueued++;
+  this->QTIn[q] = tIn;
+  this->QTOut[q] = tOut;
+  this->QSIn[q] = sIn;
+  this->QSOut[q] = sOut;
+  this->QLength[q] = tOut - tIn;
+  this->QPixel[q] = static_cast<int>(p);
+  this->QInterval[q] = interval;
 }
 
 #endif

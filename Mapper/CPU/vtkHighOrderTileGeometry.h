@@ -1,8 +1,8 @@
 /**
  * @file    vtkHighOrderTileGeometry.h
  * @brief   Private to vtkHighOrderProjectorTile: exact ray clipping against a
- *          cell's four face planes (scalar, and four pixels at once in vector
- *          lanes) and the window-x span of a projected cell on a pixel row.
+ *          cell's four face planes and the window-x span of a projected cell
+ *          on a pixel row (the pixel lanes: vtkHighOrderProjectorTileLanes.h).
  *
  * Header only (inline helpers of one translation unit), in namespace
  * hovTileGeometry.
@@ -15,7 +15,7 @@
 #include "vtkHighOrderViewRays.h"      // Ray
 
 #include <algorithm> // std::min, std::max
-#include <cstring>   // memcpy into vector registers
+#include <utility>   // std::swap
 
 namespace hovTileGeometry
 {
@@ -72,86 +72,43 @@ inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const g
     tMax, px, py, tIn, tOut);
 }
 
-#if defined(__GNUC__) // GCC and Clang: vector extensions
-#define HOV_CLIP_LANES 1
-/// Four doubles in a GCC/Clang vector: one AVX instruction, or two SSE2 ones.
-typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
-
-using TileRays = vtkHighOrderProjectorTile::TileRays;
-constexpr int PixelLanes = 4; ///< pixels per ClipPixelLanes() call
-
-/**
- * ClipRay() and the scalars at both ends of the segment for the PixelLanes
- * consecutive pixels from @p p, one pixel per lane, branch free: the same
- * products, sums and quotients in the same order (dot products as glm::dot
- * computes them), and min/max, which do not depend on the order, so the
- * result is bit-identical. hit[l]: 1 hit, 0 miss, -1 undecided (a ray
- * parallel to a face, denominator exactly 0, where ClipRay's tie rules apply).
- */
-__attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell, const TileRays& r, size_t p, double* tIn,
-  double* tOut, double* sIn, double* sOut, signed char* hit)
+/// True if the ray is parallel to a face (a zero denominator, as the lanes
+/// compute it): ClipRay()'s tie rules decide.
+inline bool IsUndecided(const CellRecord& cell, const Ray& ray)
 {
-  V4 ox, oy, oz, dx, dy, dz, tMax;
-  std::memcpy(&ox, r.OX + p, sizeof(V4));
-  std::memcpy(&oy, r.OY + p, sizeof(V4));
-  std::memcpy(&oz, r.OZ + p, sizeof(V4));
-  std::memcpy(&dx, r.DX + p, sizeof(V4));
-  std::memcpy(&dy, r.DY + p, sizeof(V4));
-  std::memcpy(&dz, r.DZ + p, sizeof(V4));
-  std::memcpy(&tMax, r.TMax + p, sizeof(V4));
-  const V4 zero = {};
-  const V4 big = zero + 1e300 * 1e300; // +inf: no constraint
-  V4 enter[4], leave[4];
-  auto parallel = zero < zero; // no lane yet
+  bool parallel = false;
   for (int k = 0; k < 4; ++k)
   {
-    const double nx = cell.NX[k], ny = cell.NY[k], nz = cell.NZ[k];
-    const V4 denom = (nx * dx + ny * dy) + nz * dz;
-    const V4 num = cell.Offset[k] - ((nx * ox + ny * oy) + nz * oz);
-    parallel |= denom == zero;
-    const V4 t = num / denom;
-    enter[k] = denom < zero ? t : -big;
-    leave[k] = denom > zero ? t : big;
+    const double denom =
+      (cell.NX[k] * ray.Direction.x + cell.NY[k] * ray.Direction.y) + cell.NZ[k] * ray.Direction.z;
+    parallel = parallel || denom == 0.0;
   }
-  // std::max(a, b) is a < b ? b : a, std::min(a, b) is b < a ? b : a, per lane.
-  const V4 in0 = zero < enter[0] ? enter[0] : zero;
-  const V4 in12 = enter[1] < enter[2] ? enter[2] : enter[1];
-  const V4 in012 = in0 < in12 ? in12 : in0;
-  const V4 vIn = in012 < enter[3] ? enter[3] : in012;
-  const V4 out0 = leave[0] < tMax ? leave[0] : tMax;
-  const V4 out12 = leave[2] < leave[1] ? leave[2] : leave[1];
-  const V4 out012 = out12 < out0 ? out12 : out0;
-  const V4 vOut = leave[3] < out012 ? leave[3] : out012;
-  const glm::dvec3& g = cell.Gradient;
-  const glm::dvec3& q = cell.RefPoint;
-  const V4 sAtOrigin = cell.RefScalar + ((g.x * (ox - q.x) + g.y * (oy - q.y)) + g.z * (oz - q.z));
-  const V4 slope = (g.x * dx + g.y * dy) + g.z * dz;
-  const V4 vsIn = sAtOrigin + vIn * slope;
-  const V4 vsOut = sAtOrigin + vOut * slope;
-  std::memcpy(tIn, &vIn, sizeof(V4));
-  std::memcpy(tOut, &vOut, sizeof(V4));
-  std::memcpy(sIn, &vsIn, sizeof(V4));
-  std::memcpy(sOut, &vsOut, sizeof(V4));
-  const auto inside = vIn < vOut;
-  for (int l = 0; l < PixelLanes; ++l)
-  {
-    hit[l] = static_cast<signed char>(parallel[l] ? -1 : (inside[l] ? 1 : 0));
-  }
+  return parallel;
 }
+
+#if defined(__GNUC__) // GCC and Clang: vector extensions
+/// Four doubles in a GCC/Clang vector: one AVX instruction, or two SSE2 ones.
+typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
 #endif
 
 /**
  * The six projected edges of a cell, set up once per cell for RowSpan():
  * the projection is the convex hull of the projected vertices, and a row
  * meets a convex hull of points in the span of its crossings with all
- * segments between them.
+ * segments between them. A row strictly between two consecutive vertex
+ * heights (band b between the sorted heights BandY[b] and BandY[b + 1])
+ * crosses exactly the edges from a vertex below to a vertex above
+ * (BandEdges[b], 3 or 4 of them), so RowSpan() computes only those.
  */
 struct ProjectedEdges
 {
   double PX[6], PY[6], QY[6], DX[6], InvDY[6];
+  double BandY[4];
+  int BandEdges[3][4]; ///< 3 or 4 edges (a third one repeated)
   explicit ProjectedEdges(const CellRecord& cell)
   {
     int e = 0;
+    int edgeOf[4][4];
     for (int a = 0; a < 4; ++a)
     {
       for (int b = a + 1; b < 4; ++b, ++e)
@@ -163,10 +120,54 @@ struct ProjectedEdges
         this->QY[e] = q.y;
         this->DX[e] = q.x - p.x;
         this->InvDY[e] = p.y != q.y ? 1.0 / (q.y - p.y) : 0.0; // 0: a horizontal edge
+        edgeOf[a][b] = edgeOf[b][a] = e;
+      }
+    }
+    // Vertices by height (insertion sort of four), then the edges of each band.
+    int v[4] = { 0, 1, 2, 3 };
+    for (int i = 1; i < 4; ++i)
+    {
+      for (int k = i; k > 0 && cell.Vertex[v[k]].y < cell.Vertex[v[k - 1]].y; --k)
+      {
+        std::swap(v[k], v[k - 1]);
+      }
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      this->BandY[i] = cell.Vertex[v[i]].y;
+    }
+    for (int b = 0; b < 3; ++b)
+    {
+      int count = 0;
+      for (int lo = 0; lo <= b; ++lo)
+      {
+        for (int hi = b + 1; hi < 4; ++hi)
+        {
+          this->BandEdges[b][count++] = edgeOf[v[lo]][v[hi]];
+        }
+      }
+      if (count == 3)
+      {
+        this->BandEdges[b][3] = this->BandEdges[b][0]; // min/max: a repeat changes nothing
       }
     }
   }
 };
+
+/// Distance, in cells of a tile's list, at which the per-cell data is
+/// prefetched: cells come in visibility (or depth) order, scattered in memory,
+/// and each one's few pixels take less time than a cache miss.
+constexpr vtkIdType PrefetchDistance = 4;
+
+/// Prefetch what the tile loop reads of ordered cell k.
+inline void PrefetchCell(const vtkHighOrderProjectorTile::Frame& frame, vtkIdType k)
+{
+  const char* cell = reinterpret_cast<const char*>(&(*frame.Cells)[k]);
+  for (size_t offset = 0; offset < sizeof(CellRecord); offset += 64)
+  {
+    __builtin_prefetch(cell + offset);
+  }
+}
 
 /// std::ceil / std::floor to int for |v| < 2^30 (beyond: clamped to +-2^30),
 /// without the library call's software rounding on baseline x86-64.
@@ -186,7 +187,7 @@ inline int FloorToInt(double v)
 /// Window-x range of the projected cell on the row at height y; false if
 /// the row misses it. (Round-off here only widens or narrows the candidate
 /// pixels by far less than BoxMargin; the ray clip decides exactly.)
-inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
+inline bool RowSpanAllEdges(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
 {
   xMin = 1e300;
   xMax = -1e300;
@@ -206,6 +207,31 @@ inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double&
     xMin = std::min(xMin, x);
     xMax = std::max(xMax, x);
   }
+  return xMin <= xMax;
+}
+
+/// RowSpanAllEdges() by bands: a row strictly inside a band computes only
+/// the band's edges (the others are entirely above or below it), the same
+/// crossings in the same way; a row through a vertex takes all six.
+inline bool RowSpan(const ProjectedEdges& edges, double y, double& xMin, double& xMax)
+{
+  if (y < edges.BandY[0] || edges.BandY[3] < y)
+  {
+    return false; // no edge reaches the row
+  }
+  const int b = (edges.BandY[1] < y) + (edges.BandY[2] < y);
+  if (!(edges.BandY[b] < y && y < edges.BandY[b + 1]))
+  {
+    return RowSpanAllEdges(edges, y, xMin, xMax); // through a vertex
+  }
+  double x[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    const int e = edges.BandEdges[b][i];
+    x[i] = edges.PX[e] + edges.DX[e] * ((y - edges.PY[e]) * edges.InvDY[e]);
+  }
+  xMin = std::min(std::min(x[0], x[1]), std::min(x[2], x[3]));
+  xMax = std::max(std::max(x[0], x[1]), std::max(x[2], x[3]));
   return xMin <= xMax;
 }
 }

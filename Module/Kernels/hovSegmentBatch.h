@@ -14,9 +14,15 @@
  * result does not change in any bit (no fused multiply-add is introduced: the
  * module targets baseline x86-64 and the extra AVX2 clone does not enable FMA;
  * note that GCC contracts a*b+c even under -std=c++17 wherever FMA is enabled,
- * e.g. with -march=native). Every other
- * segment (several transfer-function intervals, thick, opaque, Wilhelms-Van
- * Gelder emission or the approximate method) goes through the scalar kernels.
+ * e.g. with -march=native).
+ *
+ * A segment whose scalar crosses transfer-function nodes is split into its
+ * linear pieces exactly as IntegrateLinearScalar() walks them (same piece
+ * ends, same lengths); the pieces join the batch like any segment and are
+ * composited afterwards in order, stopping where the segment turns opaque, as
+ * the scalar walk does. Thick and opaque pieces go through the scalar kernel
+ * (IntegrateSegment); Wilhelms-Van Gelder emission and the approximate method
+ * use the scalar kernels throughout.
  *
  * Thread safety: one SegmentBatch per thread (it owns scratch buffers, reused
  * from call to call so that rendering allocates nothing per frame).
@@ -50,28 +56,83 @@ struct SegmentJob
 class HOV_EXPORT SegmentBatch
 {
 public:
+  /// Segments as arrays (what a renderer fills lane by lane): segment i is
+  /// { SFront[i], SBack[i], Length[i], Interval[i] } as in SegmentJob.
+  struct Arrays
+  {
+    const double* SFront;
+    const double* SBack;
+    const double* Length;
+    const int* Interval;
+  };
+
   /**
-   * out[i] = the premultiplied RGBA of jobs[i]: IntegrateLinearScalarInInterval()
-   * if jobs[i].Interval >= -1, else IntegrateLinearScalar(). Returns the number
+   * out[i] = the premultiplied RGBA of segment i: IntegrateLinearScalarInInterval()
+   * if its Interval >= -1, else IntegrateLinearScalar(). Returns the number
    * of linear pieces integrated (1 per segment with a known interval);
    * @p pieces, if given, receives that number per segment.
    */
   long long Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
+    const Arrays& jobs, int count, RGBA* out, int* pieces = nullptr);
+
+  /// The same for segments given as structures.
+  long long Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
     const SegmentJob* jobs, int count, RGBA* out, int* pieces = nullptr);
 
 private:
-  /// A thin Williams-Max segment waiting for its block.
-  struct ThinItem
+  /// A linear piece to integrate: a whole segment, or a piece of a split one.
+  struct Piece
   {
-    SegmentEnd Front, Back; ///< transfer function at both ends (evaluated in place)
-    double A, D1;           ///< front depth rate tauFront L and total depth D(1)
-    int Index;              ///< into out
-    int Terms;              ///< series terms (as the scalar kernel)
+    double S0, S1, Length;
+    int Interval;
+    int Dest; ///< >= 0: out[Dest]; < 0: SplitOut[-1 - Dest]
   };
-  std::vector<ThinItem> Items;
-  std::vector<int> Order; ///< Items grouped by Terms
-  std::vector<double> SortedA, SortedD1; ///< their A and D1 in that order
-  std::vector<double> W, Alpha;          ///< the series' results in that order
+  /// A segment split into Count pieces (SplitOut[First, First + Count)).
+  struct Split
+  {
+    int Job, First, Count;
+  };
+  /// The pieces as lanes for the thin series (index = piece): depths,
+  /// colours at both ends, number of terms (0: not thin); and the thin ones
+  /// sorted by number of terms (index = position in Order).
+  struct ThinArrays
+  {
+    double *A, *D1, *FrontR, *FrontG, *FrontB, *BackR, *BackG, *BackB, *SortedA, *SortedD1;
+    int* Terms;
+  };
+  static constexpr int ThinFields = 10;
+  ThinArrays ThinLanes(int n);
+
+  long long IntegrateScalar(const TransferFunction& tf, const IntegrationSettings& settings,
+    const Arrays& jobs, int count, RGBA* out, int* pieces);
+  long long CollectPieces(
+    const TransferFunction& tf, const Arrays& jobs, int count, RGBA* out, int* pieces);
+  void SplitSegment(const TransferFunction& tf, int job, int k, double sFront, double sBack,
+    double length);
+  void EvaluatePieces(const TransferFunction& tf, const IntegrationSettings& settings, RGBA* out);
+  void ThinSeries();
+  void WriteThin(RGBA* out);
+  long long CompositeSplits(RGBA* out, int* pieces);
+  void AddPiece(const Piece& piece)
+  {
+    if (this->NumPieces == static_cast<int>(this->Pieces.size()))
+    {
+      this->Pieces.resize(2 * this->Pieces.size() + 256); // grows only: none in steady state
+    }
+    this->Pieces[this->NumPieces++] = piece;
+  }
+  RGBA& DestOf(int dest, RGBA* out) { return dest >= 0 ? out[dest] : this->SplitOut[-1 - dest]; }
+
+  std::vector<Piece> Pieces;
+  int NumPieces = 0;
+  std::vector<Split> Splits;
+  std::vector<RGBA> SplitOut;
+  std::vector<double> ThinStore; ///< the ThinArrays' doubles, one array after the other
+  std::vector<int> ThinTerms;    ///< their Terms
+  int PerTerms[24] = {};         ///< thin pieces per term count, then group starts
+  std::vector<int> Order;        ///< thin pieces (indices) grouped by number of terms
+  std::vector<double> JobS, JobL;        ///< SegmentJob input as arrays
+  std::vector<int> JobK;
 };
 }
 
