@@ -2,7 +2,6 @@
 
 #include "vtkHighOrderImageDisplayFS.h"    // composite: one texel per pixel
 #include "vtkHighOrderProjectionFS.h"      // encoded fragment shader
-#include "vtkHighOrderProjectionRegions.h" // FloatsPerVertex
 #include "vtkHighOrderProjectionVS.h"      // encoded vertex shader
 
 #include "hovProjectionColor.h" // OpacityTexture
@@ -17,9 +16,12 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderer.h"
+#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
+
+#include <algorithm> // std::copy
 
 vtkHighOrderProjectionRenderer::vtkHighOrderProjectionRenderer() = default;
 
@@ -78,73 +80,173 @@ bool vtkHighOrderProjectionRenderer::PrepareTarget(
   return this->Framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
 }
 
-bool vtkHighOrderProjectionRenderer::DrawRegions(
-  vtkRenderer* ren, const std::vector<float>& vertices, const Options& options, bool useDepth)
+namespace
 {
-  auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  this->Program = renWin->GetShaderCache()->ReadyShaderProgram(
-    vtkHighOrderProjectionVS, vtkHighOrderProjectionFS, "");
-  if (!this->Program || !this->Program->GetCompiled())
+constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
+
+/// @p source with the HOV_* switches of the variant for @p options.
+std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Options& options,
+  bool useDepth)
+{
+  std::string defines = "#define HOV_PERSPECTIVE " + std::string(options.Parallel ? "0" : "1") +
+    "\n#define HOV_TEXTURE_OPACITY " + (options.TextureOpacity ? "1" : "0") +
+    "\n#define HOV_GLOW " + (options.PremultipliedColor ? "1" : "0") + "\n#define HOV_DEPTH " +
+    (useDepth ? "1" : "0") + "\n";
+  std::string out = source;
+  const std::string tag = "//HOV::Variant::Dec";
+  const size_t at = out.find(tag);
+  if (at != std::string::npos)
   {
-    return false;
+    out.replace(at, tag.size(), defines);
   }
-  constexpr int floats = vtkHighOrderProjectionRegions::FloatsPerVertex;
-  const size_t count = vertices.size() / floats;
-  if (count == 0)
+  return out;
+}
+
+/**
+ * Bind @p buffer to @p target and map its first @p bytes for writing (the
+ * previous contents are discarded), growing its storage (with 25% slack, so
+ * that views of similar size reuse it) when @p capacity is too small.
+ */
+void* MapForWriting(vtkOpenGLBufferObject* buffer, vtkOpenGLBufferObject::ObjectType type,
+  GLenum target, size_t bytes, size_t& capacity)
+{
+  if (!buffer->GenerateBuffer(type) || !buffer->Bind())
   {
-    return true;
+    return nullptr;
   }
-  this->Vertices->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-  if (!this->Vertices->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer))
+  if (bytes > capacity)
   {
-    return false;
+    capacity = bytes + bytes / 4;
+    glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STREAM_DRAW);
   }
-  this->VertexArray->Bind();
-  const size_t stride = floats * sizeof(float);
-  bool ok = this->VertexArray->AddAttributeArray(
-    this->Program, this->Vertices, "vertexClip", 0, stride, VTK_FLOAT, 4, false);
-  ok = ok &&
-    this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "rayIn", 4 * sizeof(float), stride, VTK_FLOAT, 4, false);
-  ok = ok &&
-    this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "tauIn", 8 * sizeof(float), stride, VTK_FLOAT, 2, false);
-  ok = ok &&
-    this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "colorAlpha", 10 * sizeof(float), stride, VTK_FLOAT, 4, false);
-  if (!ok)
+  return glMapBufferRange(target, 0, static_cast<GLsizeiptr>(bytes),
+    GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+}
+}
+
+bool vtkHighOrderProjectionRenderer::Upload(const vtkHighOrderProjectionRegions::Geometry& geometry)
+{
+  const size_t numVertices = geometry.GetNumberOfVertices();
+  const size_t numIndices = geometry.GetNumberOfIndices();
+  auto* vertices = static_cast<float*>(MapForWriting(this->Vertices,
+    vtkOpenGLBufferObject::ArrayBuffer, GL_ARRAY_BUFFER, numVertices * Floats * sizeof(float),
+    this->VertexBytes));
+  auto* indices = static_cast<unsigned int*>(MapForWriting(this->Indices,
+    vtkOpenGLBufferObject::ElementArrayBuffer, GL_ELEMENT_ARRAY_BUFFER,
+    numIndices * sizeof(unsigned int), this->IndexBytes));
+  if (vertices && indices)
   {
-    this->VertexArray->Release();
-    return false;
+    const vtkIdType numChunks = static_cast<vtkIdType>(geometry.VertexOffsets.size()) - 1;
+    vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
+        std::copy(chunk.Vertices.Data(), chunk.Vertices.Data() + chunk.Vertices.Size(),
+          vertices + geometry.VertexOffsets[c] * Floats);
+        const unsigned int base = static_cast<unsigned int>(geometry.VertexOffsets[c]);
+        const unsigned int* src = chunk.Indices.Data();
+        unsigned int* dst = indices + geometry.IndexOffsets[c];
+        for (size_t i = 0, n = chunk.Indices.Size(); i < n; ++i)
+        {
+          dst[i] = src[i] + base;
+        }
+      }
+    });
   }
-  this->OpacityTable->Activate();
-  const int tableUnit = this->OpacityTable->GetTextureUnit();
-  this->Program->SetUniformi("opacityTable", tableUnit);
+  // Both stay bound (the index buffer in the vertex array).
+  const bool unmappedVertices = !vertices || glUnmapBuffer(GL_ARRAY_BUFFER) == GL_TRUE;
+  const bool unmappedIndices = !indices || glUnmapBuffer(GL_ELEMENT_ARRAY_BUFFER) == GL_TRUE;
+  return vertices && indices && unmappedVertices && unmappedIndices;
+}
+
+bool vtkHighOrderProjectionRenderer::BindAttributes()
+{
+  struct Attribute
+  {
+    const char* Name;
+    int Offset, Components;
+  };
+  static const Attribute attributes[] = { { "vertexClip", 0, 4 }, { "segmentIn", 4, 3 },
+    { "colorAlpha", 7, 4 } };
+  bool ok = true;
+  for (const Attribute& a : attributes)
+  {
+    // A variant may not read an attribute (M0 without glow: no segment).
+    ok = ok &&
+      (!this->Program->IsAttributeUsed(a.Name) ||
+        this->VertexArray->AddAttributeArray(this->Program, this->Vertices, a.Name,
+          a.Offset * sizeof(float), Floats * sizeof(float), VTK_FLOAT, a.Components, false));
+  }
+  return ok;
+}
+
+void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options, bool useDepth)
+{
+  if (options.TextureOpacity)
+  {
+    this->OpacityTable->Activate();
+    this->Program->SetUniformi("opacityTable", this->OpacityTable->GetTextureUnit());
+    this->Program->SetUniformf("logMin", static_cast<float>(hov::OpacityTexture::LogMin));
+    this->Program->SetUniformf("logMax", static_cast<float>(hov::OpacityTexture::LogMax));
+  }
   if (useDepth)
   {
     this->DepthTexture->Activate();
     this->Program->SetUniformi("sceneDepth", this->DepthTexture->GetTextureUnit());
   }
-  else
+  if (!options.Parallel)
   {
-    this->Program->SetUniformi("sceneDepth", tableUnit); // never sampled
+    float matrix[16]; // column-major, as GL expects
+    for (int c = 0; c < 4; ++c)
+    {
+      for (int r = 0; r < 4; ++r)
+      {
+        matrix[4 * c + r] = static_cast<float>(options.ClipToData[c][r]);
+      }
+    }
+    const float eye[3] = { static_cast<float>(options.Eye.x), static_cast<float>(options.Eye.y),
+      static_cast<float>(options.Eye.z) };
+    this->Program->SetUniformMatrix4x4("clipToData", matrix);
+    this->Program->SetUniform3f("eye", eye);
   }
-  this->Program->SetUniformi("useDepth", useDepth ? 1 : 0);
-  this->Program->SetUniformi("perspective", options.Parallel ? 0 : 1);
-  this->Program->SetUniformi("textureOpacity", options.TextureOpacity ? 1 : 0);
-  this->Program->SetUniformi("premultipliedColor", options.PremultipliedColor ? 1 : 0);
-  this->Program->SetUniformf("lengthScale", static_cast<float>(options.LengthScale));
-  this->Program->SetUniformf("logMin", static_cast<float>(hov::OpacityTexture::LogMin));
-  this->Program->SetUniformf("logMax", static_cast<float>(hov::OpacityTexture::LogMax));
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count));
+}
+
+bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren,
+  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options, bool useDepth)
+{
+  auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  const std::string vs = Variant(vtkHighOrderProjectionVS, options, useDepth);
+  const std::string fs = Variant(vtkHighOrderProjectionFS, options, useDepth);
+  this->Program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  if (!this->Program || !this->Program->GetCompiled())
+  {
+    return false;
+  }
+  const size_t count = geometry.GetNumberOfIndices();
+  if (count == 0)
+  {
+    return true;
+  }
+  this->VertexArray->ShaderProgramChanged(); // the variant may differ from the last frame's
+  this->VertexArray->Bind();
+  const bool ok = this->Upload(geometry) && this->BindAttributes();
+  if (ok)
+  {
+    this->SetUniforms(options, useDepth);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr);
+    if (options.TextureOpacity)
+    {
+      this->OpacityTable->Deactivate();
+    }
+    if (useDepth)
+    {
+      this->DepthTexture->Deactivate();
+    }
+  }
+  this->Indices->Release();
   this->VertexArray->Release();
   this->Vertices->Release();
-  if (useDepth)
-  {
-    this->DepthTexture->Deactivate();
-  }
-  this->OpacityTable->Deactivate();
-  return true;
+  return ok;
 }
 
 bool vtkHighOrderProjectionRenderer::Composite(vtkRenderer* ren)
@@ -171,8 +273,9 @@ bool vtkHighOrderProjectionRenderer::Composite(vtkRenderer* ren)
   return true;
 }
 
-bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const std::vector<float>& vertices,
-  const Options& options, const float* sceneDepth, int width, int height, std::vector<float>* image)
+bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren,
+  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options,
+  const float* sceneDepth, int width, int height, float* image)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
   if (!renWin || width <= 0 || height <= 0)
@@ -208,14 +311,13 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const std::vector<
       ostate->vtkglDisable(GL_SCISSOR_TEST);
       ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
       ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-      ok = this->DrawRegions(ren, vertices, options, sceneDepth != nullptr);
+      ok = this->DrawRegions(ren, geometry, options, sceneDepth != nullptr);
       if (ok && image)
       {
-        image->resize(static_cast<size_t>(width) * height * 4);
         GLint packAlignment = 4;
         glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
         ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image->data());
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image);
         ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
       }
     }
@@ -234,6 +336,8 @@ void vtkHighOrderProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
   this->DepthTexture->ReleaseGraphicsResources(win);
   this->OpacityTable->ReleaseGraphicsResources(win);
   this->Vertices->ReleaseGraphicsResources();
+  this->Indices->ReleaseGraphicsResources();
+  this->VertexBytes = this->IndexBytes = 0;
   this->VertexArray->ReleaseGraphicsResources();
   if (this->Quad)
   {

@@ -1,7 +1,7 @@
 #include "hovProjectionColor.h"
 
 #include <algorithm> // std::min, std::max
-#include <cmath>     // std::exp, std::expm1, std::log
+#include <cmath>     // std::exp, std::expm1, std::log, std::floor
 
 namespace hov
 {
@@ -135,29 +135,29 @@ double OpacityFromTexture(
 {
   constexpr int n = OpacityTexture::Size;
   constexpr double lo = OpacityTexture::LogMin, hi = OpacityTexture::LogMax;
+  constexpr double step = (hi - lo) / (n - 1);
   if (!(length > 0.0 && tau > 0.0 && lengthScale > 0.0))
   {
     return 0.0;
   }
-  double x = std::log(length / lengthScale), y = std::log(tau * lengthScale);
-  const double sum = x + y;
+  // X + Y = ln(L / scale) + ln(tau scale) = ln(L tau): the scale cancels.
+  const double depth = length * tau;
+  const double sum = std::log(depth);
   if (sum <= 2.0 * lo)
   {
-    return std::exp(sum); // 1 - e^-d = d to 1e-14 relative here
+    return depth; // 1 - e^-d = d to 1e-14 relative here (also 0 on underflow)
   }
   if (sum >= 2.0 * hi)
   {
     return 1.0;
   }
-  // M depends on x + y only: move each coordinate into range, exactly.
-  x = std::min(std::max(x, std::max(lo, sum - hi)), std::min(hi, sum - lo));
-  y = sum - x;
-  const double fx = (x - lo) / (hi - lo) * (n - 1), fy = (y - lo) / (hi - lo) * (n - 1);
-  const int i = std::min(static_cast<int>(fx), n - 2), j = std::min(static_cast<int>(fy), n - 2);
-  const double tx = fx - i, ty = fy - j;
+  // M depends on X + Y only: take Y on the texel row nearest sum/2 and
+  // X = sum - Y (then X is in [lo, hi]); interpolate linearly along the row.
+  const int j = std::min(std::max(static_cast<int>(std::floor((0.5 * sum - lo) / step + 0.5)), 0), n - 1);
+  const double fx = std::min(std::max((sum - (lo + j * step) - lo) / step, 0.0), double(n - 1));
+  const int i = std::min(static_cast<int>(fx), n - 2);
+  const double t = fx - i;
   const size_t k = i + static_cast<size_t>(n) * j;
-  const double a = texels[k] * (1.0 - tx) + texels[k + 1] * tx;
-  const double b = texels[k + n] * (1.0 - tx) + texels[k + n + 1] * tx;
-  return a * (1.0 - ty) + b * ty;
+  return texels[k] * (1.0 - t) + texels[k + 1] * t;
 }
 }

@@ -31,16 +31,18 @@
  * Opacity texture (OpacityTexture*): a Size x Size float texture of
  * M = 1 - exp(-exp(X + Y)) on the nodes X, Y = LogMin + i (LogMax - LogMin) /
  * (Size - 1), with X = ln(L / lengthScale), Y = ln(tau_avg lengthScale)
- * (any positive lengthScale; the mapper uses the data diagonal). Since M
- * depends on X + Y only, a coordinate outside [LogMin, LogMax] is moved inside
- * and the other one shifted by the same amount, which is exact: there is no
- * clamping artefact for thick or dense cells. If X + Y is below 2 LogMin the
- * opacity is taken as exp(X + Y) (< 1.3e-14 off), above 2 LogMax it is 1
- * (1 - exp(-e^16) = 1 in double). Bilinear interpolation between nodes
- * (spacing 0.047 in log units) is within 2e-4 of the exact opacity
- * (TestProjectionColor measures it). OpacityFromTexture is the reference of
- * the lookup the fragment shader performs (vtkHighOrderProjectionFS.glsl,
- * hovOpacityFromTexture, a port of this function).
+ * (any positive lengthScale). Since M depends on X + Y = ln(L tau_avg) only,
+ * the lookup moves along X + Y = const to the texel row Y_j nearest
+ * (X + Y)/2 and interpolates linearly along that row at X = (X + Y) - Y_j,
+ * which lies in [LogMin, LogMax]: this is exact, so there is no clamping
+ * artefact for thick or dense cells, and it is a linear interpolation in
+ * ln(L tau_avg) with node spacing 0.047 (within 1e-4 of the exact opacity;
+ * TestProjectionColor measures it). If X + Y is below 2 LogMin the opacity
+ * is taken as L tau_avg (< 1.3e-14 off), above 2 LogMax it is 1
+ * (1 - exp(-e^16) = 1 in double). OpacityFromTexture is the reference of the
+ * lookup the fragment shader performs (vtkHighOrderProjectionFS.glsl,
+ * hovOpacityFromTexture, a port of this function: one logarithm and two
+ * texel fetches per fragment).
  *
  * Thread safety: all functions are re-entrant; a SegmentColorTable is
  * read-only after construction.
@@ -112,8 +114,9 @@ struct OpacityTexture
 
 /**
  * The opacity the fragment shader computes for length @p length and average
- * extinction @p tau from the texels of OpacityTexture::Texels() (same
- * shifting, same bilinear interpolation; in double here).
+ * extinction @p tau from the texels of OpacityTexture::Texels() (same row,
+ * same linear interpolation; in double here). 0 unless length, tau and
+ * @p lengthScale are positive; the value does not depend on the scale.
  */
 HOV_EXPORT double OpacityFromTexture(
   const std::vector<float>& texels, double length, double tau, double lengthScale);

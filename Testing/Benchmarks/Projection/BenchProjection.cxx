@@ -4,6 +4,8 @@
 // time over --frames frames (default 5) of a slowly rotating camera (every
 // frame re-sorts), after one warm-up frame; prints the ratios ours / VTK.
 // VTK-unstructured opacity semantics (what VTK's mapper computes).
+// Options: --frames N, --data bracket|cube46, --method 1|3, --order 1|0
+// (approximate|Stein), --no-vtk (ours only, for profiling).
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -108,11 +110,32 @@ double Time(vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* volume, const dou
 int main(int argc, char* argv[])
 {
   int frames = 5;
-  for (int i = 1; i + 1 < argc; ++i)
+  std::string only;   // --data NAME: one dataset
+  int onlyMethod = -1; // --method M: one colour method (1 or 3)
+  int onlyOrder = -1;  // --order O: 1 approximate, 0 Stein
+  bool skipVTK = false; // --no-vtk: ours only (profiling)
+  for (int i = 1; i < argc; ++i)
   {
-    if (!std::strcmp(argv[i], "--frames"))
+    const bool next = i + 1 < argc;
+    if (!std::strcmp(argv[i], "--frames") && next)
     {
-      frames = std::max(1, std::atoi(argv[i + 1]));
+      frames = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (!std::strcmp(argv[i], "--data") && next)
+    {
+      only = argv[++i];
+    }
+    else if (!std::strcmp(argv[i], "--method") && next)
+    {
+      onlyMethod = std::atoi(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--order") && next)
+    {
+      onlyOrder = std::atoi(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--no-vtk"))
+    {
+      skipVTK = true;
     }
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -126,7 +149,15 @@ int main(int argc, char* argv[])
     vtkSmartPointer<vtkUnstructuredGrid> Grid;
     double Lo, Hi;
   };
-  const Data data[] = { { "bracket", bracket, 0.0, 170.0 }, { "cube46", Cube(46), 0.0, 1.75 } };
+  std::vector<Data> data;
+  if (only.empty() || only == "bracket")
+  {
+    data.push_back({ "bracket", bracket, 0.0, 170.0 });
+  }
+  if (only.empty() || only == "cube46")
+  {
+    data.push_back({ "cube46", Cube(46), 0.0, 1.75 });
+  }
 
   vtkNew<vtkRenderer> ren;
   ren->SetBackground(0, 0, 0);
@@ -168,13 +199,17 @@ int main(int argc, char* argv[])
     ptVolume->SetMapper(pt);
     ptVolume->SetProperty(prop);
 
-    const double tPT = Time(win, ren, ptVolume, bounds, frames);
+    const double tPT = skipVTK ? 1.0 : Time(win, ren, ptVolume, bounds, frames);
     std::cout << d.Name << " (" << d.Grid->GetNumberOfCells() << " tets): vtkProjectedTetrahedraMapper "
               << tPT << "\n";
     for (int order : { 1, 0 })
     {
       for (int method : { 1, 3 })
       {
+        if ((onlyOrder >= 0 && order != onlyOrder) || (onlyMethod >= 0 && method != onlyMethod))
+        {
+          continue;
+        }
         ours->SetProjectionOrder(order);
         ours->SetProjectionColorMethod(method);
         const double t = Time(win, ren, ourVolume, bounds, frames);
