@@ -4,7 +4,7 @@
 // Fragment shader of vtkHighOrderProjectionRenderer (HIAC section 7), one
 // variant per combination of the HOV_* switches (no run-time branches): the
 // opacity of the fragment's ray segment from the 2D texture
-// M(X, Y) = 1 - exp(-exp(X + Y)) (methods M1-M3, hovOpacityFromTexture) or
+// M(u, v) = 1 - exp(-u v) (methods M1-M3, hovOpacityFromTexture) or
 // interpolated (M0); output premultiplied (k alpha, alpha) (Williams-Max),
 // or (g L phi, alpha) for the effective glow g of Wilhelms-Van Gelder
 // emission (HOV_GLOW, hovProjectionColor.h). HOV_DEPTH: fragments behind the
@@ -20,27 +20,18 @@ uniform sampler2D sceneDepth;
 #endif
 #if HOV_TEXTURE_OPACITY
 uniform sampler2D opacityTable;
-uniform float logMin;
-uniform float logMax;
+uniform float opacityScale;  // (Size - 1) / (UMax Size)
+uniform float opacityOffset; // 1 / (2 Size): the centre of the first texel
+uniform float opacityLast;   // (Size - 1/2) / Size: the centre of the last texel
 
-// Port of hov::OpacityFromTexture (Module/Kernels/hovProjectionColor.cxx),
-// same steps in float: the optical depth d = L tau_avg gives s = ln d = X + Y;
-// below 2 logMin the opacity is d, above 2 logMax 1; else Y is the texel row
-// nearest s/2, X = s - Y (exact: M depends on X + Y only) and the opacity is
-// the linear interpolation along that row.
+// Port of hov::OpacityFromTexture (Module/Kernels/hovProjectionColor.cxx):
+// M(u, v) = 1 - exp(-u v) at u = v = sqrt(d), d = L tau_avg (exact, since M
+// depends on u v only), bilinear by the texture unit (GL_LINEAR); beyond
+// UMax the last texel, 1.
 float hovOpacityFromTexture(float d)
 {
-  int n = textureSize(opacityTable, 0).x;
-  float step = (logMax - logMin) / float(n - 1);
-  float s = clamp(log(max(d, 1e-37)), 2.0 * logMin, 2.0 * logMax);
-  int j = clamp(int(floor((0.5 * s - logMin) / step + 0.5)), 0, n - 1);
-  float fx = clamp((s - (logMin + float(j) * step) - logMin) / step, 0.0, float(n - 1));
-  int i = min(int(fx), n - 2);
-  float a = texelFetch(opacityTable, ivec2(i, j), 0).r;
-  float b = texelFetch(opacityTable, ivec2(i + 1, j), 0).r;
-  float m = mix(a, b, fx - float(i));
-  m = s <= 2.0 * logMin ? d : m;
-  return d > 0.0 ? m : 0.0;
+  float t = min(sqrt(d) * opacityScale + opacityOffset, opacityLast);
+  return texture(opacityTable, vec2(t, t)).r;
 }
 #endif
 
@@ -54,9 +45,9 @@ void main()
 #endif
   // Segment length and average extinction (vtkHighOrderProjectionVertex).
 #if HOV_PERSPECTIVE
-  float mu = max(segmentVS.x, 1e-30);
-  float len = length(frontVS) * max(1.0 - mu, 0.0) / mu;
-  float tauAvg = 0.5 * (segmentVS.y + segmentVS.z / mu);
+  float inverseMu = 1.0 / max(segmentVS.x, 1e-30);
+  float len = length(frontVS) * max(inverseMu - 1.0, 0.0);
+  float tauAvg = 0.5 * (segmentVS.y + segmentVS.z * inverseMu);
 #else
   float len = segmentVS.x;
   float tauAvg = 0.5 * (segmentVS.y + segmentVS.z);

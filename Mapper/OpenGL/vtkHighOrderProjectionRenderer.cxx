@@ -52,8 +52,11 @@ bool vtkHighOrderProjectionRenderer::PrepareTarget(
   {
     const std::vector<float> texels = hov::OpacityTexture::Texels();
     this->OpacityTable->SetContext(renWin);
-    this->OpacityTable->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->OpacityTable->SetMagnificationFilter(vtkTextureObject::Nearest);
+    // Bilinear between texel centres (hov::OpacityFromTexture).
+    this->OpacityTable->SetMinificationFilter(vtkTextureObject::Linear);
+    this->OpacityTable->SetMagnificationFilter(vtkTextureObject::Linear);
+    this->OpacityTable->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->OpacityTable->SetWrapT(vtkTextureObject::ClampToEdge);
     constexpr int n = hov::OpacityTexture::Size;
     if (!this->OpacityTable->Create2DFromRaw(n, n, 1, VTK_FLOAT, const_cast<float*>(texels.data())))
     {
@@ -186,8 +189,11 @@ void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options, bool us
   {
     this->OpacityTable->Activate();
     this->Program->SetUniformi("opacityTable", this->OpacityTable->GetTextureUnit());
-    this->Program->SetUniformf("logMin", static_cast<float>(hov::OpacityTexture::LogMin));
-    this->Program->SetUniformf("logMax", static_cast<float>(hov::OpacityTexture::LogMax));
+    constexpr double n = hov::OpacityTexture::Size;
+    this->Program->SetUniformf(
+      "opacityScale", static_cast<float>((n - 1.0) / (hov::OpacityTexture::UMax * n)));
+    this->Program->SetUniformf("opacityOffset", static_cast<float>(0.5 / n));
+    this->Program->SetUniformf("opacityLast", static_cast<float>((n - 0.5) / n));
   }
   if (useDepth)
   {

@@ -1,7 +1,7 @@
 #include "hovProjectionColor.h"
 
 #include <algorithm> // std::min, std::max
-#include <cmath>     // std::exp, std::expm1, std::log, std::floor
+#include <cmath>     // std::expm1, std::sqrt
 
 namespace hov
 {
@@ -117,14 +117,13 @@ ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method, Emis
 std::vector<float> OpacityTexture::Texels()
 {
   constexpr int n = Size;
-  constexpr double step = (LogMax - LogMin) / (n - 1);
+  constexpr double step = UMax / (n - 1);
   std::vector<float> texels(static_cast<size_t>(n) * n);
   for (int j = 0; j < n; ++j)
   {
     for (int i = 0; i < n; ++i)
     {
-      const double d = std::exp(LogMin + i * step + LogMin + j * step);
-      texels[i + static_cast<size_t>(n) * j] = static_cast<float>(-std::expm1(-d));
+      texels[i + static_cast<size_t>(n) * j] = static_cast<float>(-std::expm1(-(i * step) * (j * step)));
     }
   }
   return texels;
@@ -134,30 +133,23 @@ double OpacityFromTexture(
   const std::vector<float>& texels, double length, double tau, double lengthScale)
 {
   constexpr int n = OpacityTexture::Size;
-  constexpr double lo = OpacityTexture::LogMin, hi = OpacityTexture::LogMax;
-  constexpr double step = (hi - lo) / (n - 1);
   if (!(length > 0.0 && tau > 0.0 && lengthScale > 0.0))
   {
     return 0.0;
   }
-  // X + Y = ln(L / scale) + ln(tau scale) = ln(L tau): the scale cancels.
-  const double depth = length * tau;
-  const double sum = std::log(depth);
-  if (sum <= 2.0 * lo)
+  // (u, v) = (L / c, tau c) with c = sqrt(L / tau): u = v = sqrt(L tau) (exact: M depends on u v).
+  const double u = std::sqrt(length * tau);
+  if (!(u < OpacityTexture::UMax))
   {
-    return depth; // 1 - e^-d = d to 1e-14 relative here (also 0 on underflow)
+    return 1.0; // 1 - exp(-UMax^2) = 1 - 2.3e-16
   }
-  if (sum >= 2.0 * hi)
-  {
-    return 1.0;
-  }
-  // M depends on X + Y only: take Y on the texel row nearest sum/2 and
-  // X = sum - Y (then X is in [lo, hi]); interpolate linearly along the row.
-  const int j = std::min(std::max(static_cast<int>(std::floor((0.5 * sum - lo) / step + 0.5)), 0), n - 1);
-  const double fx = std::min(std::max((sum - (lo + j * step) - lo) / step, 0.0), double(n - 1));
-  const int i = std::min(static_cast<int>(fx), n - 2);
-  const double t = fx - i;
-  const size_t k = i + static_cast<size_t>(n) * j;
-  return texels[k] * (1.0 - t) + texels[k + 1] * t;
+  // Bilinear between the texel centres around (u, u), as the texture unit filters.
+  const double f = u / OpacityTexture::UMax * (n - 1);
+  const int i = std::min(static_cast<int>(f), n - 2);
+  const double t = f - i;
+  const size_t k = i + static_cast<size_t>(n) * i;
+  const double a = texels[k] * (1.0 - t) + texels[k + 1] * t;
+  const double b = texels[k + n] * (1.0 - t) + texels[k + n + 1] * t;
+  return a * (1.0 - t) + b * t;
 }
 }
