@@ -7,16 +7,12 @@
 // M(u, v) = 1 - exp(-u v) (methods M1-M3, hovOpacityFromTexture) or
 // interpolated (M0); output premultiplied (k alpha, alpha) (Williams-Max),
 // or (g L phi, alpha) for the effective glow g of Wilhelms-Van Gelder
-// emission (HOV_GLOW, hovProjectionColor.h). HOV_DEPTH: fragments behind the
-// opaque geometry already drawn (scene depth, one texel per pixel) are
-// discarded.
+// emission (HOV_GLOW, hovProjectionColor.h). Fragments behind the opaque
+// geometry already drawn fail the depth test (vtkHighOrderProjectionRenderer).
 in vec3 segmentVS;
 in vec4 colorAlphaVS;
 #if HOV_PERSPECTIVE
 in vec3 frontVS;
-#endif
-#if HOV_DEPTH
-uniform sampler2D sceneDepth;
 #endif
 #if HOV_TEXTURE_OPACITY
 uniform sampler2D opacityTable;
@@ -37,12 +33,6 @@ float hovOpacityFromTexture(float d)
 
 void main()
 {
-#if HOV_DEPTH
-  if (gl_FragCoord.z > texelFetch(sceneDepth, ivec2(gl_FragCoord.xy), 0).r)
-  {
-    discard;
-  }
-#endif
   // Segment length and average extinction (vtkHighOrderProjectionVertex).
 #if HOV_PERSPECTIVE
   float inverseMu = 1.0 / max(segmentVS.x, 1e-30);

@@ -64,23 +64,57 @@ bool vtkHighOrderProjectionRenderer::PrepareTarget(
     }
     this->HaveOpacityTable = true;
   }
-  if (sceneDepth)
-  {
-    this->DepthTexture->SetContext(renWin);
-    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    if (!this->DepthTexture->Create2DFromRaw(
-          width, height, 1, VTK_FLOAT, const_cast<float*>(sceneDepth)))
-    {
-      return false;
-    }
-  }
   this->Framebuffer->SetContext(renWin);
   this->Framebuffer->Bind();
   this->Framebuffer->AddColorAttachment(0, this->ColorTexture);
   this->Framebuffer->ActivateDrawBuffer(0);
   this->Framebuffer->ActivateReadBuffer(0);
+  if (sceneDepth && this->PrepareDepth(renWin, width, height, sceneDepth))
+  {
+    this->Framebuffer->AddDepthAttachment(this->DepthTexture);
+  }
+  else
+  {
+    this->Framebuffer->RemoveDepthAttachment();
+    if (sceneDepth)
+    {
+      return false;
+    }
+  }
   return this->Framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
+}
+
+bool vtkHighOrderProjectionRenderer::PrepareDepth(
+  vtkOpenGLRenderWindow* renWin, int width, int height, const float* sceneDepth)
+{
+  this->DepthTexture->SetContext(renWin);
+  if (this->DepthWidth != width || this->DepthHeight != height ||
+    !this->DepthTexture->GetHandle())
+  {
+    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!this->DepthTexture->CreateDepthFromRaw(
+          width, height, vtkTextureObject::Float32, VTK_FLOAT, const_cast<float*>(sceneDepth)))
+    {
+      return false;
+    }
+    this->DepthWidth = width;
+    this->DepthHeight = height;
+    return true;
+  }
+  // Same size: new contents into the same storage.
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
+  this->DepthTexture->Activate();
+  GLint alignment = 4;
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+  ostate->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, sceneDepth);
+  ostate->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+  this->DepthTexture->Deactivate();
+  return true;
 }
 
 namespace
@@ -88,13 +122,11 @@ namespace
 constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
 
 /// @p source with the HOV_* switches of the variant for @p options.
-std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Options& options,
-  bool useDepth)
+std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Options& options)
 {
   std::string defines = "#define HOV_PERSPECTIVE " + std::string(options.Parallel ? "0" : "1") +
     "\n#define HOV_TEXTURE_OPACITY " + (options.TextureOpacity ? "1" : "0") +
-    "\n#define HOV_GLOW " + (options.PremultipliedColor ? "1" : "0") + "\n#define HOV_DEPTH " +
-    (useDepth ? "1" : "0") + "\n";
+    "\n#define HOV_GLOW " + (options.PremultipliedColor ? "1" : "0") + "\n";
   std::string out = source;
   const std::string tag = "//HOV::Variant::Dec";
   const size_t at = out.find(tag);
@@ -183,7 +215,7 @@ bool vtkHighOrderProjectionRenderer::BindAttributes()
   return ok;
 }
 
-void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options, bool useDepth)
+void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
 {
   if (options.TextureOpacity)
   {
@@ -194,11 +226,6 @@ void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options, bool us
       "opacityScale", static_cast<float>((n - 1.0) / (hov::OpacityTexture::UMax * n)));
     this->Program->SetUniformf("opacityOffset", static_cast<float>(0.5 / n));
     this->Program->SetUniformf("opacityLast", static_cast<float>((n - 0.5) / n));
-  }
-  if (useDepth)
-  {
-    this->DepthTexture->Activate();
-    this->Program->SetUniformi("sceneDepth", this->DepthTexture->GetTextureUnit());
   }
   if (!options.Parallel)
   {
@@ -218,11 +245,11 @@ void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options, bool us
 }
 
 bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren,
-  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options, bool useDepth)
+  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options)
 {
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  const std::string vs = Variant(vtkHighOrderProjectionVS, options, useDepth);
-  const std::string fs = Variant(vtkHighOrderProjectionFS, options, useDepth);
+  const std::string vs = Variant(vtkHighOrderProjectionVS, options);
+  const std::string fs = Variant(vtkHighOrderProjectionFS, options);
   this->Program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!this->Program || !this->Program->GetCompiled())
   {
@@ -238,15 +265,11 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren,
   const bool ok = this->Upload(geometry) && this->BindAttributes();
   if (ok)
   {
-    this->SetUniforms(options, useDepth);
+    this->SetUniforms(options);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr);
     if (options.TextureOpacity)
     {
       this->OpacityTable->Deactivate();
-    }
-    if (useDepth)
-    {
-      this->DepthTexture->Deactivate();
     }
   }
   this->Indices->Release();
@@ -296,6 +319,7 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren,
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -316,8 +340,15 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren,
       ostate->vtkglViewport(0, 0, width, height);
       ostate->vtkglDisable(GL_SCISSOR_TEST);
       ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-      ok = this->DrawRegions(ren, geometry, options, sceneDepth != nullptr);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT); // the depth attachment keeps the scene depth
+      if (sceneDepth)
+      {
+        // Fragments behind the opaque geometry fail the depth test (no writes).
+        ostate->vtkglEnable(GL_DEPTH_TEST);
+        ostate->vtkglDepthFunc(GL_LEQUAL);
+      }
+      ok = this->DrawRegions(ren, geometry, options);
+      ostate->vtkglDisable(GL_DEPTH_TEST);
       if (ok && image)
       {
         GLint packAlignment = 4;
@@ -357,5 +388,6 @@ void vtkHighOrderProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
     this->Program = nullptr;
   }
   this->Width = this->Height = 0;
+  this->DepthWidth = this->DepthHeight = 0;
   this->HaveOpacityTable = false;
 }

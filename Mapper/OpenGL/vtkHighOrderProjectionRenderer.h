@@ -15,9 +15,11 @@
  * compiled variant per projection / opacity / emission / depth combination,
  * so no run-time branches per fragment) takes the opacity from the float
  * texture of hov::OpacityTexture (methods M1-M3) or the interpolated vertex
- * opacity (M0), and discards fragments behind the opaque geometry already
- * drawn (the scene depth, read by the caller, as a GL_R32F texture: no depth
- * buffer and no depth format matching needed). The float image is then
+ * opacity (M0). Fragments behind the opaque geometry already drawn fail the
+ * depth test (GL_LEQUAL, no depth writes) against the scene depth, read by
+ * the caller and uploaded into a GL_DEPTH_COMPONENT32F texture attached to
+ * the framebuffer object (no depth format matching with the window needed).
+ * The float image is then
  * composited over the renderer's viewport by a full-viewport quad (the
  * fragment shader of vtkHighOrderImageDisplay) and, on request, read back
  * (premultiplied RGBA floats, row 0 at the bottom).
@@ -40,6 +42,7 @@
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
 class vtkRenderer;
 class vtkShaderProgram;
@@ -77,12 +80,14 @@ private:
   void operator=(const vtkHighOrderProjectionRenderer&) = delete;
 
   bool PrepareTarget(vtkRenderer* ren, int width, int height, const float* sceneDepth);
+  /// The scene depth into the depth texture (storage kept while the size is).
+  bool PrepareDepth(vtkOpenGLRenderWindow* renWin, int width, int height, const float* sceneDepth);
   bool DrawRegions(vtkRenderer* ren, const vtkHighOrderProjectionRegions::Geometry& geometry,
-    const Options& options, bool useDepth);
+    const Options& options);
   /// Copy @p geometry into the buffers (the vertex array must be bound).
   bool Upload(const vtkHighOrderProjectionRegions::Geometry& geometry);
   bool BindAttributes();
-  void SetUniforms(const Options& options, bool useDepth);
+  void SetUniforms(const Options& options);
   bool Composite(vtkRenderer* ren);
 
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
@@ -96,6 +101,7 @@ private:
   vtkOpenGLQuadHelper* Quad = nullptr;
   size_t VertexBytes = 0, IndexBytes = 0; ///< allocated buffer storage
   int Width = 0, Height = 0;
+  int DepthWidth = 0, DepthHeight = 0;
   bool HaveOpacityTable = false;
 };
 
