@@ -20,8 +20,7 @@ struct vtkHighOrderProjection
   vtkHighOrderProjectionRegions Regions;
   vtkHighOrderProjectionRenderer Renderer;
   vtkHighOrderProjectionRegions::Statistics Statistics;
-  std::vector<float> Vertices;
-  std::vector<float> Image;
+  vtkHighOrderProjectionRegions::Geometry Geometry;
   std::vector<float> Depth;
   std::vector<vtkIdType> BackToFront;
   bool WarnedFeatures = false;

@@ -1,7 +1,5 @@
 #include "vtkHighOrderProjectionPolyhedron.h"
 
-#include "vtkHighOrderProjectionRegions.h" // FloatsPerVertex
-
 #include "hovCellShapes.h"       // InvertGeometry, InterpolateCellScalar
 #include "hovRayCell.h"          // CellFaceCorners
 #include "hovTransferFunction.h" // Evaluate
@@ -13,7 +11,7 @@
 namespace
 {
 constexpr int MaxClip = 2 * vtkHighOrderProjectionPolyhedron::MaxFacePoints + 12;
-constexpr int Floats = vtkHighOrderProjectionRegions::FloatsPerVertex;
+constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
 
 /// Twice the signed area of a 2D polygon (counter-clockwise positive).
 double TwiceArea(const glm::dvec2* p, int n)
@@ -223,7 +221,7 @@ void vtkHighOrderProjectionPolyhedron::AddEdgeLevelPoints(
   }
 }
 
-int vtkHighOrderProjectionPolyhedron::EmitSlab(int k, const Frame& f, std::vector<float>& out)
+int vtkHighOrderProjectionPolyhedron::EmitSlab(int k, const Frame& f, vtkHighOrderProjectionChunk& out)
 {
   const std::vector<double>& x = f.Tf->GetNodes();
   const int n = static_cast<int>(x.size());
@@ -368,11 +366,10 @@ bool vtkHighOrderProjectionPolyhedron::Classify()
 }
 
 int vtkHighOrderProjectionPolyhedron::Overlay(
-  int k, double lo, double hi, const Frame& f, std::vector<float>& out)
+  int k, double lo, double hi, const Frame& f, vtkHighOrderProjectionChunk& out)
 {
   int triangles = 0;
   glm::dvec2 region[MaxClip];
-  float attributes[MaxClip * Floats];
   for (int a = 0; a < this->NumFront; ++a)
   {
     const Face2D& front = this->Front[a];
@@ -384,29 +381,24 @@ int vtkHighOrderProjectionPolyhedron::Overlay(
       {
         continue;
       }
+      unsigned int first = 0;
+      float* v = out.AddVertices(n, first);
       bool finite = true;
       for (int i = 0; i < n && finite; ++i)
       {
-        this->EmitVertex(region[i], front, back, k, lo, hi, f, attributes + i * Floats);
-        for (int c = 0; c < Floats; ++c)
-        {
-          finite = finite && std::isfinite(attributes[i * Floats + c]);
-        }
+        finite = this->EmitVertex(region[i], front, back, k, lo, hi, f, v + i * Floats);
       }
       if (!finite)
       {
+        out.Vertices.Shrink(static_cast<size_t>(n) * Floats);
         continue;
       }
-      const size_t start = out.size();
-      out.resize(start + static_cast<size_t>(n - 2) * 3 * Floats);
-      float* dst = out.data() + start;
-      for (int i = 1; i + 1 < n; ++i)
+      unsigned int* index = out.Indices.Append(static_cast<size_t>(n - 2) * 3);
+      for (int i = 1; i + 1 < n; ++i, index += 3)
       {
-        for (int v : { 0, i, i + 1 })
-        {
-          std::copy(attributes + v * Floats, attributes + (v + 1) * Floats, dst);
-          dst += Floats;
-        }
+        index[0] = first;
+        index[1] = first + i;
+        index[2] = first + i + 1;
       }
       triangles += n - 2;
     }
@@ -414,57 +406,14 @@ int vtkHighOrderProjectionPolyhedron::Overlay(
   return triangles;
 }
 
-void vtkHighOrderProjectionPolyhedron::EmitVertex(const glm::dvec2& p, const Face2D& front,
+bool vtkHighOrderProjectionPolyhedron::EmitVertex(const glm::dvec2& p, const Face2D& front,
   const Face2D& back, int k, double lo, double hi, const Frame& f, float* out) const
 {
   const double zFront = front.A * p.x + front.B * p.y + front.C;
   const double zBack = std::max(zFront, back.A * p.x + back.B * p.y + back.C);
-  const glm::dvec4 hf = f.Inverse * glm::dvec4(p.x, p.y, zFront, 1.0);
-  const glm::dvec4 hb = f.Inverse * glm::dvec4(p.x, p.y, zBack, 1.0);
-  const glm::dvec3 pf = glm::dvec3(hf) / hf.w, pb = glm::dvec3(hb) / hb.w;
-  const double length = glm::length(pb - pf);
+  glm::dvec3 pf, pb;
+  const double w = vtkHighOrderProjectionVertex::Unproject(f, p.x, p.y, zFront, zBack, pf, pb);
   const double sFront = std::min(std::max(this->Field(pf), lo), hi);
   const double sBack = std::min(std::max(this->Field(pb), lo), hi);
-  const bool wvg = f.Emission == hov::EmissionModel::WilhelmsVanGelder;
-  hov::SegmentEnd ef, eb;
-  f.Tf->Evaluate(k, sFront, wvg, ef);
-  f.Tf->Evaluate(k, sBack, wvg, eb);
-  const hov::ProjectionVertexColor v =
-    hov::ComputeProjectionVertex(f.Method, f.Emission, length, ef, eb, *f.Table);
-  const double w = 1.0 / hf.w; // clip w of the front point
-  out[0] = static_cast<float>(p.x * w);
-  out[1] = static_cast<float>(p.y * w);
-  out[2] = static_cast<float>(zFront * w);
-  out[3] = static_cast<float>(w);
-  // An opaque medium (infinite extinction) stays finite: alpha is 1 either way.
-  const double tauFront = std::min(ef.Tau, 1e30), tauBack = std::min(eb.Tau, 1e30);
-  if (f.Parallel)
-  {
-    // L and tau_avg are linear over the region: interpolate them directly.
-    out[4] = static_cast<float>(length);
-    out[5] = out[6] = out[7] = 0.0f;
-    out[8] = 0.0f;
-    out[9] = static_cast<float>(0.5 * (tauFront + tauBack));
-  }
-  else
-  {
-    // Quantities linear in the front point (perspective-correct
-    // interpolation is exact for them): the front point relative to the eye
-    // P, mu = |P| / |Q| (Q: the back point; 1/mu is linear along the back
-    // plane), tauFront, and nu = tauBack mu. The shader recovers
-    // L = |P| (1/mu - 1) and tau_avg = (tauFront + nu/mu)/2 exactly.
-    const glm::dvec3 rel = pf - f.Eye;
-    const double front = glm::length(rel), back = glm::length(pb - f.Eye);
-    const double mu = back > 0.0 ? front / back : 1.0;
-    out[4] = static_cast<float>(rel.x);
-    out[5] = static_cast<float>(rel.y);
-    out[6] = static_cast<float>(rel.z);
-    out[7] = static_cast<float>(mu);
-    out[8] = static_cast<float>(tauFront);
-    out[9] = static_cast<float>(tauBack * mu);
-  }
-  out[10] = static_cast<float>(v.Color[0]);
-  out[11] = static_cast<float>(v.Color[1]);
-  out[12] = static_cast<float>(v.Color[2]);
-  out[13] = static_cast<float>(v.Alpha);
+  return vtkHighOrderProjectionVertex::Write(f, k, p.x, p.y, zFront, w, pf, pb, sFront, sBack, out);
 }

@@ -25,7 +25,8 @@
  * edge-on are dropped. Every front face is clipped against every back face
  * (Sutherland-Hodgman on convex polygons): the pieces are the regions of
  * the subdivision by all projected edges; they are fan-triangulated and each
- * vertex gets its attributes (see vtkHighOrderProjectionRegions).
+ * vertex gets its attributes (vtkHighOrderProjectionVertex). Tetrahedra in
+ * one slab take the faster vtkHighOrderProjectionTetra instead.
  *
  * Thread safety: one object per thread.
  * @sa vtkHighOrderProjectionRegions
@@ -33,17 +34,12 @@
 #ifndef vtkHighOrderProjectionPolyhedron_h
 #define vtkHighOrderProjectionPolyhedron_h
 
-#include "hovProjectionColor.h" // methods, colour table
-#include "vtkHighOrderTetraSetup.h" // Tetra, general cells
+#include "vtkHighOrderProjectionVertex.h" // frame, chunk, vertex record
+#include "vtkHighOrderTetraSetup.h"       // Tetra, general cells
 
 #include <glm/glm.hpp> // dvec, dmat4
 
-#include <vector> // output
-
-namespace hov
-{
-class TransferFunction;
-}
+#include <vector> // points
 
 class vtkHighOrderProjectionPolyhedron
 {
@@ -52,18 +48,7 @@ public:
   static constexpr int MaxFacePoints = 10;
   static constexpr int MaxCorners = 8;
 
-  /// Per-frame constants.
-  struct Frame
-  {
-    glm::dmat4 Composite{ 1.0 }; ///< dataset -> clip
-    glm::dmat4 Inverse{ 1.0 };   ///< clip -> dataset (homogeneous)
-    const hov::SegmentColorTable* Table = nullptr;
-    const hov::TransferFunction* Tf = nullptr;
-    hov::ProjectionColorMethod Method = hov::ProjectionColorMethod::ExactColor;
-    hov::EmissionModel Emission = hov::EmissionModel::WilliamsMax;
-    bool Parallel = false;
-    glm::dvec3 Eye{ 0.0 }; ///< perspective: camera position (dataset coordinates)
-  };
+  using Frame = vtkHighOrderProjectionFrame;
 
   /// A linear tetrahedron; false if a corner is on or behind the eye plane.
   bool SetTetra(
@@ -87,11 +72,10 @@ public:
 
   /**
    * Triangles of the slab of transfer-function interval @p k (-1 .. n-1, as
-   * hov::TransferFunction::FindIntervalUpward) appended to @p out
-   * (vtkHighOrderProjectionRegions::FloatsPerVertex floats per vertex);
-   * returns their number.
+   * hov::TransferFunction::FindIntervalUpward) appended to @p out (each
+   * region's vertices once, fan-triangulated by indices); returns their number.
    */
-  int EmitSlab(int k, const Frame& f, std::vector<float>& out);
+  int EmitSlab(int k, const Frame& f, vtkHighOrderProjectionChunk& out);
 
 private:
   struct Face2D
@@ -105,8 +89,9 @@ private:
   void AddEdgeLevelPoints(int face, int i, int j, double lo, double hi, bool once = false);
   /// Faces -> front/back Face2D lists; false if nothing is visible.
   bool Classify();
-  int Overlay(int k, double lo, double hi, const Frame& f, std::vector<float>& out);
-  void EmitVertex(const glm::dvec2& p, const Face2D& front, const Face2D& back, int k, double lo,
+  int Overlay(int k, double lo, double hi, const Frame& f, vtkHighOrderProjectionChunk& out);
+  /// False if a value is not finite.
+  bool EmitVertex(const glm::dvec2& p, const Face2D& front, const Face2D& back, int k, double lo,
     double hi, const Frame& f, float* out) const;
   double AffineField(const glm::dvec3& x) const
   {

@@ -1,6 +1,7 @@
 #include "vtkHighOrderProjectionRegions.h"
 
 #include "vtkHighOrderProjectionPolyhedron.h" // slab faces, overlay, vertex emission
+#include "vtkHighOrderProjectionTetra.h"      // one-slab tetrahedra
 #include "vtkHighOrderTetraSetup.h"           // the validated cells
 
 #include "hovTransferFunction.h" // the table
@@ -8,14 +9,14 @@
 #include "vtkSMPTools.h" // parallel cells
 
 #include <algorithm> // std::sort
-#include <cstring>   // std::memcpy
 #include <limits>    // infinity
 #include <numeric>   // std::iota
 
 namespace
 {
 using Poly = vtkHighOrderProjectionPolyhedron;
-constexpr vtkIdType CellsPerChunk = 256;
+using Statistics = vtkHighOrderProjectionRegions::Statistics;
+constexpr vtkIdType CellsPerChunk = vtkHighOrderProjectionRegions::CellsPerChunk;
 
 /// The slabs of one cell in back-to-front order.
 struct SlabOrder
@@ -89,19 +90,108 @@ struct SlabOrder
 };
 }
 
+namespace
+{
+/// Per-thread state of Build: the general path's polyhedron and the slab order.
+struct CellEmitter
+{
+  const vtkHighOrderTetraSetup* Setup;
+  const hov::TransferFunction* Tf;
+  const vtkHighOrderProjectionRegions::Settings* Settings;
+  const Poly::Frame* Frame;
+  SlabOrder Order;
+  Poly Polyhedron;
+
+  /// The triangles of rendered cell @p cell into @p out.
+  void Emit(vtkIdType cell, vtkHighOrderProjectionChunk& out, Statistics& st)
+  {
+    const auto& tetras = this->Setup->GetTetras();
+    const vtkHighOrderGeneralCells& general = this->Setup->GetGeneralCells();
+    const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
+    ++st.Cells;
+    if (cell < 0 || cell >= numTetras + static_cast<vtkIdType>(general.GetCells().size()))
+    {
+      return;
+    }
+    const bool wvg = this->Settings->Emission == hov::EmissionModel::WilhelmsVanGelder;
+    if (cell < numTetras && this->EmitFastTetra(tetras[cell], wvg, out, st))
+    {
+      return;
+    }
+    Poly& poly = this->Polyhedron;
+    const bool ok = cell < numTetras
+      ? poly.SetTetra(tetras[cell], this->Setup->GetPoints(), *this->Frame)
+      : poly.SetGeneral(general, general.GetCells()[cell - numTetras], *this->Frame);
+    if (!ok)
+    {
+      ++st.BehindEye;
+      return;
+    }
+    const int direction =
+      this->Settings->Parallel ? poly.LevelDirection(this->Settings->Direction) : 0;
+    this->Order.Build(*this->Tf, poly.GetScalarMin(), poly.GetScalarMax(), wvg,
+      poly.EyeLevel(this->Settings->Eye), direction);
+    if (cell >= numTetras && this->Order.Keys.size() > 1)
+    {
+      ++st.CutGeneral; // cut by levels (approximate caps)
+    }
+    for (const auto& key : this->Order.Keys)
+    {
+      ++st.Slabs;
+      st.Triangles += poly.EmitSlab(key.second, *this->Frame, out);
+    }
+  }
+
+  /// A tetrahedron in at most one visible slab by vtkHighOrderProjectionTetra;
+  /// false if it needs the general path.
+  bool EmitFastTetra(const vtkHighOrderTetraSetup::Tetra& t, bool wvg,
+    vtkHighOrderProjectionChunk& out, Statistics& st)
+  {
+    const double smin = t.ScalarMin, smax = t.ScalarMax;
+    this->Order.Build(*this->Tf, smin, smax, wvg, 0.0, 1); // no sorting needed for one slab
+    if (this->Order.Keys.size() > 1)
+    {
+      return false;
+    }
+    if (this->Order.Keys.empty())
+    {
+      return true; // transparent throughout
+    }
+    const int k = this->Order.Keys[0].second;
+    const std::vector<double>& x = this->Tf->GetNodes();
+    const double lo = k < 0 ? smin : std::max(x[k], smin);
+    const double hi = k + 1 < static_cast<int>(x.size()) ? std::min(x[k + 1], smax) : smax;
+    const int n = vtkHighOrderProjectionTetra::Emit(
+      t, this->Setup->GetPoints(), *this->Frame, k, lo, hi, out);
+    if (n == vtkHighOrderProjectionTetra::Degenerate)
+    {
+      return false;
+    }
+    if (n == vtkHighOrderProjectionTetra::BehindEye)
+    {
+      ++st.BehindEye;
+      return true;
+    }
+    ++st.Slabs;
+    ++st.FastTetras;
+    st.Triangles += n;
+    return true;
+  }
+};
+}
+
 vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
   const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront,
-  const hov::TransferFunction& tf, const Settings& settings, std::vector<float>& vertices) const
+  const hov::TransferFunction& tf, const Settings& settings, Geometry& geometry) const
 {
   const vtkIdType numCells = static_cast<vtkIdType>(backToFront.size());
   const vtkIdType numChunks = (numCells + CellsPerChunk - 1) / CellsPerChunk;
-  std::vector<std::vector<float>> buffers(numChunks);
+  geometry.Clear();
+  if (static_cast<vtkIdType>(geometry.Chunks.size()) < numChunks)
+  {
+    geometry.Chunks.resize(numChunks);
+  }
   std::vector<Statistics> stats(numChunks);
-  const std::vector<vtkHighOrderTetraSetup::Tetra>& tetras = setup.GetTetras();
-  const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
-  const vtkHighOrderGeneralCells& general = setup.GetGeneralCells();
-  const vtkIdType numGeneral = static_cast<vtkIdType>(general.GetCells().size());
-  const bool wvg = settings.Emission == hov::EmissionModel::WilhelmsVanGelder;
 
   Poly::Frame frame;
   frame.Composite = settings.Composite;
@@ -114,66 +204,32 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
   frame.Eye = settings.Eye;
 
   vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
-    SlabOrder order;
-    Poly poly;
+    CellEmitter emitter{ &setup, &tf, &settings, &frame, {}, {} };
     for (vtkIdType chunk = first; chunk < last; ++chunk)
     {
-      std::vector<float>& out = buffers[chunk];
-      Statistics& st = stats[chunk];
       const vtkIdType end = std::min(numCells, (chunk + 1) * CellsPerChunk);
       for (vtkIdType i = chunk * CellsPerChunk; i < end; ++i)
       {
-        const vtkIdType cell = backToFront[i];
-        ++st.Cells;
-        if (cell < 0 || cell >= numTetras + numGeneral)
-        {
-          continue;
-        }
-        const bool ok = cell < numTetras
-          ? poly.SetTetra(tetras[cell], setup.GetPoints(), frame)
-          : poly.SetGeneral(general, general.GetCells()[cell - numTetras], frame);
-        if (!ok)
-        {
-          ++st.BehindEye;
-          continue;
-        }
-        const int direction = settings.Parallel ? poly.LevelDirection(settings.Direction) : 0;
-        order.Build(tf, poly.GetScalarMin(), poly.GetScalarMax(), wvg, poly.EyeLevel(settings.Eye),
-          direction);
-        if (cell >= numTetras && order.Keys.size() > 1)
-        {
-          ++st.CutGeneral; // cut by levels (approximate caps)
-        }
-        for (const auto& key : order.Keys)
-        {
-          ++st.Slabs;
-          st.Triangles += poly.EmitSlab(key.second, frame, out);
-        }
+        emitter.Emit(backToFront[i], geometry.Chunks[chunk], stats[chunk]);
       }
     }
   });
 
   Statistics total;
-  std::vector<size_t> offsets(numChunks + 1, 0);
+  geometry.VertexOffsets.resize(numChunks + 1);
+  geometry.IndexOffsets.resize(numChunks + 1);
   for (vtkIdType c = 0; c < numChunks; ++c)
   {
-    offsets[c + 1] = offsets[c] + buffers[c].size();
+    const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
+    geometry.VertexOffsets[c + 1] = geometry.VertexOffsets[c] + chunk.NumberOfVertices();
+    geometry.IndexOffsets[c + 1] = geometry.IndexOffsets[c] + chunk.Indices.Size();
     total.Cells += stats[c].Cells;
     total.Slabs += stats[c].Slabs;
     total.Triangles += stats[c].Triangles;
     total.BehindEye += stats[c].BehindEye;
     total.CutGeneral += stats[c].CutGeneral;
+    total.FastTetras += stats[c].FastTetras;
   }
-  vertices.resize(offsets[numChunks]);
-  vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
-    for (vtkIdType c = first; c < last; ++c)
-    {
-      if (!buffers[c].empty())
-      {
-        std::memcpy(vertices.data() + offsets[c], buffers[c].data(), buffers[c].size() * sizeof(float));
-      }
-    }
-  });
   return total;
 }
 

@@ -36,20 +36,27 @@
  * vtkHighOrderProjectionPolyhedron). Slabs of a general cell are ordered by
  * the least-squares affine fit of its corner scalars.
  *
- * Cells with a corner on or behind the eye plane (clip w <= 0) are skipped
- * and counted. Output vertex layout: FloatsPerVertex floats: clip position
- * (x, y, z, w); ray (parallel: L, 0, 0, 0; perspective: P, mu); extinction
- * (parallel: 0, tau_avg; perspective: tauFront, tauBack mu); colour (r, g,
- * b); alpha (M0).
+ * A linear tetrahedron with no transfer-function node strictly inside its
+ * scalar range (one slab: most cells of a smooth field) takes the fast path
+ * vtkHighOrderProjectionTetra (Shirley-Tuchman classification: the same
+ * regions, 3 or 4 triangles, 4 or 5 vertices) and falls back to the general
+ * path only if its projection is degenerate.
  *
- * Thread safety: Build() runs the cells in parallel (vtkSMPTools, chunks
- * concatenated in order: the output does not depend on the thread count).
+ * Cells with a corner on or behind the eye plane (clip w <= 0) are skipped
+ * and counted. Output: indexed triangles (vtkHighOrderProjectionVertex
+ * records) in chunks of consecutive cells, each chunk's indices local to it;
+ * GetVertexOffset / GetIndexOffset place the chunks in one buffer.
+ *
+ * Thread safety: Build() runs the cells in parallel (vtkSMPTools, one chunk
+ * per CellsPerChunk cells, concatenated in order: the output does not depend
+ * on the thread count).
  * @sa vtkHighOrderProjectionRenderer, hovProjectionColor.h, vtkHighOrderVolumeMapper
  */
 #ifndef vtkHighOrderProjectionRegions_h
 #define vtkHighOrderProjectionRegions_h
 
-#include "hovProjectionColor.h" // ProjectionColorMethod, SegmentColorTable
+#include "hovProjectionColor.h"           // ProjectionColorMethod, SegmentColorTable
+#include "vtkHighOrderProjectionVertex.h" // chunks
 
 #include "vtkType.h" // vtkIdType
 
@@ -66,7 +73,27 @@ class TransferFunction;
 class vtkHighOrderProjectionRegions
 {
 public:
-  static constexpr int FloatsPerVertex = 14;
+  static constexpr int FloatsPerVertex = vtkHighOrderProjectionVertex::FloatsPerVertex;
+  static constexpr long long CellsPerChunk = 512;
+
+  /// The triangles of a frame; the chunks keep their storage across frames.
+  struct Geometry
+  {
+    std::vector<vtkHighOrderProjectionChunk> Chunks;
+    std::vector<size_t> VertexOffsets; ///< first vertex of each chunk, then the total
+    std::vector<size_t> IndexOffsets;  ///< first index of each chunk, then the total
+    size_t GetNumberOfVertices() const { return this->VertexOffsets.empty() ? 0 : this->VertexOffsets.back(); }
+    size_t GetNumberOfIndices() const { return this->IndexOffsets.empty() ? 0 : this->IndexOffsets.back(); }
+    void Clear()
+    {
+      this->VertexOffsets.assign(1, 0);
+      this->IndexOffsets.assign(1, 0);
+      for (auto& chunk : this->Chunks)
+      {
+        chunk.Clear();
+      }
+    }
+  };
 
   struct Settings
   {
@@ -85,14 +112,15 @@ public:
     vtkIdType Triangles = 0;
     vtkIdType BehindEye = 0;  ///< cells skipped: a corner on or behind the eye plane
     vtkIdType CutGeneral = 0; ///< non-tetrahedral cells cut by transfer-function nodes (approximate)
+    vtkIdType FastTetras = 0; ///< tetrahedra drawn by vtkHighOrderProjectionTetra
   };
 
   /**
    * Triangles of all rendered cells of @p setup in the order @p backToFront
-   * (rendered-cell indices) into @p vertices (resized).
+   * (rendered-cell indices) into @p geometry.
    */
   Statistics Build(const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront,
-    const hov::TransferFunction& tf, const Settings& settings, std::vector<float>& vertices) const;
+    const hov::TransferFunction& tf, const Settings& settings, Geometry& geometry) const;
 
   /**
    * The approximate order (for interaction): rendered cells sorted back to

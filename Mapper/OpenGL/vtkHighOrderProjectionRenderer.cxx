@@ -2,7 +2,6 @@
 
 #include "vtkHighOrderImageDisplayFS.h"    // composite: one texel per pixel
 #include "vtkHighOrderProjectionFS.h"      // encoded fragment shader
-#include "vtkHighOrderProjectionRegions.h" // FloatsPerVertex
 #include "vtkHighOrderProjectionVS.h"      // encoded vertex shader
 
 #include "hovProjectionColor.h" // OpacityTexture
@@ -17,9 +16,12 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderer.h"
+#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
+
+#include <algorithm> // std::copy
 
 vtkHighOrderProjectionRenderer::vtkHighOrderProjectionRenderer() = default;
 
@@ -50,8 +52,11 @@ bool vtkHighOrderProjectionRenderer::PrepareTarget(
   {
     const std::vector<float> texels = hov::OpacityTexture::Texels();
     this->OpacityTable->SetContext(renWin);
-    this->OpacityTable->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->OpacityTable->SetMagnificationFilter(vtkTextureObject::Nearest);
+    // Bilinear between texel centres (hov::OpacityFromTexture).
+    this->OpacityTable->SetMinificationFilter(vtkTextureObject::Linear);
+    this->OpacityTable->SetMagnificationFilter(vtkTextureObject::Linear);
+    this->OpacityTable->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->OpacityTable->SetWrapT(vtkTextureObject::ClampToEdge);
     constexpr int n = hov::OpacityTexture::Size;
     if (!this->OpacityTable->Create2DFromRaw(n, n, 1, VTK_FLOAT, const_cast<float*>(texels.data())))
     {
@@ -59,92 +64,218 @@ bool vtkHighOrderProjectionRenderer::PrepareTarget(
     }
     this->HaveOpacityTable = true;
   }
-  if (sceneDepth)
-  {
-    this->DepthTexture->SetContext(renWin);
-    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    if (!this->DepthTexture->Create2DFromRaw(
-          width, height, 1, VTK_FLOAT, const_cast<float*>(sceneDepth)))
-    {
-      return false;
-    }
-  }
   this->Framebuffer->SetContext(renWin);
   this->Framebuffer->Bind();
   this->Framebuffer->AddColorAttachment(0, this->ColorTexture);
   this->Framebuffer->ActivateDrawBuffer(0);
   this->Framebuffer->ActivateReadBuffer(0);
+  if (sceneDepth && this->PrepareDepth(renWin, width, height, sceneDepth))
+  {
+    this->Framebuffer->AddDepthAttachment(this->DepthTexture);
+  }
+  else
+  {
+    this->Framebuffer->RemoveDepthAttachment();
+    if (sceneDepth)
+    {
+      return false;
+    }
+  }
   return this->Framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
 }
 
-bool vtkHighOrderProjectionRenderer::DrawRegions(
-  vtkRenderer* ren, const std::vector<float>& vertices, const Options& options, bool useDepth)
+bool vtkHighOrderProjectionRenderer::PrepareDepth(
+  vtkOpenGLRenderWindow* renWin, int width, int height, const float* sceneDepth)
+{
+  this->DepthTexture->SetContext(renWin);
+  if (this->DepthWidth != width || this->DepthHeight != height ||
+    !this->DepthTexture->GetHandle())
+  {
+    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!this->DepthTexture->CreateDepthFromRaw(
+          width, height, vtkTextureObject::Float32, VTK_FLOAT, const_cast<float*>(sceneDepth)))
+    {
+      return false;
+    }
+    this->DepthWidth = width;
+    this->DepthHeight = height;
+    return true;
+  }
+  // Same size: new contents into the same storage.
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
+  this->DepthTexture->Activate();
+  GLint alignment = 4;
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+  ostate->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, sceneDepth);
+  ostate->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+  this->DepthTexture->Deactivate();
+  return true;
+}
+
+namespace
+{
+constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
+
+/// @p source with the HOV_* switches of the variant for @p options.
+std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Options& options)
+{
+  std::string defines = "#define HOV_PERSPECTIVE " + std::string(options.Parallel ? "0" : "1") +
+    "\n#define HOV_TEXTURE_OPACITY " + (options.TextureOpacity ? "1" : "0") +
+    "\n#define HOV_GLOW " + (options.PremultipliedColor ? "1" : "0") + "\n";
+  std::string out = source;
+  const std::string tag = "//HOV::Variant::Dec";
+  const size_t at = out.find(tag);
+  if (at != std::string::npos)
+  {
+    out.replace(at, tag.size(), defines);
+  }
+  return out;
+}
+
+/**
+ * Bind @p buffer to @p target and map its first @p bytes for writing (the
+ * previous contents are discarded), growing its storage (with 25% slack, so
+ * that views of similar size reuse it) when @p capacity is too small.
+ */
+void* MapForWriting(vtkOpenGLBufferObject* buffer, vtkOpenGLBufferObject::ObjectType type,
+  GLenum target, size_t bytes, size_t& capacity)
+{
+  if (!buffer->GenerateBuffer(type) || !buffer->Bind())
+  {
+    return nullptr;
+  }
+  if (bytes > capacity)
+  {
+    capacity = bytes + bytes / 4;
+    glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STREAM_DRAW);
+  }
+  return glMapBufferRange(target, 0, static_cast<GLsizeiptr>(bytes),
+    GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+}
+}
+
+bool vtkHighOrderProjectionRenderer::Upload(const vtkHighOrderProjectionRegions::Geometry& geometry)
+{
+  const size_t numVertices = geometry.GetNumberOfVertices();
+  const size_t numIndices = geometry.GetNumberOfIndices();
+  auto* vertices = static_cast<float*>(MapForWriting(this->Vertices,
+    vtkOpenGLBufferObject::ArrayBuffer, GL_ARRAY_BUFFER, numVertices * Floats * sizeof(float),
+    this->VertexBytes));
+  auto* indices = static_cast<unsigned int*>(MapForWriting(this->Indices,
+    vtkOpenGLBufferObject::ElementArrayBuffer, GL_ELEMENT_ARRAY_BUFFER,
+    numIndices * sizeof(unsigned int), this->IndexBytes));
+  if (vertices && indices)
+  {
+    const vtkIdType numChunks = static_cast<vtkIdType>(geometry.VertexOffsets.size()) - 1;
+    vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
+      for (vtkIdType c = first; c < last; ++c)
+      {
+        const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
+        std::copy(chunk.Vertices.Data(), chunk.Vertices.Data() + chunk.Vertices.Size(),
+          vertices + geometry.VertexOffsets[c] * Floats);
+        const unsigned int base = static_cast<unsigned int>(geometry.VertexOffsets[c]);
+        const unsigned int* src = chunk.Indices.Data();
+        unsigned int* dst = indices + geometry.IndexOffsets[c];
+        for (size_t i = 0, n = chunk.Indices.Size(); i < n; ++i)
+        {
+          dst[i] = src[i] + base;
+        }
+      }
+    });
+  }
+  // Both stay bound (the index buffer in the vertex array).
+  const bool unmappedVertices = !vertices || glUnmapBuffer(GL_ARRAY_BUFFER) == GL_TRUE;
+  const bool unmappedIndices = !indices || glUnmapBuffer(GL_ELEMENT_ARRAY_BUFFER) == GL_TRUE;
+  return vertices && indices && unmappedVertices && unmappedIndices;
+}
+
+bool vtkHighOrderProjectionRenderer::BindAttributes()
+{
+  struct Attribute
+  {
+    const char* Name;
+    int Offset, Components;
+  };
+  static const Attribute attributes[] = { { "vertexClip", 0, 4 }, { "segmentIn", 4, 3 },
+    { "colorAlpha", 7, 4 } };
+  bool ok = true;
+  for (const Attribute& a : attributes)
+  {
+    // A variant may not read an attribute (M0 without glow: no segment).
+    ok = ok &&
+      (!this->Program->IsAttributeUsed(a.Name) ||
+        this->VertexArray->AddAttributeArray(this->Program, this->Vertices, a.Name,
+          a.Offset * sizeof(float), Floats * sizeof(float), VTK_FLOAT, a.Components, false));
+  }
+  return ok;
+}
+
+void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
+{
+  if (options.TextureOpacity)
+  {
+    this->OpacityTable->Activate();
+    this->Program->SetUniformi("opacityTable", this->OpacityTable->GetTextureUnit());
+    constexpr double n = hov::OpacityTexture::Size;
+    this->Program->SetUniformf(
+      "opacityScale", static_cast<float>((n - 1.0) / (hov::OpacityTexture::UMax * n)));
+    this->Program->SetUniformf("opacityOffset", static_cast<float>(0.5 / n));
+    this->Program->SetUniformf("opacityLast", static_cast<float>((n - 0.5) / n));
+  }
+  if (!options.Parallel)
+  {
+    float matrix[16]; // column-major, as GL expects
+    for (int c = 0; c < 4; ++c)
+    {
+      for (int r = 0; r < 4; ++r)
+      {
+        matrix[4 * c + r] = static_cast<float>(options.ClipToData[c][r]);
+      }
+    }
+    const float eye[3] = { static_cast<float>(options.Eye.x), static_cast<float>(options.Eye.y),
+      static_cast<float>(options.Eye.z) };
+    this->Program->SetUniformMatrix4x4("clipToData", matrix);
+    this->Program->SetUniform3f("eye", eye);
+  }
+}
+
+bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren,
+  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options)
 {
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  this->Program = renWin->GetShaderCache()->ReadyShaderProgram(
-    vtkHighOrderProjectionVS, vtkHighOrderProjectionFS, "");
+  const std::string vs = Variant(vtkHighOrderProjectionVS, options);
+  const std::string fs = Variant(vtkHighOrderProjectionFS, options);
+  this->Program = renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!this->Program || !this->Program->GetCompiled())
   {
     return false;
   }
-  constexpr int floats = vtkHighOrderProjectionRegions::FloatsPerVertex;
-  const size_t count = vertices.size() / floats;
+  const size_t count = geometry.GetNumberOfIndices();
   if (count == 0)
   {
     return true;
   }
-  this->Vertices->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-  if (!this->Vertices->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer))
-  {
-    return false;
-  }
+  this->VertexArray->ShaderProgramChanged(); // the variant may differ from the last frame's
   this->VertexArray->Bind();
-  const size_t stride = floats * sizeof(float);
-  bool ok = this->VertexArray->AddAttributeArray(
-    this->Program, this->Vertices, "vertexClip", 0, stride, VTK_FLOAT, 4, false);
-  ok = ok &&
-    this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "rayIn", 4 * sizeof(float), stride, VTK_FLOAT, 4, false);
-  ok = ok &&
-    this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "tauIn", 8 * sizeof(float), stride, VTK_FLOAT, 2, false);
-  ok = ok &&
-    this->VertexArray->AddAttributeArray(
-      this->Program, this->Vertices, "colorAlpha", 10 * sizeof(float), stride, VTK_FLOAT, 4, false);
-  if (!ok)
+  const bool ok = this->Upload(geometry) && this->BindAttributes();
+  if (ok)
   {
-    this->VertexArray->Release();
-    return false;
+    this->SetUniforms(options);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr);
+    if (options.TextureOpacity)
+    {
+      this->OpacityTable->Deactivate();
+    }
   }
-  this->OpacityTable->Activate();
-  const int tableUnit = this->OpacityTable->GetTextureUnit();
-  this->Program->SetUniformi("opacityTable", tableUnit);
-  if (useDepth)
-  {
-    this->DepthTexture->Activate();
-    this->Program->SetUniformi("sceneDepth", this->DepthTexture->GetTextureUnit());
-  }
-  else
-  {
-    this->Program->SetUniformi("sceneDepth", tableUnit); // never sampled
-  }
-  this->Program->SetUniformi("useDepth", useDepth ? 1 : 0);
-  this->Program->SetUniformi("perspective", options.Parallel ? 0 : 1);
-  this->Program->SetUniformi("textureOpacity", options.TextureOpacity ? 1 : 0);
-  this->Program->SetUniformi("premultipliedColor", options.PremultipliedColor ? 1 : 0);
-  this->Program->SetUniformf("lengthScale", static_cast<float>(options.LengthScale));
-  this->Program->SetUniformf("logMin", static_cast<float>(hov::OpacityTexture::LogMin));
-  this->Program->SetUniformf("logMax", static_cast<float>(hov::OpacityTexture::LogMax));
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count));
+  this->Indices->Release();
   this->VertexArray->Release();
   this->Vertices->Release();
-  if (useDepth)
-  {
-    this->DepthTexture->Deactivate();
-  }
-  this->OpacityTable->Deactivate();
-  return true;
+  return ok;
 }
 
 bool vtkHighOrderProjectionRenderer::Composite(vtkRenderer* ren)
@@ -171,8 +302,9 @@ bool vtkHighOrderProjectionRenderer::Composite(vtkRenderer* ren)
   return true;
 }
 
-bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const std::vector<float>& vertices,
-  const Options& options, const float* sceneDepth, int width, int height, std::vector<float>* image)
+bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren,
+  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options,
+  const float* sceneDepth, int width, int height, float* image)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
   if (!renWin || width <= 0 || height <= 0)
@@ -187,6 +319,7 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const std::vector<
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -207,15 +340,21 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const std::vector<
       ostate->vtkglViewport(0, 0, width, height);
       ostate->vtkglDisable(GL_SCISSOR_TEST);
       ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-      ok = this->DrawRegions(ren, vertices, options, sceneDepth != nullptr);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT); // the depth attachment keeps the scene depth
+      if (sceneDepth)
+      {
+        // Fragments behind the opaque geometry fail the depth test (no writes).
+        ostate->vtkglEnable(GL_DEPTH_TEST);
+        ostate->vtkglDepthFunc(GL_LEQUAL);
+      }
+      ok = this->DrawRegions(ren, geometry, options);
+      ostate->vtkglDisable(GL_DEPTH_TEST);
       if (ok && image)
       {
-        image->resize(static_cast<size_t>(width) * height * 4);
         GLint packAlignment = 4;
         glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
         ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image->data());
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, image);
         ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
       }
     }
@@ -234,6 +373,8 @@ void vtkHighOrderProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
   this->DepthTexture->ReleaseGraphicsResources(win);
   this->OpacityTable->ReleaseGraphicsResources(win);
   this->Vertices->ReleaseGraphicsResources();
+  this->Indices->ReleaseGraphicsResources();
+  this->VertexBytes = this->IndexBytes = 0;
   this->VertexArray->ReleaseGraphicsResources();
   if (this->Quad)
   {
@@ -247,5 +388,6 @@ void vtkHighOrderProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
     this->Program = nullptr;
   }
   this->Width = this->Height = 0;
+  this->DepthWidth = this->DepthHeight = 0;
   this->HaveOpacityTable = false;
 }

@@ -4,23 +4,29 @@
  *          region triangles of vtkHighOrderProjectionRegions into a float
  *          target and puts it over the scene.
  *
- * Per frame: the vertices are uploaded once into one vertex buffer and drawn
- * with one glDrawArrays call, in the order given (back to front), into a
+ * Per frame: the chunks of indexed triangles are copied in parallel
+ * (vtkSMPTools) straight into one mapped vertex buffer and one mapped index
+ * buffer (storage kept across frames, grown when needed) and drawn with one
+ * glDrawElements call, in the order given (back to front), into a
  * framebuffer object of the viewport's size with one GL_RGBA32F colour
  * texture cleared to 0, with premultiplied blending glBlendFuncSeparate(ONE,
  * ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA) ("over", no 8-bit rounding
- * between cells). The fragment shader (vtkHighOrderProjectionFS.glsl) takes
- * the opacity from the float texture of hov::OpacityTexture (methods M1-M3)
- * or the interpolated vertex opacity (M0), and discards fragments behind the
- * opaque geometry already drawn (the scene depth, read by the caller, as a
- * GL_R32F texture: no depth buffer and no depth format matching needed).
- * The float image is then composited over the renderer's viewport by a
- * full-viewport quad (the fragment shader of vtkHighOrderImageDisplay) and,
- * on request, read back (premultiplied RGBA floats, row 0 at the bottom).
+ * between cells). The fragment shader (vtkHighOrderProjectionFS.glsl, one
+ * compiled variant per projection / opacity / emission / depth combination,
+ * so no run-time branches per fragment) takes the opacity from the float
+ * texture of hov::OpacityTexture (methods M1-M3) or the interpolated vertex
+ * opacity (M0). Fragments behind the opaque geometry already drawn fail the
+ * depth test (GL_LEQUAL, no depth writes) against the scene depth, read by
+ * the caller and uploaded into a GL_DEPTH_COMPONENT32F texture attached to
+ * the framebuffer object (no depth format matching with the window needed).
+ * The float image is then
+ * composited over the renderer's viewport by a full-viewport quad (the
+ * fragment shader of vtkHighOrderImageDisplay) and, on request, read back
+ * (premultiplied RGBA floats, row 0 at the bottom).
  *
  * Every GL state touched is saved and restored with vtkOpenGLState's scoped
  * savers and framebuffer binding stack; ReleaseGraphicsResources frees the
- * framebuffer, the textures, the buffer, the vertex array and the programs.
+ * framebuffer, the textures, the buffers, the vertex array and the programs.
  *
  * Thread safety: call from the rendering thread only.
  * @sa vtkHighOrderProjectionRegions, vtkHighOrderImageDisplay, vtkHighOrderVolumeMapper
@@ -28,13 +34,15 @@
 #ifndef vtkHighOrderProjectionRenderer_h
 #define vtkHighOrderProjectionRenderer_h
 
-#include "vtkNew.h" // For vtkNew
+#include "vtkHighOrderProjectionRegions.h" // Geometry
+#include "vtkNew.h"                        // For vtkNew
 
-#include <vector> // vertices, image
+#include <string> // shader variants
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
 class vtkRenderer;
 class vtkShaderProgram;
@@ -48,21 +56,22 @@ public:
   {
     bool TextureOpacity = true;      ///< false: M0 (interpolated vertex opacity)
     bool PremultipliedColor = false; ///< true: the vertex colour is an effective glow (Wilhelms-Van Gelder)
-    double LengthScale = 1.0;        ///< of the opacity texture (hov::OpacityTexture)
-    bool Parallel = false;           ///< the vertex layout of vtkHighOrderProjectionRegions
+    bool Parallel = false;           ///< the vertex layout of vtkHighOrderProjectionVertex
+    glm::dmat4 ClipToData{ 1.0 };    ///< perspective: clip -> dataset coordinates
+    glm::dvec3 Eye{ 0.0 };           ///< perspective: camera position (dataset coordinates)
   };
 
   vtkHighOrderProjectionRenderer();
   ~vtkHighOrderProjectionRenderer();
 
   /**
-   * Draw @p vertices (vtkHighOrderProjectionRegions layout) for the viewport
-   * of @p ren (@p width x @p height); @p sceneDepth (width*height window
-   * depths) or null. If @p image is given, the float image is read back into
-   * it (width*height*4). Returns false if OpenGL resources could not be made.
+   * Draw @p geometry for the viewport of @p ren (@p width x @p height);
+   * @p sceneDepth (width*height window depths) or null. If @p image is given,
+   * the float image is read back into it (width*height*4 floats). Returns
+   * false if OpenGL resources could not be made.
    */
-  bool Render(vtkRenderer* ren, const std::vector<float>& vertices, const Options& options,
-    const float* sceneDepth, int width, int height, std::vector<float>* image);
+  bool Render(vtkRenderer* ren, const vtkHighOrderProjectionRegions::Geometry& geometry,
+    const Options& options, const float* sceneDepth, int width, int height, float* image);
 
   void ReleaseGraphicsResources(vtkWindow* win);
 
@@ -71,8 +80,14 @@ private:
   void operator=(const vtkHighOrderProjectionRenderer&) = delete;
 
   bool PrepareTarget(vtkRenderer* ren, int width, int height, const float* sceneDepth);
-  bool DrawRegions(vtkRenderer* ren, const std::vector<float>& vertices, const Options& options,
-    bool useDepth);
+  /// The scene depth into the depth texture (storage kept while the size is).
+  bool PrepareDepth(vtkOpenGLRenderWindow* renWin, int width, int height, const float* sceneDepth);
+  bool DrawRegions(vtkRenderer* ren, const vtkHighOrderProjectionRegions::Geometry& geometry,
+    const Options& options);
+  /// Copy @p geometry into the buffers (the vertex array must be bound).
+  bool Upload(const vtkHighOrderProjectionRegions::Geometry& geometry);
+  bool BindAttributes();
+  void SetUniforms(const Options& options);
   bool Composite(vtkRenderer* ren);
 
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
@@ -80,10 +95,13 @@ private:
   vtkNew<vtkTextureObject> DepthTexture;
   vtkNew<vtkTextureObject> OpacityTable;
   vtkNew<vtkOpenGLBufferObject> Vertices;
+  vtkNew<vtkOpenGLBufferObject> Indices;
   vtkNew<vtkOpenGLVertexArrayObject> VertexArray;
   vtkShaderProgram* Program = nullptr; ///< owned by the window's shader cache
   vtkOpenGLQuadHelper* Quad = nullptr;
+  size_t VertexBytes = 0, IndexBytes = 0; ///< allocated buffer storage
   int Width = 0, Height = 0;
+  int DepthWidth = 0, DepthHeight = 0;
   bool HaveOpacityTable = false;
 };
 

@@ -1,21 +1,30 @@
 //VTK::System::Dec
+//HOV::Variant::Dec
 // Vertex shader of vtkHighOrderProjectionRenderer: region vertices of the
-// OpenGL cell projection (HIAC section 7) arrive in clip coordinates (front
-// point of the ray segment) with the ray and extinction quantities of
-// vtkHighOrderProjectionRegions (linear on the front face, so the default
-// perspective-correct interpolation is exact for them), the colour and the
-// vertex opacity (method M0).
+// OpenGL cell projection (HIAC section 7; record of vtkHighOrderProjectionVertex)
+// arrive in clip coordinates (front point of the ray segment) with the
+// segment quantities (L | mu, tauFront, tauBack | tauBack mu), linear on the
+// front face (the default perspective-correct interpolation is exact for
+// them), the colour and the vertex opacity (method M0). Perspective: the
+// front point relative to the eye, P, is recovered from the clip position
+// (clip -> dataset matrix), also linear on the front face.
 in vec4 vertexClip;
-in vec4 rayIn;
-in vec2 tauIn;
+in vec3 segmentIn;
 in vec4 colorAlpha;
-out vec4 rayVS;
-out vec2 tauVS;
+out vec3 segmentVS;
 out vec4 colorAlphaVS;
+#if HOV_PERSPECTIVE
+uniform mat4 clipToData;
+uniform vec3 eye;
+out vec3 frontVS;
+#endif
 void main()
 {
   gl_Position = vertexClip;
-  rayVS = rayIn;
-  tauVS = tauIn;
+  segmentVS = segmentIn;
   colorAlphaVS = colorAlpha;
+#if HOV_PERSPECTIVE
+  vec4 h = clipToData * vertexClip;
+  frontVS = h.xyz / h.w - eye;
+#endif
 }

@@ -56,6 +56,31 @@ void ViewSettings(vtkCamera* camera, vtkVolume* volume, double aspect,
   settings.Direction = glm::dvec3(inverseModel * glm::dvec4(dop[0], dop[1], dop[2], 0.0));
   settings.Parallel = camera->GetParallelProjection() != 0;
 }
+
+/**
+ * The RGBA float array of @p image resized to @p width x @p height (reused
+ * when nobody else holds it, so the frame's read-back goes straight into it);
+ * marked modified.
+ */
+float* FloatImagePixels(vtkImageData* image, int width, int height)
+{
+  const vtkIdType n = static_cast<vtkIdType>(width) * height;
+  image->SetDimensions(width, height, 1);
+  auto* array = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  if (!array || array->GetReferenceCount() > 1 || array->GetNumberOfComponents() != 4 ||
+    array->GetNumberOfTuples() != n)
+  {
+    vtkNew<vtkFloatArray> fresh;
+    fresh->SetName("RGBA");
+    fresh->SetNumberOfComponents(4);
+    fresh->SetNumberOfTuples(n);
+    image->GetPointData()->SetScalars(fresh);
+    array = fresh;
+  }
+  array->Modified();
+  image->Modified();
+  return array->GetPointer(0);
+}
 }
 
 void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol)
@@ -95,7 +120,8 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   const vtkHighOrderTetraSetup* setup = nullptr;
   const std::vector<vtkIdType>* frontToBack = nullptr;
   vtkHighOrderTransferFunction* tf = nullptr;
-  proj.Vertices.clear();
+  proj.Geometry.Clear();
+  vtkHighOrderProjectionRenderer::Options options;
   if (this->PrepareProjectionFrame(camera, vol, exactOrder, &setup, &frontToBack, &tf))
   {
     vtkHighOrderProjectionRegions::Settings settings;
@@ -112,28 +138,21 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
       vtkHighOrderProjectionRegions::CentroidOrder(*setup, settings, proj.BackToFront);
     }
     proj.Statistics =
-      proj.Regions.Build(*setup, proj.BackToFront, tf->GetTable(), settings, proj.Vertices);
+      proj.Regions.Build(*setup, proj.BackToFront, tf->GetTable(), settings, proj.Geometry);
+    options.ClipToData = glm::inverse(settings.Composite);
+    options.Eye = settings.Eye;
     this->NumberOfProjectedTriangles = proj.Statistics.Triangles;
     this->NumberOfProjectedSlabs = proj.Statistics.Slabs;
   }
-  vtkHighOrderProjectionRenderer::Options options;
   options.TextureOpacity = this->ProjectionColorMethod != INTERPOLATED_OPACITY;
   options.PremultipliedColor = this->EmissionModel == WILHELMS_VAN_GELDER;
   options.Parallel = camera->GetParallelProjection() != 0;
-  options.LengthScale = setup && setup->GetDiagonal() > 0.0 ? setup->GetDiagonal() : 1.0;
-  if (!proj.Renderer.Render(ren, proj.Vertices, options, depth, width, height, &proj.Image))
+  float* pixels = FloatImagePixels(this->GetFloatImage(), width, height);
+  if (!proj.Renderer.Render(ren, proj.Geometry, options, depth, width, height, pixels))
   {
     vtkErrorMacro("Could not draw the cell projection with OpenGL.");
-    proj.Image.assign(static_cast<size_t>(width) * height * 4, 0.0f);
+    std::fill(pixels, pixels + static_cast<size_t>(width) * height * 4, 0.0f);
   }
-  vtkImageData* image = this->GetFloatImage();
-  image->SetDimensions(width, height, 1);
-  vtkNew<vtkFloatArray> array;
-  array->SetName("RGBA");
-  array->SetNumberOfComponents(4);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-  std::memcpy(array->GetPointer(0), proj.Image.data(), proj.Image.size() * sizeof(float));
-  image->GetPointData()->SetScalars(array);
   timer->StopTimer();
   this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
 }

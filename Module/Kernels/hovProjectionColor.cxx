@@ -1,7 +1,7 @@
 #include "hovProjectionColor.h"
 
 #include <algorithm> // std::min, std::max
-#include <cmath>     // std::exp, std::expm1, std::log
+#include <cmath>     // std::expm1, std::sqrt
 
 namespace hov
 {
@@ -117,14 +117,13 @@ ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method, Emis
 std::vector<float> OpacityTexture::Texels()
 {
   constexpr int n = Size;
-  constexpr double step = (LogMax - LogMin) / (n - 1);
+  constexpr double step = UMax / (n - 1);
   std::vector<float> texels(static_cast<size_t>(n) * n);
   for (int j = 0; j < n; ++j)
   {
     for (int i = 0; i < n; ++i)
     {
-      const double d = std::exp(LogMin + i * step + LogMin + j * step);
-      texels[i + static_cast<size_t>(n) * j] = static_cast<float>(-std::expm1(-d));
+      texels[i + static_cast<size_t>(n) * j] = static_cast<float>(-std::expm1(-(i * step) * (j * step)));
     }
   }
   return texels;
@@ -134,30 +133,23 @@ double OpacityFromTexture(
   const std::vector<float>& texels, double length, double tau, double lengthScale)
 {
   constexpr int n = OpacityTexture::Size;
-  constexpr double lo = OpacityTexture::LogMin, hi = OpacityTexture::LogMax;
   if (!(length > 0.0 && tau > 0.0 && lengthScale > 0.0))
   {
     return 0.0;
   }
-  double x = std::log(length / lengthScale), y = std::log(tau * lengthScale);
-  const double sum = x + y;
-  if (sum <= 2.0 * lo)
+  // (u, v) = (L / c, tau c) with c = sqrt(L / tau): u = v = sqrt(L tau) (exact: M depends on u v).
+  const double u = std::sqrt(length * tau);
+  if (!(u < OpacityTexture::UMax))
   {
-    return std::exp(sum); // 1 - e^-d = d to 1e-14 relative here
+    return 1.0; // 1 - exp(-UMax^2) = 1 - 2.3e-16
   }
-  if (sum >= 2.0 * hi)
-  {
-    return 1.0;
-  }
-  // M depends on x + y only: move each coordinate into range, exactly.
-  x = std::min(std::max(x, std::max(lo, sum - hi)), std::min(hi, sum - lo));
-  y = sum - x;
-  const double fx = (x - lo) / (hi - lo) * (n - 1), fy = (y - lo) / (hi - lo) * (n - 1);
-  const int i = std::min(static_cast<int>(fx), n - 2), j = std::min(static_cast<int>(fy), n - 2);
-  const double tx = fx - i, ty = fy - j;
-  const size_t k = i + static_cast<size_t>(n) * j;
-  const double a = texels[k] * (1.0 - tx) + texels[k + 1] * tx;
-  const double b = texels[k + n] * (1.0 - tx) + texels[k + n + 1] * tx;
-  return a * (1.0 - ty) + b * ty;
+  // Bilinear between the texel centres around (u, u), as the texture unit filters.
+  const double f = u / OpacityTexture::UMax * (n - 1);
+  const int i = std::min(static_cast<int>(f), n - 2);
+  const double t = f - i;
+  const size_t k = i + static_cast<size_t>(n) * i;
+  const double a = texels[k] * (1.0 - t) + texels[k + 1] * t;
+  const double b = texels[k + n] * (1.0 - t) + texels[k + n + 1] * t;
+  return a * (1.0 - t) + b * t;
 }
 }

@@ -29,18 +29,19 @@
  * the table's VFront, VBack; M3 C from hov::IntegrateSegment.
  *
  * Opacity texture (OpacityTexture*): a Size x Size float texture of
- * M = 1 - exp(-exp(X + Y)) on the nodes X, Y = LogMin + i (LogMax - LogMin) /
- * (Size - 1), with X = ln(L / lengthScale), Y = ln(tau_avg lengthScale)
- * (any positive lengthScale; the mapper uses the data diagonal). Since M
- * depends on X + Y only, a coordinate outside [LogMin, LogMax] is moved inside
- * and the other one shifted by the same amount, which is exact: there is no
- * clamping artefact for thick or dense cells. If X + Y is below 2 LogMin the
- * opacity is taken as exp(X + Y) (< 1.3e-14 off), above 2 LogMax it is 1
- * (1 - exp(-e^16) = 1 in double). Bilinear interpolation between nodes
- * (spacing 0.047 in log units) is within 2e-4 of the exact opacity
- * (TestProjectionColor measures it). OpacityFromTexture is the reference of
- * the lookup the fragment shader performs (vtkHighOrderProjectionFS.glsl,
- * hovOpacityFromTexture, a port of this function).
+ * M(u, v) = 1 - exp(-u v) on the nodes u, v = i UMax / (Size - 1) (HIAC
+ * section 7's table, u a length and v an extinction in reciprocal units).
+ * M depends on the product u v only, so any (L / c, tau_avg c), c > 0, gives
+ * the exact opacity; the lookup takes c = sqrt(L / tau_avg), i.e. the point
+ * u = v = sqrt(L tau_avg) on the diagonal: no scale to choose, no clamping
+ * artefact for thick or dense cells, and one square root (no logarithm) per
+ * fragment. Beyond u = UMax the opacity is 1 (1 - exp(-36) = 1 - 2.3e-16).
+ * The texture unit's bilinear filter there is exact for thin segments (u v
+ * is bilinear) and within h^2 / (4e) = 1.3e-5 of the exact opacity in
+ * general (h = UMax / (Size - 1); TestProjectionColor measures it).
+ * OpacityFromTexture is the reference of the lookup the fragment shader
+ * performs (vtkHighOrderProjectionFS.glsl, hovOpacityFromTexture: the same
+ * point, the texture unit's GL_LINEAR filter).
  *
  * Thread safety: all functions are re-entrant; a SegmentColorTable is
  * read-only after construction.
@@ -104,16 +105,17 @@ HOV_EXPORT ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod m
 struct OpacityTexture
 {
   static constexpr int Size = 512;
-  static constexpr double LogMin = -16.0;
-  static constexpr double LogMax = 8.0;
-  /// Size * Size texels, row j (Y) after row j-1, M(X_i, Y_j) at i + Size j.
+  static constexpr double UMax = 6.0;
+  /// Size * Size texels, row j (v) after row j-1, M(u_i, v_j) at i + Size j.
   static std::vector<float> Texels();
 };
 
 /**
  * The opacity the fragment shader computes for length @p length and average
- * extinction @p tau from the texels of OpacityTexture::Texels() (same
- * shifting, same bilinear interpolation; in double here).
+ * extinction @p tau from the texels of OpacityTexture::Texels() (same point,
+ * same bilinear interpolation; in double here). 0 unless length, tau and
+ * @p lengthScale are positive; the value does not depend on the scale (the
+ * lookup point u = v = sqrt(L tau) is scale-free).
  */
 HOV_EXPORT double OpacityFromTexture(
   const std::vector<float>& texels, double length, double tau, double lengthScale);

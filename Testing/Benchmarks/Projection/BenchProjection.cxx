@@ -1,9 +1,15 @@
 // hovBenchProjection: OPENGL_PROJECTION (M1, M3; approximate centroid order
 // and exact Stein order) vs vtkProjectedTetrahedraMapper (its default
-// vtkCellCenterDepthSort) at 512x512 on llvmpipe, one process. Median frame
-// time over --frames frames (default 5) of a slowly rotating camera (every
-// frame re-sorts), after one warm-up frame; prints the ratios ours / VTK.
+// vtkCellCenterDepthSort) at 512x512 on llvmpipe, one process. Each
+// configuration has its own volume and mapper; the configurations are
+// interleaved frame by frame (every frame: rotate the camera by 3 degrees,
+// then render each configuration once, timed until the image is complete:
+// Render + WaitForCompletion), so that the load of a shared machine affects
+// all of them alike. Prints the median frame time over --frames frames
+// (default 5, after one warm-up frame each) and the ratios ours / VTK.
 // VTK-unstructured opacity semantics (what VTK's mapper computes).
+// Options: --frames N, --data bracket|cube46, --method 1|3, --order 1|0
+// (approximate|Stein), --no-vtk (ours only, for profiling).
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -77,12 +83,32 @@ double Median(std::vector<double> v)
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-/// Median frame time of @p volume alone in @p win.
-double Time(vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* volume, const double bounds[6],
-  int frames)
+/// One timed configuration.
+struct Config
+{
+  std::string Name;
+  vtkSmartPointer<vtkVolume> Volume;
+  vtkHighOrderVolumeMapper* Ours = nullptr; ///< null for VTK's mapper
+  std::vector<double> Times;
+};
+
+/// Render @p volume alone in @p win until the image is complete; seconds.
+double RenderOnce(vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* volume)
 {
   ren->RemoveAllViewProps();
   ren->AddVolume(volume);
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  win->Render();
+  win->WaitForCompletion();
+  timer->StopTimer();
+  return timer->GetElapsedTime();
+}
+
+/// Interleaved timing of @p configs (see file doc).
+void TimeAll(vtkRenderWindow* win, vtkRenderer* ren, std::vector<Config>& configs,
+  const double bounds[6], int frames)
+{
   vtkCamera* cam = ren->GetActiveCamera();
   const double c[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
@@ -90,29 +116,50 @@ double Time(vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* volume, const dou
   cam->SetPosition(c[0] + 1.0, c[1] - 2.0, c[2] + 1.5);
   cam->SetViewUp(0, 0, 1);
   ren->ResetCamera(bounds);
-  win->Render(); // warm-up
-  std::vector<double> t;
-  vtkNew<vtkTimerLog> timer;
+  for (Config& config : configs)
+  {
+    RenderOnce(win, ren, config.Volume); // warm-up: set-up, sort structures, shaders
+  }
   for (int f = 0; f < frames; ++f)
   {
     cam->Azimuth(3.0);
-    timer->StartTimer();
-    win->Render();
-    timer->StopTimer();
-    t.push_back(timer->GetElapsedTime());
+    for (Config& config : configs)
+    {
+      config.Times.push_back(RenderOnce(win, ren, config.Volume));
+    }
   }
-  return Median(t);
 }
 }
 
 int main(int argc, char* argv[])
 {
   int frames = 5;
-  for (int i = 1; i + 1 < argc; ++i)
+  std::string only;   // --data NAME: one dataset
+  int onlyMethod = -1; // --method M: one colour method (1 or 3)
+  int onlyOrder = -1;  // --order O: 1 approximate, 0 Stein
+  bool skipVTK = false; // --no-vtk: ours only (profiling)
+  for (int i = 1; i < argc; ++i)
   {
-    if (!std::strcmp(argv[i], "--frames"))
+    const bool next = i + 1 < argc;
+    if (!std::strcmp(argv[i], "--frames") && next)
     {
-      frames = std::max(1, std::atoi(argv[i + 1]));
+      frames = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (!std::strcmp(argv[i], "--data") && next)
+    {
+      only = argv[++i];
+    }
+    else if (!std::strcmp(argv[i], "--method") && next)
+    {
+      onlyMethod = std::atoi(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--order") && next)
+    {
+      onlyOrder = std::atoi(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--no-vtk"))
+    {
+      skipVTK = true;
     }
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -126,7 +173,15 @@ int main(int argc, char* argv[])
     vtkSmartPointer<vtkUnstructuredGrid> Grid;
     double Lo, Hi;
   };
-  const Data data[] = { { "bracket", bracket, 0.0, 170.0 }, { "cube46", Cube(46), 0.0, 1.75 } };
+  std::vector<Data> data;
+  if (only.empty() || only == "bracket")
+  {
+    data.push_back({ "bracket", bracket, 0.0, 170.0 });
+  }
+  if (only.empty() || only == "cube46")
+  {
+    data.push_back({ "cube46", Cube(46), 0.0, 1.75 });
+  }
 
   vtkNew<vtkRenderer> ren;
   ren->SetBackground(0, 0, 0);
@@ -136,7 +191,7 @@ int main(int argc, char* argv[])
   win->AddRenderer(ren);
   win->SetSize(512, 512);
   std::cout << "hovBenchProjection: 512x512, median of " << frames
-            << " frames (rotating camera), seconds per frame\n";
+            << " interleaved frames (rotating camera), seconds per frame\n";
   for (const Data& d : data)
   {
     const double r = d.Hi - d.Lo;
@@ -155,33 +210,55 @@ int main(int argc, char* argv[])
     d.Grid->GetBounds(bounds);
     prop->SetScalarOpacityUnitDistance(0.05 * (bounds[1] - bounds[0]));
 
-    vtkNew<vtkHighOrderVolumeMapper> ours;
-    ours->SetInputData(d.Grid);
-    ours->SetOpacitySemanticsToVTKUnstructured();
-    ours->SetRenderModeToOpenGLProjection();
-    vtkNew<vtkVolume> ourVolume;
-    ourVolume->SetMapper(ours);
-    ourVolume->SetProperty(prop);
-    vtkNew<vtkProjectedTetrahedraMapper> pt;
-    pt->SetInputData(d.Grid);
-    vtkNew<vtkVolume> ptVolume;
-    ptVolume->SetMapper(pt);
-    ptVolume->SetProperty(prop);
-
-    const double tPT = Time(win, ren, ptVolume, bounds, frames);
-    std::cout << d.Name << " (" << d.Grid->GetNumberOfCells() << " tets): vtkProjectedTetrahedraMapper "
-              << tPT << "\n";
+    std::vector<Config> configs;
+    if (!skipVTK)
+    {
+      vtkNew<vtkProjectedTetrahedraMapper> pt;
+      pt->SetInputData(d.Grid);
+      Config config;
+      config.Name = "vtkProjectedTetrahedraMapper";
+      config.Volume = vtkSmartPointer<vtkVolume>::New();
+      config.Volume->SetMapper(pt);
+      config.Volume->SetProperty(prop);
+      configs.push_back(config);
+    }
     for (int order : { 1, 0 })
     {
       for (int method : { 1, 3 })
       {
+        if ((onlyOrder >= 0 && order != onlyOrder) || (onlyMethod >= 0 && method != onlyMethod))
+        {
+          continue;
+        }
+        vtkNew<vtkHighOrderVolumeMapper> ours;
+        ours->SetInputData(d.Grid);
+        ours->SetOpacitySemanticsToVTKUnstructured();
+        ours->SetRenderModeToOpenGLProjection();
         ours->SetProjectionOrder(order);
         ours->SetProjectionColorMethod(method);
-        const double t = Time(win, ren, ourVolume, bounds, frames);
-        std::cout << "  ours M" << method << (order ? " approximate order" : " Stein order      ")
-                  << " " << t << " s  (ours / VTK = " << t / tPT << ", triangles "
-                  << ours->GetNumberOfProjectedTriangles() << ")\n";
+        Config config;
+        config.Name = std::string("ours M") + std::to_string(method) +
+          (order ? " approximate order" : " Stein order      ");
+        config.Volume = vtkSmartPointer<vtkVolume>::New();
+        config.Volume->SetMapper(ours);
+        config.Volume->SetProperty(prop);
+        config.Ours = ours;
+        configs.push_back(config);
       }
+    }
+    TimeAll(win, ren, configs, bounds, frames);
+    const double tPT = skipVTK ? 1.0 : Median(configs[0].Times);
+    std::cout << d.Name << " (" << d.Grid->GetNumberOfCells() << " tets):\n";
+    for (const Config& config : configs)
+    {
+      const double t = Median(config.Times);
+      std::cout << "  " << config.Name << " " << t << " s";
+      if (config.Ours)
+      {
+        std::cout << "  (ours / VTK = " << t / tPT << ", triangles "
+                  << config.Ours->GetNumberOfProjectedTriangles() << ")";
+      }
+      std::cout << "\n";
     }
   }
   return 0;
