@@ -13,7 +13,7 @@ constexpr double Eps = std::numeric_limits<double>::epsilon();
 /// |F| at most this many eps x extent is the rounding floor of x(pc) - x.
 constexpr double ResidualFloorUlps = 64.0;
 /// Backtracking halvings per Newton step.
-constexpr int MaxHalvings = 20;
+constexpr int MaxHalvings = 12;
 
 double NormInf(const double v[3])
 {
@@ -91,6 +91,10 @@ InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], 
         break;
       }
     }
+    if (!(ftNorm < fNorm) && !(fNorm <= floor))
+    {
+      return InversionStatus::NoConvergence; // a local minimum of |F|: hopeless start
+    }
     const double taken = used * NormInf(step);
     std::copy(trial, trial + 3, pc);
     std::copy(Ft, Ft + 3, F);
@@ -98,7 +102,7 @@ InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], 
     fNorm = ftNorm;
     result.LastStep = taken;
     result.Residual = fNorm / extent;
-    if (!AllFinite(pc, 3))
+    if (!AllFinite(pc, 3) || !(cell.Basis->DistanceOutside(pc) <= s.AbandonOutside))
     {
       return InversionStatus::NoConvergence;
     }

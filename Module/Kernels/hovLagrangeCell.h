@@ -14,8 +14,10 @@
  *    Jacobian with |det| <= SingularTolerance |J_0| |J_1| |J_2| (columns) is
  *    singular (the start is abandoned);
  *  - the step limited to MaxStep = 1 parametric unit (max norm) and damped
- *    by halving (up to 20 times) until |F| decreases (backtracking line
- *    search), so iterates far from the solution cannot run away;
+ *    by halving (up to 12 times) until |F| decreases (backtracking line
+ *    search), so iterates far from the solution cannot run away; a start
+ *    is abandoned when no halving decreases |F| (a local minimum of |F|)
+ *    or an iterate lies more than AbandonOutside (1) outside the domain;
  *  - convergence when the accepted step is below StepTolerance (1e-13,
  *    max norm), or when |F| is at its rounding floor (<= 64 eps x extent,
  *    the extent being the nodes' bounding-box diagonal) and the step is
@@ -24,7 +26,8 @@
  *  - starts, in turn, until one converges: the caller's guess, the domain's
  *    centre, and the 27 points {0.2, 0.5, 0.8}^3 that lie in the domain.
  * A point outside the cell converges to parametric coordinates outside the
- * domain (the polynomial map extends); DistanceOutside tells. Measured
+ * domain (the polynomial map extends); DistanceOutside tells. Points more
+ * than ~AbandonOutside outside report NoConvergence. Measured
  * (TestLagrangeInversion): round trips x(pc) -> pc on curved cells of
  * every type and order 1..8 to <= 1e-13 in parametric space.
  *
@@ -89,6 +92,10 @@ struct LagrangeInversionSettings
   double SingularTolerance = 1e-12;  ///< relative |det J| below which J is singular
   double MaxStep = 1.0;              ///< longest parametric step (max norm)
   int MaxIterations = 50;            ///< per start
+  /// A start is abandoned when an iterate lies farther outside the domain
+  /// (parametric units): far outside, the polynomial map's extension has
+  /// spurious preimages and Newton wanders.
+  double AbandonOutside = 1.0;
   bool UseStartGrid = true;          ///< try the 27-point grid after guess and centre
 };
 
