@@ -28,7 +28,16 @@
  * Where the geometry is affine (or the cell is a trilinear hexahedron of
  * any order with nodes on the trilinear map), the faces are the planes /
  * bilinear patches of hovRayCell.h and the intervals agree with
- * RayCellIntervals to ~1e-13 of the cell size (TestCurvedRayCell).
+ * RayCellIntervals to ~1e-13 of the cell size.
+ * Measured (TestCurvedRayCell, GCC 12 Release): max |t - t_ref| 2.0e-14
+ * against RayCellIntervals (720 rays, tet/hex/wedge of orders 1..4 with
+ * straight-sided geometry, non-planar quads); 0 disagreements with a
+ * brute-force inside test on curved cells of every type, orders 1..5; the
+ * arch test (re-entry: 2 intervals, ends within 1e-12 of the closed form;
+ * grazing from inside: 1 interval; 1e-8 below the apex: 2 intervals, gap
+ * within 1e-9 of 2 sqrt(1e-8/0.6); grazing from outside: nothing).
+ * Cost, unoptimised: ~60-70 us per ray and cell (orders <= 5, shared
+ * machine); the face nets are built per cell by BuildCurvedFaces.
  *
  * Domain: finite o, d != 0, tMin <= tMax finite (clip to the cell's bounding
  * box first), faces from BuildCurvedFaces(cell).

@@ -42,6 +42,14 @@
  * S_tau) e_max, S the table's largest slopes d/ds over the range (a field
  * error e moves colour and extinction by at most S e; table jumps excluded).
  *
+ * Measured (TestCurvedSegment, GCC 12 Release), against the independent
+ * reference of hovPolynomialTestSupport.h (long double, breakpoints by
+ * bisection, adaptive Gauss-Kronrod) with a 4-breakpoint table: ElVis's
+ * field x^2 + y^2 + z^2 on an axis-aligned hexahedron of order 2 and 3
+ * (affine path), 50 segments, 84 breakpoints located: max RGBA error
+ * 4.0e-14; a curved cubic hexahedron (x = r + 0.35 s^2; curved path on
+ * every segment), 30 segments: 6.1e-16.
+ *
  * Thread safety: re-entrant (the table and cell are read only); allocates
  * small vectors.
  * @sa hovEnclosure.h, hovPolynomialSegment.h, hovCurvedRayCell.h

@@ -49,10 +49,14 @@
  * A piece whose displacement bound fails at the resolution limit gets the
  * field's hull over B (still rigorous, loose; counted in LoosePieces).
  *
- * Measured (TestEnclosure, GCC 12 Release): dense samples of g always inside
- * (curved and affine cells, orders 1..6); overestimate of the range width
- * after subdivision <= 2.5% (RangeSubdivisions 16); remainder ratio
- * E(h)/E(h/2) ~ 4 (second order).
+ * Measured (TestEnclosure, GCC 12 Release): dense samples of g (301 per
+ * segment, 144 segments through curved and affine cells of every type,
+ * orders 1..6) always inside, and inside every piece's Q +- E (largest
+ * actual/E 0.79: the remainder bound is within a factor ~1.3 of the truth);
+ * overestimate of the range width 0.28% at RemainderTolerance 1e-8 and
+ * RangeSubdivisions 16 (~120 pieces per curved segment at that tolerance);
+ * affine cells: 1 piece; remainder ratio E(h)/E(h/2) 6.8, 5.9, 5.1, 4.5,
+ * 4.3, 4.1 for h = 1 .. 1/32 of a chord (second order).
  *
  * Thread safety: re-entrant; the optional pieces vector is the only allocation.
  * @sa hovBernstein.h, hovLagrangeRestriction.h, hovCurvedSegment.h
