@@ -1,0 +1,504 @@
+// Faces of curved Lagrange cells and ray-face crossings: see hovCurvedFaces.h.
+#include "hovCurvedFaces.h"
+
+#include "hovBernstein.h" // equispaced Lagrange -> Bernstein, de Casteljau
+
+#include <algorithm> // std::min, std::max
+#include <cmath>     // std::abs, std::sqrt
+#include <limits>    // epsilon
+
+namespace hov
+{
+namespace
+{
+constexpr double Eps = std::numeric_limits<double>::epsilon();
+constexpr int NetSize = (MaxFaceDegree + 1) * (MaxFaceDegree + 1);
+/// Newton may start anywhere in its sub-patch; a root this far outside it
+/// (in u, v) belongs to a neighbour, which finds it itself.
+constexpr double AcceptSlack = 1e-9;
+/// Crossings of one face closer than this in (u, v) are one crossing.
+constexpr double MergeDistance = 1e-9;
+
+struct FaceDef
+{
+  double C[4][3]; // P00, P10, P11, P01
+  bool Triangle;
+  int DegU, DegV;
+};
+
+/// The face patches of the cell's shape and their degrees (triangles as 3 quads).
+int FaceDefinitions(const LagrangeBasis& b, FaceDef* f)
+{
+  const int* o = b.GetOrder();
+  const bool special = b.IsSpecial();
+  auto quad = [](FaceDef& d, const double (&c)[4][3], int du, int dv) {
+    std::copy(&c[0][0], &c[0][0] + 12, &d.C[0][0]);
+    d.Triangle = false;
+    d.DegU = du;
+    d.DegV = dv;
+  };
+  // A triangle as 3 non-degenerate quads: corner, edge midpoint, centroid,
+  // other edge midpoint (a collapsed quad would be singular at its apex).
+  auto tri = [](FaceDef* d, const double (&c)[3][3], int n) {
+    for (int k = 0; k < 3; ++k)
+    {
+      const double* a = c[k];
+      const double* b = c[(k + 1) % 3];
+      const double* z = c[(k + 2) % 3];
+      for (int i = 0; i < 3; ++i)
+      {
+        d[k].C[0][i] = a[i];
+        d[k].C[1][i] = 0.5 * (a[i] + b[i]);
+        d[k].C[2][i] = (a[i] + b[i] + z[i]) / 3.0;
+        d[k].C[3][i] = 0.5 * (a[i] + z[i]);
+      }
+      d[k].Triangle = true;
+      d[k].DegU = d[k].DegV = n;
+    }
+  };
+  switch (b.GetShape())
+  {
+    case LagrangeShape::Hexahedron:
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const int a = (axis + 1) % 3, c = (axis + 2) % 3;
+        for (int side = 0; side < 2; ++side)
+        {
+          double q[4][3] = {};
+          const double uv[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+          for (int k = 0; k < 4; ++k)
+          {
+            q[k][axis] = side;
+            q[k][a] = uv[k][0];
+            q[k][c] = uv[k][1];
+          }
+          quad(f[2 * axis + side], q, o[a], o[c]);
+        }
+      }
+      return 6;
+    case LagrangeShape::Wedge:
+    {
+      const int p = special ? 3 : o[0], q = o[2];
+      tri(f, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, p);
+      tri(f + 3, { { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } }, p);
+      quad(f[6], { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 1 }, { 0, 0, 1 } }, p, q);
+      quad(f[7], { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 } }, p, q);
+      quad(f[8], { { 0, 1, 0 }, { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 1 } }, p, q);
+      return 9;
+    }
+    default:
+    {
+      const int n = special ? 4 : o[0];
+      tri(f, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, n);
+      tri(f + 3, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 } }, n);
+      tri(f + 6, { { 0, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
+      tri(f + 9, { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
+      return 12;
+    }
+  }
+}
+
+/// Restrict the coefficients c[0], c[stride], ..., c[n stride] (Bernstein,
+/// degree n) to [y0, y1] in place.
+void RestrictStrided(double* c, int n, int stride, double y0, double y1)
+{
+  BernsteinPolynomial p;
+  p.Degree = n;
+  for (int i = 0; i <= n; ++i)
+  {
+    p.B[i] = c[i * stride];
+  }
+  p = RestrictBernstein(p, y0, y1);
+  for (int i = 0; i <= n; ++i)
+  {
+    c[i * stride] = p.B[i];
+  }
+}
+
+struct Interval
+{
+  double Lo, Hi;
+};
+
+Interval Mul(const Interval& a, const Interval& b)
+{
+  const double p[4] = { a.Lo * b.Lo, a.Lo * b.Hi, a.Hi * b.Lo, a.Hi * b.Hi };
+  return { std::min(std::min(p[0], p[1]), std::min(p[2], p[3])),
+    std::max(std::max(p[0], p[1]), std::max(p[2], p[3])) };
+}
+
+/// The ray's frame: unit e1, e2 perpendicular to d.
+void RayFrame(const double d[3], double e1[3], double e2[3])
+{
+  const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const double n[3] = { d[0] / len, d[1] / len, d[2] / len };
+  // e1 perpendicular to n, built from the axis of n's smallest component.
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+  {
+    k = std::abs(n[i]) < std::abs(n[k]) ? i : k;
+  }
+  double a[3] = { 0.0, 0.0, 0.0 };
+  a[k] = 1.0;
+  e1[0] = a[1] * n[2] - a[2] * n[1];
+  e1[1] = a[2] * n[0] - a[0] * n[2];
+  e1[2] = a[0] * n[1] - a[1] * n[0];
+  const double l1 = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  for (int i = 0; i < 3; ++i)
+  {
+    e1[i] /= l1;
+  }
+  e2[0] = n[1] * e1[2] - n[2] * e1[1];
+  e2[1] = n[2] * e1[0] - n[0] * e1[2];
+  e2[2] = n[0] * e1[1] - n[1] * e1[0];
+}
+
+double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// The ray problem on one face: its exact map and the projection frame.
+struct FaceProblem
+{
+  const LagrangeCellView* Cell;
+  const CurvedFacePatch* Face;
+  const double* O;
+  const double* D;
+  double E1[3], E2[3];
+  double Extent;
+
+  /// h(u, v), its Jacobian and the point.
+  void Evaluate(double u, double v, double h[2], double jac[4], double x[3], double pc[3]) const
+  {
+    double pu[3], pv[3], J[9];
+    FaceParametricPoint(*this->Face, u, v, pc, pu, pv);
+    EvaluateLagrangePosition(*this->Cell, pc, x, J);
+    double xu[3], xv[3], rel[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      xu[i] = J[3 * i] * pu[0] + J[3 * i + 1] * pu[1] + J[3 * i + 2] * pu[2];
+      xv[i] = J[3 * i] * pv[0] + J[3 * i + 1] * pv[1] + J[3 * i + 2] * pv[2];
+      rel[i] = x[i] - this->O[i];
+    }
+    h[0] = Dot(this->E1, rel);
+    h[1] = Dot(this->E2, rel);
+    jac[0] = Dot(this->E1, xu);
+    jac[1] = Dot(this->E1, xv);
+    jac[2] = Dot(this->E2, xu);
+    jac[3] = Dot(this->E2, xv);
+  }
+
+  /// Newton from (u, v) kept within the box widened by half its size.
+  bool Newton(double& u, double& v, const double box[4], FaceCrossing& out) const
+  {
+    const double wu = 0.5 * (box[1] - box[0]), wv = 0.5 * (box[3] - box[2]);
+    double h[2], jac[4], x[3], pc[3];
+    for (int iter = 0; iter < 40; ++iter)
+    {
+      this->Evaluate(u, v, h, jac, x, pc);
+      const double det = jac[0] * jac[3] - jac[1] * jac[2];
+      if (!(std::abs(det) > 0.0))
+      {
+        return false;
+      }
+      const double du = -(jac[3] * h[0] - jac[1] * h[1]) / det;
+      const double dv = -(-jac[2] * h[0] + jac[0] * h[1]) / det;
+      u += du;
+      v += dv;
+      if (!(u >= box[0] - wu && u <= box[1] + wu && v >= box[2] - wv && v <= box[3] + wv))
+      {
+        return false;
+      }
+      const double step = std::max(std::abs(du), std::abs(dv));
+      const bool floor = std::max(std::abs(h[0]), std::abs(h[1])) <= 16.0 * Eps * this->Extent;
+      if (step <= 1e-15 || (floor && step <= 1e-9))
+      {
+        this->Evaluate(u, v, h, jac, x, pc);
+        out.U = u;
+        out.V = v;
+        std::copy(pc, pc + 3, out.PC);
+        double rel[3] = { x[0] - this->O[0], x[1] - this->O[1], x[2] - this->O[2] };
+        out.T = Dot(this->D, rel) / Dot(this->D, this->D);
+        return true;
+      }
+    }
+    return false;
+  }
+};
+}
+
+void FaceParametricPoint(
+  const CurvedFacePatch& f, double u, double v, double pc[3], double* dpcdu, double* dpcdv)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    pc[k] = f.P00[k] * (1 - u) * (1 - v) + f.P10[k] * u * (1 - v) + f.P01[k] * (1 - u) * v +
+      f.P11[k] * u * v;
+    if (dpcdu)
+    {
+      dpcdu[k] = (f.P10[k] - f.P00[k]) * (1 - v) + (f.P11[k] - f.P01[k]) * v;
+    }
+    if (dpcdv)
+    {
+      dpcdv[k] = (f.P01[k] - f.P00[k]) * (1 - u) + (f.P11[k] - f.P10[k]) * u;
+    }
+  }
+}
+
+bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
+{
+  out.Faces.clear();
+  if (!cell.Basis || !cell.Basis->IsInitialized() || !cell.Points)
+  {
+    return false;
+  }
+  out.Extent = LagrangeCellExtent(cell);
+  FaceDef defs[12];
+  const int count = FaceDefinitions(*cell.Basis, defs);
+  out.Faces.resize(count);
+  for (int k = 0; k < 3; ++k)
+  {
+    out.Bounds[2 * k] = 1e300;
+    out.Bounds[2 * k + 1] = -1e300;
+  }
+  for (int f = 0; f < count; ++f)
+  {
+    CurvedFacePatch& p = out.Faces[f];
+    const FaceDef& d = defs[f];
+    std::copy(d.C[0], d.C[0] + 3, p.P00);
+    std::copy(d.C[1], d.C[1] + 3, p.P10);
+    std::copy(d.C[2], d.C[2] + 3, p.P11);
+    std::copy(d.C[3], d.C[3] + 3, p.P01);
+    p.Triangle = d.Triangle;
+    p.DegreeU = d.DegU;
+    p.DegreeV = d.DegV;
+    const int nu = d.DegU + 1, nv = d.DegV + 1;
+    // Samples at the equispaced grid, then Lagrange -> Bernstein along u, then v.
+    std::vector<double> x(3 * nu * nv), y(3 * nu * nv, 0.0);
+    for (int i = 0; i < nu; ++i)
+    {
+      for (int j = 0; j < nv; ++j)
+      {
+        double pc[3];
+        FaceParametricPoint(p, static_cast<double>(i) / d.DegU, static_cast<double>(j) / d.DegV, pc);
+        EvaluateLagrangePosition(cell, pc, &x[3 * (nv * i + j)]);
+      }
+    }
+    for (int i = 0; i < nu; ++i)
+    {
+      const BernsteinPolynomial l = EquispacedLagrangeBernstein(d.DegU, i);
+      for (int a = 0; a < nu; ++a)
+        for (int j = 0; j < nv; ++j)
+          for (int c = 0; c < 3; ++c)
+            y[3 * (nv * a + j) + c] += l.B[a] * x[3 * (nv * i + j) + c];
+    }
+    p.Net.assign(3 * nu * nv, 0.0);
+    for (int j = 0; j < nv; ++j)
+    {
+      const BernsteinPolynomial l = EquispacedLagrangeBernstein(d.DegV, j);
+      for (int a = 0; a < nu; ++a)
+        for (int b = 0; b < nv; ++b)
+          for (int c = 0; c < 3; ++c)
+            p.Net[3 * (nv * a + b) + c] += l.B[b] * y[3 * (nv * a + j) + c];
+    }
+    for (size_t k = 0; k < p.Net.size(); ++k)
+    {
+      out.Bounds[2 * (k % 3)] = std::min(out.Bounds[2 * (k % 3)], p.Net[k]);
+      out.Bounds[2 * (k % 3) + 1] = std::max(out.Bounds[2 * (k % 3) + 1], p.Net[k]);
+    }
+  }
+  const double margin = FaceSearchSettings().NetMargin * out.Extent;
+  for (int k = 0; k < 3; ++k)
+  {
+    out.Bounds[2 * k] -= margin;
+    out.Bounds[2 * k + 1] += margin;
+  }
+  return true;
+}
+
+namespace
+{
+/// Sub-patch of a face: the two projected nets restricted to [U0,U1] x [V0,V1].
+struct SubPatch
+{
+  double U0, U1, V0, V1;
+};
+
+/// True if the crossings @p a and @p b are the same point (see MergeDistance).
+bool SameCrossing(const FaceCrossing& a, const FaceCrossing& b, double minSize)
+{
+  double dist = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    dist = std::max(dist, std::abs(a.PC[k] - b.PC[k]));
+  }
+  return dist <= MergeDistance || ((a.Grazing || b.Grazing) && dist <= 64.0 * minSize);
+}
+
+/// Examine one sub-patch: 0 excluded, 1 done (crossing appended if found), 2 split.
+int Examine(const FaceProblem& prob, const double* root0, const double* root1,
+  const SubPatch& s, const FaceSearchSettings& settings, int faceIndex,
+  std::vector<FaceCrossing>& out)
+{
+  const CurvedFacePatch& face = *prob.Face;
+  const int du = face.DegreeU, dv = face.DegreeV, nv = dv + 1, n = (du + 1) * nv;
+  double net[2][NetSize];
+  std::copy(root0, root0 + n, net[0]);
+  std::copy(root1, root1 + n, net[1]);
+  Interval range[2], deriv[2][2];
+  for (int c = 0; c < 2; ++c)
+  {
+    for (int b = 0; b < nv; ++b)
+    {
+      RestrictStrided(net[c] + b, du, nv, s.U0, s.U1);
+    }
+    for (int a = 0; a <= du; ++a)
+    {
+      RestrictStrided(net[c] + a * nv, dv, 1, s.V0, s.V1);
+    }
+    range[c] = { net[c][0], net[c][0] };
+    deriv[c][0] = deriv[c][1] = { 1e300, -1e300 };
+    for (int a = 0; a <= du; ++a)
+    {
+      for (int b = 0; b < nv; ++b)
+      {
+        const double v = net[c][a * nv + b];
+        range[c] = { std::min(range[c].Lo, v), std::max(range[c].Hi, v) };
+        if (a < du)
+        {
+          const double g = net[c][(a + 1) * nv + b] - v;
+          deriv[c][0] = { std::min(deriv[c][0].Lo, g), std::max(deriv[c][0].Hi, g) };
+        }
+        if (b < dv)
+        {
+          const double g = net[c][a * nv + b + 1] - v;
+          deriv[c][1] = { std::min(deriv[c][1].Lo, g), std::max(deriv[c][1].Hi, g) };
+        }
+      }
+    }
+  }
+  const double margin = settings.NetMargin * prob.Extent;
+  for (const Interval& r : range)
+  {
+    if (r.Lo > margin || r.Hi < -margin)
+    {
+      return 0; // the convex hull of the net misses the ray
+    }
+  }
+  const Interval ad = Mul(deriv[0][0], deriv[1][1]), bc = Mul(deriv[0][1], deriv[1][0]);
+  const bool unique = (ad.Lo - bc.Hi > 0.0) || (ad.Hi - bc.Lo < 0.0);
+  const bool small = std::max(s.U1 - s.U0, s.V1 - s.V0) <= settings.MinSize;
+  if (!unique && !small)
+  {
+    return 2;
+  }
+  FaceCrossing c;
+  c.Face = faceIndex;
+  c.Grazing = !unique;
+  double u = 0.5 * (s.U0 + s.U1), v = 0.5 * (s.V0 + s.V1);
+  const double box[4] = { s.U0, s.U1, s.V0, s.V1 };
+  if (prob.Newton(u, v, box, c) && u >= s.U0 - AcceptSlack && u <= s.U1 + AcceptSlack &&
+    v >= s.V0 - AcceptSlack && v <= s.V1 + AcceptSlack)
+  {
+    out.push_back(c);
+    return 1;
+  }
+  if (!small)
+  {
+    return 2;
+  }
+  // Resolution limit: a contact if the sub-patch's image hugs the ray.
+  if (std::max(range[0].Hi - range[0].Lo, range[1].Hi - range[1].Lo) <=
+    settings.GrazeTolerance * prob.Extent)
+  {
+    double h[2], jac[4], x[3];
+    c.U = 0.5 * (s.U0 + s.U1);
+    c.V = 0.5 * (s.V0 + s.V1);
+    prob.Evaluate(c.U, c.V, h, jac, x, c.PC);
+    const double rel[3] = { x[0] - prob.O[0], x[1] - prob.O[1], x[2] - prob.O[2] };
+    c.T = Dot(prob.D, rel) / Dot(prob.D, prob.D);
+    out.push_back(c);
+  }
+  return 1;
+}
+}
+
+int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces, int f,
+  const double origin[3], const double direction[3], std::vector<FaceCrossing>& out,
+  const FaceSearchSettings& settings, FaceSearchStatus* status)
+{
+  if (f < 0 || f >= static_cast<int>(faces.Faces.size()))
+  {
+    return 0;
+  }
+  const CurvedFacePatch& face = faces.Faces[f];
+  FaceProblem prob{ &cell, &face, origin, direction, {}, {}, faces.Extent };
+  RayFrame(direction, prob.E1, prob.E2);
+  const int n = (face.DegreeU + 1) * (face.DegreeV + 1);
+  double root[2][NetSize];
+  for (int k = 0; k < n; ++k)
+  {
+    const double* x = &face.Net[3 * k];
+    const double rel[3] = { x[0] - origin[0], x[1] - origin[1], x[2] - origin[2] };
+    root[0][k] = Dot(prob.E1, rel);
+    root[1][k] = Dot(prob.E2, rel);
+  }
+  const size_t first = out.size();
+  SubPatch stack[96];
+  int top = 0, examined = 0;
+  bool complete = true;
+  stack[top++] = { 0.0, 1.0, 0.0, 1.0 };
+  while (top > 0)
+  {
+    const SubPatch s = stack[--top];
+    if (++examined > settings.MaxPatches)
+    {
+      complete = false;
+      break;
+    }
+    if (Examine(prob, root[0], root[1], s, settings, f, out) != 2)
+    {
+      continue;
+    }
+    if (top + 2 > 96)
+    {
+      complete = false;
+      continue;
+    }
+    if (s.U1 - s.U0 >= s.V1 - s.V0)
+    {
+      const double m = 0.5 * (s.U0 + s.U1);
+      stack[top++] = { m, s.U1, s.V0, s.V1 };
+      stack[top++] = { s.U0, m, s.V0, s.V1 };
+    }
+    else
+    {
+      const double m = 0.5 * (s.V0 + s.V1);
+      stack[top++] = { s.U0, s.U1, m, s.V1 };
+      stack[top++] = { s.U0, s.U1, s.V0, m };
+    }
+  }
+  // Merge repeats (a root on a split line is found from both sides).
+  size_t kept = first;
+  for (size_t i = first; i < out.size(); ++i)
+  {
+    bool repeat = false;
+    for (size_t j = first; j < kept && !repeat; ++j)
+    {
+      repeat = SameCrossing(out[i], out[j], settings.MinSize);
+    }
+    if (!repeat)
+    {
+      out[kept++] = out[i];
+    }
+  }
+  out.resize(kept);
+  if (status)
+  {
+    status->Patches += examined;
+    status->Complete = status->Complete && complete;
+  }
+  return static_cast<int>(kept - first);
+}
+}

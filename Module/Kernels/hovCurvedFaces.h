@@ -1,0 +1,126 @@
+/**
+ * @file hovCurvedFaces.h
+ * @brief The faces of a curved Lagrange cell as polynomial patches, and
+ * every crossing of a straight ray with such a patch, found robustly
+ * (Bernstein exclusion + interval uniqueness test + Newton on the exact map).
+ *
+ * The boundary of a cell is covered by quadrilateral patches (hexahedron 6;
+ * wedge 3 quads + 2 triangles; tetrahedron 4 triangles; each triangle split
+ * into 3 quads corner - edge midpoint - centroid - edge midpoint, so that no
+ * patch is degenerate, as a collapsed quad would be at its apex). Patch k is
+ * parametrised by (u, v) in [0, 1]^2 through a bilinear map into the cell's
+ * parametric space,
+ *   pc(u, v) = P00 (1-u)(1-v) + P10 u (1-v) + P01 (1-u) v + P11 u v,
+ * so x(u, v) = x(pc(u, v)) is a tensor polynomial of degree
+ * (DegreeU, DegreeV) (quads: the cell's orders along the face; triangle
+ * parts: (n, n), n the triangle's total degree). Its tensor Bernstein control net
+ * is computed from x at the equispaced grid u_i = i/DegreeU, v_j = j/DegreeV
+ * with the equispaced-Lagrange-to-Bernstein coefficients
+ * (EquispacedLagrangeBernstein) in each direction; this conversion
+ * amplifies rounding by <= ~4e3 at degree 10, so the exclusion test below
+ * uses a margin of NetMargin = 1e-9 x extent.
+ *
+ * Ray-patch crossings (FaceRayCrossings): with e1, e2 orthonormal and
+ * perpendicular to d, the ray is the zero set of
+ *   h(u, v) = (e1 . (x(u,v) - o), e2 . (x(u,v) - o)).
+ * Sub-patches [u0,u1] x [v0,v1] (the net restricted by de Casteljau) are
+ * examined depth first:
+ *  - exclusion: 0 outside the bounding box of either component's net
+ *    (widened by the margin) => no crossing (convex hull property);
+ *  - uniqueness: the interval 2x2 Jacobian of h over the sub-patch (ranges
+ *    of the derivative nets) has a determinant interval excluding 0 => at
+ *    most one zero (interval mean value theorem); Newton on the EXACT face
+ *    map (shape functions, not the net) from the sub-patch centre must
+ *    converge inside the sub-patch widened by 1e-9 (else split);
+ *  - otherwise split at the middle of the longer side, down to MinSize =
+ *    2^-22 (the uniqueness test fails only near a tangency, where the ray
+ *    grazes the face): a sub-patch of that size that is not excluded
+ *    reports its Newton result, or its centre if the net's image lies
+ *    within GrazeTolerance (1e-8 x extent) of the ray (Grazing = true);
+ *    MaxPatches bounds the work (Complete = false beyond).
+ * The net's rounding (relative ~1e-12) is far below the margins, so the
+ * exclusion and uniqueness decisions are those of exact arithmetic except
+ * for sub-patches within ~1e-12 x extent of a decision boundary.
+ * Crossing times t = d . (x - o) / |d|^2 on the exact map; Newton stops at
+ * a step < 1e-15 (u, v) or a residual at its rounding floor.
+ * Crossings of one patch at the same parametric point (within 1e-9; within
+ * 64 MinSize for grazing ones) are merged.
+ *
+ * Thread safety: re-entrant; BuildCurvedFaces allocates the patches.
+ * @sa hovCurvedRayCell.h, hovLagrangeCell.h, hovBernstein.h
+ */
+#ifndef hovCurvedFaces_h
+#define hovCurvedFaces_h
+
+#include "hovConfig.h"
+#include "hovLagrangeCell.h"
+
+#include <vector> // patch storage
+
+namespace hov
+{
+/// Largest face degree per direction.
+constexpr int MaxFaceDegree = MaxLagrangeOrder;
+
+/// One face as a polynomial patch (see file doc).
+struct CurvedFacePatch
+{
+  double P00[3], P10[3], P01[3], P11[3]; ///< bilinear map (u,v) -> pc
+  bool Triangle = false;                  ///< one third of a triangular face
+  int DegreeU = 1, DegreeV = 1;
+  /// Control net of x: Net[3 * ((DegreeV + 1) * a + b) + c], a along u, b along v.
+  std::vector<double> Net;
+};
+
+/// The face patches of one cell plus its extent (the scale of every tolerance).
+struct CurvedCellFaces
+{
+  std::vector<CurvedFacePatch> Faces;
+  double Extent = 0.0;
+  /// Box (xmin, xmax, ymin, ymax, zmin, zmax) of every control point, widened
+  /// by NetMargin x extent: it contains the cell (whose boundary lies in the
+  /// convex hull of the nets).
+  double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
+};
+
+/// Face patches of @p cell. False for an uninitialised basis.
+HOV_EXPORT bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out);
+
+/// pc(u, v) of @p face and, if given, its derivatives dpc/du, dpc/dv.
+HOV_EXPORT void FaceParametricPoint(const CurvedFacePatch& face, double u, double v,
+  double pc[3], double* dpcdu = nullptr, double* dpcdv = nullptr);
+
+/// One crossing of a ray with a face.
+struct FaceCrossing
+{
+  double T = 0.0;       ///< ray parameter (x = o + T d)
+  double U = 0.0, V = 0.0;
+  double PC[3] = { 0.0, 0.0, 0.0 }; ///< cell parametric coordinates of the point
+  int Face = -1;
+  bool Grazing = false; ///< found at the resolution limit (tangency or degenerate corner)
+};
+
+struct FaceSearchSettings
+{
+  double MinSize = 1.0 / 4194304.0; ///< 2^-22: smallest sub-patch side
+  int MaxPatches = 20000;           ///< sub-patches examined per face before giving up
+  double NetMargin = 1e-9;          ///< exclusion margin, relative to the extent
+  double GrazeTolerance = 1e-8;     ///< relative distance of a grazing contact
+};
+
+struct FaceSearchStatus
+{
+  int Patches = 0;     ///< sub-patches examined
+  bool Complete = true; ///< false if MaxPatches ran out (crossings may be missing)
+};
+
+/**
+ * Every crossing of the ray o + t d (any t) with face @p f of @p faces,
+ * appended to @p out (see file doc). Returns the number appended.
+ */
+HOV_EXPORT int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces,
+  int f, const double origin[3], const double direction[3], std::vector<FaceCrossing>& out,
+  const FaceSearchSettings& settings = FaceSearchSettings(), FaceSearchStatus* status = nullptr);
+}
+
+#endif

@@ -1,0 +1,216 @@
+// The field along a ray segment as Bernstein pieces, and breakpoint location:
+// see hovCurvedSegment.h (RepresentFieldOnSegment, LocateBreakpoints).
+#include "hovCurvedSegment.h"
+
+#include <algorithm> // std::min, std::max
+#include <cmath>     // std::cos, std::abs
+#include <limits>    // epsilon
+
+namespace hov
+{
+namespace
+{
+constexpr double Eps = std::numeric_limits<double>::epsilon();
+constexpr double Pi = 3.14159265358979323846;
+/// Chebyshev interpolation degree of curved pieces.
+constexpr int SampleDegree = 16;
+/// Newton tolerance floor of the sampled values, relative to the field scale.
+constexpr double NewtonFloor = 1e-13;
+
+/// The field at o + t d; @p pc is the warm start in and the coordinates out.
+bool FieldAt(const LagrangeCellView& cell, const double o[3], const double d[3], double t,
+  double pc[3], double& value, double* gradient = nullptr)
+{
+  const double x[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
+  if (!InvertLagrangeGeometry(cell, x, pc).Converged())
+  {
+    return false;
+  }
+  value = EvaluateLagrangeScalar(cell, pc, gradient);
+  return true;
+}
+
+/// sum_k c_k T_k(2y - 1) in Bernstein form of degree n (T_k built by the
+/// recurrence T_{k+1} = 2 (2y - 1) T_k - T_{k-1} in Bernstein form).
+BernsteinPolynomial ChebyshevToBernstein(const double* c, int n)
+{
+  BernsteinPolynomial sum, prev, cur, twoX;
+  sum.Degree = n;
+  prev.Degree = 0;
+  prev.B[0] = 1.0;
+  cur.Degree = 1;
+  cur.B[0] = -1.0;
+  cur.B[1] = 1.0;
+  twoX.Degree = 1;
+  twoX.B[0] = -2.0;
+  twoX.B[1] = 2.0;
+  for (int k = 0; k <= n; ++k)
+  {
+    const BernsteinPolynomial tk = ElevateBernstein(k == 0 ? prev : cur, n);
+    for (int j = 0; j <= n; ++j)
+    {
+      sum.B[j] += c[k] * tk.B[j];
+    }
+    if (k >= 1 && k < n)
+    {
+      BernsteinPolynomial next;
+      MultiplyBernstein(cur, twoX, next);
+      const BernsteinPolynomial older = ElevateBernstein(prev, k + 1);
+      for (int j = 0; j <= k + 1; ++j)
+      {
+        next.B[j] -= older.B[j];
+      }
+      prev = cur;
+      cur = next;
+    }
+  }
+  return sum;
+}
+
+/// Chebyshev interpolant of the field on [ta, tb] (degree SampleDegree) with
+/// its error estimate (see hovCurvedSegment.h).
+bool SamplePiece(const LagrangeCellView& cell, const double o[3], const double d[3], double ta,
+  double tb, double pc[3], double scale, FieldPiece& piece)
+{
+  const int n = SampleDegree;
+  double f[SampleDegree + 1]; // f[j] at x_j = cos(pi j / n), y = (1 + x)/2
+  for (int i = 0; i <= n; ++i)
+  {
+    const int j = n - i; // ascending t
+    const double y = 0.5 * (1.0 + std::cos(Pi * j / n));
+    if (!FieldAt(cell, o, d, ta + y * (tb - ta), pc, f[j]))
+    {
+      return false;
+    }
+  }
+  double c[SampleDegree + 1], sumAbs = 0.0;
+  for (int k = 0; k <= n; ++k)
+  {
+    double s = 0.0;
+    for (int j = 0; j <= n; ++j)
+    {
+      s += ((j == 0 || j == n) ? 0.5 : 1.0) * f[j] * std::cos(Pi * j * k / n);
+    }
+    c[k] = ((k == 0 || k == n) ? 1.0 : 2.0) * s / n;
+    sumAbs += std::abs(c[k]);
+  }
+  piece.T0 = ta;
+  piece.T1 = tb;
+  piece.G = ChebyshevToBernstein(c, n);
+  piece.Error = 2.0 * (std::abs(c[n - 1]) + std::abs(c[n])) + 64.0 * Eps * sumAbs +
+    NewtonFloor * scale;
+  piece.Exact = false;
+  return true;
+}
+}
+
+bool RepresentFieldOnSegment(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
+  const double origin[3], const double direction[3], double t0, double t1, const double* pcGuess,
+  const CurvedSegmentSettings& settings, std::vector<FieldPiece>& out)
+{
+  out.clear();
+  const double tol = settings.FieldTolerance * bounds.FieldScale;
+  // Affine (or nearly) geometry: one Taylor model with a negligible remainder is the field.
+  EnclosureSettings one;
+  one.MaxPieces = 1;
+  std::vector<EnclosurePiece> model;
+  const FieldEnclosure e =
+    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, one, &model);
+  if (e.Valid && model.size() == 1 && !model[0].Loose && model[0].Remainder <= tol)
+  {
+    FieldPiece p;
+    p.T0 = t0;
+    p.T1 = t1;
+    p.G = model[0].Q;
+    p.Error = model[0].Remainder;
+    p.Exact = true;
+    out.push_back(p);
+    return true;
+  }
+  // Curved: Chebyshev pieces, bisected (left first) until the estimate meets the tolerance.
+  double pc[3];
+  cell.Basis->ParametricCenter(pc);
+  if (pcGuess)
+  {
+    std::copy(pcGuess, pcGuess + 3, pc);
+  }
+  struct Span
+  {
+    double A, B;
+  };
+  std::vector<Span> stack{ { t0, t1 } };
+  while (!stack.empty())
+  {
+    const Span s = stack.back();
+    stack.pop_back();
+    FieldPiece p;
+    if (!SamplePiece(cell, origin, direction, s.A, s.B, pc, bounds.FieldScale, p))
+    {
+      return false;
+    }
+    const bool canSplit =
+      static_cast<int>(out.size() + stack.size()) + 2 <= settings.MaxPieces && s.B - s.A > 1e-9 * (t1 - t0);
+    if (p.Error > tol && canSplit)
+    {
+      const double mid = 0.5 * (s.A + s.B);
+      stack.push_back({ mid, s.B });
+      stack.push_back({ s.A, mid });
+      cell.Basis->ParametricCenter(pc);
+      if (pcGuess)
+      {
+        std::copy(pcGuess, pcGuess + 3, pc);
+      }
+      continue;
+    }
+    out.push_back(p);
+  }
+  return true;
+}
+
+int LocateBreakpoints(const LagrangeCellView& cell, const double origin[3],
+  const double direction[3], const FieldPiece& piece, double level, std::vector<double>& roots)
+{
+  double lo, hi;
+  BernsteinRange(piece.G, lo, hi);
+  if (level < lo - piece.Error || level > hi + piece.Error)
+  {
+    return 0;
+  }
+  double ys[MaxBernsteinDegree + 1];
+  const int n = BernsteinRoots(piece.G, level, ys, MaxBernsteinDegree + 1);
+  const double h = piece.T1 - piece.T0;
+  for (int i = 0; i < n; ++i)
+  {
+    double t = piece.T0 + ys[i] * h;
+    if (!piece.Exact)
+    {
+      // Polish on the exact field: Newton on g(t) - level, g' = grad f . J^-1 d,
+      // kept inside the piece (the approximant's root is within ~Error/|g'|).
+      double pc[3];
+      cell.Basis->ParametricCenter(pc);
+      for (int iter = 0; iter < 4; ++iter)
+      {
+        double g, grad[3], x[3], J[9], dpc[3];
+        if (!FieldAt(cell, origin, direction, t, pc, g, grad))
+        {
+          break;
+        }
+        EvaluateLagrangePosition(cell, pc, x, J);
+        if (!Solve3x3(J, direction, dpc, 1e-14))
+        {
+          break;
+        }
+        const double slope = grad[0] * dpc[0] + grad[1] * dpc[1] + grad[2] * dpc[2];
+        const double next = slope != 0.0 ? t - (g - level) / slope : t;
+        if (!(next >= piece.T0 && next <= piece.T1) || std::abs(next - t) > 1e-6 * h)
+        {
+          break; // not in the approximant root's neighbourhood: keep it
+        }
+        t = next;
+      }
+    }
+    roots.push_back(t);
+  }
+  return n;
+}
+}

@@ -1,0 +1,207 @@
+// Segment categorization and the integral over a ray segment in a curved
+// Lagrange cell: see hovCurvedSegment.h.
+#include "hovCurvedSegment.h"
+
+#include "hovTransferFunction.h"
+
+#include <algorithm> // std::lower_bound, std::upper_bound, std::sort
+#include <cmath>     // std::abs
+
+namespace hov
+{
+namespace
+{
+/// Table values at s (Find + Evaluate).
+SegmentEnd ValueAt(const TransferFunction& tf, double s, bool emission)
+{
+  SegmentEnd v;
+  tf.Evaluate(tf.FindIntervalUpward(s), s, emission, v);
+  return v;
+}
+
+double MaxColor(const SegmentEnd& v)
+{
+  return std::max(std::max(std::abs(v.Color[0]), std::abs(v.Color[1])), std::abs(v.Color[2]));
+}
+
+/// Largest |value|s and slopes d/ds of the table on [lo, hi] (jumps skipped).
+struct TableSensitivity
+{
+  double TauMax = 0.0, ColorMax = 0.0, TauSlope = 0.0, ColorSlope = 0.0;
+};
+
+TableSensitivity Sensitivity(const TransferFunction& tf, double lo, double hi, bool emission)
+{
+  TableSensitivity s;
+  const std::vector<double>& x = tf.GetNodes();
+  std::vector<double> points{ lo, hi };
+  for (double xk : x)
+  {
+    if (xk > lo && xk < hi)
+    {
+      points.push_back(xk);
+    }
+  }
+  std::sort(points.begin(), points.end());
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    const SegmentEnd v = ValueAt(tf, points[i], emission);
+    s.TauMax = std::max(s.TauMax, std::abs(v.Tau));
+    s.ColorMax = std::max(s.ColorMax, MaxColor(v));
+    if (i + 1 < points.size() && points[i + 1] > points[i])
+    {
+      // Slope of the linear piece between consecutive points (inside one interval).
+      const double a = points[i], b = points[i + 1], m = 0.5 * (a + b);
+      SegmentEnd va, vb;
+      const int k = tf.FindIntervalUpward(m);
+      tf.Evaluate(k, a, emission, va);
+      tf.Evaluate(k, b, emission, vb);
+      s.TauSlope = std::max(s.TauSlope, std::abs(vb.Tau - va.Tau) / (b - a));
+      for (int c = 0; c < 3; ++c)
+      {
+        s.ColorSlope = std::max(s.ColorSlope, std::abs(vb.Color[c] - va.Color[c]) / (b - a));
+      }
+    }
+  }
+  return s;
+}
+
+/// Integrate one sub-piece G on [a, b] (smooth for the table up to the field
+/// error): degree-<=8 approximants (bisected while their bound exceeds the
+/// tolerance, at most @p depth times), each by IntegratePolynomialScalar;
+/// @p speed = |d| converts ray parameter to length.
+void IntegrateSubPiece(const TransferFunction& tf, const BernsteinPolynomial& g, double a, double b,
+  double speed, double tolerance, int depth, const CurvedSegmentSettings& settings,
+  CurvedSegmentResult& result)
+{
+  double bound = 0.0;
+  const Polynomial q = ApproximateBernstein(g, 8, bound);
+  if (bound > tolerance && depth > 0)
+  {
+    BernsteinPolynomial left, right;
+    SubdivideBernstein(g, 0.5, &left, &right);
+    const double mid = 0.5 * (a + b);
+    IntegrateSubPiece(tf, left, a, mid, speed, tolerance, depth - 1, settings, result);
+    IntegrateSubPiece(tf, right, mid, b, speed, tolerance, depth - 1, settings, result);
+    return;
+  }
+  result.FieldError = std::max(result.FieldError, bound);
+  // In the world length along the ray, tau = (t - a) |d|, in [0, h].
+  const double h = (b - a) * speed;
+  Polynomial s = ComposeAffine(q, 0.0, 1.0 / h);
+  s.Degree = q.Degree;
+  const PolynomialSegmentResult r = IntegratePolynomialScalar(tf, s, h, settings.Quadrature);
+  result.ErrorEstimate += (1.0 - result.Color.A) * r.ErrorEstimate;
+  result.Converged = result.Converged && r.Converged;
+  CompositeBehind(result.Color, r.Color);
+  ++result.Pieces;
+}
+}
+
+SegmentClassification CategorizeSegment(
+  const TransferFunction& tf, double lo, double hi, EmissionModel emission)
+{
+  SegmentClassification c;
+  const std::vector<double>& x = tf.GetNodes();
+  if (x.empty() || !(lo <= hi))
+  {
+    return c; // nothing to render: Empty
+  }
+  const auto first = std::lower_bound(x.begin(), x.end(), lo);
+  const auto last = std::upper_bound(x.begin(), x.end(), hi);
+  c.FirstNode = static_cast<int>(first - x.begin());
+  c.NodeCount = static_cast<int>(last - first);
+  // The table is linear between nodes: its extremes on [lo, hi] are at lo, hi and the nodes.
+  const bool wvg = emission == EmissionModel::WilhelmsVanGelder;
+  bool anyTau = false, anyColor = false;
+  auto visit = [&](double s) {
+    const SegmentEnd v = ValueAt(tf, s, wvg);
+    anyTau = anyTau || v.Tau != 0.0;
+    anyColor = anyColor || MaxColor(v) != 0.0;
+  };
+  visit(lo);
+  visit(hi);
+  for (auto it = first; it != last; ++it)
+  {
+    // Both one-sided values at a node (a jump has two nodes at one X).
+    visit(*it);
+    SegmentEnd v;
+    tf.Evaluate(tf.FindIntervalDownward(*it), *it, wvg, v);
+    anyTau = anyTau || v.Tau != 0.0;
+    anyColor = anyColor || MaxColor(v) != 0.0;
+  }
+  const bool empty = !anyTau && (!wvg || !anyColor);
+  c.Category = empty          ? SegmentCategory::Empty
+    : c.NodeCount > 0         ? SegmentCategory::PiecewiseSmooth
+                              : SegmentCategory::Smooth;
+  c.OcclusionOnly = anyTau && !anyColor;
+  return c;
+}
+
+CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
+  const CellDerivativeBounds& bounds, const TransferFunction& tf, const double origin[3],
+  const double direction[3], double t0, double t1, const double* pcGuess,
+  const CurvedSegmentSettings& settings)
+{
+  CurvedSegmentResult result;
+  const FieldEnclosure enc =
+    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure);
+  if (!enc.Valid || !(t1 > t0))
+  {
+    return result; // transparent
+  }
+  result.Lo = enc.Lo;
+  result.Hi = enc.Hi;
+  result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
+  if (result.Class.Category == SegmentCategory::Empty)
+  {
+    return result; // empty-space skipping: exactly zero
+  }
+  std::vector<FieldPiece> pieces;
+  if (!RepresentFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, settings, pieces))
+  {
+    result.Converged = false;
+    return result;
+  }
+  result.FieldPieces = static_cast<int>(pieces.size());
+  result.ExactField = !pieces.empty() && pieces[0].Exact;
+  const double tolerance = settings.FieldTolerance * bounds.FieldScale;
+  const double speed =
+    std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  const std::vector<double>& nodes = tf.GetNodes();
+  std::vector<double> cuts;
+  for (const FieldPiece& p : pieces)
+  {
+    result.FieldError = std::max(result.FieldError, p.Error);
+    cuts.assign({ p.T0, p.T1 });
+    for (int k = 0; k < result.Class.NodeCount; ++k)
+    {
+      const double level = nodes[result.Class.FirstNode + k];
+      if (k > 0 && level == nodes[result.Class.FirstNode + k - 1])
+      {
+        continue; // a jump: one location
+      }
+      result.Breakpoints += LocateBreakpoints(cell, origin, direction, p, level, cuts);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    const double h = p.T1 - p.T0;
+    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+    {
+      const double a = std::max(cuts[i], p.T0), b = std::min(cuts[i + 1], p.T1);
+      if (!(b > a))
+      {
+        continue;
+      }
+      const BernsteinPolynomial sub = RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h);
+      IntegrateSubPiece(tf, sub, a, b, speed, tolerance, 8, settings, result);
+    }
+  }
+  // Field-error contribution (see file doc), on the range widened by the error.
+  const TableSensitivity s = Sensitivity(tf, enc.Lo - result.FieldError, enc.Hi + result.FieldError,
+    settings.Quadrature.Emission == EmissionModel::WilhelmsVanGelder);
+  const double length = (t1 - t0) * speed;
+  result.ErrorEstimate +=
+    length * (s.ColorSlope * s.TauMax + s.ColorMax * s.TauSlope) * result.FieldError;
+  return result;
+}
+}

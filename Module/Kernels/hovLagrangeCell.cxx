@@ -1,0 +1,323 @@
+// Geometry, field and Newton inversion of Lagrange cells: see hovLagrangeCell.h.
+#include "hovLagrangeCell.h"
+
+#include <algorithm> // std::max, std::swap
+#include <cmath>     // std::abs, std::isfinite, std::sqrt
+#include <limits>    // epsilon, infinity
+
+namespace hov
+{
+namespace
+{
+constexpr double Eps = std::numeric_limits<double>::epsilon();
+/// |F| at most this many eps x extent is the rounding floor of x(pc) - x.
+constexpr double ResidualFloorUlps = 64.0;
+/// Backtracking halvings per Newton step.
+constexpr int MaxHalvings = 12;
+
+double NormInf(const double v[3])
+{
+  return std::max(std::max(std::abs(v[0]), std::abs(v[1])), std::abs(v[2]));
+}
+
+double Norm2(const double v[3])
+{
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+bool AllFinite(const double* v, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(v[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Residual F = x(pc) - target and its 2-norm.
+double Residual(const LagrangeCellView& cell, const double pc[3], const double target[3],
+  double F[3], double* J)
+{
+  double x[3];
+  EvaluateLagrangePosition(cell, pc, x, J);
+  for (int i = 0; i < 3; ++i)
+  {
+    F[i] = x[i] - target[i];
+  }
+  return Norm2(F);
+}
+
+/// One Newton run from @p pc; returns the status, @p pc the last iterate.
+InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], double extent,
+  const LagrangeInversionSettings& s, double pc[3], LagrangeInversionResult& result)
+{
+  double F[3], J[9];
+  double fNorm = Residual(cell, pc, target, F, J);
+  const double floor = ResidualFloorUlps * Eps * extent;
+  result.Residual = fNorm / extent;
+  for (int iter = 0; iter < s.MaxIterations; ++iter)
+  {
+    ++result.Iterations;
+    double step[3];
+    const double minusF[3] = { -F[0], -F[1], -F[2] };
+    if (!Solve3x3(J, minusF, step, s.SingularTolerance))
+    {
+      return InversionStatus::SingularJacobian;
+    }
+    const double length = NormInf(step);
+    if (!(length <= s.MaxStep))
+    {
+      const double scale = std::isfinite(length) ? s.MaxStep / length : 0.0;
+      for (double& v : step)
+      {
+        v *= scale;
+      }
+    }
+    // Backtracking: halve until |F| decreases (or give up and take the smallest).
+    double lambda = 1.0, used = 1.0, trial[3], Ft[3], Jt[9], ftNorm = 0.0;
+    for (int h = 0; h <= MaxHalvings; ++h, lambda *= 0.5)
+    {
+      used = lambda;
+      for (int k = 0; k < 3; ++k)
+      {
+        trial[k] = pc[k] + lambda * step[k];
+      }
+      ftNorm = Residual(cell, trial, target, Ft, Jt);
+      if (ftNorm < fNorm || fNorm <= floor)
+      {
+        break;
+      }
+    }
+    if (!(ftNorm < fNorm) && !(fNorm <= floor))
+    {
+      return InversionStatus::NoConvergence; // a local minimum of |F|: hopeless start
+    }
+    const double taken = used * NormInf(step);
+    std::copy(trial, trial + 3, pc);
+    std::copy(Ft, Ft + 3, F);
+    std::copy(Jt, Jt + 9, J);
+    fNorm = ftNorm;
+    result.LastStep = taken;
+    result.Residual = fNorm / extent;
+    if (!AllFinite(pc, 3) || !(cell.Basis->DistanceOutside(pc) <= s.AbandonOutside))
+    {
+      return InversionStatus::NoConvergence;
+    }
+    // A damped step may be short without being near a solution: only full
+    // steps count for the step criterion.
+    if ((used == 1.0 && taken <= s.StepTolerance) ||
+      (fNorm <= floor && taken <= s.FloorStepTolerance))
+    {
+      return InversionStatus::Converged;
+    }
+  }
+  return InversionStatus::NoConvergence;
+}
+}
+
+void EvaluateLagrangePosition(
+  const LagrangeCellView& cell, const double pc[3], double x[3], double* jacobian)
+{
+  cell.Basis->Interpolate(pc, cell.Points, 3, x, jacobian);
+}
+
+double EvaluateLagrangeScalar(const LagrangeCellView& cell, const double pc[3], double* gradient)
+{
+  double f = 0.0;
+  cell.Basis->Interpolate(pc, cell.Scalars, 1, &f, gradient);
+  return f;
+}
+
+double LagrangeCellExtent(const LagrangeCellView& cell)
+{
+  const int n = cell.Basis->GetNodeCount();
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = hi[k] = cell.Points[k];
+  }
+  for (int i = 1; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], cell.Points[3 * i + k]);
+      hi[k] = std::max(hi[k], cell.Points[3 * i + k]);
+    }
+  }
+  const double d[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
+  return Norm2(d);
+}
+
+bool IsLagrangeGeometryAffine(
+  const LagrangeCellView& cell, double relativeTolerance, double* affine)
+{
+  const LagrangeBasis& basis = *cell.Basis;
+  // Corners at pc = e_r, e_s, e_t.
+  const int axes[3] = { 1, basis.GetShape() == LagrangeShape::Hexahedron ? 3 : 2,
+    basis.GetShape() == LagrangeShape::Hexahedron ? 4 : 3 };
+  double map[12];
+  for (int i = 0; i < 3; ++i)
+  {
+    map[i] = cell.Points[i];
+    for (int j = 0; j < 3; ++j)
+    {
+      map[3 + 3 * j + i] = cell.Points[3 * axes[j] + i] - cell.Points[i];
+    }
+  }
+  if (affine)
+  {
+    std::copy(map, map + 12, affine);
+  }
+  const double tol = relativeTolerance * LagrangeCellExtent(cell);
+  for (int n = 0; n < basis.GetNodeCount(); ++n)
+  {
+    double pc[3];
+    basis.NodeParametricCoords(n, pc);
+    for (int i = 0; i < 3; ++i)
+    {
+      const double x = map[i] + map[3 + i] * pc[0] + map[6 + i] * pc[1] + map[9 + i] * pc[2];
+      if (!(std::abs(x - cell.Points[3 * n + i]) <= tol))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+const char* InversionStatusName(InversionStatus status)
+{
+  switch (status)
+  {
+    case InversionStatus::Converged:
+      return "converged";
+    case InversionStatus::NoConvergence:
+      return "Newton did not converge from any start";
+    case InversionStatus::SingularJacobian:
+      return "the geometry map's Jacobian is singular (degenerate or inverted cell)";
+    default:
+      return "invalid input (no basis, or non-finite coordinates)";
+  }
+}
+
+bool Solve3x3(const double J[9], const double b[3], double d[3], double relTol)
+{
+  double a[3][4];
+  double colNorm[3] = { 0.0, 0.0, 0.0 };
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      a[i][j] = J[3 * i + j];
+      colNorm[j] += a[i][j] * a[i][j];
+    }
+    a[i][3] = b[i];
+  }
+  double det = 1.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    int pivot = c;
+    for (int r = c + 1; r < 3; ++r)
+    {
+      pivot = std::abs(a[r][c]) > std::abs(a[pivot][c]) ? r : pivot;
+    }
+    if (pivot != c)
+    {
+      std::swap(a[pivot], a[c]);
+      det = -det;
+    }
+    det *= a[c][c];
+    if (a[c][c] == 0.0)
+    {
+      return false;
+    }
+    for (int r = c + 1; r < 3; ++r)
+    {
+      const double f = a[r][c] / a[c][c];
+      for (int k = c; k < 4; ++k)
+      {
+        a[r][k] -= f * a[c][k];
+      }
+    }
+  }
+  const double scale = std::sqrt(colNorm[0] * colNorm[1] * colNorm[2]);
+  if (!(std::abs(det) > relTol * scale))
+  {
+    return false;
+  }
+  for (int r = 2; r >= 0; --r)
+  {
+    double s = a[r][3];
+    for (int k = r + 1; k < 3; ++k)
+    {
+      s -= a[r][k] * d[k];
+    }
+    d[r] = s / a[r][r];
+  }
+  return AllFinite(d, 3);
+}
+
+LagrangeInversionResult InvertLagrangeGeometry(const LagrangeCellView& cell, const double x[3],
+  double pc[3], const LagrangeInversionSettings& settings)
+{
+  LagrangeInversionResult result;
+  if (!cell.Basis || !cell.Basis->IsInitialized() || !cell.Points || !AllFinite(x, 3) ||
+    !AllFinite(cell.Points, 3 * cell.Basis->GetNodeCount()))
+  {
+    double c[3] = { 0.5, 0.5, 0.5 };
+    if (cell.Basis)
+    {
+      cell.Basis->ParametricCenter(c);
+    }
+    std::copy(c, c + 3, pc);
+    return result; // InvalidInput
+  }
+  const double extent = std::max(LagrangeCellExtent(cell), std::numeric_limits<double>::min());
+  // Starts: guess, centre, then the grid points inside the domain.
+  double starts[29][3];
+  int count = 0;
+  if (AllFinite(pc, 3))
+  {
+    std::copy(pc, pc + 3, starts[count++]);
+  }
+  cell.Basis->ParametricCenter(starts[count++]);
+  static constexpr double grid[3] = { 0.2, 0.5, 0.8 };
+  for (int g = 0; settings.UseStartGrid && g < 27; ++g)
+  {
+    const double p[3] = { grid[g % 3], grid[(g / 3) % 3], grid[g / 9] };
+    if (cell.Basis->DistanceOutside(p) <= 0.0)
+    {
+      std::copy(p, p + 3, starts[count++]);
+    }
+  }
+  InversionStatus status = InversionStatus::NoConvergence;
+  double best[3] = { starts[0][0], starts[0][1], starts[0][2] };
+  double bestResidual = std::numeric_limits<double>::infinity();
+  bool allSingular = true;
+  for (int k = 0; k < count; ++k)
+  {
+    double p[3] = { starts[k][0], starts[k][1], starts[k][2] };
+    ++result.Starts;
+    status = NewtonRun(cell, x, extent, settings, p, result);
+    if (status == InversionStatus::Converged)
+    {
+      std::copy(p, p + 3, pc);
+      result.Status = status;
+      return result;
+    }
+    allSingular = allSingular && status == InversionStatus::SingularJacobian;
+    if (result.Residual < bestResidual && AllFinite(p, 3))
+    {
+      bestResidual = result.Residual;
+      std::copy(p, p + 3, best);
+    }
+  }
+  std::copy(best, best + 3, pc);
+  result.Residual = bestResidual;
+  result.Status = allSingular ? InversionStatus::SingularJacobian : InversionStatus::NoConvergence;
+  return result;
+}
+}

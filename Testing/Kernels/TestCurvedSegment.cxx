@@ -1,0 +1,235 @@
+// Segment categorization and integration in (curved) Lagrange cells
+// (hovCurvedSegment.h):
+//  - E / PS / S and occlusion-only on hand-made ranges;
+//  - ElVis's verification field f = x^2 + y^2 + z^2 on an axis-aligned
+//    hexahedron (orders 2 and 3; affine path) against the independent
+//    reference of hovPolynomialTestSupport.h (breakpoints by bisection in
+//    long double, adaptive Gauss-Kronrod), every ray through the cell;
+//  - a CURVED hexahedron whose geometry map has a polynomial inverse
+//    (x = r + a s^2, y = s, z = t, so pc(t) and the field along any ray are
+//    polynomials in t): the curved path (Chebyshev pieces, polished
+//    breakpoints) against the same reference;
+//  - empty segments are exactly transparent.
+#include "hovCurvedSegment.h"
+
+#include "hovCurvedRayCell.h"
+#include "hovKernelTestUtilities.h"
+#include "hovLagrangeTestSupport.h"
+#include "hovPolynomialTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace
+{
+using hov::SegmentCategory;
+
+/// A table with breakpoints at 0.3, 0.7, 1.2 (ElVis-like: a zero region below 0.3).
+hov::TransferFunctionSpec BreakpointSpec()
+{
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = hov::OpacitySemantics::RawExtinction;
+  spec.Color = { { 0.0, 0.9, 0.2, 0.1 }, { 0.7, 0.1, 0.8, 0.3 }, { 2.0, 0.2, 0.3, 0.9 } };
+  spec.Opacity = { { 0.3, 0.0 }, { 0.7, 2.0 }, { 1.2, 0.5 }, { 2.0, 1.5 } };
+  return spec;
+}
+
+TEST(CurvedSegment, Categorization)
+{
+  hov::TransferFunction tf;
+  ASSERT_TRUE(tf.Build(BreakpointSpec()));
+  const auto wm = hov::EmissionModel::WilliamsMax;
+  EXPECT_EQ(hov::CategorizeSegment(tf, 0.05, 0.29, wm).Category, SegmentCategory::Empty);
+  EXPECT_EQ(hov::CategorizeSegment(tf, 0.05, 0.3, wm).Category, SegmentCategory::Empty);
+  const hov::SegmentClassification ps = hov::CategorizeSegment(tf, 0.2, 0.8, wm);
+  EXPECT_EQ(ps.Category, SegmentCategory::PiecewiseSmooth);
+  EXPECT_EQ(ps.NodeCount, 2); // 0.3 and 0.7
+  EXPECT_EQ(hov::CategorizeSegment(tf, 0.75, 1.1, wm).Category, SegmentCategory::Smooth);
+  EXPECT_EQ(hov::CategorizeSegment(tf, 2.5, 3.0, wm).Category, SegmentCategory::Smooth); // clamped
+  // Occlusion only: black colour with extinction.
+  hov::TransferFunctionSpec black = BreakpointSpec();
+  for (auto& c : black.Color)
+  {
+    c.R = c.G = c.B = 0.0;
+  }
+  hov::TransferFunction tfBlack;
+  ASSERT_TRUE(tfBlack.Build(black));
+  EXPECT_TRUE(hov::CategorizeSegment(tfBlack, 0.75, 1.1, wm).OcclusionOnly);
+  EXPECT_FALSE(hov::CategorizeSegment(tf, 0.75, 1.1, wm).OcclusionOnly);
+}
+
+/// Hexahedron of @p order on [0,1]^3 scaled by @p size with geometry x = (r + a s^2, s, t) size.
+void MakeHex(hovtest::LagrangeTestCell& cell, int order, double size, double a,
+  const std::function<double(const double*)>& fieldOfX)
+{
+  ASSERT_TRUE(cell.Basis.Initialize(hov::LagrangeShape::Hexahedron, (order + 1) * (order + 1) * (order + 1)));
+  const int n = cell.Basis.GetNodeCount();
+  cell.Points.resize(3 * n);
+  cell.Scalars.resize(n);
+  for (int i = 0; i < n; ++i)
+  {
+    double pc[3];
+    cell.Basis.NodeParametricCoords(i, pc);
+    double* x = &cell.Points[3 * i];
+    x[0] = size * (pc[0] + a * pc[1] * pc[1]);
+    x[1] = size * pc[1];
+    x[2] = size * pc[2];
+    cell.Scalars[i] = fieldOfX(x);
+  }
+}
+
+struct Outcome
+{
+  double WorstError = 0.0, WorstOverEstimate = 0.0;
+  int Segments = 0, Breakpoints = 0, Curved = 0;
+};
+
+/// Every inside interval of random rays, integrated and compared with the reference
+/// (the field along the ray given as a polynomial in the ray's length by @p alongRay).
+void RunRays(const hovtest::LagrangeTestCell& cell, const hov::TransferFunctionSpec& spec,
+  const std::function<hov::Polynomial(const double*, const double*, double)>& alongRay,
+  std::mt19937_64& rng, int rays, Outcome& out)
+{
+  hov::TransferFunction tf;
+  ASSERT_TRUE(tf.Build(spec));
+  const hov::LagrangeCellView v = cell.View();
+  hov::CellDerivativeBounds bounds;
+  ASSERT_TRUE(hov::ComputeCellDerivativeBounds(v, bounds));
+  hov::CurvedCellFaces faces;
+  ASSERT_TRUE(hov::BuildCurvedFaces(v, faces));
+  std::normal_distribution<double> n01;
+  for (int r = 0; r < rays; ++r)
+  {
+    double pc[3], x[3], o[3], d[3], len = 0.0;
+    hovtest::RandomPC(cell.Basis, rng, 0.05, pc);
+    hov::EvaluateLagrangePosition(v, pc, x);
+    for (double& c : d)
+    {
+      c = n01(rng);
+      len += c * c;
+    }
+    len = std::sqrt(len);
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] /= len; // unit: t is length
+      o[k] = x[k] - 3.0 * d[k];
+    }
+    hov::CurvedRayInterval iv[8];
+    const int count = hov::RayCurvedCellIntervals(v, faces, o, d, 0.0, 6.0, iv, 8);
+    for (int i = 0; i < count; ++i)
+    {
+      const hov::CurvedSegmentResult res =
+        hov::IntegrateCurvedSegment(v, bounds, tf, o, d, iv[i].T0, iv[i].T1, iv[i].PC0);
+      const double L = iv[i].T1 - iv[i].T0;
+      const hov::Polynomial s = alongRay(o, d, iv[i].T0);
+      const hovtest::RefRGBA ref = hovtest::ReferencePolynomialRay(
+        hovtest::ToReference(spec), s, L, hovtest::RefEmission::WilliamsMax);
+      const double err = std::max(std::max(std::abs(res.Color.R - static_cast<double>(ref.R)),
+                                    std::abs(res.Color.G - static_cast<double>(ref.G))),
+        std::max(std::abs(res.Color.B - static_cast<double>(ref.B)),
+          std::abs(res.Color.A - static_cast<double>(ref.A))));
+      EXPECT_LE(err, 1e-9) << "ray " << r << " interval " << i << " L " << L << " pieces "
+                           << res.Pieces << " category " << static_cast<int>(res.Class.Category);
+      EXPECT_TRUE(res.Converged);
+      out.WorstError = std::max(out.WorstError, err);
+      if (err > 1e-13)
+      {
+        out.WorstOverEstimate = std::max(out.WorstOverEstimate, err / std::max(res.ErrorEstimate, 1e-300));
+      }
+      ++out.Segments;
+      out.Breakpoints += res.Breakpoints;
+      out.Curved += res.ExactField ? 0 : 1;
+    }
+  }
+}
+
+TEST(CurvedSegment, ElvisVerificationFieldOnAnAxisAlignedHexahedron)
+{
+  std::mt19937_64 rng(121);
+  auto field = [](const double* x) { return x[0] * x[0] + x[1] * x[1] + x[2] * x[2]; };
+  // s(t) = |o + t d|^2 in the ray's local length tau = t - t0.
+  auto alongRay = [](const double* o, const double* d, double t0) {
+    double p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = o[k] + t0 * d[k];
+    }
+    return hov::Polynomial::FromCoefficients({ p[0] * p[0] + p[1] * p[1] + p[2] * p[2],
+      2.0 * (p[0] * d[0] + p[1] * d[1] + p[2] * d[2]), d[0] * d[0] + d[1] * d[1] + d[2] * d[2] });
+  };
+  Outcome out;
+  for (int order : { 2, 3 })
+  {
+    hovtest::LagrangeTestCell cell;
+    MakeHex(cell, order, 1.0, 0.0, field);
+    RunRays(cell, BreakpointSpec(), alongRay, rng, 25, out);
+  }
+  hovtest::ReportMeasured("CurvedSegment.ElvisFieldAffineError", out.WorstError);
+  std::cout << "[measured] " << out.Segments << " segments, " << out.Breakpoints
+            << " breakpoints located, worst error/estimate " << out.WorstOverEstimate << std::endl;
+  EXPECT_EQ(out.Curved, 0);
+  EXPECT_GT(out.Breakpoints, 0);
+}
+
+TEST(CurvedSegment, CurvedHexahedronWithPolynomialInverse)
+{
+  std::mt19937_64 rng(122);
+  const double a = 0.35; // x = r + a s^2: curved faces r = 0, r = 1
+  // Field in parametric terms f = (r - 0.3)^2 + 0.5 s + t^3, written through the inverse map.
+  auto field = [a](const double* x) {
+    const double s = x[1], t = x[2], r = x[0] - a * s * s;
+    return (r - 0.3) * (r - 0.3) + 0.5 * s + t * t * t + 0.4;
+  };
+  auto alongRay = [a](const double* o, const double* d, double t0) {
+    // x(tau) = p + tau d: r = px + dx tau - a (py + dy tau)^2, s = py + dy tau, t = pz + dz tau.
+    double p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = o[k] + t0 * d[k];
+    }
+    const hov::Polynomial s = hov::Polynomial::FromCoefficients({ p[1], d[1] });
+    const hov::Polynomial t = hov::Polynomial::FromCoefficients({ p[2], d[2] });
+    const hov::Polynomial rm = hov::Polynomial::FromCoefficients(
+      { p[0] - a * p[1] * p[1] - 0.3, d[0] - 2 * a * p[1] * d[1], -a * d[1] * d[1] });
+    hov::Polynomial f; // rm^2 + 0.5 s + t^3 + 0.4
+    f.Degree = 4;
+    for (int i = 0; i <= 2; ++i)
+      for (int j = 0; j <= 2; ++j)
+        f.C[i + j] += rm.C[i] * rm.C[j];
+    f.C[0] += 0.5 * s.C[0] + t.C[0] * t.C[0] * t.C[0] + 0.4;
+    f.C[1] += 0.5 * s.C[1] + 3 * t.C[0] * t.C[0] * t.C[1];
+    f.C[2] += 3 * t.C[0] * t.C[1] * t.C[1];
+    f.C[3] += t.C[1] * t.C[1] * t.C[1];
+    return f;
+  };
+  hovtest::LagrangeTestCell cell;
+  MakeHex(cell, 3, 1.0, a, field);
+  Outcome out;
+  RunRays(cell, BreakpointSpec(), alongRay, rng, 30, out);
+  hovtest::ReportMeasured("CurvedSegment.CurvedHexError", out.WorstError);
+  std::cout << "[measured] curved: " << out.Segments << " segments (" << out.Curved
+            << " on the curved path), " << out.Breakpoints << " breakpoints, worst error/estimate "
+            << out.WorstOverEstimate << std::endl;
+  EXPECT_GT(out.Curved, 0);
+}
+
+TEST(CurvedSegment, EmptySegmentsAreExactlyTransparent)
+{
+  hov::TransferFunction tf;
+  ASSERT_TRUE(tf.Build(BreakpointSpec()));
+  hovtest::LagrangeTestCell cell;
+  // Field in [0, 0.25]: below the first opacity node (0 there).
+  MakeHex(cell, 2, 1.0, 0.0, [](const double* x) { return 0.05 + 0.05 * (x[0] + x[1] + x[2]); });
+  const hov::LagrangeCellView v = cell.View();
+  hov::CellDerivativeBounds bounds;
+  ASSERT_TRUE(hov::ComputeCellDerivativeBounds(v, bounds));
+  const double o[3] = { -1.0, 0.5, 0.5 }, d[3] = { 1.0, 0.0, 0.0 };
+  const hov::CurvedSegmentResult res = hov::IntegrateCurvedSegment(v, bounds, tf, o, d, 1.0, 2.0, nullptr);
+  EXPECT_EQ(res.Class.Category, SegmentCategory::Empty);
+  EXPECT_EQ(res.Color.A, 0.0);
+  EXPECT_EQ(res.Color.R, 0.0);
+  EXPECT_EQ(res.Pieces, 0);
+}
+}

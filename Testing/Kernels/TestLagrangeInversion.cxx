@@ -1,0 +1,164 @@
+// Geometry map of Lagrange cells and its Newton inversion (hovLagrangeCell.h):
+// Jacobian against finite differences, round trips x(pc) -> pc on curved
+// cells (bent maps plus perturbed edge/face/interior nodes) of every type and
+// order, points outside, degenerate and non-finite input.
+#include "hovLagrangeCell.h"
+
+#include "hovKernelTestUtilities.h"
+#include "hovLagrangeTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace
+{
+using hov::LagrangeShape;
+using hovtest::LagrangeCase;
+
+double Field(const double* x)
+{
+  return std::sin(x[0]) + x[1] * x[2];
+}
+
+/// A curved cell: bent map plus noise on the non-corner nodes (relative to size 1).
+void MakeCurved(const LagrangeCase& c, hovtest::LagrangeTestCell& cell, std::mt19937_64& rng,
+  double bend, double noise)
+{
+  ASSERT_TRUE(hovtest::InitBasis(c, cell.Basis));
+  const hovtest::SmoothMap map = hovtest::RandomMap(rng, bend);
+  // Noise scaled down with the order: equispaced interpolation amplifies node
+  // noise (Lebesgue constant), and the map must stay injective.
+  const int* o = cell.Basis.GetOrder();
+  const int p = std::max(std::max(o[0], o[2]), 1);
+  hovtest::PlaceNodes(cell, map, noise / (p * p * p), rng, Field);
+  const double ratio = hovtest::MinJacobianRatio(cell.View(), rng);
+  ASSERT_GT(ratio, 0.2) << c.Name() << " ratio " << ratio;
+}
+
+TEST(LagrangeInversion, JacobianMatchesCentralDifferences)
+{
+  std::mt19937_64 rng(71);
+  hovtest::Worst worst;
+  for (const LagrangeCase& c : hovtest::AllLagrangeCases(6))
+  {
+    hovtest::LagrangeTestCell cell;
+    MakeCurved(c, cell, rng, 0.12, 0.05);
+    const hov::LagrangeCellView view = cell.View();
+    for (int trial = 0; trial < 5; ++trial)
+    {
+      double pc[3], x[3], J[9], g[3];
+      hovtest::RandomPC(cell.Basis, rng, 0.01, pc);
+      hov::EvaluateLagrangePosition(view, pc, x, J);
+      hov::EvaluateLagrangeScalar(view, pc, g);
+      for (int k = 0; k < 3; ++k)
+      {
+        const double h = 1e-6;
+        double p1[3] = { pc[0], pc[1], pc[2] }, p0[3] = { pc[0], pc[1], pc[2] }, x1[3], x0[3];
+        p1[k] += h;
+        p0[k] -= h;
+        hov::EvaluateLagrangePosition(view, p1, x1);
+        hov::EvaluateLagrangePosition(view, p0, x0);
+        for (int i = 0; i < 3; ++i)
+        {
+          const double err = std::abs((x1[i] - x0[i]) / (2 * h) - J[3 * i + k]);
+          worst.Add(err, c.Name());
+          EXPECT_LE(err, 1e-6) << c.Name();
+        }
+        const double fd = (hov::EvaluateLagrangeScalar(view, p1) -
+                            hov::EvaluateLagrangeScalar(view, p0)) / (2 * h);
+        EXPECT_NEAR(fd, g[k], 1e-6) << c.Name();
+      }
+    }
+  }
+  hovtest::ReportMeasured("LagrangeInversion.JacobianVsFD", worst);
+}
+
+TEST(LagrangeInversion, RoundTripOnCurvedCells)
+{
+  std::mt19937_64 rng(72);
+  hovtest::Worst pcErr, iterations;
+  int total = 0, fromCentre = 0;
+  for (const LagrangeCase& c : hovtest::AllLagrangeCases(8))
+  {
+    hovtest::LagrangeTestCell cell;
+    MakeCurved(c, cell, rng, 0.12, 0.08);
+    const hov::LagrangeCellView view = cell.View();
+    // Curved unless it is a linear tetrahedron (always affine).
+    ASSERT_EQ(hov::IsLagrangeGeometryAffine(view),
+      c.Shape == LagrangeShape::Tetra && c.Order[0] == 1 && !c.NodeCount)
+      << c.Name();
+    for (int trial = 0; trial < 30; ++trial)
+    {
+      double pc[3], x[3];
+      hovtest::RandomPC(cell.Basis, rng, 0.0, pc);
+      hov::EvaluateLagrangePosition(view, pc, x);
+      double found[3] = { std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0 }; // no guess
+      const hov::LagrangeInversionResult res = hov::InvertLagrangeGeometry(view, x, found);
+      ASSERT_TRUE(res.Converged()) << c.Name() << " " << hov::InversionStatusName(res.Status)
+                                   << " pc " << pc[0] << " " << pc[1] << " " << pc[2];
+      const double err = std::max(std::max(std::abs(found[0] - pc[0]), std::abs(found[1] - pc[1])),
+        std::abs(found[2] - pc[2]));
+      pcErr.Add(err, c.Name());
+      iterations.Add(res.Iterations, c.Name());
+      EXPECT_LE(err, 1e-12) << c.Name();
+      fromCentre += res.Starts == 1;
+      ++total;
+    }
+  }
+  hovtest::ReportMeasured("LagrangeInversion.RoundTripPC", pcErr);
+  hovtest::ReportMeasured("LagrangeInversion.MaxIterations", iterations);
+  std::cout << "[measured] LagrangeInversion: " << fromCentre << " of " << total
+            << " converged from the first start" << std::endl;
+}
+
+TEST(LagrangeInversion, PointsOutsideAreReportedOutside)
+{
+  std::mt19937_64 rng(73);
+  for (const LagrangeCase& c : hovtest::AllLagrangeCases(4))
+  {
+    hovtest::LagrangeTestCell cell;
+    MakeCurved(c, cell, rng, 0.08, 0.03);
+    const hov::LagrangeCellView view = cell.View();
+    // A point beyond a face: pc pushed 0.05 outside, mapped by the (extended) polynomial map.
+    double centre[3], pc[3], x[3];
+    cell.Basis.ParametricCenter(centre);
+    for (int k = 0; k < 3; ++k)
+    {
+      pc[k] = centre[k];
+    }
+    pc[2] = -0.05;
+    hov::EvaluateLagrangePosition(view, pc, x);
+    double found[3] = { centre[0], centre[1], centre[2] };
+    const hov::LagrangeInversionResult res = hov::InvertLagrangeGeometry(view, x, found);
+    ASSERT_TRUE(res.Converged()) << c.Name();
+    EXPECT_NEAR(cell.Basis.DistanceOutside(found), 0.05, 1e-10) << c.Name();
+  }
+}
+
+TEST(LagrangeInversion, BadInputIsReportedNotNaN)
+{
+  hovtest::LagrangeTestCell cell;
+  ASSERT_TRUE(cell.Basis.Initialize(LagrangeShape::Hexahedron, 27));
+  std::mt19937_64 rng(74);
+  hovtest::PlaceNodes(cell, hovtest::SmoothMap(), 0.0, rng, Field);
+  double pc[3] = { 0.5, 0.5, 0.5 };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double xBad[3] = { nan, 0.0, 0.0 };
+  hov::LagrangeInversionResult res = hov::InvertLagrangeGeometry(cell.View(), xBad, pc);
+  EXPECT_EQ(res.Status, hov::InversionStatus::InvalidInput);
+  EXPECT_TRUE(std::isfinite(pc[0]));
+  // A flat cell (every node in the plane z = 0): singular Jacobian everywhere.
+  for (size_t i = 2; i < cell.Points.size(); i += 3)
+  {
+    cell.Points[i] = 0.0;
+  }
+  const double x[3] = { 0.3, 0.3, 0.0 };
+  res = hov::InvertLagrangeGeometry(cell.View(), x, pc);
+  EXPECT_EQ(res.Status, hov::InversionStatus::SingularJacobian);
+  EXPECT_TRUE(std::isfinite(pc[0]) && std::isfinite(pc[1]) && std::isfinite(pc[2]));
+  EXPECT_NE(std::string(hov::InversionStatusName(res.Status)).find("singular"), std::string::npos);
+}
+}
