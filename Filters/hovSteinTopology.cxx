@@ -137,20 +137,22 @@ void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* fla
 }
 }
 
-void Topology::Build(const Geometry& g)
+namespace
+{
+/**
+ * The faces of the supported cells (entries c * 8 + f) bucketed by their
+ * smallest corner id (counting sort): bucket p is entries[start[p],
+ * start[p + 1]).
+ */
+void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<vtkIdType>& entries)
 {
   const vtkIdType n = g.NumberOfCells;
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
-  // Bucket faces by their smallest corner id (counting sort).
-  std::vector<vtkIdType> start(numPoints + 1, 0);
+  start.assign(numPoints + 1, 0);
   for (vtkIdType c = 0; c < n; ++c)
   {
-    if (g.Kinds[c] == KindBad)
-    {
-      continue;
-    }
-    const Shape& s = GetShape(g.Kinds[c]);
-    for (int f = 0; f < s.NumFaces; ++f)
+    const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
+    for (int f = 0; f < numFaces; ++f)
     {
       ++start[FaceKey(g, c, f)[0] + 1];
     }
@@ -159,25 +161,25 @@ void Topology::Build(const Geometry& g)
   {
     start[p + 1] += start[p];
   }
-  std::vector<vtkIdType> entries(start[numPoints]);
+  entries.resize(start[numPoints]);
+  std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
+  for (vtkIdType c = 0; c < n; ++c)
   {
-    std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
-    for (vtkIdType c = 0; c < n; ++c)
+    const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
+    for (int f = 0; f < numFaces; ++f)
     {
-      if (g.Kinds[c] == KindBad)
-      {
-        continue;
-      }
-      const Shape& s = GetShape(g.Kinds[c]);
-      for (int f = 0; f < s.NumFaces; ++f)
-      {
-        entries[cursor[FaceKey(g, c, f)[0]]++] = c * 8 + f;
-      }
+      entries[cursor[FaceKey(g, c, f)[0]]++] = c * 8 + f;
     }
   }
-  std::vector<std::uint8_t> flags(entries.size());
-  // Chunks of about equal numbers of faces (low point ids hold more faces:
-  // a face is bucketed by its smallest corner id).
+}
+
+/// MatchBucket on every bucket, in parallel over chunks of about equal numbers
+/// of faces (low point ids hold more faces: a face goes to its smallest id).
+void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
+  std::vector<vtkIdType>& entries, std::vector<std::uint8_t>& flags)
+{
+  const vtkIdType numPoints = static_cast<vtkIdType>(start.size()) - 1;
+  flags.resize(entries.size());
   const vtkIdType numChunks = std::max<vtkIdType>(1, std::min<vtkIdType>(256, numPoints));
   std::vector<vtkIdType> chunk(numChunks + 1);
   for (vtkIdType k = 0; k <= numChunks; ++k)
@@ -194,7 +196,27 @@ void Topology::Build(const Geometry& g)
         keyed);
     }
   });
-  // Collect in bucket order (deterministic).
+}
+}
+
+void Topology::Build(const Geometry& g)
+{
+  std::vector<vtkIdType> start, entries;
+  BucketFaces(g, start, entries);
+  std::vector<std::uint8_t> flags;
+  MatchFaces(g, start, entries, flags);
+  this->Collect(g, entries, flags);
+  this->BuildCellFaces(g);
+  this->BuildBoundary(g);
+  static std::atomic<unsigned long> generations(0);
+  this->Generation = ++generations;
+}
+
+void Topology::Collect(
+  const Geometry& g, const std::vector<vtkIdType>& entries, const std::vector<std::uint8_t>& flags)
+{
+  // In bucket order (deterministic).
+  const vtkIdType n = g.NumberOfCells;
   this->A.clear();
   this->B.clear();
   this->FaceA.clear();
@@ -231,10 +253,6 @@ void Topology::Build(const Geometry& g)
   {
     this->NumberOfBoundaryCells += this->BoundaryFaces[c] != 0;
   }
-  this->BuildCellFaces(g);
-  this->BuildBoundary(g);
-  static std::atomic<unsigned long> generations(0);
-  this->Generation = ++generations;
 }
 
 void Topology::BuildCellFaces(const Geometry& g)

@@ -58,6 +58,9 @@ struct Topology
   void Build(const Geometry& g);
 
 private:
+  /// A, B, FaceA, ModeA and BoundaryFaces from the matched bucket entries.
+  void Collect(const Geometry& g, const std::vector<vtkIdType>& entries,
+    const std::vector<std::uint8_t>& flags);
   void BuildCellFaces(const Geometry& g);
   void BuildBoundary(const Geometry& g);
 };
