@@ -174,6 +174,35 @@ struct TileLists
   std::vector<vtkIdType> Items[2];
 };
 
+/// Bands of tile rows for BinFaces: band b holds the tiles [Start(b), Start(b + 1)).
+struct TileBands
+{
+  const PairGrid& Grid;
+  int Count;
+  vtkIdType Start(vtkIdType b) const { return b * this->Grid.NY / this->Count * this->Grid.NX; }
+  /// Calls fn(face, roles, tile) for the tiles of band @p b, face by face.
+  template <class Fn>
+  void ForTiles(vtkIdType b, const std::vector<ViewFace>& faces,
+    const std::vector<TileRange>& ranges, Fn&& fn) const
+  {
+    const int y0 = static_cast<int>(this->Start(b) / this->Grid.NX);
+    const int y1 = static_cast<int>(this->Start(b + 1) / this->Grid.NX);
+    const vtkIdType nf = static_cast<vtkIdType>(faces.size());
+    for (vtkIdType i = 0; i < nf; ++i)
+    {
+      const TileRange& r = ranges[i];
+      const int roles = faces[i].Roles & 3;
+      for (int iy = std::max(r[2], y0); roles && iy <= std::min(r[3], y1 - 1); ++iy)
+      {
+        for (int ix = r[0]; ix <= r[1]; ++ix)
+        {
+          fn(i, roles, static_cast<vtkIdType>(iy) * this->Grid.NX + ix);
+        }
+      }
+    }
+  }
+};
+
 /**
  * Bins the faces into the tiles they cover, in parallel over bands of tile
  * rows: each band scans all faces and keeps its own rows, so the lists come
@@ -183,39 +212,18 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
   const std::vector<TileRange>& ranges, TileLists& lists)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
-  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
-  // Bands: enough to balance the threads; each scans all faces (the lists do
-  // not depend on the number of bands).
+  // Enough bands to balance the threads (each scans all faces).
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
-  const int numBands = threads > 1 ? std::min(grid.NY, 2 * threads) : 1;
-  // First tile of band b (rows b * NY / numBands ...); band numBands: nt.
-  auto bandStart = [&](vtkIdType b) { return b * grid.NY / numBands * grid.NX; };
-  // Calls fn(face, roles, tile) for the tiles of band b, face by face.
-  auto forBand = [&](vtkIdType b, auto&& fn) {
-    const int y0 = static_cast<int>(bandStart(b) / grid.NX);
-    const int y1 = static_cast<int>(bandStart(b + 1) / grid.NX);
-    for (vtkIdType i = 0; i < nf; ++i)
-    {
-      const TileRange& r = ranges[i];
-      const int roles = faces[i].Roles & 3;
-      for (int iy = std::max(r[2], y0); roles && iy <= std::min(r[3], y1 - 1); ++iy)
-      {
-        for (int ix = r[0]; ix <= r[1]; ++ix)
-        {
-          fn(i, roles, static_cast<vtkIdType>(iy) * grid.NX + ix);
-        }
-      }
-    }
-  };
+  const TileBands bands{ grid, threads > 1 ? std::min(grid.NY, 2 * threads) : 1 };
   for (int k = 0; k < 2; ++k)
   {
     lists.Start[k].assign(nt + 1, 0);
   }
   vtkIdType* count[2] = { lists.Start[0].data() + 1, lists.Start[1].data() + 1 };
-  vtkSMPTools::For(0, numBands, 1, [&](vtkIdType b0, vtkIdType b1) {
+  vtkSMPTools::For(0, bands.Count, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType b = b0; b < b1; ++b)
     {
-      forBand(b, [&](vtkIdType, int roles, vtkIdType tile) {
+      bands.ForTiles(b, faces, ranges, [&](vtkIdType, int roles, vtkIdType tile) {
         count[0][tile] += roles & 1;
         count[1][tile] += roles >> 1;
       });
@@ -230,16 +238,16 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
     }
     lists.Items[k].resize(start[nt]);
   }
-  vtkSMPTools::For(0, numBands, 1, [&](vtkIdType b0, vtkIdType b1) {
+  vtkSMPTools::For(0, bands.Count, 1, [&](vtkIdType b0, vtkIdType b1) {
     std::vector<vtkIdType> cursor[2];
     for (vtkIdType b = b0; b < b1; ++b)
     {
-      const vtkIdType first = bandStart(b), last = bandStart(b + 1);
+      const vtkIdType first = bands.Start(b), last = bands.Start(b + 1);
       for (int k = 0; k < 2; ++k)
       {
         cursor[k].assign(lists.Start[k].begin() + first, lists.Start[k].begin() + last);
       }
-      forBand(b, [&](vtkIdType i, int roles, vtkIdType tile) {
+      bands.ForTiles(b, faces, ranges, [&](vtkIdType i, int roles, vtkIdType tile) {
         for (int k = 0; k < 2; ++k)
         {
           if (roles & (1 << k))

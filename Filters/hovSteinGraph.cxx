@@ -86,6 +86,23 @@ int EyeSide(const Geometry& g, const ViewFrame& f, vtkIdType c, int face)
   return mode == FaceNewell ? NewellSide(g, f, c, face) : EyeUndecided;
 }
 
+/**
+ * EyeSide of the exact face @p face of cell @p c with the exact predicate;
+ * also sets @p plane (if not null) to the face's filtered plane.
+ */
+int ExactSide(const Geometry& g, const ViewFrame& f, vtkIdType c, int face, FilteredPlane* plane)
+{
+  vtkIdType ids[3];
+  g.ExactTriple(c, face, ids);
+  const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *cc = g.Point(ids[2]);
+  if (plane)
+  {
+    plane->Set(a, b, cc);
+  }
+  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
+  return f.Parallel ? hov::Orient3dDirection(a, b, cc, back) : hov::Orient3d(a, b, cc, f.Eye);
+}
+
 /// Face @p of cell @p c whose corners are those of face @p fa of cell @p a, or -1.
 int MatchingFace(const Geometry& g, vtkIdType a, int fa, vtkIdType c)
 {
@@ -133,7 +150,7 @@ vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdTyp
 }
 
 /// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
-void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v)
+void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v, bool buildPlanes)
 {
   std::vector<std::int8_t>& dir = this->Directions;
   const ViewFrame& f = v.Frame;
@@ -141,12 +158,20 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
   const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
+  if (buildPlanes)
+  {
+    this->InteriorPlanes.reset(new FilteredPlane[m]); // default-initialised
+  }
   const bool allOrdered = v.AllOrdered; // skips two random reads per face
   vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       if (!allOrdered && (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i])))
       {
+        if (buildPlanes && t.ModeA[i] == FaceExact)
+        {
+          ExactSide(g, f, t.A[i], t.FaceA[i], &this->InteriorPlanes[i]); // for later views
+        }
         dir[i] = 0;
         continue;
       }
@@ -154,13 +179,10 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
       int side;
       if (t.ModeA[i] == FaceExact)
       {
-        side = t.PlaneA[i].Side(x, f.Parallel);
+        side = buildPlanes ? 0 : this->InteriorPlanes[i].Side(x, f.Parallel);
         if (side == 0) // not decided by the filter: the exact predicate
         {
-          vtkIdType ids[3];
-          g.ExactTriple(t.A[i], t.FaceA[i], ids);
-          const double *a = g.Point(ids[0]), *b = g.Point(ids[1]), *c = g.Point(ids[2]);
-          side = f.Parallel ? hov::Orient3dDirection(a, b, c, x) : hov::Orient3d(a, b, c, x);
+          side = ExactSide(g, f, t.A[i], t.FaceA[i], buildPlanes ? &this->InteriorPlanes[i] : nullptr);
         }
       }
       else
@@ -199,9 +221,13 @@ constexpr vtkIdType CellBlock = 2048;     ///< cells per block
  * their filtered planes, in parallel over fixed blocks; per block the number
  * of faces with a role (RoleStart, then made a prefix sum).
  */
-void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& v)
+void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& v, bool buildPlanes)
 {
-  const vtkIdType nb = t.NumberOfBoundaryFaces;
+  const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
+  if (buildPlanes)
+  {
+    this->BoundaryPlanes.reset(new FilteredPlane[nb]); // default-initialised
+  }
   const vtkIdType numBlocks = (nb + BoundaryBlock - 1) / BoundaryBlock;
   this->Roles.resize(nb);
   this->RoleStart.assign(numBlocks + 1, 0);
@@ -216,9 +242,15 @@ void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& 
       {
         const Topology::BoundaryFace& bf = t.Boundary[k];
         std::uint8_t role = 0;
-        if (Ordered(v, bf.Cell))
+        if (bf.Mode == FaceExact && buildPlanes)
         {
-          int side = bf.Mode == FaceExact ? bf.Plane.Side(x, f.Parallel) : 0;
+          // Every exact face's plane, also of cells not ordered in this view.
+          const int side = ExactSide(g, f, bf.Cell, bf.Face, &this->BoundaryPlanes[k]);
+          role = Ordered(v, bf.Cell) ? Role(side) : 0;
+        }
+        else if (Ordered(v, bf.Cell))
+        {
+          int side = bf.Mode == FaceExact ? this->BoundaryPlanes[k].Side(x, f.Parallel) : 0;
           if (side == 0) // not decided by the filter, or not an exact face
           {
             side = EyeSide(g, f, bf.Cell, bf.Face);
@@ -291,7 +323,7 @@ void GraphSort::CellPart(const Geometry& g, const Topology& t, const View& v, vt
  */
 void GraphSort::CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats)
 {
-  this->BoundaryRoles(g, t, v);
+  this->BoundaryRoles(g, t, v, this->PlanesGeneration != t.Generation);
   const vtkIdType n = g.NumberOfCells;
   Digraph& d = this->Graph;
   d.FaceOffsets = t.CellFaceOffsets.data();
@@ -333,7 +365,7 @@ void GraphSort::CellPass(const Geometry& g, const Topology& t, const View& v, Gr
 void GraphSort::CollectFaces(const Topology& t, GraphStats& stats)
 {
   std::vector<ViewFace>& faces = this->Faces;
-  const vtkIdType nb = t.NumberOfBoundaryFaces;
+  const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
   const vtkIdType numBlocks = static_cast<vtkIdType>(this->RoleStart.size()) - 1;
   faces.resize(this->RoleStart[numBlocks]);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
@@ -384,8 +416,9 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   {
     return;
   }
-  this->FaceDirections(g, t, v);
+  this->FaceDirections(g, t, v, this->PlanesGeneration != t.Generation);
   this->CellPass(g, t, v, stats);
+  this->PlanesGeneration = t.Generation; // both kinds of planes are made
   this->Extra.clear();
   PairStats pairStats;
   this->Boundary.Edges(g, v, this->Faces, this->Extra, pairStats);

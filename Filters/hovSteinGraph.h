@@ -8,22 +8,27 @@
  * they are output first, back to front by rearmost depth):
  * 1. Interior faces (hovSteinTopology): the exact side of the eye (Orient3d of
  *    the eye against the face triangle; parallel projection: Orient3dDirection
- *    with the direction towards the eye) gives the edge far cell -> near cell;
+ *    with the direction towards the eye; both through the face's precomputed
+ *    filtered plane, hovSteinPlaneFilter.h) gives the edge far cell -> near cell;
  *    the eye on the plane gives no edge. Non-planar (Newell) faces decide only
  *    when the eye is clearly off the face (margin below); otherwise the face is
- *    UNDECIDED and its two cells take part in step 2 in both roles.
+ *    UNDECIDED and its two cells take part in step 2 in both roles. In
+ *    parallel over faces, then over cells (each cell's outgoing edges and
+ *    in-degree, from the view-independent per-cell face lists).
  * 2. Boundary faces (hovSteinBoundaryPairs): EXIT faces (the eye strictly
  *    on the inner side of the plane: a view ray can leave the mesh there) are
  *    paired with ENTRY faces (the eye strictly outside) of other cells whose
  *    screen extents overlap, that reach behind the exit face's front and are
  *    not separated from it by either face's plane; undecided Newell or
  *    degenerate faces count in both roles. For each surviving cell pair
- *    (a, b), Obstructs(a, b) adds the edge b -> a. Pairs are de-duplicated and
- *    decided in parallel, one Obstruction per thread, in a fixed order, so the
- *    result does not depend on the number of threads.
+ *    (a, b), Obstructs(a, b) adds the edge b -> a. The roles, the face pairs and
+ *    the Obstructs() tests run in parallel over fixed blocks; pairs are
+ *    de-duplicated and decided in a fixed order, so the result does not depend
+ *    on the number of threads.
  * 3. Kahn's algorithm on the DAG, FIFO, the initial sources sorted back to
  *    front by rearmost depth (a full rough sort of all cells measured ~15% of
- *    the re-sort time at 1M cells and is not needed for exactness). If it stalls, the strongly connected
+ *    the re-sort time at 1M cells and is not needed for exactness); sequential,
+ *    branch-free and prefetching. If it stalls, the strongly connected
  *    components of the rest are found (iterative Tarjan) and output in
  *    topological order of the condensation, each component's cells by
  *    rearmost depth; nontrivial components are reported as cycles.
@@ -38,10 +43,12 @@
 #define hovSteinGraph_h
 
 #include "hovSteinBoundaryPairs.h" // BoundaryPairs, ViewFace
+#include "hovSteinPlaneFilter.h"   // FilteredPlane
 #include "hovSteinTopology.h"      // Topology
 #include "hovSteinView.h"          // Geometry, View
 
 #include <cstdint> // std::int32_t, std::uint8_t
+#include <memory>  // std::unique_ptr
 #include <utility> // std::pair
 #include <vector>  // storage
 
@@ -109,13 +116,21 @@ private:
   {
     vtkIdType FaceEdges = 0, Undecided = 0;
   };
-  void FaceDirections(const Geometry& g, const Topology& t, const View& v);
-  void BoundaryRoles(const Geometry& g, const Topology& t, const View& v);
+  void FaceDirections(const Geometry& g, const Topology& t, const View& v, bool buildPlanes);
+  void BoundaryRoles(const Geometry& g, const Topology& t, const View& v, bool buildPlanes);
   void CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats);
   void CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
     BlockCounts& counts, std::vector<ViewFace>& undecided);
   void CollectFaces(const Topology& t, GraphStats& stats);
 
+  /// The filtered planes (hovSteinPlaneFilter.h) of the exact interior faces
+  /// (A's face) and boundary faces of the topology of generation
+  /// PlanesGeneration: made during the first view, from the points the exact
+  /// predicates read anyway (not in the set-up: a pass of its own through the
+  /// cells in face order cost more than it saves), by the threads that use
+  /// them (not zeroed on allocation).
+  std::unique_ptr<FilteredPlane[]> InteriorPlanes, BoundaryPlanes;
+  unsigned long PlanesGeneration = 0;
   std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
   std::vector<std::uint8_t> Roles;     ///< per boundary face: its role in step 2 (0: none)
   std::vector<vtkIdType> RoleStart;    ///< per block of boundary faces + 1: first face in Faces

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic> // the build generations
 
 namespace hovStein
 {
@@ -136,20 +137,22 @@ void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* fla
 }
 }
 
-void Topology::Build(const Geometry& g)
+namespace
+{
+/**
+ * The faces of the supported cells (entries c * 8 + f) bucketed by their
+ * smallest corner id (counting sort): bucket p is entries[start[p],
+ * start[p + 1]).
+ */
+void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<vtkIdType>& entries)
 {
   const vtkIdType n = g.NumberOfCells;
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
-  // Bucket faces by their smallest corner id (counting sort).
-  std::vector<vtkIdType> start(numPoints + 1, 0);
+  start.assign(numPoints + 1, 0);
   for (vtkIdType c = 0; c < n; ++c)
   {
-    if (g.Kinds[c] == KindBad)
-    {
-      continue;
-    }
-    const Shape& s = GetShape(g.Kinds[c]);
-    for (int f = 0; f < s.NumFaces; ++f)
+    const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
+    for (int f = 0; f < numFaces; ++f)
     {
       ++start[FaceKey(g, c, f)[0] + 1];
     }
@@ -158,32 +161,62 @@ void Topology::Build(const Geometry& g)
   {
     start[p + 1] += start[p];
   }
-  std::vector<vtkIdType> entries(start[numPoints]);
+  entries.resize(start[numPoints]);
+  std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
+  for (vtkIdType c = 0; c < n; ++c)
   {
-    std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
-    for (vtkIdType c = 0; c < n; ++c)
+    const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
+    for (int f = 0; f < numFaces; ++f)
     {
-      if (g.Kinds[c] == KindBad)
-      {
-        continue;
-      }
-      const Shape& s = GetShape(g.Kinds[c]);
-      for (int f = 0; f < s.NumFaces; ++f)
-      {
-        entries[cursor[FaceKey(g, c, f)[0]]++] = c * 8 + f;
-      }
+      entries[cursor[FaceKey(g, c, f)[0]]++] = c * 8 + f;
     }
   }
-  std::vector<std::uint8_t> flags(entries.size());
-  vtkSMPTools::For(0, numPoints, 1024, [&](vtkIdType begin, vtkIdType end) {
+}
+
+/// MatchBucket on every bucket, in parallel over chunks of about equal numbers
+/// of faces (low point ids hold more faces: a face goes to its smallest id).
+void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
+  std::vector<vtkIdType>& entries, std::vector<std::uint8_t>& flags)
+{
+  const vtkIdType numPoints = static_cast<vtkIdType>(start.size()) - 1;
+  flags.resize(entries.size());
+  const vtkIdType numChunks = std::max<vtkIdType>(1, std::min<vtkIdType>(256, numPoints));
+  std::vector<vtkIdType> chunk(numChunks + 1);
+  for (vtkIdType k = 0; k <= numChunks; ++k)
+  {
+    chunk[k] = std::lower_bound(start.begin(), start.end(), k * start[numPoints] / numChunks) -
+      start.begin();
+  }
+  chunk[numChunks] = numPoints;
+  vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
     std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
-    for (vtkIdType p = begin; p < end; ++p)
+    for (vtkIdType p = chunk[k0]; p < chunk[k1]; ++p)
     {
       MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], flags.data() + start[p],
         keyed);
     }
   });
-  // Collect in bucket order (deterministic).
+}
+}
+
+void Topology::Build(const Geometry& g)
+{
+  std::vector<vtkIdType> start, entries;
+  BucketFaces(g, start, entries);
+  std::vector<std::uint8_t> flags;
+  MatchFaces(g, start, entries, flags);
+  this->Collect(g, entries, flags);
+  this->BuildCellFaces(g);
+  this->BuildBoundary(g);
+  static std::atomic<unsigned long> generations(0);
+  this->Generation = ++generations;
+}
+
+void Topology::Collect(
+  const Geometry& g, const std::vector<vtkIdType>& entries, const std::vector<std::uint8_t>& flags)
+{
+  // In bucket order (deterministic).
+  const vtkIdType n = g.NumberOfCells;
   this->A.clear();
   this->B.clear();
   this->FaceA.clear();
@@ -209,17 +242,10 @@ void Topology::Build(const Geometry& g)
   }
   const vtkIdType numInterior = this->NumberOfInteriorFaces();
   this->ModeA.resize(numInterior);
-  this->PlaneA.reset(new FilteredPlane[numInterior]); // default-initialised: not written here
   vtkSMPTools::For(0, numInterior, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       this->ModeA[i] = g.FaceCode(this->A[i], this->FaceA[i]) & 3;
-      if (this->ModeA[i] == FaceExact)
-      {
-        vtkIdType t[3];
-        g.ExactTriple(this->A[i], this->FaceA[i], t);
-        this->PlaneA[i].Set(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]));
-      }
     }
   });
   this->NumberOfBoundaryCells = 0;
@@ -227,73 +253,71 @@ void Topology::Build(const Geometry& g)
   {
     this->NumberOfBoundaryCells += this->BoundaryFaces[c] != 0;
   }
-  this->BuildCellFaces(n);
-  this->BuildBoundary(g);
 }
 
-void Topology::BuildCellFaces(vtkIdType numCells)
+void Topology::BuildCellFaces(const Geometry& g)
 {
-  const vtkIdType m = this->NumberOfInteriorFaces();
-  this->CellFaceOffsets.assign(numCells + 1, 0);
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    ++this->CellFaceOffsets[this->A[i] + 1];
-    ++this->CellFaceOffsets[this->B[i] + 1];
-  }
-  for (vtkIdType c = 0; c < numCells; ++c)
-  {
-    this->CellFaceOffsets[c + 1] += this->CellFaceOffsets[c];
-  }
-  this->CellFaces.resize(2 * m);
-  this->CellNeighbours.resize(2 * m);
-  std::vector<vtkIdType> cursor(this->CellFaceOffsets.begin(), this->CellFaceOffsets.end() - 1);
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    const vtkIdType a = cursor[this->A[i]]++, b = cursor[this->B[i]]++;
-    this->CellFaces[a] = 2 * i;
-    this->CellNeighbours[a] = this->B[i];
-    this->CellFaces[b] = 2 * i + 1;
-    this->CellNeighbours[b] = this->A[i];
-  }
-}
-
-void Topology::BuildBoundary(const Geometry& g)
-{
+  // A supported cell's faces are all interior or boundary faces: its count
+  // needs no pass over the faces.
   const vtkIdType n = g.NumberOfCells;
-  std::vector<vtkIdType> start(n + 1, 0);
+  const vtkIdType m = this->NumberOfInteriorFaces();
+  this->CellFaceOffsets.resize(n + 1);
+  this->CellFaceOffsets[0] = 0;
   for (vtkIdType c = 0; c < n; ++c)
   {
     std::uint8_t mask = this->BoundaryFaces[c];
-    vtkIdType count = 0;
+    vtkIdType count = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
     for (; mask; mask &= mask - 1)
     {
-      ++count;
+      --count;
     }
-    start[c + 1] = start[c] + count;
+    this->CellFaceOffsets[c + 1] = this->CellFaceOffsets[c] + count;
   }
-  this->NumberOfBoundaryFaces = start[n];
-  this->Boundary.reset(new BoundaryFace[start[n]]);
-  vtkSMPTools::For(0, n, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end; ++c)
+  // In parallel over bands of cells: each band scans all faces and fills its
+  // own cells' lists, in increasing face order whatever the number of bands.
+  this->CellFaces.resize(2 * m);
+  this->CellNeighbours.resize(2 * m);
+  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const vtkIdType numBands = std::min<vtkIdType>(threads > 1 ? 2 * threads : 1, std::max<vtkIdType>(n, 1));
+  vtkSMPTools::For(0, numBands, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType band = b0; band < b1; ++band)
     {
-      BoundaryFace* out = this->Boundary.get() + start[c];
-      for (int f = 0; f < MaxFaces; ++f)
+      const vtkIdType first = band * n / numBands, last = (band + 1) * n / numBands;
+      std::vector<vtkIdType> cursor(
+        this->CellFaceOffsets.begin() + first, this->CellFaceOffsets.begin() + last);
+      for (vtkIdType i = 0; i < m; ++i)
       {
-        if (this->BoundaryFaces[c] & (1 << f))
+        const vtkIdType a = this->A[i], b = this->B[i];
+        if (a >= first && a < last)
         {
-          out->Cell = c;
-          out->Face = static_cast<std::uint8_t>(f);
-          out->Mode = g.FaceCode(c, f) & 3;
-          if (out->Mode == FaceExact)
-          {
-            vtkIdType t[3];
-            g.ExactTriple(c, f, t);
-            out->Plane.Set(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]));
-          }
-          ++out;
+          const vtkIdType e = cursor[a - first]++;
+          this->CellFaces[e] = 2 * i;
+          this->CellNeighbours[e] = b;
+        }
+        if (b >= first && b < last)
+        {
+          const vtkIdType e = cursor[b - first]++;
+          this->CellFaces[e] = 2 * i + 1;
+          this->CellNeighbours[e] = a;
         }
       }
     }
   });
+}
+
+void Topology::BuildBoundary(const Geometry& g)
+{
+  this->Boundary.clear();
+  for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
+  {
+    for (int f = 0; this->BoundaryFaces[c] && f < MaxFaces; ++f)
+    {
+      if (this->BoundaryFaces[c] & (1 << f))
+      {
+        this->Boundary.push_back(
+          { c, static_cast<std::uint8_t>(f), static_cast<std::uint8_t>(g.FaceCode(c, f) & 3) });
+      }
+    }
+  }
 }
 }

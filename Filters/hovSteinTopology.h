@@ -19,11 +19,9 @@
 #ifndef hovSteinTopology_h
 #define hovSteinTopology_h
 
-#include "hovSteinGeometry.h"    // Geometry
-#include "hovSteinPlaneFilter.h" // FilteredPlane
+#include "hovSteinGeometry.h" // Geometry
 
 #include <cstdint> // std::uint8_t
-#include <memory>  // std::unique_ptr
 #include <vector>  // storage
 
 namespace hovStein
@@ -33,13 +31,8 @@ struct Topology
   /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
   std::vector<vtkIdType> A, B;
   std::vector<std::uint8_t> FaceA;
-  /// Per interior face: the mode of A's face (FaceCode & 3) and, for exact
-  /// faces, the filtered plane of its corners as Geometry::ExactTriple gives
-  /// them (the per-view side test then reads one contiguous record instead of
-  /// the cell's tables and points). Not zeroed on allocation: the parallel loop
-  /// that fills it touches its pages first, on every thread.
+  /// Per interior face: the mode of A's face (FaceCode & 3).
   std::vector<std::uint8_t> ModeA;
-  std::unique_ptr<FilteredPlane[]> PlaneA;
   /// Per cell: its interior faces (CSR, in increasing interior face index) as
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
   std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
@@ -49,23 +42,26 @@ struct Topology
   std::vector<std::uint8_t> BoundaryFaces;
   vtkIdType NumberOfBoundaryCells = 0;
 
-  /// A boundary face of a supported cell, with the filtered plane of exact faces.
+  /// A boundary face of a supported cell.
   struct BoundaryFace
   {
-    FilteredPlane Plane; ///< if Mode is FaceExact (of the corners of Geometry::ExactTriple)
     vtkIdType Cell;
-    std::uint8_t Face, Mode;
+    std::uint8_t Face, Mode; ///< Mode: FaceCode & 3
   };
-  /// The boundary faces in cell order, by face within a cell (not zeroed on
-  /// allocation: the parallel loop that fills it touches its pages first).
-  std::unique_ptr<BoundaryFace[]> Boundary;
-  vtkIdType NumberOfBoundaryFaces = 0;
+  /// The boundary faces in cell order, by face within a cell.
+  std::vector<BoundaryFace> Boundary;
+
+  /// Distinct for every Build() of any Topology (for caches derived from it).
+  unsigned long Generation = 0;
 
   vtkIdType NumberOfInteriorFaces() const { return static_cast<vtkIdType>(this->A.size()); }
   void Build(const Geometry& g);
 
 private:
-  void BuildCellFaces(vtkIdType numCells);
+  /// A, B, FaceA, ModeA and BoundaryFaces from the matched bucket entries.
+  void Collect(const Geometry& g, const std::vector<vtkIdType>& entries,
+    const std::vector<std::uint8_t>& flags);
+  void BuildCellFaces(const Geometry& g);
   void BuildBoundary(const Geometry& g);
 };
 }

@@ -235,9 +235,37 @@ void View::DepthRange(const Geometry& g, vtkIdType c, double& front, double& rea
 void View::Setup(const Geometry& g, vtkCamera* camera, bool cellExtents)
 {
   this->Frame.FromCamera(camera, g.Diagonal);
+  this->ProjectPoints(g);
+  const vtkIdType n = g.NumberOfCells;
+  this->Status.resize(n);
+  this->Front.resize(n);
+  this->Rear.resize(n);
+  this->Box.resize(4 * n);
+  this->ClipIndex.assign(n, -1);
+  this->Clipped.clear();
+  this->HasCellExtents = cellExtents;
+  // Every point in front of the near plane and no bad cell: all cells visible.
+  const bool allValid = std::find(this->Valid.begin(), this->Valid.end(), 0) == this->Valid.end();
+  this->AllOrdered = allValid && g.NumberOfBadCells == 0;
+  if (cellExtents)
+  {
+    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) { this->CellExtents(g, begin, end); });
+  }
+  else
+  {
+    vtkSMPTools::For(
+      0, n, [&](vtkIdType begin, vtkIdType end) { this->CellStatus(g, begin, end, allValid); });
+  }
+  if (!allValid) // else no cell straddles the near plane
+  {
+    this->ClipStraddling(g, cellExtents);
+  }
+}
+
+void View::ProjectPoints(const Geometry& g)
+{
   const ViewFrame& f = this->Frame;
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
-  const vtkIdType n = g.NumberOfCells;
   this->Proj.resize(3 * numPoints);
   this->Valid.resize(numPoints);
   vtkSMPTools::For(0, numPoints, [&](vtkIdType begin, vtkIdType end) {
@@ -261,25 +289,12 @@ void View::Setup(const Geometry& g, vtkCamera* camera, bool cellExtents)
       p[1] = this->Valid[i] ? Dot(v, f.Up) / z : 0.0;
     }
   });
-  this->Status.resize(n);
-  this->Front.resize(n);
-  this->Rear.resize(n);
-  this->Box.resize(4 * n);
-  this->ClipIndex.assign(n, -1);
-  this->Clipped.clear();
-  this->HasCellExtents = cellExtents;
-  // Every point in front of the near plane and no bad cell: all cells visible.
-  const bool allValid = std::find(this->Valid.begin(), this->Valid.end(), 0) == this->Valid.end();
-  this->AllOrdered = allValid && g.NumberOfBadCells == 0;
-  if (cellExtents)
-  {
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) { this->CellExtents(g, begin, end); });
-  }
-  else
-  {
-    vtkSMPTools::For(
-      0, n, [&](vtkIdType begin, vtkIdType end) { this->CellStatus(g, begin, end, allValid); });
-  }
+}
+
+void View::ClipStraddling(const Geometry& g, bool cellExtents)
+{
+  const ViewFrame& f = this->Frame;
+  const vtkIdType n = g.NumberOfCells;
   for (vtkIdType c = 0; c < n; ++c)
   {
     if (this->Status[c] != StatusStraddle)

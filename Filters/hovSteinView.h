@@ -80,6 +80,10 @@ struct View
 private:
   /// Status, depth range and screen extents of cells [begin, end) from the projected points.
   void CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end);
+  /// Screen coordinates, depths and near-plane validity of every point.
+  void ProjectPoints(const Geometry& g);
+  /// The visible parts, extents and depth ranges of the straddling cells.
+  void ClipStraddling(const Geometry& g, bool cellExtents);
   /// Status only of cells [begin, end); @p allValid: every point is in front of the near plane.
   void CellStatus(const Geometry& g, vtkIdType begin, vtkIdType end, bool allValid);
   bool HasCellExtents = false;

@@ -110,9 +110,11 @@
  * boundary face).
  *
  * Thread safety: one sort per object at a time; the set-up, the face
- * matching, the face edges and the Obstructs tests of ADJACENCY_GRAPH run in
- * parallel with vtkSMPTools (results independent of the thread count); the
- * merge and the topological sort are sequential.
+ * matching and, per view, the face directions and edges, the boundary face
+ * roles, pair search and Obstructs tests of ADJACENCY_GRAPH run in parallel
+ * with vtkSMPTools over fixed blocks (results independent of the thread
+ * count and backend: TestSteinSortThreads); the merge and the topological
+ * sort are sequential. The per-view buffers are kept between sorts.
  *
  * @sa vtkVisibilitySort vtkCellCenterDepthSort vtkCellVisibilitySortFilter
  * vtkHighOrderVolumeMapper
