@@ -230,6 +230,8 @@ void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType 
   {
     this->ReserveQueue(this->NumQueued + total);
   }
+  const LaneOut lanes{ this->QTIn, this->QTOut, this->QSIn, this->QSOut, this->QLength,
+    this->QPixel.data(), this->QInterval.data() };
   for (int j = j0; j <= j1; ++j)
   {
     const int r0 = first[j - j0];
@@ -240,15 +242,7 @@ void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType 
     }
     const size_t p0 = static_cast<size_t>(j) * this->W + r0;
     const int q = this->NumQueued;
-    const bool all = ClipSpan(cell, this->LaneRays, p0, count,
-      LaneOut{ this->QTIn, this->QTOut, this->QSIn, this->QSOut, this->QLength }, q);
-    int* pixel = this->QPixel.data() + q;
-    int* interval = this->QInterval.data() + q;
-    for (int i = 0; i < count; ++i)
-    {
-      pixel[i] = static_cast<int>(p0) + i;
-      interval[i] = cell.Interval;
-    }
+    const bool all = ClipSpan(cell, this->LaneRays, p0, count, lanes, q);
     if (all && this->DoneInRow[j] == 0)
     {
       this->NumQueued += count; // the common case: every pixel hit, none done
