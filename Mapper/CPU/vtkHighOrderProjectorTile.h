@@ -146,9 +146,11 @@ private:
   /// Cell order: queue the segments of ordered cell k at the tile's
   /// unfinished pixels (clipped straight into the queue's arrays).
   void QueueCellSegments(const Frame& frame, vtkIdType k);
-  /// QueueCellSegments() for a row where some lane did not simply hit or
-  /// some pixel is done: keep the hits in order, resolve undecided rays.
-  void CompactRow(const Frame& frame, const CellRecord& cell, size_t p0, int count);
+  /// QueueCellSegments() for a cell where some lane did not simply hit or
+  /// some pixel is done: the row of pixels [p0, p0 + count) clipped at queue
+  /// position @p src is appended to the queue, keeping the hits in order and
+  /// resolving undecided rays.
+  void CompactRow(const Frame& frame, const CellRecord& cell, size_t p0, int count, int src);
   /// Make room for @p n queued segments (plus a block of padding lanes).
   void ReserveQueue(int n);
   /// Queue a segment of pixel p for the next Flush().

@@ -161,6 +161,18 @@ bool ClipSpan(
   const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q);
 
 /**
+ * ClipSpanLanes() for @p rows rows of a cell, one call per cell (the cell's
+ * planes and field are set up once for all its rows): row r's pixels
+ * [start[r], start[r] + count[r]) are written one row after the other from
+ * @p q. Returns true if every pixel of every row simply hits.
+ */
+#if defined(__GNUC__)
+__attribute__((visibility("hidden")))
+#endif
+bool ClipRows(const CellRecord& cell, const TileRays& rays, const int* start, const int* count,
+  int rows, const LaneOut& out, size_t q);
+
+/**
  * The case of one pixel of a span that did not simply hit, from what the
  * lanes wrote (@p tIn, @p tOut) and the ray: 1 hit, 0 miss, -1 undecided.
  */
