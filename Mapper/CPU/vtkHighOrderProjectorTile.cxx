@@ -44,7 +44,7 @@ bool hovTileGeometry::ClipRows(const CellRecord& cell, const TileRays& rays, con
 }
 
 void vtkHighOrderProjectorTile::Bins::Build(
-  const std::vector<CellRecord>& cells, int width, int height, int tileSize)
+  const std::vector<Box>& boxes, int width, int height, int tileSize)
 {
   this->Size = tileSize;
   this->TilesX = (width + tileSize - 1) / tileSize;
@@ -67,7 +67,7 @@ void vtkHighOrderProjectorTile::Bins::Build(
   // depend on the threads): count per chunk and tile, offsets per tile in
   // chunk order, then each chunk fills its slots; every tile's list stays in
   // cell order.
-  const vtkIdType numCells = static_cast<vtkIdType>(cells.size());
+  const vtkIdType numCells = static_cast<vtkIdType>(boxes.size());
   const vtkIdType chunk = (numCells + Chunks - 1) / Chunks;
   this->Fill.assign(static_cast<size_t>(Chunks) * numTiles, 0);
   vtkSMPTools::For(0, Chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
@@ -76,7 +76,7 @@ void vtkHighOrderProjectorTile::Bins::Build(
       vtkIdType* count = this->Fill.data() + c * numTiles;
       for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
       {
-        forTiles(cells[k].PixelBox, [&](int t) { ++count[t]; });
+        forTiles(boxes[k], [&](int t) { ++count[t]; });
       }
     }
   });
@@ -100,7 +100,7 @@ void vtkHighOrderProjectorTile::Bins::Build(
       vtkIdType* fill = this->Fill.data() + c * numTiles;
       for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
       {
-        forTiles(cells[k].PixelBox, [&](int t) { this->Cells[fill[t]++] = k; });
+        forTiles(boxes[k], [&](int t) { this->Cells[fill[t]++] = k; });
       }
     }
   });

@@ -93,7 +93,8 @@ public:
     std::vector<vtkIdType> Cells; ///< ordered-cell indices
     std::vector<vtkIdType> Fill;  ///< scratch: per chunk and tile
     static constexpr int Chunks = 16; ///< cell chunks binned in parallel
-    void Build(const std::vector<CellRecord>& cells, int width, int height, int tileSize);
+    /// Bin the cells whose pixel boxes are @p boxes (per ordered cell).
+    void Build(const std::vector<Box>& boxes, int width, int height, int tileSize);
   };
 
   /// Everything the tiles of one frame read.
