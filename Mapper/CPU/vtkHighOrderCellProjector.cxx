@@ -20,6 +20,7 @@ struct vtkHighOrderCellProjector::Buffers
   std::vector<glm::dvec2> Window;
   std::vector<unsigned char> Projectable;
   std::vector<vtkHighOrderProjectorTile::CellRecord> Cells;
+  std::vector<vtkHighOrderProjectorTile::Box> Boxes; ///< the records' pixel boxes, for binning
   std::vector<std::pair<float, vtkIdType>> DepthOrder; ///< per-pixel mode: (depth, tetra)
   std::vector<vtkIdType> Order;                        ///< per-pixel mode: tetras by depth
   std::vector<int> GeneralOf; ///< per ordered cell: general cell index, or -1
@@ -177,6 +178,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   const size_t numCells = order->size();
   std::vector<CellRecord>& records = buf.Cells;
   records.resize(numCells);
+  buf.Boxes.resize(numCells);
   // The general cells' frame data (their records only carry the pixel box).
   vtkHighOrderGeneralCellTile::FrameData general;
   general.Cells = &setup.GetGeneralCells();
@@ -196,6 +198,7 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
         if (buf.GeneralOf[k] >= 0)
         {
           GeneralRecord(general, buf.GeneralOf[k], width, height, records[k]);
+          buf.Boxes[k] = records[k].PixelBox;
           continue;
         }
       }
@@ -228,10 +231,11 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
         cell.Projectable = cell.Projectable && projectable[tet.Points[v]];
       }
       cell.Interval = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
+      buf.Boxes[k] = cell.PixelBox;
     }
   });
   vtkHighOrderProjectorTile::Bins& bins = buf.TileBins;
-  bins.Build(records, width, height, std::min(std::max(4, settings.TileSize), vtkHighOrderProjectorTile::MaxTileSize));
+  bins.Build(buf.Boxes, width, height, std::min(std::max(4, settings.TileSize), vtkHighOrderProjectorTile::MaxTileSize));
 
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   const int numTiles = bins.TilesX * bins.TilesY;

@@ -30,8 +30,21 @@ bool hovTileGeometry::ClipSpan(
   return ClipSpanLanes(cell, rays, p, count, out, q);
 }
 
+HOV_SPAN_TARGET_CLONES
+bool hovTileGeometry::ClipRows(const CellRecord& cell, const TileRays& rays, const int* start,
+  const int* count, int rows, const LaneOut& out, size_t q)
+{
+  bool all = true;
+  for (int r = 0; r < rows; ++r)
+  {
+    all = ClipSpanLanes(cell, rays, start[r], count[r], out, q) && all;
+    q += count[r];
+  }
+  return all;
+}
+
 void vtkHighOrderProjectorTile::Bins::Build(
-  const std::vector<CellRecord>& cells, int width, int height, int tileSize)
+  const std::vector<Box>& boxes, int width, int height, int tileSize)
 {
   this->Size = tileSize;
   this->TilesX = (width + tileSize - 1) / tileSize;
@@ -54,7 +67,7 @@ void vtkHighOrderProjectorTile::Bins::Build(
   // depend on the threads): count per chunk and tile, offsets per tile in
   // chunk order, then each chunk fills its slots; every tile's list stays in
   // cell order.
-  const vtkIdType numCells = static_cast<vtkIdType>(cells.size());
+  const vtkIdType numCells = static_cast<vtkIdType>(boxes.size());
   const vtkIdType chunk = (numCells + Chunks - 1) / Chunks;
   this->Fill.assign(static_cast<size_t>(Chunks) * numTiles, 0);
   vtkSMPTools::For(0, Chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
@@ -63,7 +76,7 @@ void vtkHighOrderProjectorTile::Bins::Build(
       vtkIdType* count = this->Fill.data() + c * numTiles;
       for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
       {
-        forTiles(cells[k].PixelBox, [&](int t) { ++count[t]; });
+        forTiles(boxes[k], [&](int t) { ++count[t]; });
       }
     }
   });
@@ -87,7 +100,7 @@ void vtkHighOrderProjectorTile::Bins::Build(
       vtkIdType* fill = this->Fill.data() + c * numTiles;
       for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
       {
-        forTiles(cells[k].PixelBox, [&](int t) { this->Cells[fill[t]++] = k; });
+        forTiles(boxes[k], [&](int t) { this->Cells[fill[t]++] = k; });
       }
     }
   });
@@ -215,56 +228,43 @@ void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType 
   const int j0 = std::max(b[2] - this->Y0, this->RowBegin);
   const int j1 = std::min(b[3] - this->Y0, this->RowEnd - 1);
   const ProjectedEdges edges(cell);
-  // All rows' pixel ranges first (independent rows: their latencies overlap).
-  int first[MaxTileSize], last[MaxTileSize];
-  int total = 0;
+  // The rows' pixel ranges first (independent rows: their latencies overlap),
+  // then all rows clipped in one call.
+  int start[MaxTileSize], count[MaxTileSize];
+  int rows = 0, total = 0, done = 0;
   for (int j = j0; j <= j1; ++j)
   {
-    if (!this->RowRange(cell, edges, j, first[j - j0], last[j - j0]))
+    int r0, r1;
+    if (this->RowRange(cell, edges, j, r0, r1))
     {
-      last[j - j0] = first[j - j0] - 1;
+      start[rows] = j * this->W + r0;
+      count[rows] = r1 - r0 + 1;
+      total += count[rows++];
+      done += this->DoneInRow[j];
     }
-    total += std::max(0, last[j - j0] - first[j - j0] + 1);
   }
   if (this->NumQueued + total + PixelLanes > this->QueueCapacity)
   {
     this->ReserveQueue(this->NumQueued + total);
   }
-  for (int j = j0; j <= j1; ++j)
+  const LaneOut lanes{ this->QTIn, this->QTOut, this->QSIn, this->QSOut, this->QLength,
+    this->QPixel.data(), this->QInterval.data() };
+  const int q = this->NumQueued;
+  if (ClipRows(cell, this->LaneRays, start, count, rows, lanes, q) && done == 0)
   {
-    const int r0 = first[j - j0];
-    const int count = last[j - j0] - r0 + 1;
-    if (count <= 0)
-    {
-      continue;
-    }
-    const size_t p0 = static_cast<size_t>(j) * this->W + r0;
-    const int q = this->NumQueued;
-    const bool all = ClipSpan(cell, this->LaneRays, p0, count,
-      LaneOut{ this->QTIn, this->QTOut, this->QSIn, this->QSOut, this->QLength }, q);
-    int* pixel = this->QPixel.data() + q;
-    int* interval = this->QInterval.data() + q;
-    for (int i = 0; i < count; ++i)
-    {
-      pixel[i] = static_cast<int>(p0) + i;
-      interval[i] = cell.Interval;
-    }
-    if (all && this->DoneInRow[j] == 0)
-    {
-      this->NumQueued += count; // the common case: every pixel hit, none done
-    }
-    else
-    {
-      this->CompactRow(frame, cell, p0, count);
-    }
+    this->NumQueued += total; // the common case: every pixel hit, none done
+    return;
+  }
+  for (int r = 0, src = q; r < rows; src += count[r++])
+  {
+    this->CompactRow(frame, cell, start[r], count[r], src);
   }
 }
 
-void vtkHighOrderProjectorTile::CompactRow(const Frame& frame, const CellRecord& cell,
-  size_t p0, int count)
+void vtkHighOrderProjectorTile::CompactRow(
+  const Frame& frame, const CellRecord& cell, size_t p0, int count, int src)
 {
-  const int q = this->NumQueued;
-  int next = q;
+  int next = this->NumQueued; // <= src: rows are compacted in order
   for (int i = 0; i < count; ++i)
   {
     const size_t p = p0 + i;
@@ -273,21 +273,22 @@ void vtkHighOrderProjectorTile::CompactRow(const Frame& frame, const CellRecord&
       continue;
     }
     const Ray& ray = this->Rays[p];
-    const int hit = LaneHit(cell, ray, this->QTIn[q + i], this->QTOut[q + i]);
+    const int from = src + i;
+    const int hit = LaneHit(cell, ray, this->QTIn[from], this->QTOut[from]);
     if (hit == 0)
     {
       continue;
     }
     if (hit > 0)
     {
-      if (next != q + i)
+      if (next != from)
       {
-        this->QTIn[next] = this->QTIn[q + i];
-        this->QTOut[next] = this->QTOut[q + i];
-        this->QSIn[next] = this->QSIn[q + i];
-        this->QSOut[next] = this->QSOut[q + i];
-        this->QLength[next] = this->QLength[q + i];
-        this->QPixel[next] = this->QPixel[q + i];
+        this->QTIn[next] = this->QTIn[from];
+        this->QTOut[next] = this->QTOut[from];
+        this->QSIn[next] = this->QSIn[from];
+        this->QSOut[next] = this->QSOut[from];
+        this->QLength[next] = this->QLength[from];
+        this->QPixel[next] = this->QPixel[from];
       }
       ++next;
       continue;

@@ -93,7 +93,8 @@ public:
     std::vector<vtkIdType> Cells; ///< ordered-cell indices
     std::vector<vtkIdType> Fill;  ///< scratch: per chunk and tile
     static constexpr int Chunks = 16; ///< cell chunks binned in parallel
-    void Build(const std::vector<CellRecord>& cells, int width, int height, int tileSize);
+    /// Bin the cells whose pixel boxes are @p boxes (per ordered cell).
+    void Build(const std::vector<Box>& boxes, int width, int height, int tileSize);
   };
 
   /// Everything the tiles of one frame read.
@@ -146,9 +147,11 @@ private:
   /// Cell order: queue the segments of ordered cell k at the tile's
   /// unfinished pixels (clipped straight into the queue's arrays).
   void QueueCellSegments(const Frame& frame, vtkIdType k);
-  /// QueueCellSegments() for a row where some lane did not simply hit or
-  /// some pixel is done: keep the hits in order, resolve undecided rays.
-  void CompactRow(const Frame& frame, const CellRecord& cell, size_t p0, int count);
+  /// QueueCellSegments() for a cell where some lane did not simply hit or
+  /// some pixel is done: the row of pixels [p0, p0 + count) clipped at queue
+  /// position @p src is appended to the queue, keeping the hits in order and
+  /// resolving undecided rays.
+  void CompactRow(const Frame& frame, const CellRecord& cell, size_t p0, int count, int src);
   /// Make room for @p n queued segments (plus a block of padding lanes).
   void ReserveQueue(int n);
   /// Queue a segment of pixel p for the next Flush().

@@ -24,6 +24,8 @@ constexpr int PixelLanes = 4; ///< pixels per full block of lanes (the rays' pad
 struct LaneOut
 {
   double *TIn, *TOut, *SIn, *SOut, *Length;
+  int* Pixel;    ///< the lane's pixel (if not null)
+  int* Interval; ///< the cell's transfer-function interval (with Pixel)
 };
 
 #if defined(__GNUC__) // GCC and Clang: vector extensions
@@ -85,6 +87,14 @@ __attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell
   std::memcpy(out.SIn + q, &vsIn, sizeof(V));
   std::memcpy(out.SOut + q, &vsOut, sizeof(V));
   std::memcpy(out.Length + q, &vLength, sizeof(V));
+  if (out.Pixel)
+  {
+    for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+    {
+      out.Pixel[q + l] = static_cast<int>(p) + l;
+      out.Interval[q + l] = cell.Interval;
+    }
+  }
   all &= ((vIn < vOut) & ~parallel) | pastEnd;
 }
 
@@ -149,6 +159,18 @@ __attribute__((visibility("hidden")))
 #endif
 bool ClipSpan(
   const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q);
+
+/**
+ * ClipSpanLanes() for @p rows rows of a cell, one call per cell (the cell's
+ * planes and field are set up once for all its rows): row r's pixels
+ * [start[r], start[r] + count[r]) are written one row after the other from
+ * @p q. Returns true if every pixel of every row simply hits.
+ */
+#if defined(__GNUC__)
+__attribute__((visibility("hidden")))
+#endif
+bool ClipRows(const CellRecord& cell, const TileRays& rays, const int* start, const int* count,
+  int rows, const LaneOut& out, size_t q);
 
 /**
  * The case of one pixel of a span that did not simply hit, from what the

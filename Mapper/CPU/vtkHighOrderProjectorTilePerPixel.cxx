@@ -57,7 +57,7 @@ void vtkHighOrderProjectorTile::ForCellSegments(const Frame& frame, vtkIdType k,
     }
     const size_t p0 = static_cast<size_t>(j) * this->W + r0;
     const bool all =
-      ClipSpan(cell, this->LaneRays, p0, r1 - r0 + 1, LaneOut{ tIn, tOut, sIn, sOut, length }, 0);
+      ClipSpan(cell, this->LaneRays, p0, r1 - r0 + 1, LaneOut{ tIn, tOut, sIn, sOut, length, nullptr, nullptr }, 0);
     for (int i = 0; i <= r1 - r0; ++i)
     {
       const size_t p = p0 + i;

@@ -15,7 +15,6 @@
 #include "vtkHighOrderViewRays.h"      // Ray
 
 #include <algorithm> // std::min, std::max
-#include <utility>   // std::swap
 
 namespace hovTileGeometry
 {
@@ -123,19 +122,29 @@ struct ProjectedEdges
         edgeOf[a][b] = edgeOf[b][a] = e;
       }
     }
-    // Vertices by height (insertion sort of four), then the edges of each band.
+    // Vertices by height (a sorting network of five branch-free compare and
+    // exchanges: the order of equal heights does not matter), then the edges
+    // of each band.
     int v[4] = { 0, 1, 2, 3 };
-    for (int i = 1; i < 4; ++i)
-    {
-      for (int k = i; k > 0 && cell.Vertex[v[k]].y < cell.Vertex[v[k - 1]].y; --k)
-      {
-        std::swap(v[k], v[k - 1]);
-      }
-    }
+    double* y = this->BandY;
     for (int i = 0; i < 4; ++i)
     {
-      this->BandY[i] = cell.Vertex[v[i]].y;
+      y[i] = cell.Vertex[i].y;
     }
+    auto exchange = [&](int a, int b) {
+      const int swap = -static_cast<int>(y[b] < y[a]); // all bits set: swap
+      const double ya = y[a], yb = y[b];
+      y[a] = std::min(ya, yb);
+      y[b] = std::max(ya, yb);
+      const int va = v[a], vb = v[b];
+      v[a] = (vb & swap) | (va & ~swap);
+      v[b] = (va & swap) | (vb & ~swap);
+    };
+    exchange(0, 1);
+    exchange(2, 3);
+    exchange(0, 2);
+    exchange(1, 3);
+    exchange(1, 2);
     for (int b = 0; b < 3; ++b)
     {
       int count = 0;

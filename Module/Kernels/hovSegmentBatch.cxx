@@ -137,10 +137,10 @@ long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationS
   {
     return this->IntegrateScalar(tf, settings, jobs, count, out, pieces);
   }
-  long long total = this->CollectPieces(tf, jobs, count, out, pieces);
-  this->EvaluatePieces(tf, settings, out);
-  this->ThinSeries();
-  this->WriteThin(out);
+  long long total = this->ResolveIntervals(tf, jobs, count, out, pieces);
+  this->EvaluateLanes(tf, settings, jobs, count, out);
+  this->ThinSeries(count + this->NumPieces);
+  this->WriteThin(count, out);
   total += this->CompositeSplits(out, pieces);
   return total;
 }
@@ -171,17 +171,24 @@ long long SegmentBatch::IntegrateScalar(const TransferFunction& tf,
 }
 
 /**
- * Each segment becomes one piece (its interval known, or found as
- * OnePieceInterval() finds it) or several (SplitSegment()); invalid ones
- * (IntegrateLinearScalar()'s and IntegrateLinearScalarInInterval()'s early
- * returns) are written as zero here. Returns the pieces of the unsplit
- * segments (split ones are counted when composited).
+ * The interval of each segment (Resolved): its known one, or the one
+ * OnePieceInterval() finds; segments crossing nodes are split into Pieces
+ * (SplitSegment()) and invalid ones (IntegrateLinearScalar()'s and
+ * IntegrateLinearScalarInInterval()'s early returns) written as zero here,
+ * both marked Skip. Returns the pieces of the unsplit segments (split ones
+ * are counted when composited).
  */
-long long SegmentBatch::CollectPieces(
+long long SegmentBatch::ResolveIntervals(
   const TransferFunction& tf, const Arrays& jobs, int count, RGBA* out, int* pieces)
 {
   this->NumPieces = 0;
   this->Splits.clear();
+  this->SplitOut.clear();
+  if (this->Resolved.size() < static_cast<size_t>(count))
+  {
+    this->Resolved.resize(count); // grows only: none in steady state
+  }
+  int* __restrict resolved = this->Resolved.data();
   const std::vector<double>& nodes = tf.GetNodes();
   const int n = static_cast<int>(nodes.size());
   long long total = 0;
@@ -193,11 +200,8 @@ long long SegmentBatch::CollectPieces(
     int p = 1;
     if (k < -1)
     {
-      if (!valid || n == 0)
-      {
-        p = 0;
-      }
-      else
+      p = valid && n > 0 ? 1 : 0;
+      if (p)
       {
         // OnePieceInterval(), inline; the walk starts from the same interval.
         const bool up = sBack - sFront >= 0.0;
@@ -207,6 +211,7 @@ long long SegmentBatch::CollectPieces(
         if (!one)
         {
           this->SplitSegment(tf, i, k, sFront, sBack, length);
+          resolved[i] = Skip;
           continue; // counted when composited
         }
       }
@@ -216,12 +221,11 @@ long long SegmentBatch::CollectPieces(
     {
       pieces[i] = p;
     }
-    if (!valid || p == 0)
+    resolved[i] = valid && p ? k : Skip;
+    if (resolved[i] == Skip)
     {
       out[i] = RGBA();
-      continue;
     }
-    this->AddPiece(Piece{ sFront, sBack, length, k, i });
   }
   return total;
 }
@@ -260,8 +264,7 @@ void SegmentBatch::SplitSegment(const TransferFunction& tf, int job, int k, doub
     const double pieceLength = length * (xNext - xPrev);
     if (pieceLength > 0.0)
     {
-      this->AddPiece(
-        Piece{ sPrev, sNext, pieceLength, k, -1 - static_cast<int>(this->SplitOut.size()) });
+      this->AddPiece(Piece{ sPrev, sNext, pieceLength, k }); // its result: SplitOut[piece]
       this->SplitOut.emplace_back();
       ++split.Count;
     }
@@ -282,7 +285,7 @@ SegmentBatch::ThinArrays SegmentBatch::ThinLanes(int n)
   const size_t stride = static_cast<size_t>(n) + Lanes;
   if (this->ThinStore.size() < static_cast<size_t>(ThinFields) * stride)
   {
-    this->ThinStore.resize(static_cast<size_t>(ThinFields) * stride); // grows only: none in steady state
+    this->ThinStore.resize(static_cast<size_t>(ThinFields) * stride); // grows only
   }
   if (this->ThinTerms.size() < stride)
   {
@@ -295,123 +298,146 @@ SegmentBatch::ThinArrays SegmentBatch::ThinLanes(int n)
     this->ThinTerms.data() };
 }
 
+namespace
+{
 /**
  * IntegrateLinearScalarInInterval() -> IntegrateSegment() ->
- * ExactSegmentWeights() per piece, taking the thin branch aside for the
- * lanes: a thin piece's depths, colours and number of terms go to the lane
- * arrays, any other piece is integrated here by the scalar kernel (Terms 0).
+ * ExactSegmentWeights() for one piece (valid: length > 0, finite ends),
+ * taking the thin branch aside for the lanes: a thin piece's depths, colours
+ * and number of terms go to lane @p m of @p t, any other piece is integrated
+ * here by the scalar kernel into @p dest (its Terms 0).
  */
-void SegmentBatch::EvaluatePieces(
-  const TransferFunction& tf, const IntegrationSettings& settings, RGBA* out)
+inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction& tf, int k,
+  double s0, double s1, double length, const detail::ThinTermByExponent& thinTerms,
+  const SegmentBatch::ThinArrays& t, int m, RGBA& dest)
 {
-  const int n = this->NumPieces;
-  const ThinArrays t = this->ThinLanes(n);
-  double* __restrict a = t.A;
-  double* __restrict d1 = t.D1;
-  double* __restrict front[3] = { t.FrontR, t.FrontG, t.FrontB };
-  double* __restrict back[3] = { t.BackR, t.BackG, t.BackB };
-  int* __restrict terms = t.Terms;
-  int* __restrict perTerms = this->PerTerms;
-  std::fill(perTerms, perTerms + detail::MaxThinOrder + 2, 0);
-  const Piece* __restrict pieces = this->Pieces.data();
-  const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
-  for (int m = 0; m < n; ++m)
+  SegmentEnd f, b;
+  tf.Evaluate(k, s0, false, f);
+  tf.Evaluate(k, s1, false, b);
+  const double depthFront = std::max(f.Tau, 0.0) * length;
+  const double depthBack = std::max(b.Tau, 0.0) * length;
+  const double a = std::min(depthFront, detail::DepthCap);
+  const double c = std::min(depthBack, detail::DepthCap);
+  const double d1 = 0.5 * (a + c);
+  if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(d1 > 0.0) ||
+    d1 > detail::ThinDepth)
   {
-    const Piece piece = pieces[m];
-    SegmentEnd f, b;
-    tf.Evaluate(piece.Interval, piece.S0, false, f);
-    tf.Evaluate(piece.Interval, piece.S1, false, b);
-    const double depthFront = std::max(f.Tau, 0.0) * piece.Length;
-    const double depthBack = std::max(b.Tau, 0.0) * piece.Length;
-    const double am = std::min(depthFront, detail::DepthCap);
-    const double cm = std::min(depthBack, detail::DepthCap);
-    const double dm = 0.5 * (am + cm);
-    if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(dm > 0.0) ||
-      dm > detail::ThinDepth)
+    // Copies: the ends above stay in registers (their address would escape).
+    const SegmentEnd front = f, back = b;
+    dest = IntegrateSegment(length, front, back, EmissionModel::WilliamsMax, SegmentMethod::Exact);
+    t.Terms[m] = 0;
+    return;
+  }
+  t.A[m] = a;
+  t.D1[m] = d1;
+  t.Terms[m] = thinTerms(d1);
+  t.FrontR[m] = f.Color[0];
+  t.FrontG[m] = f.Color[1];
+  t.FrontB[m] = f.Color[2];
+  t.BackR[m] = b.Color[0];
+  t.BackG[m] = b.Color[1];
+  t.BackB[m] = b.Color[2];
+}
+}
+
+/// EvaluatePiece() for the resolved segments (lane i for segment i), then
+/// for the pieces of split ones (lane count + m for piece m).
+void SegmentBatch::EvaluateLanes(const TransferFunction& tf,
+  const IntegrationSettings& settings, const Arrays& jobs, int count, RGBA* out)
+{
+  (void)settings; // Williams-Max, exact (see Integrate())
+  const ThinArrays t = this->ThinLanes(count + this->NumPieces);
+  const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
+  const int* __restrict resolved = this->Resolved.data();
+  for (int i = 0; i < count; ++i)
+  {
+    if (resolved[i] == Skip)
     {
-      this->DestOf(piece.Dest, out) =
-        IntegrateSegment(piece.Length, f, b, settings.Emission, settings.Method);
-      terms[m] = 0;
+      t.Terms[i] = 0;
       continue;
     }
-    a[m] = am;
-    d1[m] = dm;
-    terms[m] = thinTerms(dm);
-    ++perTerms[terms[m] + 1];
-    for (int c = 0; c < 3; ++c)
-    {
-      front[c][m] = f.Color[c];
-      back[c][m] = b.Color[c];
-    }
+    EvaluatePiece(tf, resolved[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i], thinTerms, t,
+      i, out[i]);
+  }
+  const Piece* __restrict pieces = this->Pieces.data();
+  for (int m = 0; m < this->NumPieces; ++m)
+  {
+    EvaluatePiece(tf, pieces[m].Interval, pieces[m].S0, pieces[m].S1, pieces[m].Length, thinTerms,
+      t, count + m, this->SplitOut[m]);
   }
 }
 
 /**
- * The thin pieces grouped by number of terms (counting sort), their depths
- * contiguous, then each group Lanes at a time (lanes are independent: the
- * grouping does not change any result); the weights go back to the pieces'
- * lanes (W, Alpha).
+ * The thin lanes of the @p n pieces grouped by number of terms (counting
+ * sort), their depths contiguous, then each group Lanes at a time (lanes are
+ * independent: the grouping does not change any result). The weights W and
+ * alpha, in that order, overwrite A and D1 (copied before).
  */
-void SegmentBatch::ThinSeries()
+void SegmentBatch::ThinSeries(int n)
 {
   constexpr int maxOrder = detail::MaxThinOrder;
-  static_assert(maxOrder + 2 <= static_cast<int>(sizeof(PerTerms) / sizeof(int)), "term counts");
-  const int n = this->NumPieces;
   const ThinArrays t = this->ThinLanes(n);
-  int* __restrict perTerms = this->PerTerms;
-  for (int k = 0; k <= maxOrder; ++k)
+  // Counts per number of terms, in two interleaved tables (no chain of
+  // increments of one counter through memory).
+  int counts[2][maxOrder + 2] = {};
+  for (int m = 0; m < n; ++m)
   {
-    perTerms[k + 1] += perTerms[k];
+    ++counts[m & 1][t.Terms[m]];
   }
-  int groupStart[maxOrder + 2];
-  std::copy(perTerms, perTerms + maxOrder + 2, groupStart);
-  const int numThin = groupStart[maxOrder + 1];
-  // Sorted depths and weights: the lane arrays' Sorted* fields.
+  int* __restrict start = this->GroupStart;
+  start[0] = 0;
+  for (int k = 1; k <= maxOrder + 1; ++k)
+  {
+    start[k] = start[k - 1] + (k == 1 ? 0 : counts[0][k - 1] + counts[1][k - 1]);
+  }
+  int next[maxOrder + 2];
+  std::copy(start, start + maxOrder + 2, next);
   double* __restrict sa = t.SortedA;
   double* __restrict sd = t.SortedD1;
   int* __restrict order = this->Order.data();
   for (int m = 0; m < n; ++m)
   {
-    if (t.Terms[m] > 0)
+    const int terms = t.Terms[m];
+    if (terms > 0)
     {
-      const int pos = perTerms[t.Terms[m]]++;
+      const int pos = next[terms]++;
       order[pos] = m;
       sa[pos] = t.A[m];
       sd[pos] = t.D1[m];
     }
   }
-  // Padding after the last group: any valid thin segment.
+  const int numThin = start[maxOrder + 1];
   for (int l = 0; l < Lanes; ++l)
   {
-    sa[numThin + l] = 0.0;
+    sa[numThin + l] = 0.0; // padding after the last group: any valid thin segment
     sd[numThin + l] = 1.0 / 8.0;
   }
-  double* w = t.A;      // reused: the series' results in sorted order
-  double* alpha = t.D1; // (A and D1 were copied to sa, sd)
   for (int terms = 1; terms <= maxOrder; ++terms)
   {
-    const int first = groupStart[terms], last = groupStart[terms + 1];
+    const int first = start[terms], last = start[terms + 1];
     if (first < last)
     {
       ThinWilliamsMaxBlocks(terms, sa + first, sd + first, (last - first + Lanes - 1) / Lanes,
-        w + first, alpha + first);
+        t.A + first, t.D1 + first);
     }
   }
 }
 
-/// The thin pieces' RGBA from their weights, as ThinWeights() and IntegrateSegment().
-void SegmentBatch::WriteThin(RGBA* out)
+/// The thin lanes' RGBA from their weights, as ThinWeights() and
+/// IntegrateSegment(): lane m < @p count is segment m, lane count + m piece m.
+void SegmentBatch::WriteThin(int count, RGBA* out)
 {
-  const ThinArrays t = this->ThinLanes(this->NumPieces);
-  const int numThin = this->PerTerms[detail::MaxThinOrder + 1];
-  const Piece* __restrict pieces = this->Pieces.data();
+  const ThinArrays t = this->ThinLanes(count + this->NumPieces);
+  const int numThin = this->GroupStart[detail::MaxThinOrder + 1];
+  const int* __restrict order = this->Order.data();
+  RGBA* splitOut = this->SplitOut.data();
   for (int pos = 0; pos < numThin; ++pos)
   {
-    const int m = this->Order[pos];
+    const int m = order[pos];
     const double w = t.A[pos], alpha = t.D1[pos];
     const double wf = std::max(0.0, w);
     const double wb = std::max(0.0, alpha - w);
-    RGBA& o = this->DestOf(pieces[m].Dest, out);
+    RGBA& o = m < count ? out[m] : splitOut[m - count];
     o.A = alpha;
     o.R = wf * t.FrontR[m] + wb * t.BackR[m];
     o.G = wf * t.FrontG[m] + wb * t.BackG[m];
@@ -444,7 +470,6 @@ long long SegmentBatch::CompositeSplits(RGBA* out, int* pieces)
       pieces[split.Job] = count;
     }
   }
-  this->SplitOut.clear();
   return total;
 }
 }

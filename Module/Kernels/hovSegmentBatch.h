@@ -79,58 +79,61 @@ public:
   long long Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
     const SegmentJob* jobs, int count, RGBA* out, int* pieces = nullptr);
 
+  /// The pieces as lanes for the thin series (index = lane: segment i, then
+  /// the pieces of split segments): depths, colours at both ends, number of
+  /// terms (0: not thin); and the thin ones sorted by number of terms
+  /// (index = position in Order).
+  struct ThinArrays
+  {
+    double *A, *D1, *FrontR, *FrontG, *FrontB, *BackR, *BackG, *BackB, *SortedA, *SortedD1;
+    int* Terms;
+  };
+
 private:
-  /// A linear piece to integrate: a whole segment, or a piece of a split one.
+  /// A piece of a segment that crosses transfer-function nodes.
   struct Piece
   {
     double S0, S1, Length;
     int Interval;
-    int Dest; ///< >= 0: out[Dest]; < 0: SplitOut[-1 - Dest]
   };
   /// A segment split into Count pieces (SplitOut[First, First + Count)).
   struct Split
   {
     int Job, First, Count;
   };
-  /// The pieces as lanes for the thin series (index = piece): depths,
-  /// colours at both ends, number of terms (0: not thin); and the thin ones
-  /// sorted by number of terms (index = position in Order).
-  struct ThinArrays
-  {
-    double *A, *D1, *FrontR, *FrontG, *FrontB, *BackR, *BackG, *BackB, *SortedA, *SortedD1;
-    int* Terms;
-  };
   static constexpr int ThinFields = 10;
-  ThinArrays ThinLanes(int n);
+  static constexpr int Skip = -1000000; ///< Resolved: nothing to evaluate
 
   long long IntegrateScalar(const TransferFunction& tf, const IntegrationSettings& settings,
     const Arrays& jobs, int count, RGBA* out, int* pieces);
-  long long CollectPieces(
+  long long ResolveIntervals(
     const TransferFunction& tf, const Arrays& jobs, int count, RGBA* out, int* pieces);
   void SplitSegment(const TransferFunction& tf, int job, int k, double sFront, double sBack,
     double length);
-  void EvaluatePieces(const TransferFunction& tf, const IntegrationSettings& settings, RGBA* out);
-  void ThinSeries();
-  void WriteThin(RGBA* out);
+  ThinArrays ThinLanes(int n);
+  void EvaluateLanes(const TransferFunction& tf, const IntegrationSettings& settings,
+    const Arrays& jobs, int count, RGBA* out);
+  void ThinSeries(int n);
+  void WriteThin(int count, RGBA* out);
   long long CompositeSplits(RGBA* out, int* pieces);
   void AddPiece(const Piece& piece)
   {
     if (this->NumPieces == static_cast<int>(this->Pieces.size()))
     {
-      this->Pieces.resize(2 * this->Pieces.size() + 256); // grows only: none in steady state
+      this->Pieces.resize(2 * this->Pieces.size() + 64); // grows only: none in steady state
     }
     this->Pieces[this->NumPieces++] = piece;
   }
-  RGBA& DestOf(int dest, RGBA* out) { return dest >= 0 ? out[dest] : this->SplitOut[-1 - dest]; }
 
+  std::vector<int> Resolved; ///< per segment: its interval, or Skip
   std::vector<Piece> Pieces;
   int NumPieces = 0;
   std::vector<Split> Splits;
-  std::vector<RGBA> SplitOut;
+  std::vector<RGBA> SplitOut;    ///< per piece: its RGBA
   std::vector<double> ThinStore; ///< the ThinArrays' doubles, one array after the other
   std::vector<int> ThinTerms;    ///< their Terms
-  int PerTerms[24] = {};         ///< thin pieces per term count, then group starts
-  std::vector<int> Order;        ///< thin pieces (indices) grouped by number of terms
+  int GroupStart[24] = {};       ///< first position in Order per number of terms
+  std::vector<int> Order;        ///< thin lanes grouped by number of terms
   std::vector<double> JobS, JobL;        ///< SegmentJob input as arrays
   std::vector<int> JobK;
 };

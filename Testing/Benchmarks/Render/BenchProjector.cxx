@@ -12,7 +12,10 @@
 //
 // Usage: hovBenchProjector [--data DIR] [--frames N] [--size S] [--extent E]
 //                          [--mesh bracket|rt|all] [--order vis|pix|all]
-//                          [--tile PIXELS] [--dump DIR | --compare DIR]
+//                          [--tile PIXELS] [--threads N] [--dump DIR | --compare DIR]
+//
+// --threads 1 gives the CPU time of the work alone (idle TBB workers spin, which
+// adds CPU time that depends on the machine's load).
 #include "BenchRender.h"
 
 #include "vtkHighOrderVolumeMapper.h"
@@ -52,6 +55,7 @@ struct Args
   std::string Order = "all";
   std::string Dump, Compare;
   int TileSize = 0; // 0: the mapper's default
+  int Threads = 0;  // 0: vtkSMPTools' default
 };
 
 /// Max |difference| between @p img and the file @p path (or -1 if unreadable).
@@ -153,13 +157,19 @@ int main(int argc, char* argv[])
     else if (a == "--dump") args.Dump = argv[++i];
     else if (a == "--compare") args.Compare = argv[++i];
     else if (a == "--tile") args.TileSize = std::atoi(argv[++i]);
+    else if (a == "--threads") args.Threads = std::max(1, std::atoi(argv[++i]));
     else
     {
       std::cout << "Usage: " << argv[0]
                 << " [--data DIR] [--frames N] [--size S] [--extent E] [--mesh bracket|rt|all]\n"
-                   "          [--order vis|pix|all] [--tile PIXELS] [--dump DIR | --compare DIR]\n";
+                   "          [--order vis|pix|all] [--tile PIXELS] [--threads N]\n"
+                   "          [--dump DIR | --compare DIR]\n";
       return a == "--help" ? 0 : 2;
     }
+  }
+  if (args.Threads > 0)
+  {
+    vtkSMPTools::Initialize(args.Threads);
   }
   std::cout << "hovBenchProjector: " << opt.Size << "x" << opt.Size << ", " << opt.Frames
             << " rotating frames, " << vtkSMPTools::GetBackend() << " with "
