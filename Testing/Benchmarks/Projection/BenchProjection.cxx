@@ -26,6 +26,7 @@
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
 #include "vtkXMLUnstructuredGridReader.h"
 
@@ -93,10 +94,17 @@ struct Config
 };
 
 /// Render @p volume alone in @p win until the image is complete; seconds.
+/// (Every configuration stays in the renderer, only @p volume visible:
+/// removing a prop would release its graphics resources every frame.)
 double RenderOnce(vtkRenderWindow* win, vtkRenderer* ren, vtkVolume* volume)
 {
-  ren->RemoveAllViewProps();
-  ren->AddVolume(volume);
+  vtkCollectionSimpleIterator it;
+  vtkVolumeCollection* volumes = ren->GetVolumes();
+  volumes->InitTraversal(it);
+  while (vtkVolume* v = volumes->GetNextVolume(it))
+  {
+    v->SetVisibility(v == volume);
+  }
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   win->Render();
@@ -116,6 +124,11 @@ void TimeAll(vtkRenderWindow* win, vtkRenderer* ren, std::vector<Config>& config
   cam->SetPosition(c[0] + 1.0, c[1] - 2.0, c[2] + 1.5);
   cam->SetViewUp(0, 0, 1);
   ren->ResetCamera(bounds);
+  ren->RemoveAllViewProps();
+  for (Config& config : configs)
+  {
+    ren->AddVolume(config.Volume);
+  }
   for (Config& config : configs)
   {
     RenderOnce(win, ren, config.Volume); // warm-up: set-up, sort structures, shaders
