@@ -3,7 +3,8 @@
 
 #include "hovBernstein.h" // equispaced Lagrange -> Bernstein, de Casteljau
 
-#include <algorithm> // std::min, std::max
+#include <algorithm>  // std::min, std::max
+#include <functional> // the recursive search
 #include <cmath>     // std::abs, std::sqrt
 #include <limits>    // epsilon
 
@@ -98,20 +99,27 @@ int FaceDefinitions(const LagrangeBasis& b, FaceDef* f)
   }
 }
 
-/// Restrict the coefficients c[0], c[stride], ..., c[n stride] (Bernstein,
-/// degree n) to [y0, y1] in place.
-void RestrictStrided(double* c, int n, int stride, double y0, double y1)
+/// Split a (du+1) x (dv+1) net (row a along u, nv = dv + 1 per row) at the
+/// middle of u (@p alongU) or v into @p left and @p right (one de Casteljau
+/// subdivision per line).
+void SplitStrided(const double* net, double* left, double* right, int du, int dv, int nv, bool alongU)
 {
-  BernsteinPolynomial p;
-  p.Degree = n;
-  for (int i = 0; i <= n; ++i)
+  const int lines = alongU ? nv : du + 1, degree = alongU ? du : dv;
+  const int stride = alongU ? nv : 1, step = alongU ? 1 : nv;
+  for (int l = 0; l < lines; ++l)
   {
-    p.B[i] = c[i * stride];
-  }
-  p = RestrictBernstein(p, y0, y1);
-  for (int i = 0; i <= n; ++i)
-  {
-    c[i * stride] = p.B[i];
+    BernsteinPolynomial p, a, b;
+    p.Degree = degree;
+    for (int i = 0; i <= degree; ++i)
+    {
+      p.B[i] = net[l * step + i * stride];
+    }
+    SubdivideBernstein(p, 0.5, &a, &b);
+    for (int i = 0; i <= degree; ++i)
+    {
+      left[l * step + i * stride] = a.B[i];
+      right[l * step + i * stride] = b.B[i];
+    }
   }
 }
 
@@ -337,26 +345,16 @@ bool SameCrossing(const FaceCrossing& a, const FaceCrossing& b, double minSize)
 }
 
 /// Examine one sub-patch: 0 excluded, 1 done (crossing appended if found), 2 split.
-int Examine(const FaceProblem& prob, const double* root0, const double* root1,
-  const SubPatch& s, const FaceSearchSettings& settings, int faceIndex,
-  std::vector<FaceCrossing>& out)
+/// @p net: the sub-patch's two projected nets (component c at net + c * n).
+int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
+  const FaceSearchSettings& settings, int faceIndex, std::vector<FaceCrossing>& out)
 {
   const CurvedFacePatch& face = *prob.Face;
   const int du = face.DegreeU, dv = face.DegreeV, nv = dv + 1, n = (du + 1) * nv;
-  double net[2][NetSize];
-  std::copy(root0, root0 + n, net[0]);
-  std::copy(root1, root1 + n, net[1]);
+  const double* net[2] = { netIn, netIn + n };
   Interval range[2], deriv[2][2];
   for (int c = 0; c < 2; ++c)
   {
-    for (int b = 0; b < nv; ++b)
-    {
-      RestrictStrided(net[c] + b, du, nv, s.U0, s.U1);
-    }
-    for (int a = 0; a <= du; ++a)
-    {
-      RestrictStrided(net[c] + a * nv, dv, 1, s.V0, s.V1);
-    }
     range[c] = { net[c][0], net[c][0] };
     deriv[c][0] = deriv[c][1] = { 1e300, -1e300 };
     for (int a = 0; a <= du; ++a)
@@ -445,40 +443,53 @@ int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces,
     root[1][k] = Dot(prob.E2, rel);
   }
   const size_t first = out.size();
-  SubPatch stack[96];
-  int top = 0, examined = 0;
+  // Depth-first recursion with the sub-patch nets in a workspace: slot
+  // (depth, child) holds 2 n values; a child's net is one de Casteljau split
+  // of its parent's (no restriction from the root).
+  const int maxDepth = 2 * 23 + 2;
+  std::vector<double> work(static_cast<size_t>(2 * n) * 2 * (maxDepth + 1));
+  std::copy(root[0], root[0] + n, work.begin());
+  std::copy(root[1], root[1] + n, work.begin() + n);
+  int examined = 0;
   bool complete = true;
-  stack[top++] = { 0.0, 1.0, 0.0, 1.0 };
-  while (top > 0)
-  {
-    const SubPatch s = stack[--top];
+  const int nv = face.DegreeV + 1;
+  std::function<void(int, int, const SubPatch&)> visit = [&](int depth, int child, const SubPatch& s) {
+    double* net = &work[static_cast<size_t>(2 * n) * (2 * depth + child)];
     if (++examined > settings.MaxPatches)
     {
       complete = false;
-      break;
+      return;
     }
-    if (Examine(prob, root[0], root[1], s, settings, f, out) != 2)
+    if (Examine(prob, net, s, settings, f, out) != 2)
     {
-      continue;
+      return;
     }
-    if (top + 2 > 96)
+    if (depth + 1 > maxDepth)
     {
       complete = false;
-      continue;
+      return;
     }
-    if (s.U1 - s.U0 >= s.V1 - s.V0)
+    double* left = &work[static_cast<size_t>(2 * n) * (2 * (depth + 1))];
+    double* right = left + 2 * n;
+    const bool alongU = s.U1 - s.U0 >= s.V1 - s.V0;
+    for (int c = 0; c < 2; ++c)
+    {
+      SplitStrided(net + c * n, left + c * n, right + c * n, face.DegreeU, face.DegreeV, nv, alongU);
+    }
+    if (alongU)
     {
       const double m = 0.5 * (s.U0 + s.U1);
-      stack[top++] = { m, s.U1, s.V0, s.V1 };
-      stack[top++] = { s.U0, m, s.V0, s.V1 };
+      visit(depth + 1, 0, { s.U0, m, s.V0, s.V1 });
+      visit(depth + 1, 1, { m, s.U1, s.V0, s.V1 });
     }
     else
     {
       const double m = 0.5 * (s.V0 + s.V1);
-      stack[top++] = { s.U0, s.U1, m, s.V1 };
-      stack[top++] = { s.U0, s.U1, s.V0, m };
+      visit(depth + 1, 0, { s.U0, s.U1, s.V0, m });
+      visit(depth + 1, 1, { s.U0, s.U1, m, s.V1 });
     }
-  }
+  };
+  visit(0, 0, { 0.0, 1.0, 0.0, 1.0 });
   // Merge repeats (a root on a split line is found from both sides).
   size_t kept = first;
   for (size_t i = first; i < out.size(); ++i)

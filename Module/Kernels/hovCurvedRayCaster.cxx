@@ -132,7 +132,8 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
       ok = ok && std::isfinite(cell.Scalars[i]);
     }
     const LagrangeCellView view{ &this->Bases[basis], cell.Points.data(), cell.Scalars.data() };
-    if (!ok || !BuildCurvedFaces(view, cell.Faces) || !ComputeCellDerivativeBounds(view, cell.Bounds))
+    cell.BoundsOnce = std::make_unique<std::once_flag>();
+    if (!ok || !BuildCurvedFaces(view, cell.Faces))
     {
       skip(c, "point id out of range or non-finite point/scalar");
       continue;
@@ -236,6 +237,15 @@ void CurvedRayCaster::CollectCandidates(
   }
 }
 
+const CellDerivativeBounds& CurvedRayCaster::CellBounds(const Cell& cell) const
+{
+  std::call_once(*cell.BoundsOnce, [&]() {
+    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+    ComputeCellDerivativeBounds(view, cell.Bounds);
+  });
+  return cell.Bounds;
+}
+
 RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3], double tMin,
   double tMax, const TransferFunction& tf, const CurvedSegmentSettings& settings,
   double* errorEstimate, CurvedRayStats* stats) const
@@ -276,7 +286,7 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     const Cell& cell = this->Cells[s.Cell];
     const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
     const CurvedSegmentResult r = IntegrateCurvedSegment(
-      view, cell.Bounds, tf, origin, direction, s.T0, s.T1, s.PC0, settings);
+      view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, settings);
     error += (1.0 - accum.A) * r.ErrorEstimate;
     CompositeBehind(accum, r.Color);
     ++st.Segments;

@@ -14,10 +14,12 @@
  * TraceRay from vtkSMPTools::For).
  *
  * Build(): per cell, its nodes gathered (coordinates, scalars), its
- * boundary patches (BuildCurvedFaces), its second-derivative bounds
- * (ComputeCellDerivativeBounds) and its bounding box (the patches' control
- * nets: contains the curved cell); one LagrangeBasis per distinct (type,
- * orders, node count). BVH: binary, split at the median centroid along the
+ * boundary patches (BuildCurvedFaces) and its bounding box (the patches'
+ * control nets: contains the curved cell); one LagrangeBasis per distinct
+ * (type, orders, node count). The cell's second-derivative bounds
+ * (ComputeCellDerivativeBounds, the costly part: ~1 ms for an order-4
+ * tetrahedron) are computed on the first ray that needs them
+ * (std::call_once), so cells no ray reaches cost nothing. BVH: binary, split at the median centroid along the
  * longest axis of the centroids' box, leaves of <= 4 cells.
  * TraceRay(): the cells whose boxes the ray meets (slab test, front to back
  * traversal), their inside intervals, sorted by entry; segments are
@@ -29,8 +31,8 @@
  * cannot store, and point ids out of range skip the cell (counted, with the
  * first message kept); the rest renders.
  *
- * Thread safety: Build() is not thread safe; TraceRay() is (const, its
- * scratch on the stack / in local vectors).
+ * Thread safety: Build() is not thread safe; TraceRay() is (const; the
+ * lazily computed bounds are guarded by one std::once_flag per cell).
  * @sa hovCurvedRayCell.h, hovCurvedSegment.h, hovLagrangeBasis.h
  */
 #ifndef hovCurvedRayCaster_h
@@ -44,6 +46,8 @@
 #include "hovLagrangeBasis.h"
 
 #include <cstdint> // point ids
+#include <memory>  // per-cell once flags
+#include <mutex>   // std::call_once
 #include <string>  // Build() messages
 #include <vector>  // mesh storage
 
@@ -104,8 +108,11 @@ private:
     std::vector<double> Points;
     std::vector<double> Scalars;
     CurvedCellFaces Faces;
-    CellDerivativeBounds Bounds;
+    /// Computed on first use by TraceRay (std::call_once: thread safe).
+    mutable CellDerivativeBounds Bounds;
+    mutable std::unique_ptr<std::once_flag> BoundsOnce;
   };
+  const CellDerivativeBounds& CellBounds(const Cell& cell) const;
   struct Node
   {
     double Box[6];
