@@ -31,6 +31,17 @@
  * cannot store, and point ids out of range skip the cell (counted, with the
  * first message kept); the rest renders.
  *
+ * Measured (TestCurvedRayCaster, TestLagrangeDatasets; GCC 12 Release):
+ * against a whole-ray reference (inside intervals by bisection, each
+ * integrated by the long-double polynomial-ray reference) on 2x2x2 meshes of
+ * order-2/3 hexahedra: max RGBA error 5.6e-16 (affine), 4.7e-16 (curved map
+ * x = X + 0.3 Y^2), 8.9e-16 (non-convex: one cell removed, rays re-enter);
+ * real order-4 datasets: every cell usable, error estimates <= 1.5e-9.
+ * Cost (unoptimised, single thread, machine load 7-10 on 2 cores): Build
+ * 0.15 s for 192 Q4 hexahedra, 2.4 s for 3790 P4 tetrahedra (face nets);
+ * 13-75 ms per ray (2-7 segments): the face search (Newton on the full
+ * cell shape functions) and the first-use derivative bounds dominate.
+ *
  * Thread safety: Build() is not thread safe; TraceRay() is (const; the
  * lazily computed bounds are guarded by one std::once_flag per cell).
  * @sa hovCurvedRayCell.h, hovCurvedSegment.h, hovLagrangeBasis.h
