@@ -179,7 +179,7 @@ bool SameCrossing(const FaceCrossing& a, const FaceCrossing& b, double minSize)
 /// Examine one sub-patch: 0 excluded, 1 done (crossing appended if found), 2 split.
 /// @p net: the sub-patch's two projected nets (component c at net + c * n).
 int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
-  const FaceSearchSettings& settings, int faceIndex, std::vector<FaceCrossing>& out)
+  const FaceSearchSettings& settings, int faceIndex, std::vector<FaceCrossing>& out, bool& splitU)
 {
   const CurvedFacePatch& face = *prob.Face;
   const int du = face.DegreeU, dv = face.DegreeV, nv = dv + 1, n = (du + 1) * nv;
@@ -218,7 +218,18 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
   }
   const Interval ad = Mul(deriv[0][0], deriv[1][1]), bc = Mul(deriv[0][1], deriv[1][0]);
   const bool unique = (ad.Lo - bc.Hi > 0.0) || (ad.Hi - bc.Lo < 0.0);
-  const bool small = std::max(s.U1 - s.U0, s.V1 - s.V0) <= settings.MinSize;
+  // Split where h varies most (a face parallel to the ray varies along one
+  // direction only: splitting the other would multiply sub-patches for
+  // nothing); a direction already at MinSize, or along which h varies by
+  // less than the exclusion margin, is not split.
+  const double gu = std::max(std::max(std::abs(deriv[0][0].Lo), std::abs(deriv[0][0].Hi)),
+    std::max(std::abs(deriv[1][0].Lo), std::abs(deriv[1][0].Hi)));
+  const double gv = std::max(std::max(std::abs(deriv[0][1].Lo), std::abs(deriv[0][1].Hi)),
+    std::max(std::abs(deriv[1][1].Lo), std::abs(deriv[1][1].Hi)));
+  const bool canU = s.U1 - s.U0 > settings.MinSize && gu * face.DegreeU > margin;
+  const bool canV = s.V1 - s.V0 > settings.MinSize && gv * face.DegreeV > margin;
+  splitU = canU && (!canV || gu >= gv);
+  const bool small = !canU && !canV;
   if (!unique && !small)
   {
     return 2;
@@ -292,7 +303,8 @@ int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces,
       complete = false;
       return;
     }
-    if (Examine(prob, net, s, settings, f, out) != 2)
+    bool alongU = true;
+    if (Examine(prob, net, s, settings, f, out, alongU) != 2)
     {
       return;
     }
@@ -303,7 +315,6 @@ int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces,
     }
     double* left = &work[static_cast<size_t>(2 * n) * (2 * (depth + 1))];
     double* right = left + 2 * n;
-    const bool alongU = s.U1 - s.U0 >= s.V1 - s.V0;
     for (int c = 0; c < 2; ++c)
     {
       SplitStrided(net + c * n, left + c * n, right + c * n, face.DegreeU, face.DegreeV, nv, alongU);

@@ -37,11 +37,14 @@
  * order-2/3 hexahedra: max RGBA error 5.6e-16 (affine), 4.7e-16 (curved map
  * x = X + 0.3 Y^2), 8.9e-16 (non-convex: one cell removed, rays re-enter);
  * real order-4 datasets: every cell usable, error estimates <= 1.5e-9.
- * Cost (unoptimised, single thread, machine load 7-10 on 2 cores): Build
- * 0.15 s for 192 Q4 hexahedra, 2.4 s for 3790 P4 tetrahedra (face nets);
- * 13-75 ms per ray (2-7 segments): the face search (Newton on the full
- * cell shape functions) and the first-use derivative bounds dominate.
- *
+ * Cost (unoptimised, single thread, machine load 4-6 on 2 cores): Build
+ * 0.04 s for 192 Q4 hexahedra, 1.6 s for 3790 P4 tetrahedra (face nets);
+ * ~1.2 ms per ray on the Q4 plate seen along its extrusion (2 segments),
+ * 15-50 ms per ray through the P4 T-junction (~7 segments, ~10x more
+ * candidate cells): the face search (Newton on the full cell shape
+ * functions), the enclosure's Taylor-model pieces and the first-use
+ * derivative bounds dominate (see the report of issue 6's kernel session).
+
  * Thread safety: Build() is not thread safe; TraceRay() is (const; the
  * lazily computed bounds are guarded by one std::once_flag per cell).
  * @sa hovCurvedRayCell.h, hovCurvedSegment.h, hovLagrangeBasis.h
