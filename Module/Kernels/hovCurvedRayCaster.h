@@ -43,7 +43,7 @@
  * 15-50 ms per ray through the P4 T-junction (~7 segments, ~10x more
  * candidate cells): the face search (Newton on the full cell shape
  * functions), the enclosure's Taylor-model pieces and the first-use
- * derivative bounds dominate (see the report of issue 6's kernel session).
+ * derivative bounds dominate.
 
  * Thread safety: Build() is not thread safe; TraceRay() is (const; the
  * lazily computed bounds are guarded by one std::once_flag per cell).
