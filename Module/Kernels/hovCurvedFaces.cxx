@@ -3,7 +3,8 @@
 
 #include "hovBernstein.h" // equispaced Lagrange -> Bernstein, de Casteljau
 
-#include <algorithm> // std::min, std::max
+#include <algorithm>  // std::min, std::max
+#include <functional> // the recursive search
 #include <cmath>     // std::abs, std::sqrt
 #include <limits>    // epsilon
 
@@ -19,99 +20,27 @@ constexpr double AcceptSlack = 1e-9;
 /// Crossings of one face closer than this in (u, v) are one crossing.
 constexpr double MergeDistance = 1e-9;
 
-struct FaceDef
+/// Split a (du+1) x (dv+1) net (row a along u, nv = dv + 1 per row) at the
+/// middle of u (@p alongU) or v into @p left and @p right (one de Casteljau
+/// subdivision per line).
+void SplitStrided(const double* net, double* left, double* right, int du, int dv, int nv, bool alongU)
 {
-  double C[4][3]; // P00, P10, P11, P01
-  bool Triangle;
-  int DegU, DegV;
-};
-
-/// The face patches of the cell's shape and their degrees (triangles as 3 quads).
-int FaceDefinitions(const LagrangeBasis& b, FaceDef* f)
-{
-  const int* o = b.GetOrder();
-  const bool special = b.IsSpecial();
-  auto quad = [](FaceDef& d, const double (&c)[4][3], int du, int dv) {
-    std::copy(&c[0][0], &c[0][0] + 12, &d.C[0][0]);
-    d.Triangle = false;
-    d.DegU = du;
-    d.DegV = dv;
-  };
-  // A triangle as 3 non-degenerate quads: corner, edge midpoint, centroid,
-  // other edge midpoint (a collapsed quad would be singular at its apex).
-  auto tri = [](FaceDef* d, const double (&c)[3][3], int n) {
-    for (int k = 0; k < 3; ++k)
-    {
-      const double* a = c[k];
-      const double* b = c[(k + 1) % 3];
-      const double* z = c[(k + 2) % 3];
-      for (int i = 0; i < 3; ++i)
-      {
-        d[k].C[0][i] = a[i];
-        d[k].C[1][i] = 0.5 * (a[i] + b[i]);
-        d[k].C[2][i] = (a[i] + b[i] + z[i]) / 3.0;
-        d[k].C[3][i] = 0.5 * (a[i] + z[i]);
-      }
-      d[k].Triangle = true;
-      d[k].DegU = d[k].DegV = n;
-    }
-  };
-  switch (b.GetShape())
+  const int lines = alongU ? nv : du + 1, degree = alongU ? du : dv;
+  const int stride = alongU ? nv : 1, step = alongU ? 1 : nv;
+  for (int l = 0; l < lines; ++l)
   {
-    case LagrangeShape::Hexahedron:
-      for (int axis = 0; axis < 3; ++axis)
-      {
-        const int a = (axis + 1) % 3, c = (axis + 2) % 3;
-        for (int side = 0; side < 2; ++side)
-        {
-          double q[4][3] = {};
-          const double uv[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
-          for (int k = 0; k < 4; ++k)
-          {
-            q[k][axis] = side;
-            q[k][a] = uv[k][0];
-            q[k][c] = uv[k][1];
-          }
-          quad(f[2 * axis + side], q, o[a], o[c]);
-        }
-      }
-      return 6;
-    case LagrangeShape::Wedge:
+    BernsteinPolynomial p, a, b;
+    p.Degree = degree;
+    for (int i = 0; i <= degree; ++i)
     {
-      const int p = special ? 3 : o[0], q = o[2];
-      tri(f, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, p);
-      tri(f + 3, { { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } }, p);
-      quad(f[6], { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 1 }, { 0, 0, 1 } }, p, q);
-      quad(f[7], { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 } }, p, q);
-      quad(f[8], { { 0, 1, 0 }, { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 1 } }, p, q);
-      return 9;
+      p.B[i] = net[l * step + i * stride];
     }
-    default:
+    SubdivideBernstein(p, 0.5, &a, &b);
+    for (int i = 0; i <= degree; ++i)
     {
-      const int n = special ? 4 : o[0];
-      tri(f, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, n);
-      tri(f + 3, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 } }, n);
-      tri(f + 6, { { 0, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
-      tri(f + 9, { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
-      return 12;
+      left[l * step + i * stride] = a.B[i];
+      right[l * step + i * stride] = b.B[i];
     }
-  }
-}
-
-/// Restrict the coefficients c[0], c[stride], ..., c[n stride] (Bernstein,
-/// degree n) to [y0, y1] in place.
-void RestrictStrided(double* c, int n, int stride, double y0, double y1)
-{
-  BernsteinPolynomial p;
-  p.Degree = n;
-  for (int i = 0; i <= n; ++i)
-  {
-    p.B[i] = c[i * stride];
-  }
-  p = RestrictBernstein(p, y0, y1);
-  for (int i = 0; i <= n; ++i)
-  {
-    c[i * stride] = p.B[i];
   }
 }
 
@@ -228,95 +157,6 @@ struct FaceProblem
 };
 }
 
-void FaceParametricPoint(
-  const CurvedFacePatch& f, double u, double v, double pc[3], double* dpcdu, double* dpcdv)
-{
-  for (int k = 0; k < 3; ++k)
-  {
-    pc[k] = f.P00[k] * (1 - u) * (1 - v) + f.P10[k] * u * (1 - v) + f.P01[k] * (1 - u) * v +
-      f.P11[k] * u * v;
-    if (dpcdu)
-    {
-      dpcdu[k] = (f.P10[k] - f.P00[k]) * (1 - v) + (f.P11[k] - f.P01[k]) * v;
-    }
-    if (dpcdv)
-    {
-      dpcdv[k] = (f.P01[k] - f.P00[k]) * (1 - u) + (f.P11[k] - f.P10[k]) * u;
-    }
-  }
-}
-
-bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
-{
-  out.Faces.clear();
-  if (!cell.Basis || !cell.Basis->IsInitialized() || !cell.Points)
-  {
-    return false;
-  }
-  out.Extent = LagrangeCellExtent(cell);
-  FaceDef defs[12];
-  const int count = FaceDefinitions(*cell.Basis, defs);
-  out.Faces.resize(count);
-  for (int k = 0; k < 3; ++k)
-  {
-    out.Bounds[2 * k] = 1e300;
-    out.Bounds[2 * k + 1] = -1e300;
-  }
-  for (int f = 0; f < count; ++f)
-  {
-    CurvedFacePatch& p = out.Faces[f];
-    const FaceDef& d = defs[f];
-    std::copy(d.C[0], d.C[0] + 3, p.P00);
-    std::copy(d.C[1], d.C[1] + 3, p.P10);
-    std::copy(d.C[2], d.C[2] + 3, p.P11);
-    std::copy(d.C[3], d.C[3] + 3, p.P01);
-    p.Triangle = d.Triangle;
-    p.DegreeU = d.DegU;
-    p.DegreeV = d.DegV;
-    const int nu = d.DegU + 1, nv = d.DegV + 1;
-    // Samples at the equispaced grid, then Lagrange -> Bernstein along u, then v.
-    std::vector<double> x(3 * nu * nv), y(3 * nu * nv, 0.0);
-    for (int i = 0; i < nu; ++i)
-    {
-      for (int j = 0; j < nv; ++j)
-      {
-        double pc[3];
-        FaceParametricPoint(p, static_cast<double>(i) / d.DegU, static_cast<double>(j) / d.DegV, pc);
-        EvaluateLagrangePosition(cell, pc, &x[3 * (nv * i + j)]);
-      }
-    }
-    for (int i = 0; i < nu; ++i)
-    {
-      const BernsteinPolynomial l = EquispacedLagrangeBernstein(d.DegU, i);
-      for (int a = 0; a < nu; ++a)
-        for (int j = 0; j < nv; ++j)
-          for (int c = 0; c < 3; ++c)
-            y[3 * (nv * a + j) + c] += l.B[a] * x[3 * (nv * i + j) + c];
-    }
-    p.Net.assign(3 * nu * nv, 0.0);
-    for (int j = 0; j < nv; ++j)
-    {
-      const BernsteinPolynomial l = EquispacedLagrangeBernstein(d.DegV, j);
-      for (int a = 0; a < nu; ++a)
-        for (int b = 0; b < nv; ++b)
-          for (int c = 0; c < 3; ++c)
-            p.Net[3 * (nv * a + b) + c] += l.B[b] * y[3 * (nv * a + j) + c];
-    }
-    for (size_t k = 0; k < p.Net.size(); ++k)
-    {
-      out.Bounds[2 * (k % 3)] = std::min(out.Bounds[2 * (k % 3)], p.Net[k]);
-      out.Bounds[2 * (k % 3) + 1] = std::max(out.Bounds[2 * (k % 3) + 1], p.Net[k]);
-    }
-  }
-  const double margin = FaceSearchSettings().NetMargin * out.Extent;
-  for (int k = 0; k < 3; ++k)
-  {
-    out.Bounds[2 * k] -= margin;
-    out.Bounds[2 * k + 1] += margin;
-  }
-  return true;
-}
-
 namespace
 {
 /// Sub-patch of a face: the two projected nets restricted to [U0,U1] x [V0,V1].
@@ -337,26 +177,16 @@ bool SameCrossing(const FaceCrossing& a, const FaceCrossing& b, double minSize)
 }
 
 /// Examine one sub-patch: 0 excluded, 1 done (crossing appended if found), 2 split.
-int Examine(const FaceProblem& prob, const double* root0, const double* root1,
-  const SubPatch& s, const FaceSearchSettings& settings, int faceIndex,
-  std::vector<FaceCrossing>& out)
+/// @p net: the sub-patch's two projected nets (component c at net + c * n).
+int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
+  const FaceSearchSettings& settings, int faceIndex, std::vector<FaceCrossing>& out, bool& splitU)
 {
   const CurvedFacePatch& face = *prob.Face;
   const int du = face.DegreeU, dv = face.DegreeV, nv = dv + 1, n = (du + 1) * nv;
-  double net[2][NetSize];
-  std::copy(root0, root0 + n, net[0]);
-  std::copy(root1, root1 + n, net[1]);
+  const double* net[2] = { netIn, netIn + n };
   Interval range[2], deriv[2][2];
   for (int c = 0; c < 2; ++c)
   {
-    for (int b = 0; b < nv; ++b)
-    {
-      RestrictStrided(net[c] + b, du, nv, s.U0, s.U1);
-    }
-    for (int a = 0; a <= du; ++a)
-    {
-      RestrictStrided(net[c] + a * nv, dv, 1, s.V0, s.V1);
-    }
     range[c] = { net[c][0], net[c][0] };
     deriv[c][0] = deriv[c][1] = { 1e300, -1e300 };
     for (int a = 0; a <= du; ++a)
@@ -388,7 +218,18 @@ int Examine(const FaceProblem& prob, const double* root0, const double* root1,
   }
   const Interval ad = Mul(deriv[0][0], deriv[1][1]), bc = Mul(deriv[0][1], deriv[1][0]);
   const bool unique = (ad.Lo - bc.Hi > 0.0) || (ad.Hi - bc.Lo < 0.0);
-  const bool small = std::max(s.U1 - s.U0, s.V1 - s.V0) <= settings.MinSize;
+  // Split where h varies most (a face parallel to the ray varies along one
+  // direction only: splitting the other would multiply sub-patches for
+  // nothing); a direction already at MinSize, or along which h varies by
+  // less than the exclusion margin, is not split.
+  const double gu = std::max(std::max(std::abs(deriv[0][0].Lo), std::abs(deriv[0][0].Hi)),
+    std::max(std::abs(deriv[1][0].Lo), std::abs(deriv[1][0].Hi)));
+  const double gv = std::max(std::max(std::abs(deriv[0][1].Lo), std::abs(deriv[0][1].Hi)),
+    std::max(std::abs(deriv[1][1].Lo), std::abs(deriv[1][1].Hi)));
+  const bool canU = s.U1 - s.U0 > settings.MinSize && gu * face.DegreeU > margin;
+  const bool canV = s.V1 - s.V0 > settings.MinSize && gv * face.DegreeV > margin;
+  splitU = canU && (!canV || gu >= gv);
+  const bool small = !canU && !canV;
   if (!unique && !small)
   {
     return 2;
@@ -445,40 +286,53 @@ int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces,
     root[1][k] = Dot(prob.E2, rel);
   }
   const size_t first = out.size();
-  SubPatch stack[96];
-  int top = 0, examined = 0;
+  // Depth-first recursion with the sub-patch nets in a workspace: slot
+  // (depth, child) holds 2 n values; a child's net is one de Casteljau split
+  // of its parent's (no restriction from the root).
+  const int maxDepth = 2 * 23 + 2;
+  std::vector<double> work(static_cast<size_t>(2 * n) * 2 * (maxDepth + 1));
+  std::copy(root[0], root[0] + n, work.begin());
+  std::copy(root[1], root[1] + n, work.begin() + n);
+  int examined = 0;
   bool complete = true;
-  stack[top++] = { 0.0, 1.0, 0.0, 1.0 };
-  while (top > 0)
-  {
-    const SubPatch s = stack[--top];
+  const int nv = face.DegreeV + 1;
+  std::function<void(int, int, const SubPatch&)> visit = [&](int depth, int child, const SubPatch& s) {
+    double* net = &work[static_cast<size_t>(2 * n) * (2 * depth + child)];
     if (++examined > settings.MaxPatches)
     {
       complete = false;
-      break;
+      return;
     }
-    if (Examine(prob, root[0], root[1], s, settings, f, out) != 2)
+    bool alongU = true;
+    if (Examine(prob, net, s, settings, f, out, alongU) != 2)
     {
-      continue;
+      return;
     }
-    if (top + 2 > 96)
+    if (depth + 1 > maxDepth)
     {
       complete = false;
-      continue;
+      return;
     }
-    if (s.U1 - s.U0 >= s.V1 - s.V0)
+    double* left = &work[static_cast<size_t>(2 * n) * (2 * (depth + 1))];
+    double* right = left + 2 * n;
+    for (int c = 0; c < 2; ++c)
+    {
+      SplitStrided(net + c * n, left + c * n, right + c * n, face.DegreeU, face.DegreeV, nv, alongU);
+    }
+    if (alongU)
     {
       const double m = 0.5 * (s.U0 + s.U1);
-      stack[top++] = { m, s.U1, s.V0, s.V1 };
-      stack[top++] = { s.U0, m, s.V0, s.V1 };
+      visit(depth + 1, 0, { s.U0, m, s.V0, s.V1 });
+      visit(depth + 1, 1, { m, s.U1, s.V0, s.V1 });
     }
     else
     {
       const double m = 0.5 * (s.V0 + s.V1);
-      stack[top++] = { s.U0, s.U1, m, s.V1 };
-      stack[top++] = { s.U0, s.U1, s.V0, m };
+      visit(depth + 1, 0, { s.U0, s.U1, s.V0, m });
+      visit(depth + 1, 1, { s.U0, s.U1, m, s.V1 });
     }
-  }
+  };
+  visit(0, 0, { 0.0, 1.0, 0.0, 1.0 });
   // Merge repeats (a root on a split line is found from both sides).
   size_t kept = first;
   for (size_t i = first; i < out.size(); ++i)

@@ -32,12 +32,16 @@
  *    most one zero (interval mean value theorem); Newton on the EXACT face
  *    map (shape functions, not the net) from the sub-patch centre must
  *    converge inside the sub-patch widened by 1e-9 (else split);
- *  - otherwise split at the middle of the longer side, down to MinSize =
- *    2^-22 (the uniqueness test fails only near a tangency, where the ray
- *    grazes the face): a sub-patch of that size that is not excluded
- *    reports its Newton result, or its centre if the net's image lies
- *    within GrazeTolerance (1e-8 x extent) of the ray (Grazing = true);
- *    MaxPatches bounds the work (Complete = false beyond).
+ *  - otherwise split at the middle of the side along which h varies most
+ *    (range of the derivative nets: a face parallel to the ray, e.g. the
+ *    side of an extruded mesh seen along the extrusion, varies along one
+ *    direction only and is split along it only), down to MinSize = 2^-22
+ *    or until h varies by less than the margin along the side (the
+ *    uniqueness test fails only near a tangency, where the ray grazes the
+ *    face, or on faces parallel to the ray): a sub-patch that cannot be
+ *    split and is not excluded reports its Newton result, or its centre if
+ *    the net's image lies within GrazeTolerance (1e-8 x extent) of the ray
+ *    (Grazing = true); MaxPatches bounds the work (Complete = false beyond).
  * The net's rounding (relative ~1e-12) is far below the margins, so the
  * exclusion and uniqueness decisions are those of exact arithmetic except
  * for sub-patches within ~1e-12 x extent of a decision boundary.

@@ -14,7 +14,7 @@
  *  3. each gap between consecutive candidates (tMin, crossings, tMax) is
  *     classified by its midpoint: inside iff InvertLagrangeGeometry
  *     (hovLagrangeCell.h, warm-started from the gap's end coordinates)
- *     converges there with DistanceOutside <= InsideSlack (1e-9);
+ *     converges there with DistanceOutside <= InsideSlack (1e-12);
  *  4. adjacent inside gaps merge.
  * A ray that leaves and re-enters the cell (curved faces) gets several
  * intervals; a grazing ray touching a face gives a crossing pair of (near)
@@ -68,7 +68,9 @@ struct CurvedRayInterval
 struct CurvedRaySettings
 {
   FaceSearchSettings Faces;
-  double InsideSlack = 1e-9;     ///< parametric distance outside still counted inside
+  /// Parametric distance outside still counted inside: far below the length of
+  /// any gap that matters (a 1e-9 gap at a bounding-box clip must stay outside).
+  double InsideSlack = 1e-12;
   double MergeRelative = 1e-12;  ///< crossings closer than this x extent (in x) are one
 };
 

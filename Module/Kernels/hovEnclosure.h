@@ -87,7 +87,7 @@ struct CellDerivativeBounds
  * Bounds of @p cell (geometry, and the field if cell.Scalars is set) over
  * the parametric domain widened by @p margin (max norm), from the tensor
  * Bernstein nets of x and f over sub-boxes of [-margin, 1+margin]^3 (one
- * for hexahedra; 3 x 3 (x 3) for wedges (tetrahedra), skipping those that
+ * for hexahedra; 2 x 2 (x 2) for wedges (tetrahedra), skipping those that
  * miss the widened domain, since the polynomials grow fast outside a
  * simplex); each net from samples at the equispaced grid of the cell's
  * degrees per direction (exact for these polynomials). Cost ~ (number of

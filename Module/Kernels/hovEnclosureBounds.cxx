@@ -15,7 +15,7 @@ namespace
 /// conversion (3 passes, degree <= 10) amplifies rounding by <= ~4e3 eps each.
 constexpr double BoundInflation = 1e-11;
 /// Sub-boxes per simplex direction for the bounds of tetrahedra and wedges.
-constexpr int SimplexSplits = 3;
+constexpr int SimplexSplits = 2;
 
 /// Degree of the cell's polynomials in each parametric direction (a bound).
 void TensorDegrees(const LagrangeBasis& b, int deg[3])
@@ -108,9 +108,33 @@ double SecondDerivativeBound(
   return factor * worst;
 }
 
+/// Restrict the net to [y0, y1] (box coordinates in [0, 1]) along dimension @p dim.
+void RestrictAlong(std::vector<double>& net, const int n[3], int comps, int dim, double y0, double y1)
+{
+  const int stride[3] = { 1, n[0], n[0] * n[1] };
+  const int other[2] = { (dim + 1) % 3, (dim + 2) % 3 };
+  for (int i = 0; i < n[other[0]]; ++i)
+    for (int j = 0; j < n[other[1]]; ++j)
+      for (int c = 0; c < comps; ++c)
+      {
+        const int base = i * stride[other[0]] + j * stride[other[1]];
+        BernsteinPolynomial line;
+        line.Degree = n[dim] - 1;
+        for (int a = 0; a < n[dim]; ++a)
+        {
+          line.B[a] = net[comps * (base + a * stride[dim]) + c];
+        }
+        line = RestrictBernstein(line, y0, y1);
+        for (int a = 0; a < n[dim]; ++a)
+        {
+          net[comps * (base + a * stride[dim]) + c] = line.B[a];
+        }
+      }
+}
+
 /// Fold one sub-box's nets (widths @p w) into the cell's bounds (maxima).
 void AccumulateBoxBounds(const std::vector<double>& net, const int n[3], int comps,
-  const double w[3], CellDerivativeBounds& out)
+  const double w[3], const double rootMaxAbs[4], CellDerivativeBounds& out)
 {
   for (int c = 0; c < comps; ++c)
   {
@@ -121,15 +145,16 @@ void AccumulateBoxBounds(const std::vector<double>& net, const int n[3], int com
       lo = std::min(lo, net[k]);
       hi = std::max(hi, net[k]);
     }
-    const double slack = BoundInflation * maxAbs;
+    const double slack = BoundInflation * std::max(maxAbs, rootMaxAbs[c]);
     for (int b = 0; b < 3; ++b)
     {
-      for (int e = 0; e < 3; ++e)
+      for (int e = b; e < 3; ++e) // symmetric: (e, b) mirrored
       {
         const double bound = SecondDerivativeBound(net, n, comps, c, b, e) / (w[b] * w[e]) *
             (1.0 + BoundInflation) + slack / (w[b] * w[e]);
         double& target = c < 3 ? out.Geometry[c][b][e] : out.Field[b][e];
         target = std::max(target, bound);
+        (c < 3 ? out.Geometry[c][e][b] : out.Field[e][b]) = target;
       }
     }
     if (c == 3)
@@ -193,11 +218,34 @@ bool ComputeCellDerivativeBounds(
   }
   out.FieldMin = 1e300;
   out.FieldMax = -1e300;
-  std::vector<double> net(static_cast<size_t>(comps) * n[0] * n[1] * n[2]);
+  // One net over the whole box (samples, then Lagrange -> Bernstein per
+  // direction); the sub-boxes' nets by exact de Casteljau restriction.
+  std::vector<double> root(static_cast<size_t>(comps) * n[0] * n[1] * n[2]);
+  for (int i2 = 0; i2 < n[2]; ++i2)
+    for (int i1 = 0; i1 < n[1]; ++i1)
+      for (int i0 = 0; i0 < n[0]; ++i0)
+      {
+        const double pc[3] = { -margin + full * i0 / deg[0], -margin + full * i1 / deg[1],
+          -margin + full * i2 / deg[2] };
+        basis.Interpolate(
+          pc, nodeValues.data(), comps, &root[comps * (i0 + n[0] * (i1 + n[1] * i2))], nullptr);
+      }
+  for (int dim = 0; dim < 3; ++dim)
+  {
+    ToBernsteinAlong(root, n, comps, dim);
+  }
+  // Rounding slack relative to the whole net (the sub-nets inherit its errors).
+  double rootMaxAbs[4] = { 0.0, 0.0, 0.0, 0.0 };
+  for (size_t k = 0; k < root.size(); ++k)
+  {
+    rootMaxAbs[k % comps] = std::max(rootMaxAbs[k % comps], std::abs(root[k]));
+  }
+  std::vector<double> net;
   for (int b2 = 0; b2 < split[2]; ++b2)
     for (int b1 = 0; b1 < split[1]; ++b1)
       for (int b0 = 0; b0 < split[0]; ++b0)
       {
+        const int b[3] = { b0, b1, b2 };
         const double w[3] = { full / split[0], full / split[1], full / split[2] };
         const double lo[3] = { -margin + b0 * w[0], -margin + b1 * w[1], -margin + b2 * w[2] };
         const double cornerSum = shape == LagrangeShape::Tetra ? lo[0] + lo[1] + lo[2]
@@ -207,20 +255,16 @@ bool ComputeCellDerivativeBounds(
         {
           continue; // the box misses the domain widened by margin
         }
-        for (int i2 = 0; i2 < n[2]; ++i2)
-          for (int i1 = 0; i1 < n[1]; ++i1)
-            for (int i0 = 0; i0 < n[0]; ++i0)
-            {
-              const double pc[3] = { lo[0] + w[0] * i0 / deg[0], lo[1] + w[1] * i1 / deg[1],
-                lo[2] + w[2] * i2 / deg[2] };
-              basis.Interpolate(
-                pc, nodeValues.data(), comps, &net[comps * (i0 + n[0] * (i1 + n[1] * i2))], nullptr);
-            }
+        net = root;
         for (int dim = 0; dim < 3; ++dim)
         {
-          ToBernsteinAlong(net, n, comps, dim);
+          if (split[dim] > 1)
+          {
+            RestrictAlong(net, n, comps, dim, static_cast<double>(b[dim]) / split[dim],
+              static_cast<double>(b[dim] + 1) / split[dim]);
+          }
         }
-        AccumulateBoxBounds(net, n, comps, w, out);
+        AccumulateBoxBounds(net, n, comps, w, rootMaxAbs, out);
       }
   if (cell.Scalars)
   {

@@ -1,0 +1,76 @@
+/**
+ * @class   vtkHighOrderRayCast
+ * @brief   CPU ray-cast render path for curved Lagrange cells (issue 6): the
+ *          VTK adapter of hov::CurvedRayCaster (Module/Kernels).
+ *
+ * SetInput() converts a vtkUnstructuredGrid (points, its cells' types,
+ * connectivity and the cell-data HigherOrderDegrees array, a point scalar
+ * array) into a hov::CurvedMeshInput and builds the caster: per cell its
+ * boundary patches and bounding box, one BVH over the cells. Cells that are
+ * not VTK Lagrange tetrahedra/hexahedra/wedges (71, 72, 73), or whose node
+ * count/degrees VTK cannot store, are skipped with one summary message.
+ * Render() traces one ray per pixel (vtkHighOrderViewRays::TracedPixelRay:
+ * OpenGL pixel centres, clipping, an optional opaque depth) with
+ * vtkSMPTools::For over rows; each ray's segments are categorized
+ * (E / PS / S), split at their located breakpoints and integrated exactly in
+ * depth (hovCurvedSegment.h), composited front to back. Output: premultiplied
+ * float RGBA, and optionally the per-pixel error estimate (ElVis's
+ * "pixel-exact" target is an estimate below 1e-3 per channel).
+ *
+ * Not wired into vtkHighOrderVolumeMapper yet (issue 6: a render mode of the
+ * mapper; this class is what that mode will call).
+ *
+ * Thread safety: SetInput() is not thread safe; Render() runs its own
+ * parallel loop and must not be called concurrently with SetInput().
+ * @sa hovCurvedRayCaster.h, vtkHighOrderViewRays
+ */
+#ifndef vtkHighOrderRayCast_h
+#define vtkHighOrderRayCast_h
+
+#include "hovCurvedRayCaster.h" // the caster
+#include "hovCurvedSegment.h"   // CurvedSegmentSettings
+
+#include "vtkType.h" // vtkMTimeType
+
+#include <string> // messages
+
+class vtkDataArray;
+class vtkHighOrderViewRays;
+class vtkUnstructuredGrid;
+
+namespace hov
+{
+class TransferFunction;
+}
+
+class vtkHighOrderRayCast
+{
+public:
+  /**
+   * Prepare @p grid with the point scalars @p scalars (component 0). Returns
+   * false if no cell is usable; @p message receives a summary of skipped
+   * cells or the reason for failure (empty if everything was usable).
+   */
+  bool SetInput(vtkUnstructuredGrid* grid, vtkDataArray* scalars, std::string* message);
+
+  /// Cells prepared / skipped by the last SetInput().
+  long long GetNumberOfCells() const { return this->Caster.GetNumberOfCells(); }
+  long long GetNumberOfSkippedCells() const { return this->Caster.GetNumberOfSkippedCells(); }
+
+  /**
+   * Trace every pixel of @p rays' viewport into @p rgba (4 floats per pixel,
+   * premultiplied, row j = 0 at the bottom) and, if given, @p error (1 float
+   * per pixel). @p depth (may be null): the OpenGL window depth per pixel of
+   * opaque geometry (1 = nothing). Returns false if SetInput() has not
+   * succeeded.
+   */
+  bool Render(const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
+    const hov::CurvedSegmentSettings& settings, float* rgba, float* error,
+    const float* depth) const;
+
+private:
+  hov::CurvedRayCaster Caster;
+  bool Ready = false;
+};
+
+#endif

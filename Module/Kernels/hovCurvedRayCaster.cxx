@@ -1,0 +1,306 @@
+// Per-ray volume rendering of curved Lagrange meshes: see hovCurvedRayCaster.h.
+#include "hovCurvedRayCaster.h"
+
+#include "hovCurvedRayCell.h"     // inside intervals
+#include "hovTransferFunction.h"  // TraceRay's table
+
+#include <algorithm> // std::nth_element, std::sort, std::min, std::max
+#include <cmath>     // std::isfinite
+
+namespace hov
+{
+namespace
+{
+/// Cells per BVH leaf.
+constexpr int LeafSize = 4;
+/// Intervals per ray and cell kept.
+constexpr int MaxIntervalsPerCell = 16;
+
+/// Ray parameter range [t0, t1] inside @p box, clipped to [tMin, tMax]; false if empty.
+bool SlabTest(const double box[6], const double o[3], const double d[3], double tMin, double tMax,
+  double& t0, double& t1)
+{
+  t0 = tMin;
+  t1 = tMax;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (d[k] == 0.0)
+    {
+      if (o[k] < box[2 * k] || o[k] > box[2 * k + 1])
+      {
+        return false;
+      }
+      continue;
+    }
+    double a = (box[2 * k] - o[k]) / d[k], b = (box[2 * k + 1] - o[k]) / d[k];
+    if (a > b)
+    {
+      std::swap(a, b);
+    }
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t0 <= t1;
+}
+
+void MergeBox(double into[6], const double box[6])
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    into[2 * k] = std::min(into[2 * k], box[2 * k]);
+    into[2 * k + 1] = std::max(into[2 * k + 1], box[2 * k + 1]);
+  }
+}
+
+/// One ray segment: an inside interval of one cell.
+struct Segment
+{
+  double T0, T1;
+  int Cell;
+  double PC0[3];
+};
+}
+
+bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
+{
+  this->Bases.clear();
+  this->Cells.clear();
+  this->CellOrder.clear();
+  this->Nodes.clear();
+  this->Skipped = 0;
+  std::string first;
+  auto skip = [&](std::int64_t c, const std::string& why) {
+    if (this->Skipped++ == 0)
+    {
+      first = "cell " + std::to_string(c) + ": " + why;
+    }
+  };
+  if (!input.Points || !input.Scalars || !input.CellTypes || !input.Offsets || !input.Connectivity)
+  {
+    if (message)
+    {
+      *message = "incomplete mesh input (points, scalars, cell types or connectivity missing)";
+    }
+    return false;
+  }
+  for (std::int64_t c = 0; c < input.NumberOfCells; ++c)
+  {
+    const int type = input.CellTypes[c];
+    const std::int64_t begin = input.Offsets[c], n = input.Offsets[c + 1] - begin;
+    const int* degrees = input.Degrees ? input.Degrees + 3 * c : nullptr;
+    if (type < 71 || type > 73)
+    {
+      skip(c, "type " + std::to_string(type) + " is not a Lagrange tetrahedron/hexahedron/wedge");
+      continue;
+    }
+    const LagrangeShape shape = static_cast<LagrangeShape>(type);
+    int basis = -1;
+    for (size_t b = 0; b < this->Bases.size() && basis < 0; ++b)
+    {
+      const LagrangeBasis& B = this->Bases[b];
+      const bool sameOrders = !degrees || shape == LagrangeShape::Tetra || B.IsSpecial() ||
+        (B.GetOrder()[0] == degrees[0] && B.GetOrder()[1] == degrees[1] && B.GetOrder()[2] == degrees[2]);
+      basis = (B.GetShape() == shape && B.GetNodeCount() == n && sameOrders) ? static_cast<int>(b) : -1;
+    }
+    if (basis < 0)
+    {
+      LagrangeBasis B;
+      std::string why;
+      if (!B.Initialize(shape, static_cast<int>(n), degrees, &why))
+      {
+        skip(c, why);
+        continue;
+      }
+      this->Bases.push_back(B);
+      basis = static_cast<int>(this->Bases.size()) - 1;
+    }
+    Cell cell;
+    cell.Basis = basis;
+    cell.Points.resize(3 * n);
+    cell.Scalars.resize(n);
+    bool ok = true;
+    for (std::int64_t i = 0; i < n && ok; ++i)
+    {
+      const std::int64_t id = input.Connectivity[begin + i];
+      ok = id >= 0 && id < input.NumberOfPoints;
+      for (int k = 0; k < 3 && ok; ++k)
+      {
+        cell.Points[3 * i + k] = input.Points[3 * id + k];
+        ok = std::isfinite(cell.Points[3 * i + k]);
+      }
+      cell.Scalars[i] = ok ? input.Scalars[id] : 0.0;
+      ok = ok && std::isfinite(cell.Scalars[i]);
+    }
+    const LagrangeCellView view{ &this->Bases[basis], cell.Points.data(), cell.Scalars.data() };
+    cell.BoundsOnce = std::make_unique<std::once_flag>();
+    if (!ok || !BuildCurvedFaces(view, cell.Faces))
+    {
+      skip(c, "point id out of range or non-finite point/scalar");
+      continue;
+    }
+    this->Cells.push_back(std::move(cell));
+  }
+  if (message)
+  {
+    *message = this->Skipped
+      ? std::to_string(this->Skipped) + " cell(s) skipped; first: " + first
+      : std::string();
+  }
+  if (this->Cells.empty())
+  {
+    return false;
+  }
+  std::vector<double> centroids(3 * this->Cells.size());
+  for (size_t c = 0; c < this->Cells.size(); ++c)
+  {
+    const double* b = this->Cells[c].Faces.Bounds;
+    for (int k = 0; k < 3; ++k)
+    {
+      centroids[3 * c + k] = 0.5 * (b[2 * k] + b[2 * k + 1]);
+    }
+    this->CellOrder.push_back(static_cast<int>(c));
+  }
+  this->BuildNode(0, static_cast<int>(this->Cells.size()), centroids);
+  std::copy(this->Nodes[0].Box, this->Nodes[0].Box + 6, this->Bounds);
+  return true;
+}
+
+int CurvedRayCaster::BuildNode(int first, int count, std::vector<double>& centroids)
+{
+  const int index = static_cast<int>(this->Nodes.size());
+  this->Nodes.emplace_back();
+  double box[6] = { 1e300, -1e300, 1e300, -1e300, 1e300, -1e300 };
+  double cbox[6] = { 1e300, -1e300, 1e300, -1e300, 1e300, -1e300 };
+  for (int i = first; i < first + count; ++i)
+  {
+    const int c = this->CellOrder[i];
+    MergeBox(box, this->Cells[c].Faces.Bounds);
+    const double p[6] = { centroids[3 * c], centroids[3 * c], centroids[3 * c + 1],
+      centroids[3 * c + 1], centroids[3 * c + 2], centroids[3 * c + 2] };
+    MergeBox(cbox, p);
+  }
+  std::copy(box, box + 6, this->Nodes[index].Box);
+  if (count <= LeafSize)
+  {
+    this->Nodes[index].First = first;
+    this->Nodes[index].Count = count;
+    return index;
+  }
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+  {
+    axis = (cbox[2 * k + 1] - cbox[2 * k] > cbox[2 * axis + 1] - cbox[2 * axis]) ? k : axis;
+  }
+  const int half = count / 2;
+  std::nth_element(this->CellOrder.begin() + first, this->CellOrder.begin() + first + half,
+    this->CellOrder.begin() + first + count,
+    [&](int a, int b) { return centroids[3 * a + axis] < centroids[3 * b + axis]; });
+  const int left = this->BuildNode(first, half, centroids);
+  const int right = this->BuildNode(first + half, count - half, centroids);
+  this->Nodes[index].Left = left;
+  this->Nodes[index].Right = right;
+  return index;
+}
+
+void CurvedRayCaster::CollectCandidates(
+  const double o[3], const double d[3], double tMin, double tMax, std::vector<int>& out) const
+{
+  out.clear();
+  if (this->Nodes.empty())
+  {
+    return;
+  }
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[stack[--top]];
+    double t0, t1;
+    if (!SlabTest(node.Box, o, d, tMin, tMax, t0, t1))
+    {
+      continue;
+    }
+    if (node.Left < 0)
+    {
+      for (int i = node.First; i < node.First + node.Count; ++i)
+      {
+        out.push_back(this->CellOrder[i]);
+      }
+      continue;
+    }
+    if (top + 2 <= 128)
+    {
+      stack[top++] = node.Right;
+      stack[top++] = node.Left;
+    }
+  }
+}
+
+const CellDerivativeBounds& CurvedRayCaster::CellBounds(const Cell& cell) const
+{
+  std::call_once(*cell.BoundsOnce, [&]() {
+    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+    ComputeCellDerivativeBounds(view, cell.Bounds);
+  });
+  return cell.Bounds;
+}
+
+RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3], double tMin,
+  double tMax, const TransferFunction& tf, const CurvedSegmentSettings& settings,
+  double* errorEstimate, CurvedRayStats* stats) const
+{
+  RGBA accum;
+  double error = 0.0;
+  CurvedRayStats st;
+  std::vector<int> candidates;
+  this->CollectCandidates(origin, direction, tMin, tMax, candidates);
+  st.CandidateCells = static_cast<int>(candidates.size());
+  std::vector<Segment> segments;
+  std::vector<FaceCrossing> scratch;
+  for (int c : candidates)
+  {
+    const Cell& cell = this->Cells[c];
+    double t0, t1;
+    if (!SlabTest(cell.Faces.Bounds, origin, direction, tMin, tMax, t0, t1))
+    {
+      continue;
+    }
+    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+    CurvedRayInterval iv[MaxIntervalsPerCell];
+    const int n = RayCurvedCellIntervals(
+      view, cell.Faces, origin, direction, t0, t1, iv, MaxIntervalsPerCell, {}, nullptr, &scratch);
+    for (int i = 0; i < n; ++i)
+    {
+      segments.push_back({ iv[i].T0, iv[i].T1, c, { iv[i].PC0[0], iv[i].PC0[1], iv[i].PC0[2] } });
+    }
+  }
+  std::sort(segments.begin(), segments.end(),
+    [](const Segment& a, const Segment& b) { return a.T0 < b.T0; });
+  for (const Segment& s : segments)
+  {
+    if (accum.A >= 1.0 - OpacityCutoff)
+    {
+      break;
+    }
+    const Cell& cell = this->Cells[s.Cell];
+    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+    const CurvedSegmentResult r = IntegrateCurvedSegment(
+      view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, settings);
+    error += (1.0 - accum.A) * r.ErrorEstimate;
+    CompositeBehind(accum, r.Color);
+    ++st.Segments;
+    st.Breakpoints += r.Breakpoints;
+    st.Converged = st.Converged && r.Converged;
+  }
+  if (errorEstimate)
+  {
+    *errorEstimate = error;
+  }
+  if (stats)
+  {
+    *stats = st;
+  }
+  return accum;
+}
+}
