@@ -11,19 +11,13 @@
 
 namespace hovStein
 {
-/// An interior face found by MatchBucket, with A's face's filtered plane.
-struct Matched
-{
-  FilteredPlane Plane; ///< if ModeA is FaceExact
-  vtkIdType A, B;
-  std::uint8_t FaceA, ModeA;
-};
-
-/// What MatchFaces finds in a chunk of buckets, in bucket order.
+/// What MatchFaces finds in a chunk of buckets (bucket order): its interior
+/// faces are written to the topology's arrays from First on (a bound: half the
+/// chunk's entries), its boundary entries (c * 8 + f) are listed.
 struct ChunkMatches
 {
-  std::vector<Matched> Interior;
-  std::vector<vtkIdType> Boundary; ///< entries c * 8 + f
+  vtkIdType First = 0, Count = 0;
+  std::vector<vtkIdType> Boundary;
 };
 
 namespace
@@ -116,11 +110,13 @@ bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
 
 /**
  * Matches the faces of one bucket (entries c*8+f with the same smallest id)
- * by their sorted corner ids; appends the interior faces (with their planes,
- * while the cells' data are in cache) and the boundary entries to @p out.
+ * by their sorted corner ids: writes the interior faces (with their filtered
+ * planes, while the cells' data are in cache) to @p t's arrays at
+ * out.First + out.Count on, and lists the boundary entries.
  */
 void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
-  std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>>& keyed, ChunkMatches& out)
+  std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>>& keyed, Topology& t,
+  ChunkMatches& out)
 {
   keyed.resize(m);
   for (vtkIdType i = 0; i < m; ++i)
@@ -145,12 +141,16 @@ void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
         OtherOutside(g, a, fa, b);
       if (interior)
       {
-        out.Interior.push_back({ FilteredPlane(), a, b, static_cast<std::uint8_t>(fa), mode });
+        const vtkIdType k = out.First + out.Count++;
+        t.A[k] = a;
+        t.B[k] = b;
+        t.FaceA[k] = static_cast<std::uint8_t>(fa);
+        t.ModeA[k] = mode;
         if (mode == FaceExact)
         {
-          vtkIdType t[3];
-          g.ExactTriple(a, fa, t);
-          out.Interior.back().Plane.Set(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]));
+          vtkIdType c[3];
+          g.ExactTriple(a, fa, c);
+          t.PlaneA[k].Set(g.Point(c[0]), g.Point(c[1]), g.Point(c[2]));
         }
       }
     }
@@ -196,10 +196,13 @@ void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<v
   }
 }
 
-/// MatchBucket on every bucket, in parallel over chunks of about equal numbers
-/// of faces (low point ids hold more faces: a face goes to its smallest id).
+/**
+ * MatchBucket on every bucket, in parallel over chunks of about equal numbers
+ * of faces (low point ids hold more faces: a face goes to its smallest id);
+ * sizes @p t's interior face arrays for the bound.
+ */
 void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
-  const std::vector<vtkIdType>& entries, std::vector<ChunkMatches>& chunks)
+  const std::vector<vtkIdType>& entries, Topology& t, std::vector<ChunkMatches>& chunks)
 {
   const vtkIdType numPoints = static_cast<vtkIdType>(start.size()) - 1;
   const vtkIdType numChunks = std::max<vtkIdType>(1, std::min<vtkIdType>(256, numPoints));
@@ -210,17 +213,26 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
       start.begin();
   }
   chunk[numChunks] = numPoints;
-  chunks.resize(numChunks);
+  chunks.assign(numChunks, ChunkMatches());
+  vtkIdType bound = 0;
+  for (vtkIdType k = 0; k < numChunks; ++k)
+  {
+    chunks[k].First = bound;
+    bound += (start[chunk[k + 1]] - start[chunk[k]]) / 2;
+  }
+  t.A.resize(bound);
+  t.B.resize(bound);
+  t.FaceA.resize(bound);
+  t.ModeA.resize(bound);
+  t.PlaneA.reset(new FilteredPlane[bound]); // default-initialised: touched by the matching threads
   vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
     std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
     for (vtkIdType k = k0; k < k1; ++k)
     {
-      ChunkMatches found; // local: chunks[k] shares cache lines with its neighbours
-      const vtkIdType numEntries = start[chunk[k + 1]] - start[chunk[k]];
-      found.Interior.reserve(numEntries / 2); // at most: no regrowth
+      ChunkMatches found = chunks[k]; // local: chunks[k] shares cache lines with its neighbours
       for (vtkIdType p = chunk[k]; p < chunk[k + 1]; ++p)
       {
-        MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], keyed, found);
+        MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], keyed, t, found);
       }
       chunks[k] = std::move(found);
     }
@@ -234,7 +246,7 @@ void Topology::Build(const Geometry& g)
   {
     std::vector<vtkIdType> start, entries;
     BucketFaces(g, start, entries);
-    MatchFaces(g, start, entries, chunks);
+    MatchFaces(g, start, entries, *this, chunks);
   }
   this->Collect(g, chunks);
   this->BuildCellFaces(g);
@@ -245,33 +257,26 @@ void Topology::Build(const Geometry& g)
 
 void Topology::Collect(const Geometry& g, const std::vector<ChunkMatches>& chunks)
 {
-  // In bucket order (deterministic), the chunks copied in parallel.
-  const vtkIdType numChunks = static_cast<vtkIdType>(chunks.size());
-  std::vector<vtkIdType> first(numChunks + 1, 0);
-  for (vtkIdType k = 0; k < numChunks; ++k)
+  // Close the gaps between the chunks' interior faces (in chunk order: a
+  // chunk moves down, never over a chunk not yet moved).
+  vtkIdType m = 0;
+  for (const ChunkMatches& chunk : chunks)
   {
-    first[k + 1] = first[k] + static_cast<vtkIdType>(chunks[k].Interior.size());
+    if (chunk.First != m)
+    {
+      const vtkIdType f = chunk.First, c = chunk.Count;
+      std::copy(this->A.begin() + f, this->A.begin() + f + c, this->A.begin() + m);
+      std::copy(this->B.begin() + f, this->B.begin() + f + c, this->B.begin() + m);
+      std::copy(this->FaceA.begin() + f, this->FaceA.begin() + f + c, this->FaceA.begin() + m);
+      std::copy(this->ModeA.begin() + f, this->ModeA.begin() + f + c, this->ModeA.begin() + m);
+      std::copy(this->PlaneA.get() + f, this->PlaneA.get() + f + c, this->PlaneA.get() + m);
+    }
+    m += chunk.Count;
   }
-  const vtkIdType m = first[numChunks];
   this->A.resize(m);
   this->B.resize(m);
   this->FaceA.resize(m);
   this->ModeA.resize(m);
-  this->PlaneA.reset(new FilteredPlane[m]); // default-initialised: touched by the copying threads
-  vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
-    for (vtkIdType k = k0; k < k1; ++k)
-    {
-      vtkIdType i = first[k];
-      for (const Matched& face : chunks[k].Interior)
-      {
-        this->A[i] = face.A;
-        this->B[i] = face.B;
-        this->FaceA[i] = face.FaceA;
-        this->ModeA[i] = face.ModeA;
-        this->PlaneA[i++] = face.Plane;
-      }
-    }
-  });
   const vtkIdType n = g.NumberOfCells;
   this->BoundaryFaces.assign(n, 0);
   for (const ChunkMatches& chunk : chunks)

@@ -67,7 +67,7 @@ struct Topology
   void Build(const Geometry& g);
 
 private:
-  /// A, B, FaceA, ModeA, PlaneA and BoundaryFaces from the matched chunks.
+  /// The matched chunks' interior faces made contiguous; BoundaryFaces.
   void Collect(const Geometry& g, const std::vector<ChunkMatches>& chunks);
   void BuildCellFaces(const Geometry& g);
   void BuildBoundary(const Geometry& g);
