@@ -150,7 +150,7 @@ vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdTyp
 }
 
 /// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
-void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v, bool buildPlanes)
+void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v)
 {
   std::vector<std::int8_t>& dir = this->Directions;
   const ViewFrame& f = v.Frame;
@@ -158,20 +158,12 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
   const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
-  if (buildPlanes)
-  {
-    this->InteriorPlanes.reset(new FilteredPlane[m]); // default-initialised
-  }
   const bool allOrdered = v.AllOrdered; // skips two random reads per face
   vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       if (!allOrdered && (!Ordered(v, t.A[i]) || !Ordered(v, t.B[i])))
       {
-        if (buildPlanes && t.ModeA[i] == FaceExact)
-        {
-          ExactSide(g, f, t.A[i], t.FaceA[i], &this->InteriorPlanes[i]); // for later views
-        }
         dir[i] = 0;
         continue;
       }
@@ -179,10 +171,10 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
       int side;
       if (t.ModeA[i] == FaceExact)
       {
-        side = buildPlanes ? 0 : this->InteriorPlanes[i].Side(x, f.Parallel);
+        side = t.PlaneA[i].Side(x, f.Parallel);
         if (side == 0) // not decided by the filter: the exact predicate
         {
-          side = ExactSide(g, f, t.A[i], t.FaceA[i], buildPlanes ? &this->InteriorPlanes[i] : nullptr);
+          side = ExactSide(g, f, t.A[i], t.FaceA[i], nullptr);
         }
       }
       else
@@ -416,9 +408,9 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   {
     return;
   }
-  this->FaceDirections(g, t, v, this->PlanesGeneration != t.Generation);
+  this->FaceDirections(g, t, v);
   this->CellPass(g, t, v, stats);
-  this->PlanesGeneration = t.Generation; // both kinds of planes are made
+  this->PlanesGeneration = t.Generation; // the boundary faces' planes are made
   this->Extra.clear();
   PairStats pairStats;
   this->Boundary.Edges(g, v, this->Faces, this->Extra, pairStats);

@@ -116,20 +116,18 @@ private:
   {
     vtkIdType FaceEdges = 0, Undecided = 0;
   };
-  void FaceDirections(const Geometry& g, const Topology& t, const View& v, bool buildPlanes);
+  void FaceDirections(const Geometry& g, const Topology& t, const View& v);
   void BoundaryRoles(const Geometry& g, const Topology& t, const View& v, bool buildPlanes);
   void CellPass(const Geometry& g, const Topology& t, const View& v, GraphStats& stats);
   void CellPart(const Geometry& g, const Topology& t, const View& v, vtkIdType c,
     BlockCounts& counts, std::vector<ViewFace>& undecided);
   void CollectFaces(const Topology& t, GraphStats& stats);
 
-  /// The filtered planes (hovSteinPlaneFilter.h) of the exact interior faces
-  /// (A's face) and boundary faces of the topology of generation
-  /// PlanesGeneration: made during the first view, from the points the exact
-  /// predicates read anyway (not in the set-up: a pass of its own through the
-  /// cells in face order cost more than it saves), by the threads that use
-  /// them (not zeroed on allocation).
-  std::unique_ptr<FilteredPlane[]> InteriorPlanes, BoundaryPlanes;
+  /// The filtered planes (hovSteinPlaneFilter.h) of the exact boundary faces
+  /// of the topology of generation PlanesGeneration: made during the first
+  /// view from the points its exact predicates read anyway, by the threads
+  /// that use them (not zeroed on allocation). Interior faces: Topology::PlaneA.
+  std::unique_ptr<FilteredPlane[]> BoundaryPlanes;
   unsigned long PlanesGeneration = 0;
   std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
   std::vector<std::uint8_t> Roles;     ///< per boundary face: its role in step 2 (0: none)

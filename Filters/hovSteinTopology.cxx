@@ -11,6 +11,15 @@
 
 namespace hovStein
 {
+/// What MatchFaces finds in a chunk of buckets (bucket order): its interior
+/// faces are written to the topology's arrays from First on (a bound: half the
+/// chunk's entries), its boundary entries (c * 8 + f) are listed.
+struct ChunkMatches
+{
+  vtkIdType First = 0, Count = 0;
+  std::vector<vtkIdType> Boundary;
+};
+
 namespace
 {
 /// Sorted corner ids of face f of cell c (triangles padded with -1 at the end).
@@ -99,9 +108,15 @@ bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
   return true;
 }
 
-/// Match the faces of one bucket (entries c*8+f with the same smallest id) in place.
-void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* flag,
-  std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>>& keyed)
+/**
+ * Matches the faces of one bucket (entries c*8+f with the same smallest id)
+ * by their sorted corner ids: writes the interior faces (with their filtered
+ * planes, while the cells' data are in cache) to @p t's arrays at
+ * out.First + out.Count on, and lists the boundary entries.
+ */
+void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
+  std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>>& keyed, Topology& t,
+  ChunkMatches& out)
 {
   keyed.resize(m);
   for (vtkIdType i = 0; i < m; ++i)
@@ -109,11 +124,6 @@ void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* fla
     keyed[i] = { FaceKey(g, e[i] >> 3, static_cast<int>(e[i] & 7)), e[i] };
   }
   std::sort(keyed.begin(), keyed.end());
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    e[i] = keyed[i].second;
-    flag[i] = 0;
-  }
   for (vtkIdType i = 0; i < m;)
   {
     vtkIdType j = i + 1;
@@ -121,24 +131,37 @@ void MatchBucket(const Geometry& g, vtkIdType* e, vtkIdType m, std::uint8_t* fla
     {
       ++j;
     }
+    bool interior = false;
     if (j == i + 2)
     {
-      const vtkIdType a = e[i] >> 3, b = e[i + 1] >> 3;
-      const int fa = static_cast<int>(e[i] & 7), fb = static_cast<int>(e[i + 1] & 7);
-      if (a != b && (g.FaceCode(a, fa) & 3) != FaceSkip && (g.FaceCode(b, fb) & 3) != FaceSkip &&
-        OtherOutside(g, a, fa, b))
+      const vtkIdType a = keyed[i].second >> 3, b = keyed[i + 1].second >> 3;
+      const int fa = static_cast<int>(keyed[i].second & 7), fb = static_cast<int>(keyed[i + 1].second & 7);
+      const std::uint8_t mode = g.FaceCode(a, fa) & 3;
+      interior = a != b && mode != FaceSkip && (g.FaceCode(b, fb) & 3) != FaceSkip &&
+        OtherOutside(g, a, fa, b);
+      if (interior)
       {
-        flag[i] = 1; // interior face: entry i + 1 is its partner
-        flag[i + 1] = 2;
+        const vtkIdType k = out.First + out.Count++;
+        t.A[k] = a;
+        t.B[k] = b;
+        t.FaceA[k] = static_cast<std::uint8_t>(fa);
+        t.ModeA[k] = mode;
+        if (mode == FaceExact)
+        {
+          vtkIdType c[3];
+          g.ExactTriple(a, fa, c);
+          t.PlaneA[k].Set(g.Point(c[0]), g.Point(c[1]), g.Point(c[2]));
+        }
       }
+    }
+    for (vtkIdType k = i; !interior && k < j; ++k)
+    {
+      out.Boundary.push_back(keyed[k].second);
     }
     i = j;
   }
 }
-}
 
-namespace
-{
 /**
  * The faces of the supported cells (entries c * 8 + f) bucketed by their
  * smallest corner id (counting sort): bucket p is entries[start[p],
@@ -173,13 +196,15 @@ void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<v
   }
 }
 
-/// MatchBucket on every bucket, in parallel over chunks of about equal numbers
-/// of faces (low point ids hold more faces: a face goes to its smallest id).
+/**
+ * MatchBucket on every bucket, in parallel over chunks of about equal numbers
+ * of faces (low point ids hold more faces: a face goes to its smallest id);
+ * sizes @p t's interior face arrays for the bound.
+ */
 void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
-  std::vector<vtkIdType>& entries, std::vector<std::uint8_t>& flags)
+  const std::vector<vtkIdType>& entries, Topology& t, std::vector<ChunkMatches>& chunks)
 {
   const vtkIdType numPoints = static_cast<vtkIdType>(start.size()) - 1;
-  flags.resize(entries.size());
   const vtkIdType numChunks = std::max<vtkIdType>(1, std::min<vtkIdType>(256, numPoints));
   std::vector<vtkIdType> chunk(numChunks + 1);
   for (vtkIdType k = 0; k <= numChunks; ++k)
@@ -188,12 +213,28 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
       start.begin();
   }
   chunk[numChunks] = numPoints;
+  chunks.assign(numChunks, ChunkMatches());
+  vtkIdType bound = 0;
+  for (vtkIdType k = 0; k < numChunks; ++k)
+  {
+    chunks[k].First = bound;
+    bound += (start[chunk[k + 1]] - start[chunk[k]]) / 2;
+  }
+  t.A.resize(bound);
+  t.B.resize(bound);
+  t.FaceA.resize(bound);
+  t.ModeA.resize(bound);
+  t.PlaneA.reset(new FilteredPlane[bound]); // default-initialised: touched by the matching threads
   vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
     std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
-    for (vtkIdType p = chunk[k0]; p < chunk[k1]; ++p)
+    for (vtkIdType k = k0; k < k1; ++k)
     {
-      MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], flags.data() + start[p],
-        keyed);
+      ChunkMatches found = chunks[k]; // local: chunks[k] shares cache lines with its neighbours
+      for (vtkIdType p = chunk[k]; p < chunk[k + 1]; ++p)
+      {
+        MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], keyed, t, found);
+      }
+      chunks[k] = std::move(found);
     }
   });
 }
@@ -201,53 +242,50 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
 
 void Topology::Build(const Geometry& g)
 {
-  std::vector<vtkIdType> start, entries;
-  BucketFaces(g, start, entries);
-  std::vector<std::uint8_t> flags;
-  MatchFaces(g, start, entries, flags);
-  this->Collect(g, entries, flags);
+  std::vector<ChunkMatches> chunks;
+  {
+    std::vector<vtkIdType> start, entries;
+    BucketFaces(g, start, entries);
+    MatchFaces(g, start, entries, *this, chunks);
+  }
+  this->Collect(g, chunks);
   this->BuildCellFaces(g);
   this->BuildBoundary(g);
   static std::atomic<unsigned long> generations(0);
   this->Generation = ++generations;
 }
 
-void Topology::Collect(
-  const Geometry& g, const std::vector<vtkIdType>& entries, const std::vector<std::uint8_t>& flags)
+void Topology::Collect(const Geometry& g, const std::vector<ChunkMatches>& chunks)
 {
-  // In bucket order (deterministic).
-  const vtkIdType n = g.NumberOfCells;
-  this->A.clear();
-  this->B.clear();
-  this->FaceA.clear();
-  this->BoundaryFaces.assign(n, 0);
-  const size_t numEntries = entries.size();
-  this->A.reserve(numEntries / 2);
-  this->B.reserve(numEntries / 2);
-  this->FaceA.reserve(numEntries / 2);
-  for (size_t i = 0; i < numEntries; ++i)
+  // Close the gaps between the chunks' interior faces (in chunk order: a
+  // chunk moves down, never over a chunk not yet moved).
+  vtkIdType m = 0;
+  for (const ChunkMatches& chunk : chunks)
   {
-    const vtkIdType c = entries[i] >> 3;
-    const int f = static_cast<int>(entries[i] & 7);
-    if (flags[i] == 1)
+    if (chunk.First != m)
     {
-      this->A.push_back(c);
-      this->B.push_back(entries[i + 1] >> 3);
-      this->FaceA.push_back(static_cast<std::uint8_t>(f));
+      const vtkIdType f = chunk.First, c = chunk.Count;
+      std::copy(this->A.begin() + f, this->A.begin() + f + c, this->A.begin() + m);
+      std::copy(this->B.begin() + f, this->B.begin() + f + c, this->B.begin() + m);
+      std::copy(this->FaceA.begin() + f, this->FaceA.begin() + f + c, this->FaceA.begin() + m);
+      std::copy(this->ModeA.begin() + f, this->ModeA.begin() + f + c, this->ModeA.begin() + m);
+      std::copy(this->PlaneA.get() + f, this->PlaneA.get() + f + c, this->PlaneA.get() + m);
     }
-    else if (flags[i] == 0)
+    m += chunk.Count;
+  }
+  this->A.resize(m);
+  this->B.resize(m);
+  this->FaceA.resize(m);
+  this->ModeA.resize(m);
+  const vtkIdType n = g.NumberOfCells;
+  this->BoundaryFaces.assign(n, 0);
+  for (const ChunkMatches& chunk : chunks)
+  {
+    for (vtkIdType e : chunk.Boundary)
     {
-      this->BoundaryFaces[c] |= static_cast<std::uint8_t>(1 << f);
+      this->BoundaryFaces[e >> 3] |= static_cast<std::uint8_t>(1 << (e & 7));
     }
   }
-  const vtkIdType numInterior = this->NumberOfInteriorFaces();
-  this->ModeA.resize(numInterior);
-  vtkSMPTools::For(0, numInterior, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      this->ModeA[i] = g.FaceCode(this->A[i], this->FaceA[i]) & 3;
-    }
-  });
   this->NumberOfBoundaryCells = 0;
   for (vtkIdType c = 0; c < n; ++c)
   {

@@ -19,20 +19,29 @@
 #ifndef hovSteinTopology_h
 #define hovSteinTopology_h
 
-#include "hovSteinGeometry.h" // Geometry
+#include "hovSteinGeometry.h"    // Geometry
+#include "hovSteinPlaneFilter.h" // FilteredPlane
 
 #include <cstdint> // std::uint8_t
+#include <memory>  // std::unique_ptr
 #include <vector>  // storage
 
 namespace hovStein
 {
+struct ChunkMatches; // what Build's face matching finds in a chunk of buckets
+
 struct Topology
 {
   /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
   std::vector<vtkIdType> A, B;
   std::vector<std::uint8_t> FaceA;
-  /// Per interior face: the mode of A's face (FaceCode & 3).
+  /// Per interior face: the mode of A's face (FaceCode & 3) and, for exact
+  /// faces, the filtered plane of its corners as Geometry::ExactTriple gives
+  /// them (hovSteinPlaneFilter.h: the per-view side test reads one contiguous
+  /// record instead of the cell's tables and points). The planes are made
+  /// while the faces are matched (the cells' data in cache).
   std::vector<std::uint8_t> ModeA;
+  std::unique_ptr<FilteredPlane[]> PlaneA;
   /// Per cell: its interior faces (CSR, in increasing interior face index) as
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
   std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
@@ -58,9 +67,8 @@ struct Topology
   void Build(const Geometry& g);
 
 private:
-  /// A, B, FaceA, ModeA and BoundaryFaces from the matched bucket entries.
-  void Collect(const Geometry& g, const std::vector<vtkIdType>& entries,
-    const std::vector<std::uint8_t>& flags);
+  /// The matched chunks' interior faces made contiguous; BoundaryFaces.
+  void Collect(const Geometry& g, const std::vector<ChunkMatches>& chunks);
   void BuildCellFaces(const Geometry& g);
   void BuildBoundary(const Geometry& g);
 };

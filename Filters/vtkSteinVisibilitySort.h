@@ -63,6 +63,11 @@
  * 0.032 s (1.7x), 625k 0.086 s (1.2x), 976k 0.11 s (1.0x), with a
  * view-independent set-up of 0.26 s at 976k. MULTITILED_MERGE took 0.27 s at
  * 13.7k and 1.15 s on the bracket (190-280x CCD), about 20 s at 976k.
+ * Since then the per-view work of ADJACENCY_GRAPH runs in parallel with
+ * persistent buffers and filtered face planes (same orders): interleaved with
+ * the previous version on the same loaded machine (load 5-7), the bracket
+ * re-sort takes 0.5-0.65x its time (medians of 50 re-sorts), RT 197k-976k
+ * about 0.5x; first sorts about the same (0.8-1.05x).
  *
  * MULTITILED_MERGE (HIAC 6, 6.1, 6.2 as published):
  * 1. Rough sort by each cell's rearmost depth (the Global Sorting List).
