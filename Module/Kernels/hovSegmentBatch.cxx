@@ -338,27 +338,119 @@ inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction&
   t.BackG[m] = b.Color[1];
   t.BackB[m] = b.Color[2];
 }
+
+/**
+ * EvaluatePiece() for the Lanes segments from @p i, all valid and in the
+ * same interior interval @p k (0 <= k < n - 1), side by side: per lane
+ * TransferFunction::Evaluate()'s operations on node k, then the depths and
+ * the thin test (std::min/max as (b < a ? b : a)/(a < b ? b : a), isfinite as
+ * x - x == 0), so each lane's values are the scalar code's. Writes the lanes
+ * and returns true only if every segment is thin (the caller takes the
+ * others one by one).
+ */
+inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction& tf, int k,
+  const SegmentBatch::Arrays& jobs, int i, const detail::ThinTermByExponent& thinTerms,
+  const SegmentBatch::ThinArrays& t)
+{
+  const double* x = tf.GetNodes().data();
+  const double x0 = x[k], width = x[k + 1] - x[k];
+  const TransferFunction::Node& node = tf.GetNode(k);
+  V4 s0, s1, length;
+  std::memcpy(&s0, jobs.SFront + i, sizeof(V4));
+  std::memcpy(&s1, jobs.SBack + i, sizeof(V4));
+  std::memcpy(&length, jobs.Length + i, sizeof(V4));
+  const V4 zero = {};
+  // ds = std::min(std::max(s - x0, 0.0), width) at both ends.
+  const V4 d0 = s0 - x0, d1s = s1 - x0;
+  const V4 above0 = d0 < 0.0 ? zero : d0, above1 = d1s < 0.0 ? zero : d1s;
+  const V4 ds0 = width < above0 ? zero + width : above0;
+  const V4 ds1 = width < above1 ? zero + width : above1;
+  const V4 tau0 = node.Tau + node.DTau * ds0;
+  const V4 tau1 = node.Tau + node.DTau * ds1;
+  const V4 depthFront = (tau0 < 0.0 ? zero : tau0) * length;
+  const V4 depthBack = (tau1 < 0.0 ? zero : tau1) * length;
+  const V4 a = detail::DepthCap < depthFront ? zero + detail::DepthCap : depthFront;
+  const V4 c = detail::DepthCap < depthBack ? zero + detail::DepthCap : depthBack;
+  const V4 d1 = 0.5 * (a + c);
+  const auto thin = (depthFront - depthFront == 0.0) & (depthBack - depthBack == 0.0) &
+    (d1 > 0.0) & (d1 <= detail::ThinDepth);
+  if (!(thin[0] & thin[1] & thin[2] & thin[3]))
+  {
+    return false;
+  }
+  std::memcpy(t.A + i, &a, sizeof(V4));
+  std::memcpy(t.D1 + i, &d1, sizeof(V4));
+  const double base[3] = { node.R, node.G, node.B };
+  const double slope[3] = { node.DR, node.DG, node.DB };
+  double* front[3] = { t.FrontR, t.FrontG, t.FrontB };
+  double* back[3] = { t.BackR, t.BackG, t.BackB };
+  for (int ch = 0; ch < 3; ++ch)
+  {
+    const V4 f = base[ch] + slope[ch] * ds0;
+    const V4 b = base[ch] + slope[ch] * ds1;
+    std::memcpy(front[ch] + i, &f, sizeof(V4));
+    std::memcpy(back[ch] + i, &b, sizeof(V4));
+  }
+  for (int l = 0; l < Lanes; ++l)
+  {
+    t.Terms[i + l] = thinTerms(d1[l]);
+  }
+  return true;
 }
 
-/// EvaluatePiece() for the resolved segments (lane i for segment i), then
-/// for the pieces of split ones (lane count + m for piece m).
+/**
+ * EvaluatePiece() for the resolved segments (lane i for segment i;
+ * resolved[i] == @p skip: none), Lanes at a time where they share an
+ * interior interval (EvaluateBlock()). Compiled also for AVX2.
+ */
+HOV_LANES_TARGET_CLONES
+void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
+  const SegmentBatch::Arrays& jobs, int count, const SegmentBatch::ThinArrays& t, RGBA* out)
+{
+  const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
+  const int last = tf.GetNumberOfNodes() - 2; // the last interior interval
+  int i = 0;
+  for (; i + Lanes <= count; i += Lanes)
+  {
+    const int k = resolved[i];
+    const bool same = (resolved[i + 1] == k) & (resolved[i + 2] == k) & (resolved[i + 3] == k);
+    if (same && k >= 0 && k <= last && EvaluateBlock(tf, k, jobs, i, thinTerms, t))
+    {
+      continue;
+    }
+    for (int l = i; l < i + Lanes; ++l)
+    {
+      if (resolved[l] == skip)
+      {
+        t.Terms[l] = 0;
+        continue;
+      }
+      EvaluatePiece(tf, resolved[l], jobs.SFront[l], jobs.SBack[l], jobs.Length[l], thinTerms, t,
+        l, out[l]);
+    }
+  }
+  for (; i < count; ++i)
+  {
+    if (resolved[i] == skip)
+    {
+      t.Terms[i] = 0;
+      continue;
+    }
+    EvaluatePiece(
+      tf, resolved[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i], thinTerms, t, i, out[i]);
+  }
+}
+}
+
+/// EvaluateSegments() (lane i for segment i), then EvaluatePiece() for the
+/// pieces of split ones (lane count + m for piece m).
 void SegmentBatch::EvaluateLanes(const TransferFunction& tf,
   const IntegrationSettings& settings, const Arrays& jobs, int count, RGBA* out)
 {
   (void)settings; // Williams-Max, exact (see Integrate())
   const ThinArrays t = this->ThinLanes(count + this->NumPieces);
   const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
-  const int* __restrict resolved = this->Resolved.data();
-  for (int i = 0; i < count; ++i)
-  {
-    if (resolved[i] == Skip)
-    {
-      t.Terms[i] = 0;
-      continue;
-    }
-    EvaluatePiece(tf, resolved[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i], thinTerms, t,
-      i, out[i]);
-  }
+  EvaluateSegments(tf, this->Resolved.data(), Skip, jobs, count, t, out);
   const Piece* __restrict pieces = this->Pieces.data();
   for (int m = 0; m < this->NumPieces; ++m)
   {
