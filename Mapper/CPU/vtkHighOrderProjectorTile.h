@@ -74,7 +74,7 @@ public:
     double RefScalar;
     glm::dvec2 Vertex[4]; ///< projected vertices (window coordinates)
     Box PixelBox;         ///< pixel centres of the projected bounding box
-    int Interval;         ///< transfer-function interval of the whole cell, or -2
+    int Interval; ///< transfer-function interval of the whole cell, or a search hint (hov::SegmentJob)
     bool Projectable;     ///< every vertex in front of the eye plane
   };
 

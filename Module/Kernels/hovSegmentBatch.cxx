@@ -14,6 +14,39 @@ using detail::EvaluateSegments;
 using detail::ThinWilliamsMaxBlocks;
 using detail::Lanes;
 
+namespace
+{
+/**
+ * TransferFunction::FindIntervalUpward(@p s) (@p up) or FindIntervalDownward(@p s)
+ * for a finite @p s, walking from the hint of @p interval (<= -3: interval
+ * -3 - interval is near s) if there is one: the largest k with X[k] <= s (or
+ * -1) does not depend on where the walk starts.
+ */
+inline int FindInterval(const TransferFunction& tf, double s, bool up, int interval)
+{
+  if (interval > -3)
+  {
+    return up ? tf.FindIntervalUpward(s) : tf.FindIntervalDownward(s);
+  }
+  const std::vector<double>& x = tf.GetNodes();
+  const int n = static_cast<int>(x.size());
+  int k = std::min(-3 - interval, n - 1);
+  while (k >= 0 && x[k] > s)
+  {
+    --k;
+  }
+  while (k + 1 < n && x[k + 1] <= s)
+  {
+    ++k;
+  }
+  while (!up && k >= 0 && x[k] >= s)
+  {
+    --k; // FindIntervalDownward: the largest k with X[k] < s
+  }
+  return k;
+}
+}
+
 long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
   const SegmentJob* jobs, int count, RGBA* out, int* pieces)
 {
@@ -107,7 +140,7 @@ long long SegmentBatch::ResolveIntervals(
       {
         // OnePieceInterval(), inline; the walk starts from the same interval.
         const bool up = sBack - sFront >= 0.0;
-        k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
+        k = FindInterval(tf, sFront, up, k);
         const bool one =
           up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack);
         if (!one)

@@ -49,7 +49,9 @@ struct SegmentJob
   double SBack = 0.0;
   double Length = 0.0; ///< world length
   /// The transfer-function interval holding the segment's whole scalar range
-  /// (from IntervalOfRange() over the cell, >= -1), or -2 if unknown.
+  /// (from IntervalOfRange() over the cell, >= -1), or -2 if unknown, or
+  /// -3 - h if unknown but near interval h (e.g. the interval of the cell's
+  /// smallest scalar: where the search for the segment's interval starts).
   int Interval = -2;
 };
 

@@ -1,12 +1,13 @@
 // Tests of hovSegmentBatch on segments queued as the CPU tiles queue them: runs
 // of consecutive segments of one cell (one known transfer-function interval,
-// or -2 for a cell whose range meets a node), whose four-lane blocks take the
-// batch's vector evaluation when they share an interior interval. Every result
-// must equal, bit for bit, what the scalar kernels give segment by segment
-// (IntegrateLinearScalarInInterval for a known interval, IntegrateLinearScalar
-// otherwise), with the same number of pieces; runs mix thin, thick and opaque
-// segments, scalars a rounding error outside their interval, invalid segments,
-// and runs of every length so that blocks straddle runs in every way.
+// or -2 or a search hint -3 - h for a cell whose range meets a node), whose
+// four-lane blocks take the batch's vector evaluation when they share an
+// interior interval. Every result must equal, bit for bit, what the scalar
+// kernels give segment by segment (IntegrateLinearScalarInInterval for a known
+// interval, IntegrateLinearScalar otherwise), with the same number of pieces;
+// runs mix thin, thick and opaque segments, scalars a rounding error outside
+// their interval, invalid segments, and runs of every length so that blocks
+// straddle runs in every way.
 
 #include "hovSegmentBatch.h"
 
@@ -59,7 +60,13 @@ void AddRun(const hov::TransferFunction& tf, std::mt19937_64& rng, int n, double
     lo = a + (b - a) * (0.01 + 0.5 * u(rng));
     hi = lo + (b - lo) * 0.98 * u(rng);
   }
-  const int interval = hov::IntervalOfRange(tf, lo, hi); // -2 when crossing
+  int interval = hov::IntervalOfRange(tf, lo, hi); // -2 when crossing
+  if (interval == -2 && u(rng) < 0.7)
+  {
+    // A search hint, as the renderer gives: the interval of the cell's
+    // smallest scalar, or a wrong one (the result must not depend on it).
+    interval = -3 - (u(rng) < 0.8 ? tf.FindIntervalUpward(lo) : static_cast<int>(u(rng) * 5));
+  }
   for (int i = 0; i < n; ++i)
   {
     hov::SegmentJob job;
