@@ -31,6 +31,13 @@ bool hovTileGeometry::ClipSpan(
 }
 
 HOV_SPAN_TARGET_CLONES
+int hovTileGeometry::RowRanges(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1,
+  int j0, int j1, int* start, int* count)
+{
+  return RowRangesLanes(edges, x0, y0, w, i0, i1, j0, j1, start, count);
+}
+
+HOV_SPAN_TARGET_CLONES
 bool hovTileGeometry::ClipRows(const CellRecord& cell, const TileRays& rays, const int* start,
   const int* count, int rows, const LaneOut& out, size_t q)
 {
@@ -231,17 +238,30 @@ void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType 
   // The rows' pixel ranges first (independent rows: their latencies overlap),
   // then all rows clipped in one call.
   int start[MaxTileSize], count[MaxTileSize];
-  int rows = 0, total = 0, done = 0;
-  for (int j = j0; j <= j1; ++j)
+  int rows = 0;
+  if (cell.Projectable)
   {
-    int r0, r1;
-    if (this->RowRange(cell, edges, j, r0, r1))
+    const int i0 = std::max(b[0], this->X0) - this->X0;
+    const int i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
+    rows = RowRanges(edges, this->X0, this->Y0, this->W, i0, i1, j0, j1, start, count);
+  }
+  else
+  {
+    for (int j = j0; j <= j1; ++j)
     {
-      start[rows] = j * this->W + r0;
-      count[rows] = r1 - r0 + 1;
-      total += count[rows++];
-      done += this->DoneInRow[j];
+      int r0, r1;
+      if (this->RowRange(cell, edges, j, r0, r1))
+      {
+        start[rows] = j * this->W + r0;
+        count[rows++] = r1 - r0 + 1;
+      }
     }
+  }
+  int total = 0, done = 0;
+  for (int r = 0; r < rows; ++r)
+  {
+    total += count[r];
+    done += this->DoneInRow[start[r] / this->W];
   }
   if (this->NumQueued + total + PixelLanes > this->QueueCapacity)
   {

@@ -183,6 +183,117 @@ inline int LaneHit(const CellRecord& cell, const Ray& ray, double tIn, double tO
 
 }
 
+namespace hovTileGeometry
+{
+/// The tile columns [r0, r1] (tile coordinates; box columns [i0, i1]) of
+/// the pixel centres of the row at height @p y inside a projectable cell
+/// (BoxMargin of slack); false if none.
+inline bool ProjectedRowRange(
+  const ProjectedEdges& edges, double y, int x0, int i0, int i1, int& r0, int& r1)
+{
+  double xMin, xMax;
+  if (!RowSpan(edges, y, xMin, xMax))
+  {
+    return false;
+  }
+  constexpr double margin = vtkHighOrderProjectorTile::BoxMargin;
+  r0 = std::max(i0, CeilToInt(xMin - 0.5 - margin) - x0);
+  r1 = std::min(i1, FloorToInt(xMax - 0.5 + margin) - x0);
+  return r0 <= r1;
+}
+
+#if defined(__GNUC__)
+/**
+ * ProjectedRowRange() for the tile rows [j0, j1] of a projectable cell (tile
+ * origin x0, y0, width w), four rows per vector: the edges a row crosses
+ * (strictly between its ends: a row through no vertex), their crossings and
+ * the rounding to pixel centres as one row at a time, so the ranges are the
+ * same; a group of rows with one through a vertex takes ProjectedRowRange().
+ * Appends the non-empty rows' first pixel (j w + r0) and count to @p start
+ * and @p count; returns how many.
+ */
+__attribute__((always_inline)) inline int RowRangesLanes(const ProjectedEdges& edges, int x0,
+  int y0, int w, int i0, int i1, int j0, int j1, int* start, int* count)
+{
+  typedef int I4 __attribute__((vector_size(4 * sizeof(int))));
+  constexpr double margin = vtkHighOrderProjectorTile::BoxMargin;
+  const V4 limit = V4{} + 1073741824.0; // CeilToInt's clamp
+  int rows = 0;
+  for (int j = j0; j <= j1; j += 4)
+  {
+    const V4 y = V4{ 0.5, 1.5, 2.5, 3.5 } + static_cast<double>(y0 + j);
+    const auto vertex = (y == edges.BandY[0]) | (y == edges.BandY[1]) | (y == edges.BandY[2]) |
+      (y == edges.BandY[3]);
+    if (vertex[0] | vertex[1] | vertex[2] | vertex[3])
+    {
+      for (int jj = j; jj <= std::min(j + 3, j1); ++jj)
+      {
+        int r0, r1;
+        if (ProjectedRowRange(edges, y0 + jj + 0.5, x0, i0, i1, r0, r1))
+        {
+          start[rows] = jj * w + r0;
+          count[rows++] = r1 - r0 + 1;
+        }
+      }
+      continue;
+    }
+    V4 lo = V4{} + 1e300, hi = V4{} - 1e300;
+    for (int e = 0; e < 6; ++e)
+    {
+      const auto meets = (edges.PY[e] - y) * (edges.QY[e] - y) <= 0.0;
+      const V4 x = edges.PX[e] + edges.DX[e] * ((y - edges.PY[e]) * edges.InvDY[e]);
+      lo = meets & (x < lo) ? x : lo;
+      hi = meets & (hi < x) ? x : hi;
+    }
+    // CeilToInt / FloorToInt per lane.
+    V4 c = (lo - 0.5) - margin, f = (hi - 0.5) + margin;
+    c = c < -limit ? -limit : c;
+    c = limit < c ? limit : c;
+    f = f < -limit ? -limit : f;
+    f = limit < f ? limit : f;
+    const I4 ci = __builtin_convertvector(c, I4), fi = __builtin_convertvector(f, I4);
+    const I4 up = __builtin_convertvector(__builtin_convertvector(ci, V4) < c, I4);
+    const I4 down = __builtin_convertvector(f < __builtin_convertvector(fi, V4), I4);
+    const I4 r0 = ci - up - x0, r1 = fi + down - x0; // true is -1
+    const auto some = lo <= hi;
+    for (int l = 0; l < 4 && j + l <= j1; ++l)
+    {
+      const int a = std::max(i0, r0[l]), b = std::min(i1, r1[l]);
+      if (some[l] && a <= b)
+      {
+        start[rows] = (j + l) * w + a;
+        count[rows++] = b - a + 1;
+      }
+    }
+  }
+  return rows;
+}
+#else
+inline int RowRangesLanes(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1,
+  int j0, int j1, int* start, int* count)
+{
+  int rows = 0;
+  for (int j = j0; j <= j1; ++j)
+  {
+    int r0, r1;
+    if (ProjectedRowRange(edges, y0 + j + 0.5, x0, i0, i1, r0, r1))
+    {
+      start[rows] = j * w + r0;
+      count[rows++] = r1 - r0 + 1;
+    }
+  }
+  return rows;
+}
+#endif
+
+/// RowRangesLanes(), compiled also for AVX2 (in vtkHighOrderProjectorTile.cxx).
+#if defined(__GNUC__)
+__attribute__((visibility("hidden")))
+#endif
+int RowRanges(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1, int j0, int j1,
+  int* start, int* count);
+}
+
 /// (Inline: called per row of every cell.)
 inline bool vtkHighOrderProjectorTile::RowRange(
   const CellRecord& cell, const hovTileGeometry::ProjectedEdges& edges, int j, int& r0, int& r1) const
@@ -192,14 +303,7 @@ inline bool vtkHighOrderProjectorTile::RowRange(
   r1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
   if (cell.Projectable)
   {
-    // Only the pixel centres inside the projection (BoxMargin of slack).
-    double xMin, xMax;
-    if (!hovTileGeometry::RowSpan(edges, this->Y0 + j + 0.5, xMin, xMax))
-    {
-      return false;
-    }
-    r0 = std::max(r0, hovTileGeometry::CeilToInt(xMin - 0.5 - BoxMargin) - this->X0);
-    r1 = std::min(r1, hovTileGeometry::FloorToInt(xMax - 0.5 + BoxMargin) - this->X0);
+    return hovTileGeometry::ProjectedRowRange(edges, this->Y0 + j + 0.5, this->X0, r0, r1, r0, r1);
   }
   return r0 <= r1;
 }
