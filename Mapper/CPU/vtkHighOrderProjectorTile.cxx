@@ -339,28 +339,50 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
   {
     return;
   }
-  this->Results.resize(n);
-  this->Pieces.resize(n);
+  if (this->Results.size() < static_cast<size_t>(n))
+  {
+    this->Results.resize(n); // grows only (a resize up would clear the new entries each time)
+    this->Pieces.resize(n);
+  }
   const hov::SegmentBatch::Arrays jobs{ this->QSIn, this->QSOut, this->QLength,
     this->QInterval.data() };
   this->Batch.Integrate(*frame.TF, frame.Settings->Integration, jobs, n, this->Results.data(),
     this->Pieces.data());
   // In queue order, skipping pixels that turned opaque meanwhile: exactly
-  // what compositing one segment at a time does.
-  // (Counted in locals: the byte stores to Done may alias the statistics.)
+  // what compositing one segment at a time does (Witness(), Composite()).
+  // Everything through locals: byte stores (Done) may alias any member.
   vtkIdType segments = 0, pieces = 0;
   const int* pixel = this->QPixel.data();
+  const double* tIn = this->QTIn;
+  const double* tOut = this->QTOut;
+  const hov::RGBA* results = this->Results.data();
+  const int* piecesOf = this->Pieces.data();
+  hov::RGBA* accum = this->Accum.data();
+  double* maxExit = this->MaxExit.data();
+  unsigned char* violated = this->Violated.data();
+  unsigned char* done = this->Done.data();
+  const double tol = frame.WitnessTol;
+  const double termination = frame.Settings->TerminationTransmittance;
   for (int m = 0; m < n; ++m)
   {
     const int p = pixel[m];
-    if (this->Done[p])
+    if (done[p])
     {
       continue;
     }
-    this->Witness(frame, p, this->QTIn[m], this->QTOut[m]);
-    this->Composite(frame, p, this->Results[m]);
+    if (tIn[m] < maxExit[p] - tol)
+    {
+      violated[p] = 1;
+    }
+    maxExit[p] = std::max(maxExit[p], tOut[m]);
+    hov::CompositeBehind(accum[p], results[m]);
+    if (1.0 - accum[p].A <= termination)
+    {
+      done[p] = 1;
+      ++this->DoneInRow[p / this->W];
+    }
     ++segments;
-    pieces += this->Pieces[m];
+    pieces += piecesOf[m];
   }
   st.Segments += segments;
   st.Pieces += pieces;
