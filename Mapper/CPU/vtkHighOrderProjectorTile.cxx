@@ -15,41 +15,6 @@ using CellRecord = vtkHighOrderProjectorTile::CellRecord;
 using namespace hovTileGeometry;
 }
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__APPLE__)
-#define HOV_SPAN_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define HOV_SPAN_TARGET_CLONES
-#endif
-/// ClipSpanLanes(), compiled also for AVX2 (one instruction per four-pixel
-/// operation), chosen at load time; the operations, hence the results, are
-/// the same on every CPU.
-HOV_SPAN_TARGET_CLONES
-bool hovTileGeometry::ClipSpan(
-  const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q)
-{
-  return ClipSpanLanes(cell, rays, p, count, out, q);
-}
-
-HOV_SPAN_TARGET_CLONES
-int hovTileGeometry::RowRanges(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1,
-  int j0, int j1, int* start, int* count)
-{
-  return RowRangesLanes(edges, x0, y0, w, i0, i1, j0, j1, start, count);
-}
-
-HOV_SPAN_TARGET_CLONES
-bool hovTileGeometry::ClipRows(const CellRecord& cell, const TileRays& rays, const int* start,
-  const int* count, int rows, const LaneOut& out, size_t q)
-{
-  bool all = true;
-  for (int r = 0; r < rows; ++r)
-  {
-    all = ClipSpanLanes(cell, rays, start[r], count[r], out, q) && all;
-    q += count[r];
-  }
-  return all;
-}
-
 void vtkHighOrderProjectorTile::Bins::Build(
   const std::vector<Box>& boxes, int width, int height, int tileSize)
 {

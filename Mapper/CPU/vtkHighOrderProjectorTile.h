@@ -154,8 +154,8 @@ private:
   void CompactRow(const Frame& frame, const CellRecord& cell, size_t p0, int count, int src);
   /// Make room for @p n queued segments (plus a block of padding lanes).
   void ReserveQueue(int n);
-  /// Queue a segment of pixel p for the next Flush().
-  inline void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
+  /// Queue a segment of pixel p for the next Flush() (per-pixel order).
+  void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
   /// Integrate the queued segments together, then composite them in queue order.
   void Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
   /// Witness update of pixel p for a segment [tIn, tOut] composited next.
@@ -248,23 +248,6 @@ inline void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, c
     this->Done[p] = 1;
     ++this->DoneInRow[p / static_cast<size_t>(this->W)];
   }
-}
-
-inline void vtkHighOrderProjectorTile::Queue(
-  size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
-{
-  if (this->NumQueued + 1 > this->QueueCapacity)
-  {
-    this->ReserveQueue(this->NumQueued + 1);
-  }
-  const int q = this->NumQueued++;
-  this->QTIn[q] = tIn;
-  this->QTOut[q] = tOut;
-  this->QSIn[q] = sIn;
-  this->QSOut[q] = sOut;
-  this->QLength[q] = tOut - tIn;
-  this->QPixel[q] = static_cast<int>(p);
-  this->QInterval[q] = interval;
 }
 
 #endif
