@@ -131,6 +131,11 @@ inline bool ClipSpanLanes(const CellRecord& cell, const TileRays& rays, size_t p
     out.SIn[q + i] = sAtOrigin + tIn * slope;
     out.SOut[q + i] = sAtOrigin + tOut * slope;
     out.Length[q + i] = tOut - tIn;
+    if (out.Pixel)
+    {
+      out.Pixel[q + i] = static_cast<int>(pi);
+      out.Interval[q + i] = cell.Interval;
+    }
     all = all && hit && !IsUndecided(cell, ray);
   }
   return all;
