@@ -108,10 +108,10 @@ long long SegmentBatch::IntegrateScalar(const TransferFunction& tf,
 /**
  * The interval of each segment (Resolved): its known one, or the one
  * OnePieceInterval() finds; segments crossing nodes are split into Pieces
- * (SplitSegment()) and invalid ones (IntegrateLinearScalar()'s and
- * IntegrateLinearScalarInInterval()'s early returns) written as zero here,
- * both marked Skip. Returns the pieces of the unsplit segments (split ones
- * are counted when composited).
+ * (SplitSegment()) and invalid ones of unknown interval
+ * (IntegrateLinearScalar()'s early return) written as zero here, both marked
+ * Skip (invalid segments of known interval: EvaluateSegments()). Returns the
+ * pieces of the unsplit segments (split ones are counted when composited).
  */
 long long SegmentBatch::ResolveIntervals(
   const TransferFunction& tf, const Arrays& jobs, int count, RGBA* out, int* pieces)
@@ -123,44 +123,45 @@ long long SegmentBatch::ResolveIntervals(
   {
     this->Resolved.resize(count); // grows only: none in steady state
   }
+  // Known intervals as they are (EvaluateSegments() checks those segments);
+  // the others searched here.
   int* __restrict resolved = this->Resolved.data();
+  std::copy(jobs.Interval, jobs.Interval + count, resolved);
+  if (pieces)
+  {
+    std::fill(pieces, pieces + count, 1);
+  }
   const std::vector<double>& nodes = tf.GetNodes();
   const int n = static_cast<int>(nodes.size());
-  long long total = 0;
+  long long total = count;
   for (int i = 0; i < count; ++i)
   {
+    if (resolved[i] >= -1)
+    {
+      continue;
+    }
     const double sFront = jobs.SFront[i], sBack = jobs.SBack[i], length = jobs.Length[i];
-    const bool valid = length > 0.0 && std::isfinite(sFront) && std::isfinite(sBack);
-    int k = jobs.Interval[i];
-    int p = 1;
-    if (k < -1)
+    resolved[i] = Skip;
+    if (!(length > 0.0) || !std::isfinite(sFront) || !std::isfinite(sBack) || n == 0)
     {
-      p = valid && n > 0 ? 1 : 0;
-      if (p)
+      out[i] = RGBA(); // IntegrateLinearScalar(): nothing, no piece
+      --total;
+      if (pieces)
       {
-        // OnePieceInterval(), inline; the walk starts from the same interval.
-        const bool up = sBack - sFront >= 0.0;
-        k = FindInterval(tf, sFront, up, k);
-        const bool one =
-          up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack);
-        if (!one)
-        {
-          this->SplitSegment(tf, i, k, sFront, sBack, length);
-          resolved[i] = Skip;
-          continue; // counted when composited
-        }
+        pieces[i] = 0;
       }
+      continue;
     }
-    total += p;
-    if (pieces)
+    // OnePieceInterval(), inline; the walk starts from the same interval.
+    const bool up = sBack - sFront >= 0.0;
+    const int k = FindInterval(tf, sFront, up, jobs.Interval[i]);
+    if (up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack))
     {
-      pieces[i] = p;
+      resolved[i] = k;
+      continue;
     }
-    resolved[i] = valid && p ? k : Skip;
-    if (resolved[i] == Skip)
-    {
-      out[i] = RGBA();
-    }
+    this->SplitSegment(tf, i, k, sFront, sBack, length);
+    --total; // counted when composited
   }
   return total;
 }

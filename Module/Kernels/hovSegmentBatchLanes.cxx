@@ -94,13 +94,13 @@ inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const d
 }
 
 /**
- * EvaluatePiece() for the Lanes segments from @p i, all valid and in the
- * same interior interval @p k (0 <= k < n - 1), side by side: per lane
+ * EvaluatePiece() for the Lanes segments from @p i, all in the same
+ * interior interval @p k (0 <= k < n - 1), side by side: per lane
  * TransferFunction::Evaluate()'s operations on node k, then the depths and
  * the thin test (std::min/max as (b < a ? b : a)/(a < b ? b : a), isfinite as
  * x - x == 0), so each lane's values are the scalar code's. Writes the lanes
- * and returns true only if every segment is thin (the caller takes the
- * others one by one).
+ * and returns true only if every segment is valid and thin (the caller takes
+ * the others one by one).
  */
 inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction& tf, int k,
   const SegmentBatch::Arrays& jobs, int i, const ThinTermByExponent& thinTerms,
@@ -126,7 +126,8 @@ inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction&
   const V4 a = DepthCap < depthFront ? zero + DepthCap : depthFront;
   const V4 c = DepthCap < depthBack ? zero + DepthCap : depthBack;
   const V4 d1 = 0.5 * (a + c);
-  const auto thin = (depthFront - depthFront == 0.0) & (depthBack - depthBack == 0.0) &
+  const auto valid = (length > 0.0) & (s0 - s0 == 0.0) & (s1 - s1 == 0.0);
+  const auto thin = valid & (depthFront - depthFront == 0.0) & (depthBack - depthBack == 0.0) &
     (d1 > 0.0) & (d1 <= ThinDepth);
   if (!(thin[0] & thin[1] & thin[2] & thin[3]))
   {
@@ -163,6 +164,28 @@ void ThinWilliamsMaxBlocks(
     terms, a, d1, blocks, w, alpha, std::make_integer_sequence<int, MaxThinOrder>());
 }
 
+namespace
+{
+/// EvaluatePiece() for segment @p i if it is valid (the early return of
+/// IntegrateLinearScalarInInterval() otherwise); none if resolved[i] is @p skip.
+inline __attribute__((always_inline)) void EvaluateSegment(const TransferFunction& tf,
+  const int* resolved, int skip, const SegmentBatch::Arrays& jobs, int i,
+  const ThinTermByExponent& thinTerms, const SegmentBatch::ThinArrays& t, RGBA* out)
+{
+  const double s0 = jobs.SFront[i], s1 = jobs.SBack[i], length = jobs.Length[i];
+  if (resolved[i] == skip || !(length > 0.0) || !std::isfinite(s0) || !std::isfinite(s1))
+  {
+    if (resolved[i] != skip)
+    {
+      out[i] = RGBA();
+    }
+    t.Terms[i] = 0;
+    return;
+  }
+  EvaluatePiece(tf, resolved[i], s0, s1, length, thinTerms, t, i, out[i]);
+}
+}
+
 /// EvaluateSegments(): blocks through EvaluateBlock(). Compiled also for AVX2.
 HOV_LANES_TARGET_CLONES
 void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
@@ -181,24 +204,12 @@ void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
     }
     for (int l = i; l < i + Lanes; ++l)
     {
-      if (resolved[l] == skip)
-      {
-        t.Terms[l] = 0;
-        continue;
-      }
-      EvaluatePiece(tf, resolved[l], jobs.SFront[l], jobs.SBack[l], jobs.Length[l], thinTerms, t,
-        l, out[l]);
+      EvaluateSegment(tf, resolved, skip, jobs, l, thinTerms, t, out);
     }
   }
   for (; i < count; ++i)
   {
-    if (resolved[i] == skip)
-    {
-      t.Terms[i] = 0;
-      continue;
-    }
-    EvaluatePiece(
-      tf, resolved[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i], thinTerms, t, i, out[i]);
+    EvaluateSegment(tf, resolved, skip, jobs, i, thinTerms, t, out);
   }
 }
 }
