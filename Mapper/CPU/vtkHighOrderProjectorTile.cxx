@@ -111,7 +111,7 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
   // The rays again as padded arrays per coordinate, for the pixel lanes.
   const size_t padded = n + PixelLanes;
   this->TMax.resize(padded, 0.0);
-  this->LaneStore.assign(6 * padded, 0.0);
+  this->LaneStore.resize(6 * padded); // the padding lanes keep any (defined) old values
   double* a = this->LaneStore.data();
   for (size_t p = 0; p < n; ++p)
   {
