@@ -231,6 +231,11 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
         cell.Projectable = cell.Projectable && projectable[tet.Points[v]];
       }
       cell.Interval = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
+      if (cell.Interval == -2)
+      {
+        // Across nodes: a hint for the search of each segment's interval.
+        cell.Interval = -3 - tf.FindIntervalUpward(tet.ScalarMin);
+      }
       buf.Boxes[k] = cell.PixelBox;
     }
   });

@@ -24,8 +24,10 @@
  *
  * Speed (what keeps a frame fast, see vtkHighOrderProjectorTile): one
  * parallel pass per frame writes a record per cell in processing order (face
- * planes, field, projected vertices, pixel box, transfer-function interval),
- * so the tile loop reads memory in order; segments are integrated in batches
+ * planes, field, projected vertices, pixel box, transfer-function interval,
+ * or for a cell across nodes a hint where each segment's interval search
+ * starts), so the tile loop reads memory in order; the cells are binned from
+ * a compact array of their pixel boxes; segments are integrated in batches
  * (hov::SegmentBatch, bit-identical to the scalar kernels); per-frame arrays
  * are kept across frames. None of this changes a bit of the image.
  *

@@ -15,34 +15,6 @@ using CellRecord = vtkHighOrderProjectorTile::CellRecord;
 using namespace hovTileGeometry;
 }
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__APPLE__)
-#define HOV_SPAN_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define HOV_SPAN_TARGET_CLONES
-#endif
-/// ClipSpanLanes(), compiled also for AVX2 (one instruction per four-pixel
-/// operation), chosen at load time; the operations, hence the results, are
-/// the same on every CPU.
-HOV_SPAN_TARGET_CLONES
-bool hovTileGeometry::ClipSpan(
-  const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q)
-{
-  return ClipSpanLanes(cell, rays, p, count, out, q);
-}
-
-HOV_SPAN_TARGET_CLONES
-bool hovTileGeometry::ClipRows(const CellRecord& cell, const TileRays& rays, const int* start,
-  const int* count, int rows, const LaneOut& out, size_t q)
-{
-  bool all = true;
-  for (int r = 0; r < rows; ++r)
-  {
-    all = ClipSpanLanes(cell, rays, start[r], count[r], out, q) && all;
-    q += count[r];
-  }
-  return all;
-}
-
 void vtkHighOrderProjectorTile::Bins::Build(
   const std::vector<Box>& boxes, int width, int height, int tileSize)
 {
@@ -139,7 +111,7 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
   // The rays again as padded arrays per coordinate, for the pixel lanes.
   const size_t padded = n + PixelLanes;
   this->TMax.resize(padded, 0.0);
-  this->LaneStore.assign(6 * padded, 0.0);
+  this->LaneStore.resize(6 * padded); // the padding lanes keep any (defined) old values
   double* a = this->LaneStore.data();
   for (size_t p = 0; p < n; ++p)
   {
@@ -231,17 +203,30 @@ void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType 
   // The rows' pixel ranges first (independent rows: their latencies overlap),
   // then all rows clipped in one call.
   int start[MaxTileSize], count[MaxTileSize];
-  int rows = 0, total = 0, done = 0;
-  for (int j = j0; j <= j1; ++j)
+  int rows = 0;
+  if (cell.Projectable)
   {
-    int r0, r1;
-    if (this->RowRange(cell, edges, j, r0, r1))
+    const int i0 = std::max(b[0], this->X0) - this->X0;
+    const int i1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
+    rows = RowRanges(edges, this->X0, this->Y0, this->W, i0, i1, j0, j1, start, count);
+  }
+  else
+  {
+    for (int j = j0; j <= j1; ++j)
     {
-      start[rows] = j * this->W + r0;
-      count[rows] = r1 - r0 + 1;
-      total += count[rows++];
-      done += this->DoneInRow[j];
+      int r0, r1;
+      if (this->RowRange(cell, edges, j, r0, r1))
+      {
+        start[rows] = j * this->W + r0;
+        count[rows++] = r1 - r0 + 1;
+      }
     }
+  }
+  int total = 0, done = 0;
+  for (int r = 0; r < rows; ++r)
+  {
+    total += count[r];
+    done += this->DoneInRow[start[r] / this->W];
   }
   if (this->NumQueued + total + PixelLanes > this->QueueCapacity)
   {
@@ -319,28 +304,50 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
   {
     return;
   }
-  this->Results.resize(n);
-  this->Pieces.resize(n);
+  if (this->Results.size() < static_cast<size_t>(n))
+  {
+    this->Results.resize(n); // grows only (a resize up would clear the new entries each time)
+    this->Pieces.resize(n);
+  }
   const hov::SegmentBatch::Arrays jobs{ this->QSIn, this->QSOut, this->QLength,
     this->QInterval.data() };
   this->Batch.Integrate(*frame.TF, frame.Settings->Integration, jobs, n, this->Results.data(),
     this->Pieces.data());
   // In queue order, skipping pixels that turned opaque meanwhile: exactly
-  // what compositing one segment at a time does.
-  // (Counted in locals: the byte stores to Done may alias the statistics.)
+  // what compositing one segment at a time does (Witness(), Composite()).
+  // Everything through locals: byte stores (Done) may alias any member.
   vtkIdType segments = 0, pieces = 0;
   const int* pixel = this->QPixel.data();
+  const double* tIn = this->QTIn;
+  const double* tOut = this->QTOut;
+  const hov::RGBA* results = this->Results.data();
+  const int* piecesOf = this->Pieces.data();
+  hov::RGBA* accum = this->Accum.data();
+  double* maxExit = this->MaxExit.data();
+  unsigned char* violated = this->Violated.data();
+  unsigned char* done = this->Done.data();
+  const double tol = frame.WitnessTol;
+  const double termination = frame.Settings->TerminationTransmittance;
   for (int m = 0; m < n; ++m)
   {
     const int p = pixel[m];
-    if (this->Done[p])
+    if (done[p])
     {
       continue;
     }
-    this->Witness(frame, p, this->QTIn[m], this->QTOut[m]);
-    this->Composite(frame, p, this->Results[m]);
+    if (tIn[m] < maxExit[p] - tol)
+    {
+      violated[p] = 1;
+    }
+    maxExit[p] = std::max(maxExit[p], tOut[m]);
+    hov::CompositeBehind(accum[p], results[m]);
+    if (1.0 - accum[p].A <= termination)
+    {
+      done[p] = 1;
+      ++this->DoneInRow[p / this->W];
+    }
     ++segments;
-    pieces += this->Pieces[m];
+    pieces += piecesOf[m];
   }
   st.Segments += segments;
   st.Pieces += pieces;

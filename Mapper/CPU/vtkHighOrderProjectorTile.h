@@ -13,6 +13,13 @@
  * hov::SegmentBatch (independent pixels: the batch hides the latency of the
  * series) and composited behind what each pixel holds. A pixel receives its
  * segments in exactly the cell order, as when integrating one at a time.
+ * Per cell (QueueCellSegments): the pixel range of each of its rows, four
+ * rows per vector (RowRanges), then all its rows clipped in one call
+ * (ClipRows: four or two pixels per vector, the results written straight
+ * into the queue's arrays, vtkHighOrderProjectorTileLanes.h); a row is only
+ * revisited pixel by pixel if some pixel missed, was undecided (a ray in a
+ * face's plane) or is already opaque. Tiles that no cell overlaps are
+ * written transparent without tracing their rays.
  *
  * Per-pixel order (RenderPerPixel; the projector then orders the cells by
  * centroid depth, so fragments arrive nearly sorted): every segment of the
@@ -74,7 +81,7 @@ public:
     double RefScalar;
     glm::dvec2 Vertex[4]; ///< projected vertices (window coordinates)
     Box PixelBox;         ///< pixel centres of the projected bounding box
-    int Interval;         ///< transfer-function interval of the whole cell, or -2
+    int Interval; ///< transfer-function interval of the whole cell, or a search hint (hov::SegmentJob)
     bool Projectable;     ///< every vertex in front of the eye plane
   };
 
@@ -154,11 +161,12 @@ private:
   void CompactRow(const Frame& frame, const CellRecord& cell, size_t p0, int count, int src);
   /// Make room for @p n queued segments (plus a block of padding lanes).
   void ReserveQueue(int n);
-  /// Queue a segment of pixel p for the next Flush().
-  inline void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
+  /// Queue a segment of pixel p for the next Flush() (per-pixel order).
+  void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
   /// Integrate the queued segments together, then composite them in queue order.
   void Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
-  /// Witness update of pixel p for a segment [tIn, tOut] composited next.
+  /// Witness update of pixel p for a segment [tIn, tOut] composited next
+  /// (general cells; Flush() does the same inline).
   void Witness(const Frame& frame, size_t p, double tIn, double tOut);
   /// Composite a segment's RGBA behind pixel p; marks it done when opaque.
   void Composite(const Frame& frame, size_t p, const hov::RGBA& seg);
@@ -203,7 +211,7 @@ private:
   static constexpr int BandPixels = 64;
   std::vector<vtkHighOrderViewRays::Ray> Rays;
   std::vector<double> TMax;
-  std::vector<double> LaneStore;   ///< the rays per coordinate (vtkHighOrderTileGeometry.h)
+  std::vector<double> LaneStore;   ///< the rays per coordinate (vtkHighOrderProjectorTileLanes.h)
   TileRays LaneRays{};
   std::vector<hov::RGBA> Accum;
   std::vector<double> MaxExit;
@@ -230,41 +238,5 @@ private:
   hov::SegmentBatch Batch;
   vtkHighOrderGeneralCellTile General; ///< scratch of the general-cell path
 };
-
-inline void vtkHighOrderProjectorTile::Witness(const Frame& frame, size_t p, double tIn, double tOut)
-{
-  if (tIn < this->MaxExit[p] - frame.WitnessTol)
-  {
-    this->Violated[p] = 1;
-  }
-  this->MaxExit[p] = std::max(this->MaxExit[p], tOut);
-}
-
-inline void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
-{
-  hov::CompositeBehind(this->Accum[p], seg);
-  if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance && !this->Done[p])
-  {
-    this->Done[p] = 1;
-    ++this->DoneInRow[p / static_cast<size_t>(this->W)];
-  }
-}
-
-inline void vtkHighOrderProjectorTile::Queue(
-  size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
-{
-  if (this->NumQueued + 1 > this->QueueCapacity)
-  {
-    this->ReserveQueue(this->NumQueued + 1);
-  }
-  const int q = this->NumQueued++;
-  this->QTIn[q] = tIn;
-  this->QTOut[q] = tOut;
-  this->QSIn[q] = sIn;
-  this->QSOut[q] = sOut;
-  this->QLength[q] = tOut - tIn;
-  this->QPixel[q] = static_cast<int>(p);
-  this->QInterval[q] = interval;
-}
 
 #endif

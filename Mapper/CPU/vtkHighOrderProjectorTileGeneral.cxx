@@ -7,6 +7,8 @@
 
 #include "hovCompositing.h" // CompositeBehind
 
+#include <algorithm> // std::max
+
 void vtkHighOrderProjectorTile::RenderGeneralCell(
   const Frame& frame, vtkIdType k, vtkHighOrderCellProjector::Statistics& st)
 {
@@ -69,4 +71,23 @@ void vtkHighOrderProjectorTile::CompositeGeneralInterval(const Frame& frame, siz
   this->Witness(frame, p, tIn, tOut);
   this->Composite(frame, p, seg);
   ++st.Segments;
+}
+
+void vtkHighOrderProjectorTile::Witness(const Frame& frame, size_t p, double tIn, double tOut)
+{
+  if (tIn < this->MaxExit[p] - frame.WitnessTol)
+  {
+    this->Violated[p] = 1;
+  }
+  this->MaxExit[p] = std::max(this->MaxExit[p], tOut);
+}
+
+void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
+{
+  hov::CompositeBehind(this->Accum[p], seg);
+  if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance && !this->Done[p])
+  {
+    this->Done[p] = 1;
+    ++this->DoneInRow[p / static_cast<size_t>(this->W)];
+  }
 }

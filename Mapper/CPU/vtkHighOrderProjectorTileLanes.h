@@ -4,15 +4,14 @@
  *          of pixels against a cell, several pixels per vector instruction,
  *          written straight into the tile's segment queue.
  *
- * Header only (inline helpers), in namespace hovTileGeometry.
+ * Declarations and small inline helpers, in namespace hovTileGeometry; the
+ * vector code is in vtkHighOrderProjectorTileLanes.cxx.
  * @sa vtkHighOrderProjectorTile, vtkHighOrderTileGeometry.h
  */
 #ifndef vtkHighOrderProjectorTileLanes_h
 #define vtkHighOrderProjectorTileLanes_h
 
-#include "vtkHighOrderTileGeometry.h" // ClipRay, IsUndecided, V4
-
-#include <cstring> // memcpy into vector registers
+#include "vtkHighOrderTileGeometry.h" // ClipRay, IsUndecided, RowSpan
 
 namespace hovTileGeometry
 {
@@ -28,132 +27,16 @@ struct LaneOut
   int* Interval; ///< the cell's transfer-function interval (with Pixel)
 };
 
-#if defined(__GNUC__) // GCC and Clang: vector extensions
-/// Two doubles: one SSE2 instruction (rows' short tails).
-typedef double V2 __attribute__((vector_size(2 * sizeof(double))));
-
 /**
- * ClipRay() and the scalars at both ends of the segment for the lanes of V
- * (consecutive pixels from @p p), one pixel per lane, branch free: the same
- * products, sums and quotients in the same order (dot products as glm::dot
- * computes them), and min/max, which do not depend on the order, so the
- * result is bit-identical. Writes lane l at index @p q + l of @p out; ANDs
- * into @p all, per lane, all bits set if the ray hits (not undecided), else 0.
+ * ClipRay() and the scalars at both ends of the segment for the pixels
+ * [p, p + count) of a row, several pixels per vector instruction with the
+ * scalar code's operations (bit-identical), written at [q, q + count) of
+ * @p out (up to PixelLanes - 1 lanes more are written: the arrays are padded,
+ * as are the tile's rays). Returns true if every pixel of the span simply
+ * hits (else LaneHit() tells each pixel's case). In
+ * vtkHighOrderProjectorTileLanes.cxx (also compiled for AVX2); hidden:
+ * called directly, not through the library's symbol table.
  */
-template <typename V, typename Mask>
-__attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell,
-  const TileRays& r, size_t p, const LaneOut& out, size_t q, const Mask& pastEnd, Mask& all)
-{
-  V ox, oy, oz, dx, dy, dz, tMax;
-  std::memcpy(&ox, r.OX + p, sizeof(V));
-  std::memcpy(&oy, r.OY + p, sizeof(V));
-  std::memcpy(&oz, r.OZ + p, sizeof(V));
-  std::memcpy(&dx, r.DX + p, sizeof(V));
-  std::memcpy(&dy, r.DY + p, sizeof(V));
-  std::memcpy(&dz, r.DZ + p, sizeof(V));
-  std::memcpy(&tMax, r.TMax + p, sizeof(V));
-  const V zero = {};
-  const V big = zero + 1e300 * 1e300; // +inf: no constraint
-  V enter[4], leave[4];
-  auto parallel = zero < zero; // no lane yet
-  for (int k = 0; k < 4; ++k)
-  {
-    const double nx = cell.NX[k], ny = cell.NY[k], nz = cell.NZ[k];
-    const V denom = (nx * dx + ny * dy) + nz * dz;
-    const V num = cell.Offset[k] - ((nx * ox + ny * oy) + nz * oz);
-    parallel |= denom == zero;
-    const V t = num / denom;
-    enter[k] = denom < zero ? t : -big;
-    leave[k] = denom > zero ? t : big;
-  }
-  // std::max(a, b) is a < b ? b : a, std::min(a, b) is b < a ? b : a, per lane.
-  const V in0 = zero < enter[0] ? enter[0] : zero;
-  const V in12 = enter[1] < enter[2] ? enter[2] : enter[1];
-  const V in012 = in0 < in12 ? in12 : in0;
-  const V vIn = in012 < enter[3] ? enter[3] : in012;
-  const V out0 = leave[0] < tMax ? leave[0] : tMax;
-  const V out12 = leave[2] < leave[1] ? leave[2] : leave[1];
-  const V out012 = out12 < out0 ? out12 : out0;
-  const V vOut = leave[3] < out012 ? leave[3] : out012;
-  const glm::dvec3& g = cell.Gradient;
-  const glm::dvec3& c = cell.RefPoint;
-  const V sAtOrigin = cell.RefScalar + ((g.x * (ox - c.x) + g.y * (oy - c.y)) + g.z * (oz - c.z));
-  const V slope = (g.x * dx + g.y * dy) + g.z * dz;
-  const V vsIn = sAtOrigin + vIn * slope;
-  const V vsOut = sAtOrigin + vOut * slope;
-  const V vLength = vOut - vIn;
-  std::memcpy(out.TIn + q, &vIn, sizeof(V));
-  std::memcpy(out.TOut + q, &vOut, sizeof(V));
-  std::memcpy(out.SIn + q, &vsIn, sizeof(V));
-  std::memcpy(out.SOut + q, &vsOut, sizeof(V));
-  std::memcpy(out.Length + q, &vLength, sizeof(V));
-  if (out.Pixel)
-  {
-    for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
-    {
-      out.Pixel[q + l] = static_cast<int>(p) + l;
-      out.Interval[q + l] = cell.Interval;
-    }
-  }
-  all &= ((vIn < vOut) & ~parallel) | pastEnd;
-}
-
-/**
- * ClipPixelLanes() for the pixels [p, p + count) of a row, written at
- * [q, q + count) of @p out (up to PixelLanes - 1 lanes more are written: the
- * arrays are padded, as are the tile's rays). Blocks of four lanes, and of
- * two for a row's last one or two pixels. Returns true if every pixel of the
- * span simply hits (else LaneHit() tells each pixel's case).
- */
-__attribute__((always_inline)) inline bool ClipSpanLanes(const CellRecord& cell,
-  const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q)
-{
-  using M4 = decltype(V4{} < V4{}); // per lane: all bits set (true) or 0
-  using M2 = decltype(V2{} < V2{});
-  M4 all4 = { -1, -1, -1, -1 };
-  M2 all2 = { -1, -1 };
-  int i = 0;
-  for (; count - i >= 3; i += 4)
-  {
-    const M4 past = { 0, 0, 0, count - i >= 4 ? 0 : -1 }; // lanes past the end
-    ClipPixelLanes<V4>(cell, rays, p + i, out, q + i, past, all4);
-  }
-  if (i < count)
-  {
-    const M2 past = { 0, count - i >= 2 ? 0 : -1 };
-    ClipPixelLanes<V2>(cell, rays, p + i, out, q + i, past, all2);
-  }
-  return ((all4[0] & all4[1]) & (all4[2] & all4[3]) & (all2[0] & all2[1])) != 0;
-}
-#else
-/// Without vector extensions: ClipRay() pixel by pixel (same results).
-inline bool ClipSpanLanes(const CellRecord& cell, const TileRays& rays, size_t p, int count,
-  const LaneOut& out, size_t q)
-{
-  bool all = true;
-  for (int i = 0; i < count; ++i)
-  {
-    Ray ray;
-    const size_t pi = p + i;
-    ray.Origin = glm::dvec3(rays.OX[pi], rays.OY[pi], rays.OZ[pi]);
-    ray.Direction = glm::dvec3(rays.DX[pi], rays.DY[pi], rays.DZ[pi]);
-    double tIn = 0.0, tOut = 0.0;
-    const bool hit = ClipRay(cell, ray, rays.TMax[pi], glm::dvec3(), glm::dvec3(), tIn, tOut);
-    const double sAtOrigin = cell.RefScalar + glm::dot(cell.Gradient, ray.Origin - cell.RefPoint);
-    const double slope = glm::dot(cell.Gradient, ray.Direction);
-    out.TIn[q + i] = tIn;
-    out.TOut[q + i] = tOut;
-    out.SIn[q + i] = sAtOrigin + tIn * slope;
-    out.SOut[q + i] = sAtOrigin + tOut * slope;
-    out.Length[q + i] = tOut - tIn;
-    all = all && hit && !IsUndecided(cell, ray);
-  }
-  return all;
-}
-#endif
-
-/// ClipSpanLanes(), compiled also for AVX2 (in vtkHighOrderProjectorTile.cxx;
-/// hidden: called directly, not through the library's symbol table).
 #if defined(__GNUC__)
 __attribute__((visibility("hidden")))
 #endif
@@ -161,7 +44,7 @@ bool ClipSpan(
   const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q);
 
 /**
- * ClipSpanLanes() for @p rows rows of a cell, one call per cell (the cell's
+ * ClipSpan() for @p rows rows of a cell, one call per cell (the cell's
  * planes and field are set up once for all its rows): row r's pixels
  * [start[r], start[r] + count[r]) are written one row after the other from
  * @p q. Returns true if every pixel of every row simply hits.
@@ -183,6 +66,39 @@ inline int LaneHit(const CellRecord& cell, const Ray& ray, double tIn, double tO
 
 }
 
+namespace hovTileGeometry
+{
+/// The tile columns [r0, r1] (tile coordinates; box columns [i0, i1]) of
+/// the pixel centres of the row at height @p y inside a projectable cell
+/// (BoxMargin of slack); false if none.
+inline bool ProjectedRowRange(
+  const ProjectedEdges& edges, double y, int x0, int i0, int i1, int& r0, int& r1)
+{
+  double xMin, xMax;
+  if (!RowSpan(edges, y, xMin, xMax))
+  {
+    return false;
+  }
+  constexpr double margin = vtkHighOrderProjectorTile::BoxMargin;
+  r0 = std::max(i0, CeilToInt(xMin - 0.5 - margin) - x0);
+  r1 = std::min(i1, FloorToInt(xMax - 0.5 + margin) - x0);
+  return r0 <= r1;
+}
+
+/**
+ * ProjectedRowRange() for the tile rows [j0, j1] of a projectable cell (tile
+ * origin x0, y0, width w), several rows per vector instruction with the same
+ * results. Appends the non-empty rows' first pixel (j w + r0) and count to
+ * @p start and @p count; returns how many. In
+ * vtkHighOrderProjectorTileLanes.cxx (also compiled for AVX2).
+ */
+#if defined(__GNUC__)
+__attribute__((visibility("hidden")))
+#endif
+int RowRanges(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1, int j0, int j1,
+  int* start, int* count);
+}
+
 /// (Inline: called per row of every cell.)
 inline bool vtkHighOrderProjectorTile::RowRange(
   const CellRecord& cell, const hovTileGeometry::ProjectedEdges& edges, int j, int& r0, int& r1) const
@@ -192,14 +108,7 @@ inline bool vtkHighOrderProjectorTile::RowRange(
   r1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
   if (cell.Projectable)
   {
-    // Only the pixel centres inside the projection (BoxMargin of slack).
-    double xMin, xMax;
-    if (!hovTileGeometry::RowSpan(edges, this->Y0 + j + 0.5, xMin, xMax))
-    {
-      return false;
-    }
-    r0 = std::max(r0, hovTileGeometry::CeilToInt(xMin - 0.5 - BoxMargin) - this->X0);
-    r1 = std::min(r1, hovTileGeometry::FloorToInt(xMax - 0.5 + BoxMargin) - this->X0);
+    return hovTileGeometry::ProjectedRowRange(edges, this->Y0 + j + 0.5, this->X0, r0, r1, r0, r1);
   }
   return r0 <= r1;
 }

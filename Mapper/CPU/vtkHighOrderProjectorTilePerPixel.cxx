@@ -37,6 +37,23 @@ void InsertionSort(T* first, T* last)
 }
 }
 
+void vtkHighOrderProjectorTile::Queue(
+  size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
+{
+  if (this->NumQueued + 1 > this->QueueCapacity)
+  {
+    this->ReserveQueue(this->NumQueued + 1);
+  }
+  const int q = this->NumQueued++;
+  this->QTIn[q] = tIn;
+  this->QTOut[q] = tOut;
+  this->QSIn[q] = sIn;
+  this->QSOut[q] = sOut;
+  this->QLength[q] = tOut - tIn;
+  this->QPixel[q] = static_cast<int>(p);
+  this->QInterval[q] = interval;
+}
+
 /// Visit every (pixel, segment) of ordered cell k in this tile.
 template <typename Visit>
 void vtkHighOrderProjectorTile::ForCellSegments(const Frame& frame, vtkIdType k, Visit&& visit)

@@ -85,11 +85,6 @@ inline bool IsUndecided(const CellRecord& cell, const Ray& ray)
   return parallel;
 }
 
-#if defined(__GNUC__) // GCC and Clang: vector extensions
-/// Four doubles in a GCC/Clang vector: one AVX instruction, or two SSE2 ones.
-typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
-#endif
-
 /**
  * The six projected edges of a cell, set up once per cell for RowSpan():
  * the projection is the convex hull of the projected vertices, and a row

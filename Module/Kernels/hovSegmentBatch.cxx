@@ -1,114 +1,49 @@
 #include "hovSegmentBatch.h"
 
-#include "hovThinSeries.h"       // the scalar kernel's series and term counts
-#include "hovTransferFunction.h" // Evaluate, interval search
+#include "hovSegmentBatchLanes.h" // lane kernels, EvaluatePiece
+#include "hovThinSeries.h"         // term counts
+#include "hovTransferFunction.h"   // interval search
 
-#include <algorithm> // std::max, std::min
+#include <algorithm> // std::max, std::min, std::fill
 #include <cmath>     // std::isfinite
-#include <cstring>   // memcpy into vector registers
-#include <utility>   // integer_sequence (one unrolled series per term count)
 
 namespace hov
 {
+using detail::EvaluatePiece;
+using detail::EvaluateSegments;
+using detail::ThinWilliamsMaxBlocks;
+using detail::Lanes;
+
 namespace
 {
-using detail::Thin;
-
-/// Segments evaluated side by side (a multiple of the SIMD width the
-/// compiler vectorises the lane loops to: 2 for SSE2, 4 for AVX).
-constexpr int Lanes = 4;
-
-// With GCC or Clang on x86-64 the lane loops are also compiled for AVX2 (four
-// lanes per instruction) and the variant is chosen at load time; both variants
-// perform the same IEEE operations (the "avx2" target does not enable FMA, so
-// nothing is contracted into fused multiply-adds; -std=c++17 alone would not
-// prevent it: GCC 12 contracts wherever FMA is enabled), so the result does
-// not depend on the CPU.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
-#define HOV_LANES_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define HOV_LANES_TARGET_CLONES
-#endif
-
-/// Four doubles in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
-typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
-static_assert(Lanes == 4, "one V4 per block");
-
 /**
- * The thin Williams-Max series of hovSegmentIntegral.cxx (ThinWilliamsMax<N>)
- * with N terms for Lanes segments: the same operations in the same order per
- * lane, so each lane's w = WFront (before clamping) and alpha equal the
- * scalar kernel's bit for bit. N is a compile-time constant, so that both
- * loops unroll completely (no loop overhead, independent chains interleaved).
+ * TransferFunction::FindIntervalUpward(@p s) (@p up) or FindIntervalDownward(@p s)
+ * for a finite @p s, walking from the hint of @p interval (<= -3: interval
+ * -3 - interval is near s) if there is one: the largest k with X[k] <= s (or
+ * -1) does not depend on where the walk starts.
  */
-template <int N>
-inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
-  const double* a, const double* d1, double* w, double* alpha)
+inline int FindInterval(const TransferFunction& tf, double s, bool up, int interval)
 {
-  V4 va, vd1;
-  std::memcpy(&va, a, sizeof(V4));
-  std::memcpy(&vd1, d1, sizeof(V4));
-  const V4 r = va / vd1;
-  const V4 d2 = vd1 * vd1;
-  V4 wOdd = {}, wEven = {}, aOdd = {}, aEven = {};
-#pragma GCC unroll 16
-  for (int n = N; n >= 1; --n)
+  if (interval > -3)
   {
-    // q_n(r) = sum_j P0[n][n-j] r^j by Horner's rule (the scalar kernel's q[n]).
-    const double* p = Thin.P0[n];
-    V4 h = V4{} + p[0];
-#pragma GCC unroll 16
-    for (int j = 1; j <= n; ++j)
-    {
-      h = h * r + p[j];
-    }
-    // Outer Horner chains in d1^2 on odd and even terms.
-    const double f = Thin.InvFactorial[n];
-    if (n % 2)
-    {
-      wOdd = wOdd * d2 + h;
-      aOdd = aOdd * d2 + f;
-    }
-    else
-    {
-      wEven = wEven * d2 + h;
-      aEven = aEven * d2 + f;
-    }
+    return up ? tf.FindIntervalUpward(s) : tf.FindIntervalDownward(s);
   }
-  const V4 vw = vd1 * wOdd - d2 * wEven;
-  const V4 valpha = vd1 * aOdd - d2 * aEven;
-  std::memcpy(w, &vw, sizeof(V4));
-  std::memcpy(alpha, &valpha, sizeof(V4));
-}
-
-/// ThinWilliamsMaxLanes<N>() on @p blocks consecutive blocks of Lanes segments.
-template <int N>
-inline __attribute__((always_inline)) void ThinBlocks(
-  const double* a, const double* d1, int blocks, double* w, double* alpha)
-{
-  for (int b = 0; b < blocks; ++b)
+  const std::vector<double>& x = tf.GetNodes();
+  const int n = static_cast<int>(x.size());
+  int k = std::min(-3 - interval, n - 1);
+  while (k >= 0 && x[k] > s)
   {
-    ThinWilliamsMaxLanes<N>(a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
+    --k;
   }
-}
-
-/// ThinBlocks<N>() for the run-time N = @p terms (one call per group of
-/// equal term counts: one dispatch per group, not per block).
-template <int... N>
-inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const double* a,
-  const double* d1, int blocks, double* w, double* alpha, std::integer_sequence<int, N...>)
-{
-  // Exactly one N + 1 equals terms (1 <= terms <= MaxThinOrder).
-  (void)((terms == N + 1 ? (ThinBlocks<N + 1>(a, d1, blocks, w, alpha), true) : false) || ...);
-}
-
-/// The thin series of @p blocks blocks of Lanes segments, all with @p terms terms.
-HOV_LANES_TARGET_CLONES
-void ThinWilliamsMaxBlocks(
-  int terms, const double* a, const double* d1, int blocks, double* w, double* alpha)
-{
-  ThinBlocksDispatch(
-    terms, a, d1, blocks, w, alpha, std::make_integer_sequence<int, detail::MaxThinOrder>());
+  while (k + 1 < n && x[k + 1] <= s)
+  {
+    ++k;
+  }
+  while (!up && k >= 0 && x[k] >= s)
+  {
+    --k; // FindIntervalDownward: the largest k with X[k] < s
+  }
+  return k;
 }
 }
 
@@ -173,10 +108,10 @@ long long SegmentBatch::IntegrateScalar(const TransferFunction& tf,
 /**
  * The interval of each segment (Resolved): its known one, or the one
  * OnePieceInterval() finds; segments crossing nodes are split into Pieces
- * (SplitSegment()) and invalid ones (IntegrateLinearScalar()'s and
- * IntegrateLinearScalarInInterval()'s early returns) written as zero here,
- * both marked Skip. Returns the pieces of the unsplit segments (split ones
- * are counted when composited).
+ * (SplitSegment()) and invalid ones of unknown interval
+ * (IntegrateLinearScalar()'s early return) written as zero here, both marked
+ * Skip (invalid segments of known interval: EvaluateSegments()). Returns the
+ * pieces of the unsplit segments (split ones are counted when composited).
  */
 long long SegmentBatch::ResolveIntervals(
   const TransferFunction& tf, const Arrays& jobs, int count, RGBA* out, int* pieces)
@@ -188,44 +123,45 @@ long long SegmentBatch::ResolveIntervals(
   {
     this->Resolved.resize(count); // grows only: none in steady state
   }
+  // Known intervals as they are (EvaluateSegments() checks those segments);
+  // the others searched here.
   int* __restrict resolved = this->Resolved.data();
+  std::copy(jobs.Interval, jobs.Interval + count, resolved);
+  if (pieces)
+  {
+    std::fill(pieces, pieces + count, 1);
+  }
   const std::vector<double>& nodes = tf.GetNodes();
   const int n = static_cast<int>(nodes.size());
-  long long total = 0;
+  long long total = count;
   for (int i = 0; i < count; ++i)
   {
+    if (resolved[i] >= -1)
+    {
+      continue;
+    }
     const double sFront = jobs.SFront[i], sBack = jobs.SBack[i], length = jobs.Length[i];
-    const bool valid = length > 0.0 && std::isfinite(sFront) && std::isfinite(sBack);
-    int k = jobs.Interval[i];
-    int p = 1;
-    if (k < -1)
+    resolved[i] = Skip;
+    if (!(length > 0.0) || !std::isfinite(sFront) || !std::isfinite(sBack) || n == 0)
     {
-      p = valid && n > 0 ? 1 : 0;
-      if (p)
+      out[i] = RGBA(); // IntegrateLinearScalar(): nothing, no piece
+      --total;
+      if (pieces)
       {
-        // OnePieceInterval(), inline; the walk starts from the same interval.
-        const bool up = sBack - sFront >= 0.0;
-        k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
-        const bool one =
-          up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack);
-        if (!one)
-        {
-          this->SplitSegment(tf, i, k, sFront, sBack, length);
-          resolved[i] = Skip;
-          continue; // counted when composited
-        }
+        pieces[i] = 0;
       }
+      continue;
     }
-    total += p;
-    if (pieces)
+    // OnePieceInterval(), inline; the walk starts from the same interval.
+    const bool up = sBack - sFront >= 0.0;
+    const int k = FindInterval(tf, sFront, up, jobs.Interval[i]);
+    if (up ? (k + 1 >= n || nodes[k + 1] >= sBack) : (k < 0 || nodes[k] <= sBack))
     {
-      pieces[i] = p;
+      resolved[i] = k;
+      continue;
     }
-    resolved[i] = valid && p ? k : Skip;
-    if (resolved[i] == Skip)
-    {
-      out[i] = RGBA();
-    }
+    this->SplitSegment(tf, i, k, sFront, sBack, length);
+    --total; // counted when composited
   }
   return total;
 }
@@ -298,67 +234,15 @@ SegmentBatch::ThinArrays SegmentBatch::ThinLanes(int n)
     this->ThinTerms.data() };
 }
 
-namespace
-{
-/**
- * IntegrateLinearScalarInInterval() -> IntegrateSegment() ->
- * ExactSegmentWeights() for one piece (valid: length > 0, finite ends),
- * taking the thin branch aside for the lanes: a thin piece's depths, colours
- * and number of terms go to lane @p m of @p t, any other piece is integrated
- * here by the scalar kernel into @p dest (its Terms 0).
- */
-inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction& tf, int k,
-  double s0, double s1, double length, const detail::ThinTermByExponent& thinTerms,
-  const SegmentBatch::ThinArrays& t, int m, RGBA& dest)
-{
-  SegmentEnd f, b;
-  tf.Evaluate(k, s0, false, f);
-  tf.Evaluate(k, s1, false, b);
-  const double depthFront = std::max(f.Tau, 0.0) * length;
-  const double depthBack = std::max(b.Tau, 0.0) * length;
-  const double a = std::min(depthFront, detail::DepthCap);
-  const double c = std::min(depthBack, detail::DepthCap);
-  const double d1 = 0.5 * (a + c);
-  if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(d1 > 0.0) ||
-    d1 > detail::ThinDepth)
-  {
-    // Copies: the ends above stay in registers (their address would escape).
-    const SegmentEnd front = f, back = b;
-    dest = IntegrateSegment(length, front, back, EmissionModel::WilliamsMax, SegmentMethod::Exact);
-    t.Terms[m] = 0;
-    return;
-  }
-  t.A[m] = a;
-  t.D1[m] = d1;
-  t.Terms[m] = thinTerms(d1);
-  t.FrontR[m] = f.Color[0];
-  t.FrontG[m] = f.Color[1];
-  t.FrontB[m] = f.Color[2];
-  t.BackR[m] = b.Color[0];
-  t.BackG[m] = b.Color[1];
-  t.BackB[m] = b.Color[2];
-}
-}
-
-/// EvaluatePiece() for the resolved segments (lane i for segment i), then
-/// for the pieces of split ones (lane count + m for piece m).
+/// EvaluateSegments() (lane i for segment i), then EvaluatePiece() for the
+/// pieces of split ones (lane count + m for piece m).
 void SegmentBatch::EvaluateLanes(const TransferFunction& tf,
   const IntegrationSettings& settings, const Arrays& jobs, int count, RGBA* out)
 {
   (void)settings; // Williams-Max, exact (see Integrate())
   const ThinArrays t = this->ThinLanes(count + this->NumPieces);
   const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
-  const int* __restrict resolved = this->Resolved.data();
-  for (int i = 0; i < count; ++i)
-  {
-    if (resolved[i] == Skip)
-    {
-      t.Terms[i] = 0;
-      continue;
-    }
-    EvaluatePiece(tf, resolved[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i], thinTerms, t,
-      i, out[i]);
-  }
+  EvaluateSegments(tf, this->Resolved.data(), Skip, jobs, count, t, out);
   const Piece* __restrict pieces = this->Pieces.data();
   for (int m = 0; m < this->NumPieces; ++m)
   {

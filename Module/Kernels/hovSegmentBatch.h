@@ -16,6 +16,11 @@
  * note that GCC contracts a*b+c even under -std=c++17 wherever FMA is enabled,
  * e.g. with -march=native).
  *
+ * The transfer function is evaluated four segments at a time where four
+ * consecutive segments lie in one interior interval (the segments of one
+ * cell, as the CPU tiles queue them), with Evaluate()'s operations per lane;
+ * one segment at a time otherwise.
+ *
  * A segment whose scalar crosses transfer-function nodes is split into its
  * linear pieces exactly as IntegrateLinearScalar() walks them (same piece
  * ends, same lengths); the pieces join the batch like any segment and are
@@ -26,7 +31,7 @@
  *
  * Thread safety: one SegmentBatch per thread (it owns scratch buffers, reused
  * from call to call so that rendering allocates nothing per frame).
- * @sa hovRayIntegrator.h, hovSegmentIntegral.h, hovThinSeries.h
+ * @sa hovRayIntegrator.h, hovSegmentIntegral.h, hovThinSeries.h, hovSegmentBatchLanes.h
  */
 #ifndef hovSegmentBatch_h
 #define hovSegmentBatch_h
@@ -49,7 +54,9 @@ struct SegmentJob
   double SBack = 0.0;
   double Length = 0.0; ///< world length
   /// The transfer-function interval holding the segment's whole scalar range
-  /// (from IntervalOfRange() over the cell, >= -1), or -2 if unknown.
+  /// (from IntervalOfRange() over the cell, >= -1), or -2 if unknown, or
+  /// -3 - h if unknown but near interval h (e.g. the interval of the cell's
+  /// smallest scalar: where the search for the segment's interval starts).
   int Interval = -2;
 };
 

@@ -123,13 +123,17 @@ public:
    */
   void Evaluate(int k, double s, bool emission, SegmentEnd& out) const;
 
-private:
   /// Values at a node and their slopes d/ds over the interval that starts there.
   struct Node
   {
     double Tau, R, G, B;
     double DTau, DR, DG, DB;
   };
+  /// Node @p k (0 <= k < n) as Evaluate() reads it: for callers that evaluate
+  /// many values of one interval with the same operations (hov::SegmentBatch).
+  const Node& GetNode(int k) const { return this->Nodes[k]; }
+
+private:
   std::vector<double> X;
   std::vector<Node> Nodes;
   /// O(1) interval search: bucket b of a uniform grid over [X0, Xn-1] holds

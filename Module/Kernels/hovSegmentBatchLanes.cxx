@@ -1,0 +1,216 @@
+#include "hovSegmentBatchLanes.h"
+
+#include <cstring> // memcpy into vector registers
+#include <utility> // integer_sequence (one unrolled series per term count)
+
+namespace hov
+{
+namespace detail
+{
+// With GCC or Clang on x86-64 the lane loops are also compiled for AVX2 (four
+// lanes per instruction) and the variant is chosen at load time; both variants
+// perform the same IEEE operations (the "avx2" target does not enable FMA, so
+// nothing is contracted into fused multiply-adds; -std=c++17 alone would not
+// prevent it: GCC 12 contracts wherever FMA is enabled), so the result does
+// not depend on the CPU.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
+#define HOV_LANES_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define HOV_LANES_TARGET_CLONES
+#endif
+
+namespace
+{
+/// Four doubles in a GCC/Clang vector: one AVX2 instruction, or two SSE2 ones.
+typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
+static_assert(Lanes == 4, "one V4 per block");
+
+/**
+ * The thin Williams-Max series of hovSegmentIntegral.cxx (ThinWilliamsMax<N>)
+ * with N terms for Lanes segments: the same operations in the same order per
+ * lane, so each lane's w = WFront (before clamping) and alpha equal the
+ * scalar kernel's bit for bit. N is a compile-time constant, so that both
+ * loops unroll completely (no loop overhead, independent chains interleaved).
+ */
+template <int N>
+inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
+  const double* a, const double* d1, double* w, double* alpha)
+{
+  V4 va, vd1;
+  std::memcpy(&va, a, sizeof(V4));
+  std::memcpy(&vd1, d1, sizeof(V4));
+  const V4 r = va / vd1;
+  const V4 d2 = vd1 * vd1;
+  V4 wOdd = {}, wEven = {}, aOdd = {}, aEven = {};
+#pragma GCC unroll 16
+  for (int n = N; n >= 1; --n)
+  {
+    // q_n(r) = sum_j P0[n][n-j] r^j by Horner's rule (the scalar kernel's q[n]).
+    const double* p = Thin.P0[n];
+    V4 h = V4{} + p[0];
+#pragma GCC unroll 16
+    for (int j = 1; j <= n; ++j)
+    {
+      h = h * r + p[j];
+    }
+    // Outer Horner chains in d1^2 on odd and even terms.
+    const double f = Thin.InvFactorial[n];
+    if (n % 2)
+    {
+      wOdd = wOdd * d2 + h;
+      aOdd = aOdd * d2 + f;
+    }
+    else
+    {
+      wEven = wEven * d2 + h;
+      aEven = aEven * d2 + f;
+    }
+  }
+  const V4 vw = vd1 * wOdd - d2 * wEven;
+  const V4 valpha = vd1 * aOdd - d2 * aEven;
+  std::memcpy(w, &vw, sizeof(V4));
+  std::memcpy(alpha, &valpha, sizeof(V4));
+}
+
+/// ThinWilliamsMaxLanes<N>() on @p blocks consecutive blocks of Lanes segments.
+template <int N>
+inline __attribute__((always_inline)) void ThinBlocks(
+  const double* a, const double* d1, int blocks, double* w, double* alpha)
+{
+  for (int b = 0; b < blocks; ++b)
+  {
+    ThinWilliamsMaxLanes<N>(a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
+  }
+}
+
+/// ThinBlocks<N>() for the run-time N = @p terms (one call per group of
+/// equal term counts: one dispatch per group, not per block).
+template <int... N>
+inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const double* a,
+  const double* d1, int blocks, double* w, double* alpha, std::integer_sequence<int, N...>)
+{
+  // Exactly one N + 1 equals terms (1 <= terms <= MaxThinOrder).
+  (void)((terms == N + 1 ? (ThinBlocks<N + 1>(a, d1, blocks, w, alpha), true) : false) || ...);
+}
+
+/**
+ * EvaluatePiece() for the Lanes segments from @p i, all in the same
+ * interior interval @p k (0 <= k < n - 1), side by side: per lane
+ * TransferFunction::Evaluate()'s operations on node k, then the depths and
+ * the thin test (std::min/max as (b < a ? b : a)/(a < b ? b : a), isfinite as
+ * x - x == 0), so each lane's values are the scalar code's. Writes the lanes
+ * and returns true only if every segment is valid and thin (the caller takes
+ * the others one by one).
+ */
+inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction& tf, int k,
+  const SegmentBatch::Arrays& jobs, int i, const ThinTermByExponent& thinTerms,
+  const SegmentBatch::ThinArrays& t)
+{
+  const double* x = tf.GetNodes().data();
+  const double x0 = x[k], width = x[k + 1] - x[k];
+  const TransferFunction::Node& node = tf.GetNode(k);
+  V4 s0, s1, length;
+  std::memcpy(&s0, jobs.SFront + i, sizeof(V4));
+  std::memcpy(&s1, jobs.SBack + i, sizeof(V4));
+  std::memcpy(&length, jobs.Length + i, sizeof(V4));
+  const V4 zero = {};
+  // ds = std::min(std::max(s - x0, 0.0), width) at both ends.
+  const V4 d0 = s0 - x0, d1s = s1 - x0;
+  const V4 above0 = d0 < 0.0 ? zero : d0, above1 = d1s < 0.0 ? zero : d1s;
+  const V4 ds0 = width < above0 ? zero + width : above0;
+  const V4 ds1 = width < above1 ? zero + width : above1;
+  const V4 tau0 = node.Tau + node.DTau * ds0;
+  const V4 tau1 = node.Tau + node.DTau * ds1;
+  const V4 depthFront = (tau0 < 0.0 ? zero : tau0) * length;
+  const V4 depthBack = (tau1 < 0.0 ? zero : tau1) * length;
+  const V4 a = DepthCap < depthFront ? zero + DepthCap : depthFront;
+  const V4 c = DepthCap < depthBack ? zero + DepthCap : depthBack;
+  const V4 d1 = 0.5 * (a + c);
+  const auto valid = (length > 0.0) & (s0 - s0 == 0.0) & (s1 - s1 == 0.0);
+  const auto thin = valid & (depthFront - depthFront == 0.0) & (depthBack - depthBack == 0.0) &
+    (d1 > 0.0) & (d1 <= ThinDepth);
+  if (!(thin[0] & thin[1] & thin[2] & thin[3]))
+  {
+    return false;
+  }
+  std::memcpy(t.A + i, &a, sizeof(V4));
+  std::memcpy(t.D1 + i, &d1, sizeof(V4));
+  const double base[3] = { node.R, node.G, node.B };
+  const double slope[3] = { node.DR, node.DG, node.DB };
+  double* front[3] = { t.FrontR, t.FrontG, t.FrontB };
+  double* back[3] = { t.BackR, t.BackG, t.BackB };
+  for (int ch = 0; ch < 3; ++ch)
+  {
+    const V4 f = base[ch] + slope[ch] * ds0;
+    const V4 b = base[ch] + slope[ch] * ds1;
+    std::memcpy(front[ch] + i, &f, sizeof(V4));
+    std::memcpy(back[ch] + i, &b, sizeof(V4));
+  }
+  for (int l = 0; l < Lanes; ++l)
+  {
+    t.Terms[i + l] = thinTerms(d1[l]);
+  }
+  return true;
+}
+
+}
+
+/// The thin series of @p blocks blocks of Lanes segments, all with @p terms terms.
+HOV_LANES_TARGET_CLONES
+void ThinWilliamsMaxBlocks(
+  int terms, const double* a, const double* d1, int blocks, double* w, double* alpha)
+{
+  ThinBlocksDispatch(
+    terms, a, d1, blocks, w, alpha, std::make_integer_sequence<int, MaxThinOrder>());
+}
+
+namespace
+{
+/// EvaluatePiece() for segment @p i if it is valid (the early return of
+/// IntegrateLinearScalarInInterval() otherwise); none if resolved[i] is @p skip.
+inline __attribute__((always_inline)) void EvaluateSegment(const TransferFunction& tf,
+  const int* resolved, int skip, const SegmentBatch::Arrays& jobs, int i,
+  const ThinTermByExponent& thinTerms, const SegmentBatch::ThinArrays& t, RGBA* out)
+{
+  const double s0 = jobs.SFront[i], s1 = jobs.SBack[i], length = jobs.Length[i];
+  if (resolved[i] == skip || !(length > 0.0) || !std::isfinite(s0) || !std::isfinite(s1))
+  {
+    if (resolved[i] != skip)
+    {
+      out[i] = RGBA();
+    }
+    t.Terms[i] = 0;
+    return;
+  }
+  EvaluatePiece(tf, resolved[i], s0, s1, length, thinTerms, t, i, out[i]);
+}
+}
+
+/// EvaluateSegments(): blocks through EvaluateBlock(). Compiled also for AVX2.
+HOV_LANES_TARGET_CLONES
+void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
+  const SegmentBatch::Arrays& jobs, int count, const SegmentBatch::ThinArrays& t, RGBA* out)
+{
+  const ThinTermByExponent& thinTerms = ThinTerms();
+  const int last = tf.GetNumberOfNodes() - 2; // the last interior interval
+  int i = 0;
+  for (; i + Lanes <= count; i += Lanes)
+  {
+    const int k = resolved[i];
+    const bool same = (resolved[i + 1] == k) & (resolved[i + 2] == k) & (resolved[i + 3] == k);
+    if (same && k >= 0 && k <= last && EvaluateBlock(tf, k, jobs, i, thinTerms, t))
+    {
+      continue;
+    }
+    for (int l = i; l < i + Lanes; ++l)
+    {
+      EvaluateSegment(tf, resolved, skip, jobs, l, thinTerms, t, out);
+    }
+  }
+  for (; i < count; ++i)
+  {
+    EvaluateSegment(tf, resolved, skip, jobs, i, thinTerms, t, out);
+  }
+}
+}
+}

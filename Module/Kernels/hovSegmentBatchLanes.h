@@ -1,0 +1,91 @@
+/**
+ * @file hovSegmentBatchLanes.h
+ * @brief Internal to hov::SegmentBatch: its lane kernels (the thin series of
+ * four segments at a time, the transfer function at four segments of one
+ * interval at a time) and the one-segment evaluation they fall back to, each
+ * with exactly the scalar kernels' operations (see hovSegmentBatch.h).
+ *
+ * Not part of the public API (namespace hov::detail).
+ */
+#ifndef hovSegmentBatchLanes_h
+#define hovSegmentBatchLanes_h
+
+#include "hovSegmentBatch.h"     // Arrays, ThinArrays
+#include "hovThinSeries.h"       // thin-series branch threshold and term counts
+#include "hovTransferFunction.h" // Evaluate
+
+#include <algorithm> // std::max, std::min
+#include <cmath>     // std::isfinite
+
+#if defined(__GNUC__)
+#define HOV_LANES_HIDDEN __attribute__((visibility("hidden")))
+#else
+#define HOV_LANES_HIDDEN
+#endif
+
+namespace hov
+{
+namespace detail
+{
+/// Segments evaluated side by side (one V4 of the lane kernels).
+constexpr int Lanes = 4;
+
+/**
+ * IntegrateLinearScalarInInterval() -> IntegrateSegment() ->
+ * ExactSegmentWeights() for one piece (valid: length > 0, finite ends),
+ * taking the thin branch aside for the lanes: a thin piece's depths, colours
+ * and number of terms go to lane @p m of @p t, any other piece is integrated
+ * here by the scalar kernel into @p dest (its Terms 0).
+ */
+inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction& tf, int k,
+  double s0, double s1, double length, const ThinTermByExponent& thinTerms,
+  const SegmentBatch::ThinArrays& t, int m, RGBA& dest)
+{
+  SegmentEnd f, b;
+  tf.Evaluate(k, s0, false, f);
+  tf.Evaluate(k, s1, false, b);
+  const double depthFront = std::max(f.Tau, 0.0) * length;
+  const double depthBack = std::max(b.Tau, 0.0) * length;
+  const double a = std::min(depthFront, DepthCap);
+  const double c = std::min(depthBack, DepthCap);
+  const double d1 = 0.5 * (a + c);
+  if (!std::isfinite(depthFront) || !std::isfinite(depthBack) || !(d1 > 0.0) ||
+    d1 > ThinDepth)
+  {
+    // Copies: the ends above stay in registers (their address would escape).
+    const SegmentEnd front = f, back = b;
+    dest = IntegrateSegment(length, front, back, EmissionModel::WilliamsMax, SegmentMethod::Exact);
+    t.Terms[m] = 0;
+    return;
+  }
+  t.A[m] = a;
+  t.D1[m] = d1;
+  t.Terms[m] = thinTerms(d1);
+  t.FrontR[m] = f.Color[0];
+  t.FrontG[m] = f.Color[1];
+  t.FrontB[m] = f.Color[2];
+  t.BackR[m] = b.Color[0];
+  t.BackG[m] = b.Color[1];
+  t.BackB[m] = b.Color[2];
+}
+
+
+/**
+ * The thin series (w = WFront before clamping, and alpha) of @p blocks
+ * consecutive blocks of Lanes segments (depth rates @p a, total depths
+ * @p d1), all with @p terms terms, exactly as the scalar kernel.
+ */
+HOV_LANES_HIDDEN void ThinWilliamsMaxBlocks(
+  int terms, const double* a, const double* d1, int blocks, double* w, double* alpha);
+
+/**
+ * EvaluatePiece() for the resolved segments (lane i for segment i;
+ * resolved[i] == @p skip: none), Lanes at a time where they share an
+ * interior interval.
+ */
+HOV_LANES_HIDDEN void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
+  const SegmentBatch::Arrays& jobs, int count, const SegmentBatch::ThinArrays& t, RGBA* out);
+}
+}
+
+#endif
