@@ -10,7 +10,6 @@
 
 #include <algorithm> // std::sort
 #include <limits>    // infinity
-#include <numeric>   // std::iota
 
 namespace
 {
@@ -271,15 +270,16 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
   return total;
 }
 
-void vtkHighOrderProjectionRegions::CentroidOrder(const vtkHighOrderTetraSetup& setup,
-  const Settings& settings, std::vector<vtkIdType>& backToFront)
+void vtkHighOrderProjectionRegions::CentroidOrder(
+  const vtkHighOrderTetraSetup& setup, const Settings& settings, std::vector<vtkIdType>& backToFront)
 {
   const std::vector<vtkHighOrderTetraSetup::Tetra>& tetras = setup.GetTetras();
   const auto& general = setup.GetGeneralCells();
   const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
   const vtkIdType n = setup.GetNumberOfRenderedCells();
-  std::vector<double> key(n);
   const std::vector<glm::dvec3>& points = setup.GetPoints();
+  std::vector<std::pair<double, vtkIdType>>& keys = this->OrderKeys;
+  keys.resize(n);
   vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
     for (vtkIdType i = first; i < last; ++i)
     {
@@ -303,11 +303,20 @@ void vtkHighOrderProjectionRegions::CentroidOrder(const vtkHighOrderTetraSetup& 
         c /= static_cast<double>(std::max(cell.NodeCount, 1));
       }
       const glm::dvec3 d = c - settings.Eye;
-      key[i] = settings.Parallel ? glm::dot(c, settings.Direction) : glm::dot(d, d);
+      keys[i] = { settings.Parallel ? glm::dot(c, settings.Direction) : glm::dot(d, d), i };
     }
   });
+  // Farthest first, ties by index: a strict total order, so the parallel sort
+  // gives the same result on any number of threads.
+  vtkSMPTools::Sort(keys.begin(), keys.end(),
+    [](const std::pair<double, vtkIdType>& a, const std::pair<double, vtkIdType>& b) {
+      return a.first > b.first || (a.first == b.first && a.second < b.second);
+    });
   backToFront.resize(n);
-  std::iota(backToFront.begin(), backToFront.end(), vtkIdType(0));
-  std::sort(backToFront.begin(), backToFront.end(),
-    [&key](vtkIdType a, vtkIdType b) { return key[a] > key[b] || (key[a] == key[b] && a < b); });
+  vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      backToFront[i] = keys[i].second;
+    }
+  });
 }

@@ -62,7 +62,8 @@
 
 #include <glm/glm.hpp> // dvec3, dmat4
 
-#include <vector> // buffers
+#include <utility> // pair
+#include <vector>  // buffers
 
 class vtkHighOrderTetraSetup;
 namespace hov
@@ -126,12 +127,14 @@ public:
    * The approximate order (for interaction): rendered cells sorted back to
    * front by the distance of their corner centroid from the eye (perspective)
    * or its depth along the direction of projection (parallel); ties by index.
+   * Keys computed and sorted in parallel (vtkSMPTools::Sort), kept across frames.
    */
-  static void CentroidOrder(const vtkHighOrderTetraSetup& setup, const Settings& settings,
+  void CentroidOrder(const vtkHighOrderTetraSetup& setup, const Settings& settings,
     std::vector<vtkIdType>& backToFront);
 
 private:
   hov::SegmentColorTable ColorTable;
+  std::vector<std::pair<double, vtkIdType>> OrderKeys;
 };
 
 #endif

@@ -135,7 +135,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     }
     else
     {
-      vtkHighOrderProjectionRegions::CentroidOrder(*setup, settings, proj.BackToFront);
+      proj.Regions.CentroidOrder(*setup, settings, proj.BackToFront);
     }
     proj.Statistics =
       proj.Regions.Build(*setup, proj.BackToFront, tf->GetTable(), settings, proj.Geometry);
