@@ -10,9 +10,17 @@
 // emission (HOV_GLOW, hovProjectionColor.h). Fragments behind the opaque
 // geometry already drawn fail the depth test (vtkHighOrderProjectionRenderer).
 in vec3 segmentVS;
-in vec4 colorAlphaVS;
+in vec3 colorVS;
+#if !HOV_TEXTURE_OPACITY
+in float alphaVS;
+#endif
 #if HOV_PERSPECTIVE
-in vec3 frontVS;
+// The front point relative to the eye is P = w D(x, y): w its clip w
+// (1 / gl_FragCoord.w) and D, the ray's point of clip w 1 minus the eye,
+// affine in the window coordinates (x, y): D = rayOrigin + x rayDx + y rayDy.
+uniform vec3 rayOrigin;
+uniform vec3 rayDx;
+uniform vec3 rayDy;
 #endif
 #if HOV_TEXTURE_OPACITY
 uniform sampler2D opacityTable;
@@ -36,7 +44,8 @@ void main()
   // Segment length and average extinction (vtkHighOrderProjectionVertex).
 #if HOV_PERSPECTIVE
   float inverseMu = 1.0 / max(segmentVS.x, 1e-30);
-  float len = length(frontVS) * max(inverseMu - 1.0, 0.0);
+  vec3 ray = rayOrigin + gl_FragCoord.x * rayDx + gl_FragCoord.y * rayDy;
+  float len = length(ray) / gl_FragCoord.w * max(inverseMu - 1.0, 0.0);
   float tauAvg = 0.5 * (segmentVS.y + segmentVS.z * inverseMu);
 #else
   float len = segmentVS.x;
@@ -46,14 +55,14 @@ void main()
 #if HOV_TEXTURE_OPACITY
   float alpha = hovOpacityFromTexture(depth);
 #else
-  float alpha = clamp(colorAlphaVS.a, 0.0, 1.0);
+  float alpha = clamp(alphaVS, 0.0, 1.0);
 #endif
 #if HOV_GLOW
   // Effective glow g times L phi(D) = L (1 - e^-D)/D, D = L tau_avg (= alpha
   // / tau_avg; its series below D = 1e-3, where alpha / tau_avg loses digits).
   float glow = depth > 1e-3 ? alpha / tauAvg : len * (1.0 - 0.5 * depth);
-  gl_FragData[0] = vec4(colorAlphaVS.rgb * glow, alpha);
+  gl_FragData[0] = vec4(colorVS * glow, alpha);
 #else
-  gl_FragData[0] = vec4(colorAlphaVS.rgb * alpha, alpha);
+  gl_FragData[0] = vec4(colorVS * alpha, alpha);
 #endif
 }
