@@ -15,12 +15,7 @@ in vec3 colorVS;
 in float alphaVS;
 #endif
 #if HOV_PERSPECTIVE
-// The front point relative to the eye is P = w D(x, y): w its clip w
-// (1 / gl_FragCoord.w) and D, the ray's point of clip w 1 minus the eye,
-// affine in the window coordinates (x, y): D = rayOrigin + x rayDx + y rayDy.
-uniform vec3 rayOrigin;
-uniform vec3 rayDx;
-uniform vec3 rayDy;
+in vec3 frontVS;
 #endif
 #if HOV_TEXTURE_OPACITY
 uniform sampler2D opacityTable;
@@ -44,8 +39,7 @@ void main()
   // Segment length and average extinction (vtkHighOrderProjectionVertex).
 #if HOV_PERSPECTIVE
   float inverseMu = 1.0 / max(segmentVS.x, 1e-30);
-  vec3 ray = rayOrigin + gl_FragCoord.x * rayDx + gl_FragCoord.y * rayDy;
-  float len = length(ray) / gl_FragCoord.w * max(inverseMu - 1.0, 0.0);
+  float len = length(frontVS) * max(inverseMu - 1.0, 0.0);
   float tauAvg = 0.5 * (segmentVS.y + segmentVS.z * inverseMu);
 #else
   float len = segmentVS.x;

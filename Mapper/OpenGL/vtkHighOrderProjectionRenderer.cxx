@@ -229,20 +229,18 @@ void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
   }
   if (!options.Parallel)
   {
-    // D(n) = h.xyz - eye h.w, h = ClipToData (n.x, n.y, 0, 1): the point of
-    // clip w 1 on the ray through NDC n, minus the eye (linear in n); in
-    // window coordinates x = (n.x + 1) W / 2 of the target.
-    const glm::dmat4& m = options.ClipToData;
-    auto ray = [&](const glm::dvec4& h) { return glm::dvec3(h) - options.Eye * h.w; };
-    const glm::dvec3 dx = ray(m[0]), dy = ray(m[1]), d0 = ray(m[3]);
-    const glm::dvec3 origin = d0 - dx - dy;
-    const glm::dvec3 perX = dx * (2.0 / this->Width), perY = dy * (2.0 / this->Height);
-    const float o[3] = { float(origin.x), float(origin.y), float(origin.z) };
-    const float x[3] = { float(perX.x), float(perX.y), float(perX.z) };
-    const float y[3] = { float(perY.x), float(perY.y), float(perY.z) };
-    this->Program->SetUniform3f("rayOrigin", o);
-    this->Program->SetUniform3f("rayDx", x);
-    this->Program->SetUniform3f("rayDy", y);
+    float matrix[16]; // column-major, as GL expects
+    for (int c = 0; c < 4; ++c)
+    {
+      for (int r = 0; r < 4; ++r)
+      {
+        matrix[4 * c + r] = static_cast<float>(options.ClipToData[c][r]);
+      }
+    }
+    const float eye[3] = { static_cast<float>(options.Eye.x), static_cast<float>(options.Eye.y),
+      static_cast<float>(options.Eye.z) };
+    this->Program->SetUniformMatrix4x4("clipToData", matrix);
+    this->Program->SetUniform3f("eye", eye);
   }
 }
 

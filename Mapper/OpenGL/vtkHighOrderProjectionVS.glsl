@@ -6,7 +6,9 @@
 // segment quantities (L | mu, tauFront, tauBack | tauBack mu), linear on the
 // front face (the default perspective-correct interpolation is exact for
 // them), the colour and the vertex opacity (method M0 only: no other variant
-// interpolates it).
+// interpolates it). Perspective: the front point relative to the eye, P, is
+// recovered from the clip position (clip -> dataset matrix), also linear on
+// the front face.
 in vec4 vertexClip;
 in vec3 segmentIn;
 in vec4 colorAlpha;
@@ -15,6 +17,11 @@ out vec3 colorVS;
 #if !HOV_TEXTURE_OPACITY
 out float alphaVS;
 #endif
+#if HOV_PERSPECTIVE
+uniform mat4 clipToData;
+uniform vec3 eye;
+out vec3 frontVS;
+#endif
 void main()
 {
   gl_Position = vertexClip;
@@ -22,5 +29,9 @@ void main()
   colorVS = colorAlpha.rgb;
 #if !HOV_TEXTURE_OPACITY
   alphaVS = colorAlpha.a;
+#endif
+#if HOV_PERSPECTIVE
+  vec4 h = clipToData * vertexClip;
+  frontVS = h.xyz / h.w - eye;
 #endif
 }

@@ -12,9 +12,9 @@
  *    (mu, tauFront, tauBack mu) with mu = |P| / |Q| (P, Q the front and back
  *    points relative to the eye). These are linear over the region on the
  *    front face, so perspective-correct interpolation is exact for them; the
- *    fragment shader gets |P| from its window position and clip w (P = w D,
- *    D affine in the window coordinates) and L = |P| (1/mu - 1), tau_avg =
- *    (tauFront + (tauBack mu)/mu)/2 (vtkHighOrderProjectionFS.glsl);
+ *    vertex shader recovers P from the clip position (clip -> dataset matrix)
+ *    and the fragment shader L = |P| (1/mu - 1), tau_avg = (tauFront +
+ *    (tauBack mu)/mu)/2 (vtkHighOrderProjectionFS.glsl);
  *  - 7-9: colour by method M0-M3 (hov::ComputeProjectionVertex);
  *  - 10: the vertex opacity 1 - exp(-L tau_avg) (method M0 only).
  * A vertex at a cell corner has L = 0: its colour is the transfer function's
