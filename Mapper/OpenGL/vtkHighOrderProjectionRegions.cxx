@@ -9,6 +9,8 @@
 #include "vtkSMPTools.h" // parallel cells
 
 #include <algorithm> // std::sort
+#include <cstdint>   // uint32_t, uint64_t
+#include <cstring>   // std::memcpy
 #include <limits>    // infinity
 
 namespace
@@ -270,6 +272,49 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
   return total;
 }
 
+namespace
+{
+/// An unsigned integer with the order of the float @p f, reversed (larger first).
+uint32_t FarthestFirstBits(float f)
+{
+  uint32_t u = 0;
+  std::memcpy(&u, &f, sizeof(u));
+  const uint32_t ascending = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  return ~ascending;
+}
+
+/**
+ * Sort @p items (key bits << 32 | index) ascending by their key bits: LSD
+ * radix sort, 4 stable passes of 8 bits, so equal keys keep their (index)
+ * order. @p scratch is resized.
+ */
+void RadixSortByKey(std::vector<uint64_t>& items, std::vector<uint64_t>& scratch)
+{
+  scratch.resize(items.size());
+  for (int shift = 32; shift < 64; shift += 8)
+  {
+    size_t count[257] = { 0 };
+    for (uint64_t item : items)
+    {
+      ++count[((item >> shift) & 0xff) + 1];
+    }
+    if (count[((items.empty() ? 0 : items[0] >> shift) & 0xff) + 1] == items.size())
+    {
+      continue; // every key has this digit: nothing to do
+    }
+    for (int d = 0; d < 256; ++d)
+    {
+      count[d + 1] += count[d];
+    }
+    for (uint64_t item : items)
+    {
+      scratch[count[(item >> shift) & 0xff]++] = item;
+    }
+    items.swap(scratch);
+  }
+}
+}
+
 void vtkHighOrderProjectionRegions::CentroidOrder(
   const vtkHighOrderTetraSetup& setup, const Settings& settings, std::vector<vtkIdType>& backToFront)
 {
@@ -278,8 +323,8 @@ void vtkHighOrderProjectionRegions::CentroidOrder(
   const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
   const vtkIdType n = setup.GetNumberOfRenderedCells();
   const std::vector<glm::dvec3>& points = setup.GetPoints();
-  std::vector<std::pair<double, vtkIdType>>& keys = this->OrderKeys;
-  keys.resize(n);
+  std::vector<uint64_t>& items = this->OrderItems;
+  items.resize(n);
   vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
     for (vtkIdType i = first; i < last; ++i)
     {
@@ -303,20 +348,16 @@ void vtkHighOrderProjectionRegions::CentroidOrder(
         c /= static_cast<double>(std::max(cell.NodeCount, 1));
       }
       const glm::dvec3 d = c - settings.Eye;
-      keys[i] = { settings.Parallel ? glm::dot(c, settings.Direction) : glm::dot(d, d), i };
+      const double key = settings.Parallel ? glm::dot(c, settings.Direction) : glm::dot(d, d);
+      items[i] = (uint64_t(FarthestFirstBits(static_cast<float>(key))) << 32) | uint64_t(i);
     }
   });
-  // Farthest first, ties by index: a strict total order, so the parallel sort
-  // gives the same result on any number of threads.
-  vtkSMPTools::Sort(keys.begin(), keys.end(),
-    [](const std::pair<double, vtkIdType>& a, const std::pair<double, vtkIdType>& b) {
-      return a.first > b.first || (a.first == b.first && a.second < b.second);
-    });
+  RadixSortByKey(items, this->OrderScratch);
   backToFront.resize(n);
   vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
     for (vtkIdType i = first; i < last; ++i)
     {
-      backToFront[i] = keys[i].second;
+      backToFront[i] = static_cast<vtkIdType>(items[i] & 0xffffffffu);
     }
   });
 }

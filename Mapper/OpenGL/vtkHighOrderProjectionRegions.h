@@ -62,7 +62,7 @@
 
 #include <glm/glm.hpp> // dvec3, dmat4
 
-#include <utility> // pair
+#include <cstdint> // uint64_t
 #include <vector>  // buffers
 
 class vtkHighOrderTetraSetup;
@@ -126,15 +126,17 @@ public:
   /**
    * The approximate order (for interaction): rendered cells sorted back to
    * front by the distance of their corner centroid from the eye (perspective)
-   * or its depth along the direction of projection (parallel); ties by index.
-   * Keys computed and sorted in parallel (vtkSMPTools::Sort), kept across frames.
+   * or its depth along the direction of projection (parallel), as a float
+   * (cells closer than its resolution count as tied); ties by index. Keys in
+   * parallel, then a radix sort (linear time); storage kept across frames.
+   * At most 2^32 cells.
    */
   void CentroidOrder(const vtkHighOrderTetraSetup& setup, const Settings& settings,
     std::vector<vtkIdType>& backToFront);
 
 private:
   hov::SegmentColorTable ColorTable;
-  std::vector<std::pair<double, vtkIdType>> OrderKeys;
+  std::vector<uint64_t> OrderItems, OrderScratch; ///< (key bits << 32 | cell)
 };
 
 #endif
