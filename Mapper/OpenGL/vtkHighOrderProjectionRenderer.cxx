@@ -155,7 +155,7 @@ void* MapForWriting(vtkOpenGLBufferObject* buffer, vtkOpenGLBufferObject::Object
     glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STREAM_DRAW);
   }
   return glMapBufferRange(target, 0, static_cast<GLsizeiptr>(bytes),
-    GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+    GL_MAP_WRITE_BIT);
 }
 }
 
