@@ -266,7 +266,16 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren,
   if (ok)
   {
     this->SetUniforms(options);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr);
+    // Batches with a flush after each: a software rasterizer (llvmpipe) then
+    // rasterizes one batch while the vertices of the next are processed.
+    constexpr size_t batch = 3 * 32768;
+    for (size_t first = 0; first < count; first += batch)
+    {
+      const size_t n = std::min(batch, count - first);
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(n), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(first * sizeof(unsigned int)));
+      glFlush();
+    }
     if (options.TextureOpacity)
     {
       this->OpacityTable->Deactivate();
