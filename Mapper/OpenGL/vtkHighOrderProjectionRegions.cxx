@@ -118,12 +118,11 @@ struct CellEmitter
    * the tetrahedron PrefetchCells ahead and the points of the one half as far
    * ahead (its record has arrived by then) so that Emit does not wait for memory.
    */
-  void Prefetch(const std::vector<vtkIdType>& order, vtkIdType i) const
+  void Prefetch(const std::vector<vtkIdType>& order, vtkIdType i, vtkIdType n) const
   {
     constexpr vtkIdType far = 16, near = 8;
     const auto& tetras = this->Setup->GetTetras();
     const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
-    const vtkIdType n = static_cast<vtkIdType>(order.size());
     if (i + far < n && order[i + far] >= 0 && order[i + far] < numTetras)
     {
       const char* t = reinterpret_cast<const char*>(&tetras[order[i + far]]);
@@ -219,10 +218,13 @@ struct CellEmitter
 }
 
 vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
-  const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront,
-  const hov::TransferFunction& tf, const Settings& settings, Geometry& geometry) const
+  const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront, vtkIdType begin,
+  vtkIdType end, const hov::TransferFunction& tf, const Settings& settings,
+  Geometry& geometry) const
 {
-  const vtkIdType numCells = static_cast<vtkIdType>(backToFront.size());
+  begin = std::max<vtkIdType>(begin, 0);
+  end = std::min(end, static_cast<vtkIdType>(backToFront.size()));
+  const vtkIdType numCells = std::max<vtkIdType>(end - begin, 0);
   const vtkIdType numChunks = (numCells + CellsPerChunk - 1) / CellsPerChunk;
   geometry.Clear();
   if (static_cast<vtkIdType>(geometry.Chunks.size()) < numChunks)
@@ -245,10 +247,10 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
     CellEmitter emitter{ &setup, &tf, &settings, &frame, {}, {} };
     for (vtkIdType chunk = first; chunk < last; ++chunk)
     {
-      const vtkIdType end = std::min(numCells, (chunk + 1) * CellsPerChunk);
-      for (vtkIdType i = chunk * CellsPerChunk; i < end; ++i)
+      const vtkIdType stop = begin + std::min(numCells, (chunk + 1) * CellsPerChunk);
+      for (vtkIdType i = begin + chunk * CellsPerChunk; i < stop; ++i)
       {
-        emitter.Prefetch(backToFront, i);
+        emitter.Prefetch(backToFront, i, end);
         emitter.Emit(backToFront[i], geometry.Chunks[chunk], stats[chunk]);
       }
     }
@@ -262,12 +264,7 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
     const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
     geometry.VertexOffsets[c + 1] = geometry.VertexOffsets[c] + chunk.NumberOfVertices();
     geometry.IndexOffsets[c + 1] = geometry.IndexOffsets[c] + chunk.Indices.Size();
-    total.Cells += stats[c].Cells;
-    total.Slabs += stats[c].Slabs;
-    total.Triangles += stats[c].Triangles;
-    total.BehindEye += stats[c].BehindEye;
-    total.CutGeneral += stats[c].CutGeneral;
-    total.FastTetras += stats[c].FastTetras;
+    total.Add(stats[c]);
   }
   return total;
 }

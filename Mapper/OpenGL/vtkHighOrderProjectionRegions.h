@@ -114,14 +114,25 @@ public:
     vtkIdType BehindEye = 0;  ///< cells skipped: a corner on or behind the eye plane
     vtkIdType CutGeneral = 0; ///< non-tetrahedral cells cut by transfer-function nodes (approximate)
     vtkIdType FastTetras = 0; ///< tetrahedra drawn by vtkHighOrderProjectionTetra
+
+    void Add(const Statistics& other)
+    {
+      this->Cells += other.Cells;
+      this->Slabs += other.Slabs;
+      this->Triangles += other.Triangles;
+      this->BehindEye += other.BehindEye;
+      this->CutGeneral += other.CutGeneral;
+      this->FastTetras += other.FastTetras;
+    }
   };
 
   /**
-   * Triangles of all rendered cells of @p setup in the order @p backToFront
-   * (rendered-cell indices) into @p geometry.
+   * Triangles of the rendered cells backToFront[begin .. end) of @p setup
+   * (rendered-cell indices, back to front) into @p geometry (cleared first).
    */
   Statistics Build(const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront,
-    const hov::TransferFunction& tf, const Settings& settings, Geometry& geometry) const;
+    vtkIdType begin, vtkIdType end, const hov::TransferFunction& tf, const Settings& settings,
+    Geometry& geometry) const;
 
   /**
    * The approximate order (for interaction): rendered cells sorted back to

@@ -26,6 +26,10 @@
 
 namespace
 {
+/// Cells per group at least (vtkHighOrderProjectionRenderer draws a group
+/// while the next is built; at most 16 groups).
+constexpr vtkIdType CellsPerGroup = 16384;
+
 /// VTK's row-major matrix as glm's column-major one.
 glm::dmat4 ToGlm(vtkMatrix4x4* m)
 {
@@ -120,14 +124,13 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   const vtkHighOrderTetraSetup* setup = nullptr;
   const std::vector<vtkIdType>* frontToBack = nullptr;
   vtkHighOrderTransferFunction* tf = nullptr;
-  proj.Geometry.Clear();
-  vtkHighOrderProjectionRenderer::Options options;
+  vtkHighOrderProjectionRegions::Settings settings;
+  ViewSettings(camera, vol, ren->GetTiledAspectRatio(), settings);
+  settings.Method = static_cast<hov::ProjectionColorMethod>(this->ProjectionColorMethod);
+  settings.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
+  proj.BackToFront.clear();
   if (this->PrepareProjectionFrame(camera, vol, exactOrder, &setup, &frontToBack, &tf))
   {
-    vtkHighOrderProjectionRegions::Settings settings;
-    ViewSettings(camera, vol, ren->GetTiledAspectRatio(), settings);
-    settings.Method = static_cast<hov::ProjectionColorMethod>(this->ProjectionColorMethod);
-    settings.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
     if (exactOrder)
     {
       proj.BackToFront.resize(frontToBack->size());
@@ -137,22 +140,36 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     {
       proj.Regions.CentroidOrder(*setup, settings, proj.BackToFront);
     }
-    proj.Statistics =
-      proj.Regions.Build(*setup, proj.BackToFront, tf->GetTable(), settings, proj.Geometry);
-    options.ClipToData = glm::inverse(settings.Composite);
-    options.Eye = settings.Eye;
-    this->NumberOfProjectedTriangles = proj.Statistics.Triangles;
-    this->NumberOfProjectedSlabs = proj.Statistics.Slabs;
   }
+  // The cells in groups, built while the previous group is drawn.
+  const vtkIdType total = static_cast<vtkIdType>(proj.BackToFront.size());
+  const vtkIdType group = std::max<vtkIdType>(CellsPerGroup, total / 16);
+  vtkIdType next = 0;
+  proj.Statistics = vtkHighOrderProjectionRegions::Statistics();
+  auto produce = [&](vtkHighOrderProjectionRegions::Geometry& geometry) {
+    if (next >= total)
+    {
+      return false;
+    }
+    proj.Statistics.Add(proj.Regions.Build(
+      *setup, proj.BackToFront, next, next + group, tf->GetTable(), settings, geometry));
+    next += group;
+    return true;
+  };
+  vtkHighOrderProjectionRenderer::Options options;
   options.TextureOpacity = this->ProjectionColorMethod != INTERPOLATED_OPACITY;
   options.PremultipliedColor = this->EmissionModel == WILHELMS_VAN_GELDER;
-  options.Parallel = camera->GetParallelProjection() != 0;
+  options.Parallel = settings.Parallel;
+  options.ClipToData = glm::inverse(settings.Composite);
+  options.Eye = settings.Eye;
   float* pixels = FloatImagePixels(this->GetFloatImage(), width, height);
-  if (!proj.Renderer.Render(ren, proj.Geometry, options, depth, width, height, pixels))
+  if (!proj.Renderer.Render(ren, produce, proj.Geometry, options, depth, width, height, pixels))
   {
     vtkErrorMacro("Could not draw the cell projection with OpenGL.");
     std::fill(pixels, pixels + static_cast<size_t>(width) * height * 4, 0.0f);
   }
+  this->NumberOfProjectedTriangles = proj.Statistics.Triangles;
+  this->NumberOfProjectedSlabs = proj.Statistics.Slabs;
   timer->StopTimer();
   this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
 }
