@@ -281,33 +281,77 @@ uint32_t FarthestFirstBits(float f)
 }
 
 /**
+ * One stable counting pass of an LSD radix sort on the 8-bit digit at
+ * @p shift: @p blocks consecutive blocks histogrammed and scattered in
+ * parallel (block b's items of digit d go after those of the blocks before
+ * it). False (nothing moved) if every item has the same digit.
+ */
+bool RadixPass(const std::vector<uint64_t>& items, std::vector<uint64_t>& out, int shift,
+  vtkIdType blocks)
+{
+  const vtkIdType n = static_cast<vtkIdType>(items.size());
+  std::vector<size_t> count(static_cast<size_t>(blocks) * 256, 0);
+  auto range = [&](vtkIdType b, vtkIdType& first, vtkIdType& last) {
+    first = n * b / blocks;
+    last = n * (b + 1) / blocks;
+  };
+  vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType b = b0, first, last; b < b1; ++b)
+    {
+      range(b, first, last);
+      size_t* c = count.data() + 256 * b;
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        ++c[(items[i] >> shift) & 0xff];
+      }
+    }
+  });
+  size_t offset = 0;
+  for (int d = 0; d < 256; ++d)
+  {
+    const size_t before = offset;
+    for (vtkIdType b = 0; b < blocks; ++b)
+    {
+      const size_t c = count[256 * b + d];
+      count[256 * b + d] = offset;
+      offset += c;
+    }
+    if (offset - before == static_cast<size_t>(n))
+    {
+      return false; // every key has this digit: nothing to do
+    }
+  }
+  vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType b = b0, first, last; b < b1; ++b)
+    {
+      range(b, first, last);
+      size_t* c = count.data() + 256 * b;
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        out[c[(items[i] >> shift) & 0xff]++] = items[i];
+      }
+    }
+  });
+  return true;
+}
+
+/**
  * Sort @p items (key bits << 32 | index) ascending by their key bits: LSD
- * radix sort, 4 stable passes of 8 bits, so equal keys keep their (index)
- * order. @p scratch is resized.
+ * radix sort, 4 stable passes of 8 bits (in parallel blocks), so equal keys
+ * keep their (index) order. @p scratch is resized.
  */
 void RadixSortByKey(std::vector<uint64_t>& items, std::vector<uint64_t>& scratch)
 {
   scratch.resize(items.size());
+  // Fixed by the size (not the thread count), so the result is deterministic.
+  const vtkIdType blocks =
+    std::max<vtkIdType>(1, std::min<vtkIdType>(64, static_cast<vtkIdType>(items.size()) / 512));
   for (int shift = 32; shift < 64; shift += 8)
   {
-    size_t count[257] = { 0 };
-    for (uint64_t item : items)
+    if (RadixPass(items, scratch, shift, blocks))
     {
-      ++count[((item >> shift) & 0xff) + 1];
+      items.swap(scratch);
     }
-    if (count[((items.empty() ? 0 : items[0] >> shift) & 0xff) + 1] == items.size())
-    {
-      continue; // every key has this digit: nothing to do
-    }
-    for (int d = 0; d < 256; ++d)
-    {
-      count[d + 1] += count[d];
-    }
-    for (uint64_t item : items)
-    {
-      scratch[count[(item >> shift) & 0xff]++] = item;
-    }
-    items.swap(scratch);
   }
 }
 }

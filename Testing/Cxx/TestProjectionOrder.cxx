@@ -1,6 +1,7 @@
 // OPENGL_PROJECTION mode, approximate order (SetProjectionOrder(1): cells
 // sorted by the distance of their corner centroid from the eye, a radix sort
-// of float keys, ties by cell index) against the exact Stein order on meshes
+// of float keys in parallel blocks of 512 cells or more, ties by cell index)
+// against the exact Stein order on meshes
 // where the two differ little: the 6x6x6 Kuhn cube (1296 tets, linear field)
 // and the holed block (non-convex), perspective, M1 and M3. Checked: the
 // approximate order covers the same pixels, its float image is within a
