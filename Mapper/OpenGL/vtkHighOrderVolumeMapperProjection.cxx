@@ -61,6 +61,44 @@ void ViewSettings(vtkCamera* camera, vtkVolume* volume, double aspect,
   settings.Parallel = camera->GetParallelProjection() != 0;
 }
 
+/// The scene depth of the viewport into @p depth; null if it cannot be read.
+const float* SceneDepth(
+  vtkRenderer* ren, int width, int height, int x0, int y0, std::vector<float>& depth)
+{
+  depth.resize(static_cast<size_t>(width) * height);
+  return vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, depth.data())
+    ? depth.data()
+    : nullptr;
+}
+
+/// proj.BackToFront: @p frontToBack reversed (exact order) or, if null, the centroid order.
+void BackToFront(vtkHighOrderProjection& proj, const vtkHighOrderTetraSetup& setup,
+  const std::vector<vtkIdType>* frontToBack, const vtkHighOrderProjectionRegions::Settings& settings)
+{
+  if (frontToBack)
+  {
+    proj.BackToFront.resize(frontToBack->size());
+    std::reverse_copy(frontToBack->begin(), frontToBack->end(), proj.BackToFront.begin());
+  }
+  else
+  {
+    proj.Regions.CentroidOrder(setup, settings, proj.BackToFront);
+  }
+}
+
+/// The renderer's options for the region @p settings.
+vtkHighOrderProjectionRenderer::Options RenderOptions(
+  const vtkHighOrderProjectionRegions::Settings& settings)
+{
+  vtkHighOrderProjectionRenderer::Options options;
+  options.TextureOpacity = settings.Method != hov::ProjectionColorMethod::InterpolatedOpacity;
+  options.PremultipliedColor = settings.Emission == hov::EmissionModel::WilhelmsVanGelder;
+  options.Parallel = settings.Parallel;
+  options.ClipToData = glm::inverse(settings.Composite);
+  options.Eye = settings.Eye;
+  return options;
+}
+
 /**
  * The RGBA float array of @p image resized to @p width x @p height (reused
  * when nobody else holds it, so the frame's read-back goes straight into it);
@@ -110,15 +148,8 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     vtkWarningMacro("OPENGL_PROJECTION ignores isosurfaces, separate fields, splatting, clipping "
                     "planes and view-depth clipping; use CPU_ACCURATE for them.");
   }
-  const float* depth = nullptr;
-  if (this->UseDepthBuffer)
-  {
-    proj.Depth.resize(static_cast<size_t>(width) * height);
-    if (vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, proj.Depth.data()))
-    {
-      depth = proj.Depth.data();
-    }
-  }
+  const float* depth =
+    this->UseDepthBuffer ? SceneDepth(ren, width, height, x0, y0, proj.Depth) : nullptr;
   vtkCamera* camera = ren->GetActiveCamera();
   const bool exactOrder = this->ProjectionOrder == EXACT_ORDER;
   const vtkHighOrderTetraSetup* setup = nullptr;
@@ -131,15 +162,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   proj.BackToFront.clear();
   if (this->PrepareProjectionFrame(camera, vol, exactOrder, &setup, &frontToBack, &tf))
   {
-    if (exactOrder)
-    {
-      proj.BackToFront.resize(frontToBack->size());
-      std::reverse_copy(frontToBack->begin(), frontToBack->end(), proj.BackToFront.begin());
-    }
-    else
-    {
-      proj.Regions.CentroidOrder(*setup, settings, proj.BackToFront);
-    }
+    BackToFront(proj, *setup, exactOrder ? frontToBack : nullptr, settings);
   }
   // The cells in groups, built while the previous group is drawn.
   const vtkIdType total = static_cast<vtkIdType>(proj.BackToFront.size());
@@ -156,12 +179,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     next += group;
     return true;
   };
-  vtkHighOrderProjectionRenderer::Options options;
-  options.TextureOpacity = this->ProjectionColorMethod != INTERPOLATED_OPACITY;
-  options.PremultipliedColor = this->EmissionModel == WILHELMS_VAN_GELDER;
-  options.Parallel = settings.Parallel;
-  options.ClipToData = glm::inverse(settings.Composite);
-  options.Eye = settings.Eye;
+  const vtkHighOrderProjectionRenderer::Options options = RenderOptions(settings);
   float* pixels = FloatImagePixels(this->GetFloatImage(), width, height);
   if (!proj.Renderer.Render(ren, produce, proj.Geometry, options, depth, width, height, pixels))
   {
