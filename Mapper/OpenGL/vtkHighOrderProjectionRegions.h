@@ -45,11 +45,14 @@
  * Cells with a corner on or behind the eye plane (clip w <= 0) are skipped
  * and counted. Output: indexed triangles (vtkHighOrderProjectionVertex
  * records) in chunks of consecutive cells, each chunk's indices local to it;
- * GetVertexOffset / GetIndexOffset place the chunks in one buffer.
+ * Geometry::VertexOffsets / IndexOffsets place the chunks in one buffer.
+ * Build() takes a range of the order, so that a caller can build and draw
+ * the cells group by group (vtkHighOrderProjectionRenderer).
  *
  * Thread safety: Build() runs the cells in parallel (vtkSMPTools, one chunk
  * per CellsPerChunk cells, concatenated in order: the output does not depend
- * on the thread count).
+ * on the thread count); it reads the tetrahedra a few cells ahead into the
+ * cache (the order is random in memory).
  * @sa vtkHighOrderProjectionRenderer, hovProjectionColor.h, vtkHighOrderVolumeMapper
  */
 #ifndef vtkHighOrderProjectionRegions_h
