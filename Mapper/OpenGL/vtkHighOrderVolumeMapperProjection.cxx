@@ -27,8 +27,9 @@
 namespace
 {
 /// Cells per group at least (vtkHighOrderProjectionRenderer draws a group
-/// while the next is built; at most 16 groups).
-constexpr vtkIdType CellsPerGroup = 16384;
+/// while the next is built; at most MaxGroups groups).
+constexpr vtkIdType CellsPerGroup = 8192;
+constexpr vtkIdType MaxGroups = 32;
 
 /// VTK's row-major matrix as glm's column-major one.
 glm::dmat4 ToGlm(vtkMatrix4x4* m)
@@ -166,7 +167,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   }
   // The cells in groups, built while the previous group is drawn.
   const vtkIdType total = static_cast<vtkIdType>(proj.BackToFront.size());
-  const vtkIdType group = std::max<vtkIdType>(CellsPerGroup, total / 16);
+  const vtkIdType group = std::max<vtkIdType>(CellsPerGroup, (total + MaxGroups - 1) / MaxGroups);
   vtkIdType next = 0;
   proj.Statistics = vtkHighOrderProjectionRegions::Statistics();
   auto produce = [&](vtkHighOrderProjectionRegions::Geometry& geometry) {
