@@ -6,21 +6,20 @@
  *
  * Per frame: groups of cells, in the order given (back to front), are built
  * by a producer (vtkHighOrderProjectionRegions) and streamed into one vertex
- * and one index buffer (vtkHighOrderProjectionStream), each group drawn with
- * one glDrawElementsBaseVertex call and flushed, so that the rasterizer works
- * on a group while the next one is built, into a
- * framebuffer object of the viewport's size with one GL_RGBA32F colour
- * texture cleared to 0, with premultiplied blending glBlendFuncSeparate(ONE,
- * ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA) ("over", no 8-bit rounding
- * between cells). The fragment shader (vtkHighOrderProjectionFS.glsl, one
- * compiled variant per projection / opacity / emission / depth combination,
- * so no run-time branches per fragment) takes the opacity from the float
- * texture of hov::OpacityTexture (methods M1-M3) or the interpolated vertex
- * opacity (M0). Fragments behind the opaque geometry already drawn fail the
- * depth test (GL_LEQUAL, no depth writes) against the scene depth, read by
- * the caller and uploaded into a GL_DEPTH_COMPONENT32F texture attached to
- * the framebuffer object (no depth format matching with the window needed).
- * The float image is then
+ * and one index buffer (vtkHighOrderProjectionStream); each group is drawn
+ * with one glDrawElementsBaseVertex call and flushed, so that the rasterizer
+ * works on a group while the next one is built. The target is a framebuffer
+ * object of the viewport's size with one GL_RGBA32F colour texture cleared to
+ * 0, premultiplied blending glBlendFuncSeparate(ONE, ONE_MINUS_SRC_ALPHA,
+ * ONE, ONE_MINUS_SRC_ALPHA) ("over", no 8-bit rounding between cells). The
+ * fragment shader (vtkHighOrderProjectionFS.glsl, one compiled variant per
+ * projection / opacity / emission combination, so no run-time branches per
+ * fragment) takes the opacity from the float texture of hov::OpacityTexture
+ * (methods M1-M3) or the interpolated vertex opacity (M0). Fragments behind
+ * the opaque geometry already drawn fail the depth test (GL_LEQUAL, no depth
+ * writes) against the scene depth, read by the caller and uploaded into a
+ * GL_DEPTH_COMPONENT32F texture attached to the framebuffer object (no depth
+ * format matching with the window needed). The float image is then
  * composited over the renderer's viewport by a full-viewport quad (the
  * fragment shader of vtkHighOrderImageDisplay) and, on request, read back
  * (premultiplied RGBA floats, row 0 at the bottom).
