@@ -10,7 +10,10 @@
 // emission (HOV_GLOW, hovProjectionColor.h). Fragments behind the opaque
 // geometry already drawn fail the depth test (vtkHighOrderProjectionRenderer).
 in vec3 segmentVS;
-in vec4 colorAlphaVS;
+in vec3 colorVS;
+#if !HOV_TEXTURE_OPACITY
+in float alphaVS;
+#endif
 #if HOV_PERSPECTIVE
 in vec3 frontVS;
 #endif
@@ -46,14 +49,14 @@ void main()
 #if HOV_TEXTURE_OPACITY
   float alpha = hovOpacityFromTexture(depth);
 #else
-  float alpha = clamp(colorAlphaVS.a, 0.0, 1.0);
+  float alpha = clamp(alphaVS, 0.0, 1.0);
 #endif
 #if HOV_GLOW
   // Effective glow g times L phi(D) = L (1 - e^-D)/D, D = L tau_avg (= alpha
   // / tau_avg; its series below D = 1e-3, where alpha / tau_avg loses digits).
   float glow = depth > 1e-3 ? alpha / tauAvg : len * (1.0 - 0.5 * depth);
-  gl_FragData[0] = vec4(colorAlphaVS.rgb * glow, alpha);
+  gl_FragData[0] = vec4(colorVS * glow, alpha);
 #else
-  gl_FragData[0] = vec4(colorAlphaVS.rgb * alpha, alpha);
+  gl_FragData[0] = vec4(colorVS * alpha, alpha);
 #endif
 }

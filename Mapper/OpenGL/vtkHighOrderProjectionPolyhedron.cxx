@@ -5,13 +5,26 @@
 #include "hovTransferFunction.h" // Evaluate
 
 #include <algorithm> // std::sort
-#include <cmath>     // std::atan2, std::isfinite
+#include <cmath>     // std::abs, std::isfinite
 #include <limits>    // infinity
 
 namespace
 {
 constexpr int MaxClip = 2 * vtkHighOrderProjectionPolyhedron::MaxFacePoints + 12;
 constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
+
+/// A number in [0, 4) increasing with the angle of (dx, dy) from the +x axis
+/// (counter-clockwise), like atan2 but without transcendental functions.
+double PseudoAngle(double dx, double dy)
+{
+  const double sum = std::abs(dx) + std::abs(dy);
+  if (!(sum > 0.0))
+  {
+    return 0.0;
+  }
+  const double r = dx / sum;
+  return dy >= 0.0 ? 1.0 - r : 3.0 + r;
+}
 
 /// Twice the signed area of a 2D polygon (counter-clockwise positive).
 double TwiceArea(const glm::dvec2* p, int n)
@@ -309,7 +322,7 @@ bool vtkHighOrderProjectionPolyhedron::Classify()
     std::pair<double, int> order[MaxFacePoints];
     for (int i = 0; i < n; ++i)
     {
-      order[i] = { std::atan2(p[i].y - c.y, p[i].x - c.x), i };
+      order[i] = { PseudoAngle(p[i].x - c.x, p[i].y - c.y), i };
     }
     std::sort(order, order + n);
     double extent = 0.0;

@@ -9,8 +9,9 @@
 #include "vtkSMPTools.h" // parallel cells
 
 #include <algorithm> // std::sort
+#include <cstdint>   // uint32_t, uint64_t
+#include <cstring>   // std::memcpy
 #include <limits>    // infinity
-#include <numeric>   // std::iota
 
 namespace
 {
@@ -117,12 +118,11 @@ struct CellEmitter
    * the tetrahedron PrefetchCells ahead and the points of the one half as far
    * ahead (its record has arrived by then) so that Emit does not wait for memory.
    */
-  void Prefetch(const std::vector<vtkIdType>& order, vtkIdType i) const
+  void Prefetch(const std::vector<vtkIdType>& order, vtkIdType i, vtkIdType n) const
   {
     constexpr vtkIdType far = 16, near = 8;
     const auto& tetras = this->Setup->GetTetras();
     const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
-    const vtkIdType n = static_cast<vtkIdType>(order.size());
     if (i + far < n && order[i + far] >= 0 && order[i + far] < numTetras)
     {
       const char* t = reinterpret_cast<const char*>(&tetras[order[i + far]]);
@@ -218,10 +218,13 @@ struct CellEmitter
 }
 
 vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
-  const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront,
-  const hov::TransferFunction& tf, const Settings& settings, Geometry& geometry) const
+  const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront, vtkIdType begin,
+  vtkIdType end, const hov::TransferFunction& tf, const Settings& settings,
+  Geometry& geometry) const
 {
-  const vtkIdType numCells = static_cast<vtkIdType>(backToFront.size());
+  begin = std::max<vtkIdType>(begin, 0);
+  end = std::min(end, static_cast<vtkIdType>(backToFront.size()));
+  const vtkIdType numCells = std::max<vtkIdType>(end - begin, 0);
   const vtkIdType numChunks = (numCells + CellsPerChunk - 1) / CellsPerChunk;
   geometry.Clear();
   if (static_cast<vtkIdType>(geometry.Chunks.size()) < numChunks)
@@ -244,10 +247,10 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
     CellEmitter emitter{ &setup, &tf, &settings, &frame, {}, {} };
     for (vtkIdType chunk = first; chunk < last; ++chunk)
     {
-      const vtkIdType end = std::min(numCells, (chunk + 1) * CellsPerChunk);
-      for (vtkIdType i = chunk * CellsPerChunk; i < end; ++i)
+      const vtkIdType stop = begin + std::min(numCells, (chunk + 1) * CellsPerChunk);
+      for (vtkIdType i = begin + chunk * CellsPerChunk; i < stop; ++i)
       {
-        emitter.Prefetch(backToFront, i);
+        emitter.Prefetch(backToFront, i, end);
         emitter.Emit(backToFront[i], geometry.Chunks[chunk], stats[chunk]);
       }
     }
@@ -261,25 +264,108 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
     const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
     geometry.VertexOffsets[c + 1] = geometry.VertexOffsets[c] + chunk.NumberOfVertices();
     geometry.IndexOffsets[c + 1] = geometry.IndexOffsets[c] + chunk.Indices.Size();
-    total.Cells += stats[c].Cells;
-    total.Slabs += stats[c].Slabs;
-    total.Triangles += stats[c].Triangles;
-    total.BehindEye += stats[c].BehindEye;
-    total.CutGeneral += stats[c].CutGeneral;
-    total.FastTetras += stats[c].FastTetras;
+    total.Add(stats[c]);
   }
   return total;
 }
 
-void vtkHighOrderProjectionRegions::CentroidOrder(const vtkHighOrderTetraSetup& setup,
-  const Settings& settings, std::vector<vtkIdType>& backToFront)
+namespace
+{
+/// An unsigned integer with the order of the float @p f, reversed (larger first).
+uint32_t FarthestFirstBits(float f)
+{
+  uint32_t u = 0;
+  std::memcpy(&u, &f, sizeof(u));
+  const uint32_t ascending = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+  return ~ascending;
+}
+
+/**
+ * One stable counting pass of an LSD radix sort on the 8-bit digit at
+ * @p shift: @p blocks consecutive blocks histogrammed and scattered in
+ * parallel (block b's items of digit d go after those of the blocks before
+ * it). False (nothing moved) if every item has the same digit.
+ */
+bool RadixPass(const std::vector<uint64_t>& items, std::vector<uint64_t>& out, int shift,
+  vtkIdType blocks)
+{
+  const vtkIdType n = static_cast<vtkIdType>(items.size());
+  std::vector<size_t> count(static_cast<size_t>(blocks) * 256, 0);
+  auto range = [&](vtkIdType b, vtkIdType& first, vtkIdType& last) {
+    first = n * b / blocks;
+    last = n * (b + 1) / blocks;
+  };
+  vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType b = b0, first, last; b < b1; ++b)
+    {
+      range(b, first, last);
+      size_t* c = count.data() + 256 * b;
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        ++c[(items[i] >> shift) & 0xff];
+      }
+    }
+  });
+  size_t offset = 0;
+  for (int d = 0; d < 256; ++d)
+  {
+    const size_t before = offset;
+    for (vtkIdType b = 0; b < blocks; ++b)
+    {
+      const size_t c = count[256 * b + d];
+      count[256 * b + d] = offset;
+      offset += c;
+    }
+    if (offset - before == static_cast<size_t>(n))
+    {
+      return false; // every key has this digit: nothing to do
+    }
+  }
+  vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType b = b0, first, last; b < b1; ++b)
+    {
+      range(b, first, last);
+      size_t* c = count.data() + 256 * b;
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        out[c[(items[i] >> shift) & 0xff]++] = items[i];
+      }
+    }
+  });
+  return true;
+}
+
+/**
+ * Sort @p items (key bits << 32 | index) ascending by their key bits: LSD
+ * radix sort, 4 stable passes of 8 bits (in parallel blocks), so equal keys
+ * keep their (index) order. @p scratch is resized.
+ */
+void RadixSortByKey(std::vector<uint64_t>& items, std::vector<uint64_t>& scratch)
+{
+  scratch.resize(items.size());
+  // Fixed by the size (not the thread count), so the result is deterministic.
+  const vtkIdType blocks =
+    std::max<vtkIdType>(1, std::min<vtkIdType>(64, static_cast<vtkIdType>(items.size()) / 512));
+  for (int shift = 32; shift < 64; shift += 8)
+  {
+    if (RadixPass(items, scratch, shift, blocks))
+    {
+      items.swap(scratch);
+    }
+  }
+}
+}
+
+void vtkHighOrderProjectionRegions::CentroidOrder(
+  const vtkHighOrderTetraSetup& setup, const Settings& settings, std::vector<vtkIdType>& backToFront)
 {
   const std::vector<vtkHighOrderTetraSetup::Tetra>& tetras = setup.GetTetras();
   const auto& general = setup.GetGeneralCells();
   const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
   const vtkIdType n = setup.GetNumberOfRenderedCells();
-  std::vector<double> key(n);
   const std::vector<glm::dvec3>& points = setup.GetPoints();
+  std::vector<uint64_t>& items = this->OrderItems;
+  items.resize(n);
   vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
     for (vtkIdType i = first; i < last; ++i)
     {
@@ -303,11 +389,16 @@ void vtkHighOrderProjectionRegions::CentroidOrder(const vtkHighOrderTetraSetup& 
         c /= static_cast<double>(std::max(cell.NodeCount, 1));
       }
       const glm::dvec3 d = c - settings.Eye;
-      key[i] = settings.Parallel ? glm::dot(c, settings.Direction) : glm::dot(d, d);
+      const double key = settings.Parallel ? glm::dot(c, settings.Direction) : glm::dot(d, d);
+      items[i] = (uint64_t(FarthestFirstBits(static_cast<float>(key))) << 32) | uint64_t(i);
     }
   });
+  RadixSortByKey(items, this->OrderScratch);
   backToFront.resize(n);
-  std::iota(backToFront.begin(), backToFront.end(), vtkIdType(0));
-  std::sort(backToFront.begin(), backToFront.end(),
-    [&key](vtkIdType a, vtkIdType b) { return key[a] > key[b] || (key[a] == key[b] && a < b); });
+  vtkSMPTools::For(0, n, [&](vtkIdType first, vtkIdType last) {
+    for (vtkIdType i = first; i < last; ++i)
+    {
+      backToFront[i] = static_cast<vtkIdType>(items[i] & 0xffffffffu);
+    }
+  });
 }

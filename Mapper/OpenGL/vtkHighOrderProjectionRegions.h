@@ -45,11 +45,14 @@
  * Cells with a corner on or behind the eye plane (clip w <= 0) are skipped
  * and counted. Output: indexed triangles (vtkHighOrderProjectionVertex
  * records) in chunks of consecutive cells, each chunk's indices local to it;
- * GetVertexOffset / GetIndexOffset place the chunks in one buffer.
+ * Geometry::VertexOffsets / IndexOffsets place the chunks in one buffer.
+ * Build() takes a range of the order, so that a caller can build and draw
+ * the cells group by group (vtkHighOrderProjectionRenderer).
  *
  * Thread safety: Build() runs the cells in parallel (vtkSMPTools, one chunk
  * per CellsPerChunk cells, concatenated in order: the output does not depend
- * on the thread count).
+ * on the thread count); it reads the tetrahedra a few cells ahead into the
+ * cache (the order is random in memory).
  * @sa vtkHighOrderProjectionRenderer, hovProjectionColor.h, vtkHighOrderVolumeMapper
  */
 #ifndef vtkHighOrderProjectionRegions_h
@@ -62,7 +65,8 @@
 
 #include <glm/glm.hpp> // dvec3, dmat4
 
-#include <vector> // buffers
+#include <cstdint> // uint64_t
+#include <vector>  // buffers
 
 class vtkHighOrderTetraSetup;
 namespace hov
@@ -113,25 +117,40 @@ public:
     vtkIdType BehindEye = 0;  ///< cells skipped: a corner on or behind the eye plane
     vtkIdType CutGeneral = 0; ///< non-tetrahedral cells cut by transfer-function nodes (approximate)
     vtkIdType FastTetras = 0; ///< tetrahedra drawn by vtkHighOrderProjectionTetra
+
+    void Add(const Statistics& other)
+    {
+      this->Cells += other.Cells;
+      this->Slabs += other.Slabs;
+      this->Triangles += other.Triangles;
+      this->BehindEye += other.BehindEye;
+      this->CutGeneral += other.CutGeneral;
+      this->FastTetras += other.FastTetras;
+    }
   };
 
   /**
-   * Triangles of all rendered cells of @p setup in the order @p backToFront
-   * (rendered-cell indices) into @p geometry.
+   * Triangles of the rendered cells backToFront[begin .. end) of @p setup
+   * (rendered-cell indices, back to front) into @p geometry (cleared first).
    */
   Statistics Build(const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront,
-    const hov::TransferFunction& tf, const Settings& settings, Geometry& geometry) const;
+    vtkIdType begin, vtkIdType end, const hov::TransferFunction& tf, const Settings& settings,
+    Geometry& geometry) const;
 
   /**
    * The approximate order (for interaction): rendered cells sorted back to
    * front by the distance of their corner centroid from the eye (perspective)
-   * or its depth along the direction of projection (parallel); ties by index.
+   * or its depth along the direction of projection (parallel), as a float
+   * (cells closer than its resolution count as tied); ties by index. Keys in
+   * parallel, then a radix sort (linear time); storage kept across frames.
+   * At most 2^32 cells.
    */
-  static void CentroidOrder(const vtkHighOrderTetraSetup& setup, const Settings& settings,
+  void CentroidOrder(const vtkHighOrderTetraSetup& setup, const Settings& settings,
     std::vector<vtkIdType>& backToFront);
 
 private:
   hov::SegmentColorTable ColorTable;
+  std::vector<uint64_t> OrderItems, OrderScratch; ///< (key bits << 32 | cell)
 };
 
 #endif

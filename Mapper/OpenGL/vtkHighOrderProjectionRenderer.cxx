@@ -16,7 +16,6 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderer.h"
-#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -137,61 +136,6 @@ std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Op
   return out;
 }
 
-/**
- * Bind @p buffer to @p target and map its first @p bytes for writing (the
- * previous contents are discarded), growing its storage (with 25% slack, so
- * that views of similar size reuse it) when @p capacity is too small.
- */
-void* MapForWriting(vtkOpenGLBufferObject* buffer, vtkOpenGLBufferObject::ObjectType type,
-  GLenum target, size_t bytes, size_t& capacity)
-{
-  if (!buffer->GenerateBuffer(type) || !buffer->Bind())
-  {
-    return nullptr;
-  }
-  if (bytes > capacity)
-  {
-    capacity = bytes + bytes / 4;
-    glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STREAM_DRAW);
-  }
-  return glMapBufferRange(target, 0, static_cast<GLsizeiptr>(bytes),
-    GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
-}
-}
-
-bool vtkHighOrderProjectionRenderer::Upload(const vtkHighOrderProjectionRegions::Geometry& geometry)
-{
-  const size_t numVertices = geometry.GetNumberOfVertices();
-  const size_t numIndices = geometry.GetNumberOfIndices();
-  auto* vertices = static_cast<float*>(MapForWriting(this->Vertices,
-    vtkOpenGLBufferObject::ArrayBuffer, GL_ARRAY_BUFFER, numVertices * Floats * sizeof(float),
-    this->VertexBytes));
-  auto* indices = static_cast<unsigned int*>(MapForWriting(this->Indices,
-    vtkOpenGLBufferObject::ElementArrayBuffer, GL_ELEMENT_ARRAY_BUFFER,
-    numIndices * sizeof(unsigned int), this->IndexBytes));
-  if (vertices && indices)
-  {
-    const vtkIdType numChunks = static_cast<vtkIdType>(geometry.VertexOffsets.size()) - 1;
-    vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
-      for (vtkIdType c = first; c < last; ++c)
-      {
-        const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
-        std::copy(chunk.Vertices.Data(), chunk.Vertices.Data() + chunk.Vertices.Size(),
-          vertices + geometry.VertexOffsets[c] * Floats);
-        const unsigned int base = static_cast<unsigned int>(geometry.VertexOffsets[c]);
-        const unsigned int* src = chunk.Indices.Data();
-        unsigned int* dst = indices + geometry.IndexOffsets[c];
-        for (size_t i = 0, n = chunk.Indices.Size(); i < n; ++i)
-        {
-          dst[i] = src[i] + base;
-        }
-      }
-    });
-  }
-  // Both stay bound (the index buffer in the vertex array).
-  const bool unmappedVertices = !vertices || glUnmapBuffer(GL_ARRAY_BUFFER) == GL_TRUE;
-  const bool unmappedIndices = !indices || glUnmapBuffer(GL_ELEMENT_ARRAY_BUFFER) == GL_TRUE;
-  return vertices && indices && unmappedVertices && unmappedIndices;
 }
 
 bool vtkHighOrderProjectionRenderer::BindAttributes()
@@ -209,7 +153,7 @@ bool vtkHighOrderProjectionRenderer::BindAttributes()
     // A variant may not read an attribute (M0 without glow: no segment).
     ok = ok &&
       (!this->Program->IsAttributeUsed(a.Name) ||
-        this->VertexArray->AddAttributeArray(this->Program, this->Vertices, a.Name,
+        this->VertexArray->AddAttributeArray(this->Program, this->Stream.GetVertexBuffer(), a.Name,
           a.Offset * sizeof(float), Floats * sizeof(float), VTK_FLOAT, a.Components, false));
   }
   return ok;
@@ -244,8 +188,8 @@ void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
   }
 }
 
-bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren,
-  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options)
+bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren, const Producer& produce,
+  vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options)
 {
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   const std::string vs = Variant(vtkHighOrderProjectionVS, options);
@@ -255,26 +199,33 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren,
   {
     return false;
   }
-  const size_t count = geometry.GetNumberOfIndices();
-  if (count == 0)
-  {
-    return true;
-  }
   this->VertexArray->ShaderProgramChanged(); // the variant may differ from the last frame's
   this->VertexArray->Bind();
-  const bool ok = this->Upload(geometry) && this->BindAttributes();
+  bool ok = this->Stream.Begin() && this->BindAttributes();
   if (ok)
   {
     this->SetUniforms(options);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr);
+    // Group after group, a flush after each: a software rasterizer (llvmpipe)
+    // rasterizes a group while the next one is built and its vertices processed.
+    while (ok && produce(geometry))
+    {
+      vtkHighOrderProjectionStream::Range range;
+      ok = this->Stream.Append(geometry, range);
+      if (ok && range.Count > 0)
+      {
+        glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(range.Count),
+          GL_UNSIGNED_INT, reinterpret_cast<const void*>(range.IndexOffset),
+          static_cast<GLint>(range.BaseVertex));
+        glFlush();
+      }
+    }
     if (options.TextureOpacity)
     {
       this->OpacityTable->Deactivate();
     }
   }
-  this->Indices->Release();
+  this->Stream.End();
   this->VertexArray->Release();
-  this->Vertices->Release();
   return ok;
 }
 
@@ -302,8 +253,8 @@ bool vtkHighOrderProjectionRenderer::Composite(vtkRenderer* ren)
   return true;
 }
 
-bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren,
-  const vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options,
+bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const Producer& produce,
+  vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options,
   const float* sceneDepth, int width, int height, float* image)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
@@ -347,7 +298,7 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren,
         ostate->vtkglEnable(GL_DEPTH_TEST);
         ostate->vtkglDepthFunc(GL_LEQUAL);
       }
-      ok = this->DrawRegions(ren, geometry, options);
+      ok = this->DrawRegions(ren, produce, geometry, options);
       ostate->vtkglDisable(GL_DEPTH_TEST);
       if (ok && image)
       {
@@ -372,9 +323,7 @@ void vtkHighOrderProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
   this->ColorTexture->ReleaseGraphicsResources(win);
   this->DepthTexture->ReleaseGraphicsResources(win);
   this->OpacityTable->ReleaseGraphicsResources(win);
-  this->Vertices->ReleaseGraphicsResources();
-  this->Indices->ReleaseGraphicsResources();
-  this->VertexBytes = this->IndexBytes = 0;
+  this->Stream.ReleaseGraphicsResources();
   this->VertexArray->ReleaseGraphicsResources();
   if (this->Quad)
   {

@@ -4,22 +4,22 @@
  *          region triangles of vtkHighOrderProjectionRegions into a float
  *          target and puts it over the scene.
  *
- * Per frame: the chunks of indexed triangles are copied in parallel
- * (vtkSMPTools) straight into one mapped vertex buffer and one mapped index
- * buffer (storage kept across frames, grown when needed) and drawn with one
- * glDrawElements call, in the order given (back to front), into a
- * framebuffer object of the viewport's size with one GL_RGBA32F colour
- * texture cleared to 0, with premultiplied blending glBlendFuncSeparate(ONE,
- * ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA) ("over", no 8-bit rounding
- * between cells). The fragment shader (vtkHighOrderProjectionFS.glsl, one
- * compiled variant per projection / opacity / emission / depth combination,
- * so no run-time branches per fragment) takes the opacity from the float
- * texture of hov::OpacityTexture (methods M1-M3) or the interpolated vertex
- * opacity (M0). Fragments behind the opaque geometry already drawn fail the
- * depth test (GL_LEQUAL, no depth writes) against the scene depth, read by
- * the caller and uploaded into a GL_DEPTH_COMPONENT32F texture attached to
- * the framebuffer object (no depth format matching with the window needed).
- * The float image is then
+ * Per frame: groups of cells, in the order given (back to front), are built
+ * by a producer (vtkHighOrderProjectionRegions) and streamed into one vertex
+ * and one index buffer (vtkHighOrderProjectionStream); each group is drawn
+ * with one glDrawElementsBaseVertex call and flushed, so that the rasterizer
+ * works on a group while the next one is built. The target is a framebuffer
+ * object of the viewport's size with one GL_RGBA32F colour texture cleared to
+ * 0, premultiplied blending glBlendFuncSeparate(ONE, ONE_MINUS_SRC_ALPHA,
+ * ONE, ONE_MINUS_SRC_ALPHA) ("over", no 8-bit rounding between cells). The
+ * fragment shader (vtkHighOrderProjectionFS.glsl, one compiled variant per
+ * projection / opacity / emission combination, so no run-time branches per
+ * fragment) takes the opacity from the float texture of hov::OpacityTexture
+ * (methods M1-M3) or the interpolated vertex opacity (M0). Fragments behind
+ * the opaque geometry already drawn fail the depth test (GL_LEQUAL, no depth
+ * writes) against the scene depth, read by the caller and uploaded into a
+ * GL_DEPTH_COMPONENT32F texture attached to the framebuffer object (no depth
+ * format matching with the window needed). The float image is then
  * composited over the renderer's viewport by a full-viewport quad (the
  * fragment shader of vtkHighOrderImageDisplay) and, on request, read back
  * (premultiplied RGBA floats, row 0 at the bottom).
@@ -35,11 +35,12 @@
 #define vtkHighOrderProjectionRenderer_h
 
 #include "vtkHighOrderProjectionRegions.h" // Geometry
+#include "vtkHighOrderProjectionStream.h"  // buffers
 #include "vtkNew.h"                        // For vtkNew
 
-#include <string> // shader variants
+#include <functional> // Producer
+#include <string>     // shader variants
 
-class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
@@ -64,14 +65,19 @@ public:
   vtkHighOrderProjectionRenderer();
   ~vtkHighOrderProjectionRenderer();
 
+  /// Fills the geometry with the next group of cells; false when none is left.
+  using Producer = std::function<bool(vtkHighOrderProjectionRegions::Geometry&)>;
+
   /**
-   * Draw @p geometry for the viewport of @p ren (@p width x @p height);
-   * @p sceneDepth (width*height window depths) or null. If @p image is given,
-   * the float image is read back into it (width*height*4 floats). Returns
-   * false if OpenGL resources could not be made.
+   * Draw the groups @p produce makes (into @p geometry, reused) for the
+   * viewport of @p ren (@p width x @p height); @p sceneDepth (width*height
+   * window depths) or null. If @p image is given, the float image is read
+   * back into it (width*height*4 floats). Returns false if OpenGL resources
+   * could not be made.
    */
-  bool Render(vtkRenderer* ren, const vtkHighOrderProjectionRegions::Geometry& geometry,
-    const Options& options, const float* sceneDepth, int width, int height, float* image);
+  bool Render(vtkRenderer* ren, const Producer& produce,
+    vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options,
+    const float* sceneDepth, int width, int height, float* image);
 
   void ReleaseGraphicsResources(vtkWindow* win);
 
@@ -82,10 +88,8 @@ private:
   bool PrepareTarget(vtkRenderer* ren, int width, int height, const float* sceneDepth);
   /// The scene depth into the depth texture (storage kept while the size is).
   bool PrepareDepth(vtkOpenGLRenderWindow* renWin, int width, int height, const float* sceneDepth);
-  bool DrawRegions(vtkRenderer* ren, const vtkHighOrderProjectionRegions::Geometry& geometry,
-    const Options& options);
-  /// Copy @p geometry into the buffers (the vertex array must be bound).
-  bool Upload(const vtkHighOrderProjectionRegions::Geometry& geometry);
+  bool DrawRegions(vtkRenderer* ren, const Producer& produce,
+    vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options);
   bool BindAttributes();
   void SetUniforms(const Options& options);
   bool Composite(vtkRenderer* ren);
@@ -94,12 +98,10 @@ private:
   vtkNew<vtkTextureObject> ColorTexture;
   vtkNew<vtkTextureObject> DepthTexture;
   vtkNew<vtkTextureObject> OpacityTable;
-  vtkNew<vtkOpenGLBufferObject> Vertices;
-  vtkNew<vtkOpenGLBufferObject> Indices;
+  vtkHighOrderProjectionStream Stream;
   vtkNew<vtkOpenGLVertexArrayObject> VertexArray;
   vtkShaderProgram* Program = nullptr; ///< owned by the window's shader cache
   vtkOpenGLQuadHelper* Quad = nullptr;
-  size_t VertexBytes = 0, IndexBytes = 0; ///< allocated buffer storage
   int Width = 0, Height = 0;
   int DepthWidth = 0, DepthHeight = 0;
   bool HaveOpacityTable = false;

@@ -5,14 +5,18 @@
 // arrive in clip coordinates (front point of the ray segment) with the
 // segment quantities (L | mu, tauFront, tauBack | tauBack mu), linear on the
 // front face (the default perspective-correct interpolation is exact for
-// them), the colour and the vertex opacity (method M0). Perspective: the
-// front point relative to the eye, P, is recovered from the clip position
-// (clip -> dataset matrix), also linear on the front face.
+// them), the colour and the vertex opacity (method M0 only: no other variant
+// interpolates it). Perspective: the front point relative to the eye, P, is
+// recovered from the clip position (clip -> dataset matrix), also linear on
+// the front face.
 in vec4 vertexClip;
 in vec3 segmentIn;
 in vec4 colorAlpha;
 out vec3 segmentVS;
-out vec4 colorAlphaVS;
+out vec3 colorVS;
+#if !HOV_TEXTURE_OPACITY
+out float alphaVS;
+#endif
 #if HOV_PERSPECTIVE
 uniform mat4 clipToData;
 uniform vec3 eye;
@@ -22,7 +26,10 @@ void main()
 {
   gl_Position = vertexClip;
   segmentVS = segmentIn;
-  colorAlphaVS = colorAlpha;
+  colorVS = colorAlpha.rgb;
+#if !HOV_TEXTURE_OPACITY
+  alphaVS = colorAlpha.a;
+#endif
 #if HOV_PERSPECTIVE
   vec4 h = clipToData * vertexClip;
   frontVS = h.xyz / h.w - eye;

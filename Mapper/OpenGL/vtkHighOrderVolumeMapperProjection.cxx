@@ -26,6 +26,11 @@
 
 namespace
 {
+/// Cells per group at least (vtkHighOrderProjectionRenderer draws a group
+/// while the next is built; at most MaxGroups groups).
+constexpr vtkIdType CellsPerGroup = 8192;
+constexpr vtkIdType MaxGroups = 32;
+
 /// VTK's row-major matrix as glm's column-major one.
 glm::dmat4 ToGlm(vtkMatrix4x4* m)
 {
@@ -55,6 +60,44 @@ void ViewSettings(vtkCamera* camera, vtkVolume* volume, double aspect,
   settings.Eye = glm::dvec3(e) / e.w;
   settings.Direction = glm::dvec3(inverseModel * glm::dvec4(dop[0], dop[1], dop[2], 0.0));
   settings.Parallel = camera->GetParallelProjection() != 0;
+}
+
+/// The scene depth of the viewport into @p depth; null if it cannot be read.
+const float* SceneDepth(
+  vtkRenderer* ren, int width, int height, int x0, int y0, std::vector<float>& depth)
+{
+  depth.resize(static_cast<size_t>(width) * height);
+  return vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, depth.data())
+    ? depth.data()
+    : nullptr;
+}
+
+/// proj.BackToFront: @p frontToBack reversed (exact order) or, if null, the centroid order.
+void BackToFront(vtkHighOrderProjection& proj, const vtkHighOrderTetraSetup& setup,
+  const std::vector<vtkIdType>* frontToBack, const vtkHighOrderProjectionRegions::Settings& settings)
+{
+  if (frontToBack)
+  {
+    proj.BackToFront.resize(frontToBack->size());
+    std::reverse_copy(frontToBack->begin(), frontToBack->end(), proj.BackToFront.begin());
+  }
+  else
+  {
+    proj.Regions.CentroidOrder(setup, settings, proj.BackToFront);
+  }
+}
+
+/// The renderer's options for the region @p settings.
+vtkHighOrderProjectionRenderer::Options RenderOptions(
+  const vtkHighOrderProjectionRegions::Settings& settings)
+{
+  vtkHighOrderProjectionRenderer::Options options;
+  options.TextureOpacity = settings.Method != hov::ProjectionColorMethod::InterpolatedOpacity;
+  options.PremultipliedColor = settings.Emission == hov::EmissionModel::WilhelmsVanGelder;
+  options.Parallel = settings.Parallel;
+  options.ClipToData = glm::inverse(settings.Composite);
+  options.Eye = settings.Eye;
+  return options;
 }
 
 /**
@@ -106,53 +149,46 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     vtkWarningMacro("OPENGL_PROJECTION ignores isosurfaces, separate fields, splatting, clipping "
                     "planes and view-depth clipping; use CPU_ACCURATE for them.");
   }
-  const float* depth = nullptr;
-  if (this->UseDepthBuffer)
-  {
-    proj.Depth.resize(static_cast<size_t>(width) * height);
-    if (vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, proj.Depth.data()))
-    {
-      depth = proj.Depth.data();
-    }
-  }
+  const float* depth =
+    this->UseDepthBuffer ? SceneDepth(ren, width, height, x0, y0, proj.Depth) : nullptr;
   vtkCamera* camera = ren->GetActiveCamera();
   const bool exactOrder = this->ProjectionOrder == EXACT_ORDER;
   const vtkHighOrderTetraSetup* setup = nullptr;
   const std::vector<vtkIdType>* frontToBack = nullptr;
   vtkHighOrderTransferFunction* tf = nullptr;
-  proj.Geometry.Clear();
-  vtkHighOrderProjectionRenderer::Options options;
+  vtkHighOrderProjectionRegions::Settings settings;
+  ViewSettings(camera, vol, ren->GetTiledAspectRatio(), settings);
+  settings.Method = static_cast<hov::ProjectionColorMethod>(this->ProjectionColorMethod);
+  settings.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
+  proj.BackToFront.clear();
   if (this->PrepareProjectionFrame(camera, vol, exactOrder, &setup, &frontToBack, &tf))
   {
-    vtkHighOrderProjectionRegions::Settings settings;
-    ViewSettings(camera, vol, ren->GetTiledAspectRatio(), settings);
-    settings.Method = static_cast<hov::ProjectionColorMethod>(this->ProjectionColorMethod);
-    settings.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
-    if (exactOrder)
-    {
-      proj.BackToFront.resize(frontToBack->size());
-      std::reverse_copy(frontToBack->begin(), frontToBack->end(), proj.BackToFront.begin());
-    }
-    else
-    {
-      vtkHighOrderProjectionRegions::CentroidOrder(*setup, settings, proj.BackToFront);
-    }
-    proj.Statistics =
-      proj.Regions.Build(*setup, proj.BackToFront, tf->GetTable(), settings, proj.Geometry);
-    options.ClipToData = glm::inverse(settings.Composite);
-    options.Eye = settings.Eye;
-    this->NumberOfProjectedTriangles = proj.Statistics.Triangles;
-    this->NumberOfProjectedSlabs = proj.Statistics.Slabs;
+    BackToFront(proj, *setup, exactOrder ? frontToBack : nullptr, settings);
   }
-  options.TextureOpacity = this->ProjectionColorMethod != INTERPOLATED_OPACITY;
-  options.PremultipliedColor = this->EmissionModel == WILHELMS_VAN_GELDER;
-  options.Parallel = camera->GetParallelProjection() != 0;
+  // The cells in groups, built while the previous group is drawn.
+  const vtkIdType total = static_cast<vtkIdType>(proj.BackToFront.size());
+  const vtkIdType group = std::max<vtkIdType>(CellsPerGroup, (total + MaxGroups - 1) / MaxGroups);
+  vtkIdType next = 0;
+  proj.Statistics = vtkHighOrderProjectionRegions::Statistics();
+  auto produce = [&](vtkHighOrderProjectionRegions::Geometry& geometry) {
+    if (next >= total)
+    {
+      return false;
+    }
+    proj.Statistics.Add(proj.Regions.Build(
+      *setup, proj.BackToFront, next, next + group, tf->GetTable(), settings, geometry));
+    next += group;
+    return true;
+  };
+  const vtkHighOrderProjectionRenderer::Options options = RenderOptions(settings);
   float* pixels = FloatImagePixels(this->GetFloatImage(), width, height);
-  if (!proj.Renderer.Render(ren, proj.Geometry, options, depth, width, height, pixels))
+  if (!proj.Renderer.Render(ren, produce, proj.Geometry, options, depth, width, height, pixels))
   {
     vtkErrorMacro("Could not draw the cell projection with OpenGL.");
     std::fill(pixels, pixels + static_cast<size_t>(width) * height * 4, 0.0f);
   }
+  this->NumberOfProjectedTriangles = proj.Statistics.Triangles;
+  this->NumberOfProjectedSlabs = proj.Statistics.Slabs;
   timer->StopTimer();
   this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
 }

@@ -68,20 +68,22 @@ ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method, Emis
 {
   ProjectionVertexColor out;
   length = std::max(length, 0.0);
-  const double tauAvg = 0.5 * (front.Tau + back.Tau);
-  const double depth = length * tauAvg;
-  out.Alpha = -std::expm1(-depth);
+  const double depth = length * 0.5 * (front.Tau + back.Tau);
   const bool wvg = emission == EmissionModel::WilhelmsVanGelder;
-  // Wilhelms-Van Gelder: the radiance C becomes the effective glow C / (L phi(D)).
-  const double glowScale = length * GlowFactor(depth);
   for (int c = 0; c < 3; ++c) // M0, M1, and the fallbacks of M2 and M3
   {
     out.Color[c] = 0.5 * (front.Color[c] + back.Color[c]);
+  }
+  if (method == ProjectionColorMethod::InterpolatedOpacity)
+  {
+    out.Alpha = -std::expm1(-depth);
   }
   double beta = 0.5, vFront = 0.0, vBack = 0.0;
   if (method == ProjectionColorMethod::TableColor &&
     table.Lookup(front.Tau * length, back.Tau * length, beta, vFront, vBack))
   {
+    // Wilhelms-Van Gelder: the radiance C becomes the effective glow C / (L phi(D)).
+    const double glowScale = wvg ? length * GlowFactor(depth) : 0.0;
     if (wvg && glowScale > 0.0)
     {
       for (int c = 0; c < 3; ++c)
@@ -100,10 +102,11 @@ ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method, Emis
   else if (method == ProjectionColorMethod::ExactColor)
   {
     const RGBA c = IntegrateSegment(length, front, back, emission, SegmentMethod::Exact);
+    out.Alpha = c.A;
     // The thin-segment series keeps C and A relatively accurate, so the
     // ratios are accurate for any positive denominator; at zero the limit is
     // the average.
-    const double denominator = wvg ? glowScale : c.A;
+    const double denominator = wvg ? length * GlowFactor(depth) : c.A;
     if (denominator > 0.0)
     {
       out.Color[0] = c.R / denominator;

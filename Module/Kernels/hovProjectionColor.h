@@ -69,7 +69,9 @@ enum class ProjectionColorMethod
 /// What one region vertex carries (see file doc).
 struct ProjectionVertexColor
 {
-  double Alpha = 0.0;                 ///< 1 - exp(-L tau_avg): interpolated by M0 only
+  /// 1 - exp(-L tau_avg): for M0 (which interpolates it) and M3 (the segment
+  /// kernel's A); 0 for M1 and M2 (the fragment shader computes the opacity).
+  double Alpha = 0.0;
   double Color[3] = { 0.0, 0.0, 0.0 }; ///< chromaticity k (Williams-Max) or effective glow (WVG)
 };
 
