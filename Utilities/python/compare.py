@@ -200,7 +200,8 @@ class Scene:
 
     def mapper(self, spec, data):
         if spec["input"] == "resample":
-            return spec["make"](self.gpu_sample_factor * min(data.GetSpacing()))
+            factor = spec.get("sample_factor", self.gpu_sample_factor)
+            return spec["make"](factor * min(data.GetSpacing()))
         return spec["make"]()
 
     def property(self, spec):
@@ -242,13 +243,10 @@ def run_one(scene, spec, frames, catcher, log, progress):
     return row, res, (None if errors else compared_image(res))
 
 
-def parse_args(argv=None):
-    parser = argparse.ArgumentParser(
-        prog="hov-compare", description="Compare vtkHighOrderVolumeMapper's render modes with "
-        "VTK's volume mappers (images, montage, error/time/memory table).")
+def add_scene_arguments(parser):
+    """Dataset, camera, transfer function and rendering options shared with hov-convergence."""
     parser.add_argument("data", help="a .vtu file (any cell type the module reads)")
     parser.add_argument("array", help="point array (scalar) to render")
-    parser.add_argument("--out", default="hov_compare_out", help="output directory")
     parser.add_argument("--size", type=int, nargs=2, default=[256, 256], metavar=("W", "H"))
     parser.add_argument("--azimuth", type=float, default=30.0, help="degrees (default fit)")
     parser.add_argument("--elevation", type=float, default=20.0, help="degrees")
@@ -256,16 +254,24 @@ def parse_args(argv=None):
     parser.add_argument("--tf", help="transfer function JSON (default: fitted to the range)")
     parser.add_argument("--unit-distance", type=float,
                         help="scalar opacity unit distance (default: JSON, else diagonal/50)")
-    parser.add_argument("--resolutions", default="64,128,256",
-                        help="vtkResampleToImage points on the longest side, comma separated")
-    parser.add_argument("--semantics", default="vtk,gpu", help="vtk, gpu or vtk,gpu")
-    parser.add_argument("--methods", default="*",
-                        help="comma-separated key patterns to run (references always run)")
     parser.add_argument("--frames", type=int, default=3, help="timed renders per method")
     parser.add_argument("--subdivisions", type=int, default=1,
                         help="vtkTessellatorFilter levels for non-linear cells")
     parser.add_argument("--gpu-sample-factor", type=float, default=0.5,
                         help="GPU sample distance as a fraction of the smallest voxel spacing")
+
+
+def parse_args(argv=None):
+    parser = argparse.ArgumentParser(
+        prog="hov-compare", description="Compare vtkHighOrderVolumeMapper's render modes with "
+        "VTK's volume mappers (images, montage, error/time/memory table).")
+    add_scene_arguments(parser)
+    parser.add_argument("--out", default="hov_compare_out", help="output directory")
+    parser.add_argument("--resolutions", default="64,128,256",
+                        help="vtkResampleToImage points on the longest side, comma separated")
+    parser.add_argument("--semantics", default="vtk,gpu", help="vtk, gpu or vtk,gpu")
+    parser.add_argument("--methods", default="*",
+                        help="comma-separated key patterns to run (references always run)")
     parser.add_argument("--diff-scale", type=float, default=0.1,
                         help="difference maps saturate at this error")
     parser.add_argument("--montage-colors", type=int, default=0,

@@ -1,0 +1,128 @@
+"""hov-compare (highordervolume.compare) on the bundled bracket at 128x128.
+
+Runs the module with `python -m` (our CPU references in both opacity semantics, one
+OPENGL_PROJECTION method, VTK's three unstructured mappers on the tetrahedra, the GPU route
+at one resample resolution) and checks: every output file exists; the CSV and Markdown
+tables parse and list the same methods; every error in both tables equals the error
+recomputed here from the written float images (.npy) against the reference image
+(max / mean / p99 per channel, within 1e-6); the reference rows have zero error and the
+others do not; the progress display printed one line per method. Then runs the installed-
+style console script bin/hov-compare --list.
+"""
+import argparse
+import csv
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+import highordervolume
+from highordervolume import compare_report
+
+FAILURES = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        FAILURES.append(what)
+
+
+def find_script(name):
+    """bin/<name> of the build tree the package was imported from."""
+    d = os.path.dirname(os.path.abspath(highordervolume.__file__))
+    for _ in range(6):
+        d = os.path.dirname(d)
+        cand = os.path.join(d, "bin", name)
+        if os.path.isfile(cand):
+            return cand
+    return None
+
+
+def recomputed(out, row, reference):
+    image = np.load(os.path.join(out, row["image"])).astype(np.float64)
+    diff = np.abs(image - reference).reshape(-1, 3)
+    return {"max": diff.max(axis=0), "mean": diff.mean(axis=0),
+            "p99": np.percentile(diff, 99.0, axis=0)}
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--temp", required=True)
+    args = parser.parse_args()
+    data = os.path.join(args.data, "bracket_tet4_ccx.vtu")
+    out = os.path.join(args.temp, "test_compare_tool")
+    cmd = [sys.executable, "-m", "highordervolume.compare", data, "von_mises", "--out", out,
+           "--size", "128", "128", "--resolutions", "32", "--frames", "1",
+           "--methods", "hov_proj_m1_vtk,vtk_*"]
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    print(proc.stdout[-3000:])
+    print(proc.stderr[-3000:], file=sys.stderr)
+    check(proc.returncode == 0, "hov-compare exits with 0 (got %d)" % proc.returncode)
+    expected = ["hov_cpu_vtk", "hov_proj_m1_vtk", "hov_cpu_gpu", "vtk_pt", "vtk_ugrc",
+                "vtk_zsweep", "vtk_gpu_32"]
+    for key in expected:
+        check(any(ln.startswith("[") and " %s " % key in ln and "100%" in ln
+                  for ln in proc.stdout.splitlines()), "progress line for %s" % key)
+    for name in ["compare_montage.png", "compare_table.csv", "compare_table.md"] + \
+            ["compare_%s.png" % k for k in expected] + ["compare_%s.npy" % k for k in expected]:
+        path = os.path.join(out, name)
+        check(os.path.isfile(path) and os.path.getsize(path) > 0, "%s written" % name)
+    if FAILURES:
+        return 1
+
+    with open(os.path.join(out, "compare_table.csv")) as f:
+        rows = list(csv.DictReader(f))
+    check([r["key"] for r in rows] == expected, "CSV lists the methods in order: %s"
+          % [r["key"] for r in rows])
+    with open(os.path.join(out, "compare_table.md")) as f:
+        md_rows = {r["key"]: r for r in compare_report.parse_markdown_table(f.read())}
+    check(sorted(md_rows) == sorted(expected), "Markdown table lists the same methods")
+
+    refs = {}
+    for r in rows:
+        check(r["status"].startswith("ok"), "%s status ok (%s)" % (r["key"], r["status"]))
+        for field in ("prep_s", "first_render_s", "frame_s", "rss_delta_mib", "data_mib"):
+            check(float(r[field]) >= 0.0, "%s %s parses and is >= 0" % (r["key"], field))
+        ref_key = r["reference"]
+        if ref_key not in refs:
+            refs[ref_key] = np.load(os.path.join(out, "compare_%s.npy" % ref_key)).astype(np.float64)
+        reference = refs[ref_key]
+        got = recomputed(out, r, reference)
+        worst = 0.0
+        for stat in ("max", "mean", "p99"):
+            table = np.array([float(r["%s_%s" % (stat, c)]) for c in "rgb"])
+            worst = max(worst, np.abs(table - got[stat]).max())
+            md = np.array([float(v) for v in md_rows[r["key"]]["%s err R/G/B" % stat].split("/")])
+            worst = max(worst, np.abs(md - got[stat]).max())
+        check(worst <= 1e-6, "%s: CSV and Markdown errors = recomputed from the .npy "
+              "(max deviation %.2e)" % (r["key"], worst))
+        maxerr = max(float(r["max_%s" % c]) for c in "rgb")
+        if r["key"].startswith("hov_cpu_"):
+            check(ref_key == r["key"] and maxerr == 0.0, "%s is its own reference, zero error"
+                  % r["key"])
+        else:
+            check(0.0 < maxerr <= 1.0, "%s differs from %s (max %.4f)" % (r["key"], ref_key, maxerr))
+            check(ref_key == ("hov_cpu_gpu" if r["key"].startswith("vtk_gpu") else "hov_cpu_vtk"),
+                  "%s compared with the reference of its semantics (%s)" % (r["key"], ref_key))
+    # The reference images are not blank (a blank pair would compare equal).
+    check(refs["hov_cpu_vtk"].max() > 0.2, "reference image is not blank")
+
+    script = find_script("hov-compare")
+    check(script is not None, "bin/hov-compare exists beside the package's build tree")
+    if script:
+        proc = subprocess.run([script, data, "von_mises", "--list"], capture_output=True,
+                              text=True, timeout=120)
+        check(proc.returncode == 0 and "vtk_zsweep" in proc.stdout and "hov_cpu_gpu" in proc.stdout,
+              "hov-compare --list runs and lists the methods")
+
+    if FAILURES:
+        print("%d check(s) failed" % len(FAILURES))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
