@@ -50,21 +50,16 @@ import numpy as np
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (factory overrides)
 import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text rendering)
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkOutputWindow, vtkStringOutputWindow
-from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLUnstructuredGridReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkImagingCore import vtkImageConstantPad
-from vtkmodules.vtkFiltersCore import vtkImageAppend
+from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (
     vtkCamera,
     vtkCellCenterDepthSort,
     vtkColorTransferFunction,
     vtkRenderer,
     vtkRenderWindow,
-    vtkTextActor,
     vtkVolume,
     vtkVolumeProperty,
-    vtkWindowToImageFilter,
 )
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
@@ -77,28 +72,15 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 try:
     from highordervolume import vtkHighOrderVolumeMapper, vtkSteinVisibilitySort
+    # Shared with the comparison tools (hov-compare): error catcher, capture, image I/O, montage.
+    from highordervolume.render_tools import (DEFAULT_NODES, ErrorCatcher, capture,
+                                              label_actor, montage, write_png, write_vti)
 except ImportError as exc:  # pragma: no cover - environment problem
     sys.exit("cannot import highordervolume (set PYTHONPATH=<build>/lib/python3/dist-packages "
              "and use /usr/bin/python3): %s" % exc)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_DATA = os.path.join(HERE, os.pardir, "Testing", "Data", "bracket_tet4_ccx.vtu")
-
-
-class ErrorCatcher:
-    """Collects VTK ErrorEvents of the objects it observes."""
-
-    def __init__(self):
-        self.messages = []
-
-    def watch(self, obj):
-        # The call data (the message) is passed only if the callback declares its type.
-        obj.AddObserver(vtkCommand.ErrorEvent, self.on_error)
-
-    def on_error(self, obj, event, calldata=None):
-        self.messages.append("%s: %s" % (obj.GetClassName(), calldata))
-
-    on_error.CallDataType = VTK_STRING
 
 
 def make_property(smin, smax, unit_distance=2.5):
@@ -109,15 +91,7 @@ def make_property(smin, smax, unit_distance=2.5):
     same scalars (VTK's linear ray integrator only honours opacity nodes that are also
     colour nodes; see /work/shared/notes/vtk91.md)."""
     span = smax - smin
-    nodes = [  # (fraction of the range, r, g, b, opacity)
-        (0.00, 0.15, 0.25, 0.90, 0.02),
-        (0.03, 0.20, 0.50, 1.00, 0.04),
-        (0.09, 0.10, 0.90, 0.90, 0.10),
-        (0.20, 0.30, 1.00, 0.30, 0.25),
-        (0.35, 1.00, 1.00, 0.10, 0.50),
-        (0.60, 1.00, 0.50, 0.00, 0.80),
-        (1.00, 1.00, 0.05, 0.05, 1.00),
-    ]
+    nodes = DEFAULT_NODES  # (fraction of the range, r, g, b, opacity)
     ctf = vtkColorTransferFunction()
     otf = vtkPiecewiseFunction()
     for f, r, g, b, a in nodes:
@@ -147,20 +121,6 @@ def make_camera():
     return cam
 
 
-def capture(window):
-    """The window's colour buffer as float RGB in [0,1], shape (h, w, 3), row 0 at the bottom."""
-    w2i = vtkWindowToImageFilter()
-    w2i.SetInput(window)
-    w2i.SetInputBufferTypeToRGB()
-    w2i.ReadFrontBufferOff()
-    w2i.ShouldRerenderOff()
-    w2i.Update()
-    img = w2i.GetOutput()
-    w, h, _ = img.GetDimensions()
-    rgb = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, 3)
-    return img, rgb.astype(np.float64) / 255.0
-
-
 def float_rgb(mapper):
     """Our float image composited over black: premultiplied RGB clamped to [0,1]."""
     img = mapper.GetFloatImage()
@@ -173,31 +133,6 @@ def float_alpha(mapper):
     img = mapper.GetFloatImage()
     w, h, _ = img.GetDimensions()
     return vtk_to_numpy(img.GetPointData().GetArray("RGBA")).reshape(h, w, 4)[..., 3]
-
-
-def write_png(image, path):
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(image)
-    writer.Write()
-
-
-def write_vti(image, path):
-    writer = vtkXMLImageDataWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(image)
-    writer.Write()
-
-
-def label_actor(text):
-    actor = vtkTextActor()
-    actor.SetInput(text)
-    tp = actor.GetTextProperty()
-    tp.SetFontSize(16)
-    tp.SetColor(1.0, 1.0, 1.0)
-    tp.SetFontFamilyToArial()
-    actor.SetDisplayPosition(8, 8)
-    return actor
 
 
 def render_case(case, grid, prop, camera, size, frames, catcher):
@@ -280,32 +215,6 @@ def legend_image(ctf, smin, smax, size, title, label_format="%.0f"):
     out.DeepCopy(img)
     win.Finalize()
     return out
-
-
-def montage(images, columns, size):
-    """Grid of equally sized RGB images, first image at the top left."""
-    rows = []
-    for r in range(0, len(images), columns):
-        row = vtkImageAppend()
-        row.SetAppendAxis(0)
-        for img in images[r:r + columns]:
-            row.AddInputData(img)
-        row.Update()
-        out = row.GetOutput()
-        if out.GetDimensions()[0] < columns * size:  # pad a short last row
-            pad = vtkImageConstantPad()
-            pad.SetInputData(out)
-            pad.SetOutputWholeExtent(0, columns * size - 1, 0, size - 1, 0, 0)
-            pad.SetConstant(0)
-            pad.Update()
-            out = pad.GetOutput()
-        rows.append(out)
-    grid = vtkImageAppend()
-    grid.SetAppendAxis(1)
-    for out in reversed(rows):  # row 0 of an image is its bottom
-        grid.AddInputData(out)
-    grid.Update()
-    return grid.GetOutput()
 
 
 def fmt3(v):
