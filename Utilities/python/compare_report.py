@@ -80,8 +80,9 @@ def write_montage(entries, path, diff_scale, columns=3, panel_inches=1.6, dpi=10
     import matplotlib.pyplot as plt
 
     rows = (len(entries) + columns - 1) // columns
+    height = rows * (panel_inches + 0.3) + 0.6  # 0.6 inch at the bottom for the colour bar
     fig, axes = plt.subplots(rows, 2 * columns, squeeze=False,
-                             figsize=(2 * columns * panel_inches, rows * (panel_inches + 0.35)))
+                             figsize=(2 * columns * panel_inches, height))
     fig.patch.set_facecolor("black")
     mappable = None
     for i in range(rows * columns):
@@ -102,13 +103,13 @@ def write_montage(entries, path, diff_scale, columns=3, panel_inches=1.6, dpi=10
                                       vmax=diff_scale, interpolation="nearest")
             ax_diff.set_title("max err %.3g" % max_err, color="white", fontsize=7)
     if mappable is not None:
-        cax = fig.add_axes([0.25, 0.012, 0.5, 0.008])
+        cax = fig.add_axes([0.25, 0.42 / height, 0.5, 0.08 / height])
         bar = fig.colorbar(mappable, cax=cax, orientation="horizontal")
         bar.set_label("|image - reference|, max over R/G/B (clipped at %.3g)" % diff_scale,
                       color="white", fontsize=7)
         bar.ax.tick_params(colors="white", labelsize=6)
-    fig.subplots_adjust(left=0.005, right=0.995, top=0.96, bottom=0.05, wspace=0.03,
-                        hspace=0.25)
+    fig.subplots_adjust(left=0.005, right=0.995, top=1.0 - 0.25 / height,
+                        bottom=0.6 / height, wspace=0.03, hspace=0.3 / panel_inches)
     fig.savefig(path, dpi=dpi, facecolor="black")
     plt.close(fig)
     if colors:
