@@ -215,11 +215,27 @@ def compared_image(result):
     return result["screen_rgb"].astype(np.float32)
 
 
+def warning_summary(printed):
+    """'' or '; N VTK warning(s), first: <message>' from what VTK printed."""
+    count = printed.count("Warning: In ")
+    if not count:
+        return ""
+    first = ""
+    lines = printed.splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith("Warning: In ") and i + 1 < len(lines):
+            first = lines[i + 1].split("): ", 1)[-1].strip()
+            break
+    return "; %d VTK warning%s, first: %s" % (count, "s" if count > 1 else "", first[:160])
+
+
 def run_one(scene, spec, frames, catcher, log, progress):
     """Render one method; returns the row dict (without errors) and the compared image."""
     row = {"key": spec["key"], "method": spec["name"], "semantics": SEMANTICS[spec["semantics"]]}
     rss0 = rt.rss_mib()
     data, prep_name, prep_s, prep_rss = scene.prepare(spec)
+    # Size before rendering: mappers add structures to their input (links, ...).
+    data_mib = data.GetActualMemorySize() / 1024.0
     mapper = scene.mapper(spec, data)
     mapper.AddObserver(vtkCommand.ProgressEvent, progress.observer)
     before = len(catcher.messages)
@@ -228,15 +244,14 @@ def run_one(scene, spec, frames, catcher, log, progress):
     printed_all = log.GetOutput() or ""
     printed, log.seen = printed_all[log.seen:], len(printed_all)
     errors = catcher.messages[before:] + (["VTK printed an error"] if "ERROR" in printed else [])
-    warnings = printed.count("Warning")
     row.update({"input": prep_name, "prep_s": prep_s, "first_render_s": res["first_s"],
                 "frame_s": res["frame_s"],
                 "rss_delta_mib": max(0.0, rt.rss_mib() - rss0) + (prep_rss if prep_s else 0.0),
-                "data_mib": data.GetActualMemorySize() / 1024.0})
+                "data_mib": data_mib})
     if errors:
         row["status"] = "error: " + errors[0].strip().replace("\n", " ")[:120]
     else:
-        row["status"] = "ok" + (" (%d VTK warnings)" % warnings if warnings else "")
+        row["status"] = "ok" + warning_summary(printed)
     if printed.strip():
         sys.stderr.write("[%s] VTK output:\n%s\n" % (spec["key"], printed.strip()[:2000]))
     del mapper
