@@ -330,6 +330,7 @@ def run(args):
     log.seen = 0
     catcher = rt.ErrorCatcher()
     progress = Progress(len(specs))
+    rt.warm_up_gl()
     rows, entries, refs = [], [], {}
     for spec in specs:
         progress.start(spec["key"])
@@ -350,9 +351,8 @@ def run(args):
         add_errors(row, image, reference, ref_key)
         progress.finish(row["status"])
         rows.append(row)
-        entries.append((row["key"], image, reference,
-                        row.get("max_r") is not None and max(row.get("max_%s" % c, 0.0)
-                                                              for c in CHANNELS)))
+        max_err = max(row["max_" + c] for c in CHANNELS) if "max_r" in row else float("nan")
+        entries.append((row["key"], image, reference, max_err))
     return rows, entries, scene, refs
 
 

@@ -94,6 +94,7 @@ def run_study(args):
     log.seen = 0
     catcher = rt.ErrorCatcher()
     progress = cmp.Progress(len(values) + 1)
+    rt.warm_up_gl()
     os.makedirs(args.out, exist_ok=True)
     ref_spec = {"key": "reference_" + sem, "input": "native", "semantics": sem,
                 "name": "ours CPU_ACCURATE", "make": lambda: cmp.hov_mapper(sem, "cpu")}

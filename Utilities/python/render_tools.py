@@ -236,6 +236,17 @@ def gpu_property(prop, smin, smax):
     return out
 
 
+def warm_up_gl():
+    """Render an empty offscreen window once, so that loading the OpenGL libraries and the
+    first context does not count in the first method's time and memory."""
+    win = vtkRenderWindow()
+    win.SetOffScreenRendering(1)
+    win.SetSize(16, 16)
+    win.AddRenderer(vtkRenderer())
+    win.Render()
+    win.Finalize()
+
+
 def capture(window):
     """The window's colour buffer as (vtkImageData, float RGB in [0,1] of shape (h, w, 3))."""
     w2i = vtkWindowToImageFilter()
