@@ -383,7 +383,7 @@ def main(argv=None):
         return 0
     try:
         rows, entries, scene, refs = run(args)
-    except ValueError as exc:
+    except (ValueError, OSError) as exc:  # bad file, array, transfer function, ...
         print("hov-compare: %s" % exc, file=sys.stderr)
         return 1
     report.write_csv(rows, os.path.join(args.out, "compare_table.csv"))

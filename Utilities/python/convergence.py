@@ -191,7 +191,7 @@ def main(argv=None):
     args = parse_args(argv)
     try:
         rows, order_time, order_samples = run_study(args)
-    except ValueError as exc:
+    except (ValueError, OSError) as exc:  # bad file, array, transfer function, ...
         print("hov-convergence: %s" % exc, file=sys.stderr)
         return 1
     base = os.path.join(args.out, "convergence_%s" % args.study)
