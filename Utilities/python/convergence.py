@@ -67,8 +67,10 @@ def study_spec(study, value, args, width, height):
                  "name": "projection M%d" % k,
                  "make": lambda k=k: cmp.hov_mapper(sem, "proj", k)}, k + 1.0)
     if study == "raycast-tolerance":
-        if not cmp.has_ray_cast():
-            raise ValueError("this vtkHighOrderVolumeMapper has no RAY_CAST render mode")
+        if not cmp.has_ray_cast() or not hasattr(cmp.vtkHighOrderVolumeMapper,
+                                                 "SetRayCastTolerance"):
+            raise ValueError("this vtkHighOrderVolumeMapper has no RAY_CAST render mode "
+                             "with SetRayCastTolerance")
         return ({"key": "ray_%g" % value, "input": "native", "semantics": sem,
                  "name": "ray cast tol %g" % value,
                  "make": lambda v=value: cmp.hov_mapper(sem, "ray", v)}, 1.0 / value)
