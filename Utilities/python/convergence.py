@@ -91,6 +91,9 @@ def run_study(args):
     scene = cmp.Scene(args)
     sem = STUDIES[args.study][0]
     values = [float(v) for v in (args.values or STUDIES[args.study][1]).split(",") if v.strip()]
+    if not values or min(values) <= 0.0 and args.study != "projection":
+        raise ValueError("--values: positive numbers needed")
+    specs = [study_spec(args.study, v, args, scene.width, scene.height) for v in values]
     log = vtkStringOutputWindow()
     vtkOutputWindow.SetInstance(log)
     log.seen = 0
@@ -107,8 +110,7 @@ def run_study(args):
         raise ValueError("the reference image failed: %s" % ref_row["status"])
     np.save(os.path.join(args.out, "convergence_%s_reference.npy" % args.study), reference)
     rows = []
-    for value in values:
-        spec, samples = study_spec(args.study, value, args, scene.width, scene.height)
+    for value, (spec, samples) in zip(values, specs):
         progress.start(spec["key"])
         row = {"study": args.study, "knob": STUDIES[args.study][2], "value": value}
         try:
