@@ -489,7 +489,8 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderMode: " << this->RenderMode << " (projection colour method "
-     << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ")\n";
+     << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ", opacity lookup "
+     << this->ProjectionOpacityLookup << ")\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";

@@ -393,6 +393,29 @@ public:
     EXACT_ORDER = 0,      ///< the VisibilitySort (default: vtkSteinVisibilitySort)
     APPROXIMATE_ORDER = 1 ///< centroid distance from the eye (fast, for interaction)
   };
+  enum ProjectionOpacityLookupType
+  {
+    OPACITY_TEXTURE = 0, ///< HIAC's float texture of M(u, v) = 1 - exp(-u v) (default)
+    OPACITY_ANALYTIC = 1 ///< 1 - exp(-L tau_avg) evaluated in the fragment shader
+  };
+  ///@{
+  /**
+   * How OPENGL_PROJECTION mode turns a fragment's optical depth d = L tau_avg
+   * into opacity (methods M1-M3; M0 interpolates the vertex opacity). The
+   * texture (HIAC section 7, hovProjectionColor.h) is bilinear on a 512^2 float
+   * grid, within 1.2e-5 of 1 - exp(-d); the analytic lookup is the shader's
+   * float exp (about 1e-7) and skips the texture fetch, which on llvmpipe is
+   * about a fifth of the frame on large meshes (hovBenchProjection --lookup).
+   */
+  vtkSetClampMacro(ProjectionOpacityLookup, int, OPACITY_TEXTURE, OPACITY_ANALYTIC);
+  vtkGetMacro(ProjectionOpacityLookup, int);
+  void SetProjectionOpacityLookupToTexture() { this->SetProjectionOpacityLookup(OPACITY_TEXTURE); }
+  void SetProjectionOpacityLookupToAnalytic()
+  {
+    this->SetProjectionOpacityLookup(OPACITY_ANALYTIC);
+  }
+  ///@}
+
   ///@{
   /// Cell order of OPENGL_PROJECTION mode.
   vtkSetClampMacro(ProjectionOrder, int, EXACT_ORDER, APPROXIMATE_ORDER);
@@ -447,6 +470,7 @@ protected:
   int RenderMode = CPU_ACCURATE;
   int ProjectionColorMethod = EXACT_COLOR;
   int ProjectionOrder = EXACT_ORDER;
+  int ProjectionOpacityLookup = OPACITY_TEXTURE;
   vtkIdType NumberOfProjectedTriangles = 0;
   vtkIdType NumberOfProjectedSlabs = 0;
   int OpacitySemantics = GPU_COMPATIBLE;
