@@ -213,7 +213,8 @@ public:
    * where it was not.
    * PER_PIXEL_SORT: each pixel's ray segments are sorted by entry distance;
    * exact for any set of non-overlapping cells, convex or not, with no global
-   * sort (the witness then counts pixels where cells overlap).
+   * sort (the witness then counts pixels where cells overlap). CPU paths
+   * only: OPENGL_PROJECTION with EXACT_ORDER always uses the VisibilitySort.
    */
   vtkSetClampMacro(CellOrdering, int, VISIBILITY_SORT, PER_PIXEL_SORT);
   vtkGetMacro(CellOrdering, int);
@@ -512,7 +513,10 @@ private:
   bool ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height);
   bool PrepareCells(vtkVolume* volume);
   bool PrepareTransferFunction(vtkVolumeProperty* property);
-  bool PrepareOrder(vtkCamera* camera, vtkVolume* volume);
+  /// The front-to-back cell order: the VisibilitySort's, or any order with
+  /// PER_PIXEL_SORT unless @p needVisibilitySort (cell projection has no
+  /// per-pixel sort).
+  bool PrepareOrder(vtkCamera* camera, vtkVolume* volume, bool needVisibilitySort = false);
   void PublishImage(int width, int height);
   /// Feature set-up of a frame: -1 error (reported), 0 no feature active, 1 active.
   int PrepareFeatures(vtkCamera* camera, vtkVolume* volume);
