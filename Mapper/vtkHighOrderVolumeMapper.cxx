@@ -193,10 +193,11 @@ bool vtkHighOrderVolumeMapper::PrepareCells(vtkVolume*)
   return true;
 }
 
-bool vtkHighOrderVolumeMapper::PrepareOrder(vtkCamera* camera, vtkVolume* volume)
+bool vtkHighOrderVolumeMapper::PrepareOrder(
+  vtkCamera* camera, vtkVolume* volume, bool needVisibilitySort)
 {
   Internals& impl = *this->Impl;
-  if (this->CellOrdering == PER_PIXEL_SORT)
+  if (this->CellOrdering == PER_PIXEL_SORT && !needVisibilitySort)
   {
     // Any order will do: each pixel sorts its own segments.
     const vtkIdType n = impl.Setup.GetNumberOfRenderedCells();
@@ -429,7 +430,7 @@ bool vtkHighOrderVolumeMapper::PrepareProjectionFrame(vtkCamera* camera, vtkVolu
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
   return this->ValidateInputs(camera, volume, 1, 1) && impl.Setup.GetNumberOfRenderedCells() > 0 &&
     this->PrepareTransferFunction(volume->GetProperty()) &&
-    (!exactOrder || this->PrepareOrder(camera, volume));
+    (!exactOrder || this->PrepareOrder(camera, volume, true));
 }
 
 void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
@@ -489,7 +490,8 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderMode: " << this->RenderMode << " (projection colour method "
-     << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ")\n";
+     << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ", opacity lookup "
+     << this->ProjectionOpacityLookup << ")\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";

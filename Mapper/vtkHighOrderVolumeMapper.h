@@ -213,7 +213,8 @@ public:
    * where it was not.
    * PER_PIXEL_SORT: each pixel's ray segments are sorted by entry distance;
    * exact for any set of non-overlapping cells, convex or not, with no global
-   * sort (the witness then counts pixels where cells overlap).
+   * sort (the witness then counts pixels where cells overlap). CPU paths
+   * only: OPENGL_PROJECTION with EXACT_ORDER always uses the VisibilitySort.
    */
   vtkSetClampMacro(CellOrdering, int, VISIBILITY_SORT, PER_PIXEL_SORT);
   vtkGetMacro(CellOrdering, int);
@@ -393,6 +394,29 @@ public:
     EXACT_ORDER = 0,      ///< the VisibilitySort (default: vtkSteinVisibilitySort)
     APPROXIMATE_ORDER = 1 ///< centroid distance from the eye (fast, for interaction)
   };
+  enum ProjectionOpacityLookupType
+  {
+    OPACITY_TEXTURE = 0, ///< HIAC's float texture of M(u, v) = 1 - exp(-u v) (default)
+    OPACITY_ANALYTIC = 1 ///< 1 - exp(-L tau_avg) evaluated in the fragment shader
+  };
+  ///@{
+  /**
+   * How OPENGL_PROJECTION mode turns a fragment's optical depth d = L tau_avg
+   * into opacity (methods M1-M3; M0 interpolates the vertex opacity). The
+   * texture (HIAC section 7, hovProjectionColor.h) is bilinear on a 512^2 float
+   * grid, within 1.2e-5 of 1 - exp(-d); the analytic lookup is the shader's
+   * float exp (about 1e-7) and skips the texture fetch, which on llvmpipe is
+   * about a fifth of the frame on large meshes (hovBenchProjection --lookup).
+   */
+  vtkSetClampMacro(ProjectionOpacityLookup, int, OPACITY_TEXTURE, OPACITY_ANALYTIC);
+  vtkGetMacro(ProjectionOpacityLookup, int);
+  void SetProjectionOpacityLookupToTexture() { this->SetProjectionOpacityLookup(OPACITY_TEXTURE); }
+  void SetProjectionOpacityLookupToAnalytic()
+  {
+    this->SetProjectionOpacityLookup(OPACITY_ANALYTIC);
+  }
+  ///@}
+
   ///@{
   /// Cell order of OPENGL_PROJECTION mode.
   vtkSetClampMacro(ProjectionOrder, int, EXACT_ORDER, APPROXIMATE_ORDER);
@@ -447,6 +471,7 @@ protected:
   int RenderMode = CPU_ACCURATE;
   int ProjectionColorMethod = EXACT_COLOR;
   int ProjectionOrder = EXACT_ORDER;
+  int ProjectionOpacityLookup = OPACITY_TEXTURE;
   vtkIdType NumberOfProjectedTriangles = 0;
   vtkIdType NumberOfProjectedSlabs = 0;
   int OpacitySemantics = GPU_COMPATIBLE;
@@ -488,7 +513,10 @@ private:
   bool ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height);
   bool PrepareCells(vtkVolume* volume);
   bool PrepareTransferFunction(vtkVolumeProperty* property);
-  bool PrepareOrder(vtkCamera* camera, vtkVolume* volume);
+  /// The front-to-back cell order: the VisibilitySort's, or any order with
+  /// PER_PIXEL_SORT unless @p needVisibilitySort (cell projection has no
+  /// per-pixel sort).
+  bool PrepareOrder(vtkCamera* camera, vtkVolume* volume, bool needVisibilitySort = false);
   void PublishImage(int width, int height);
   /// Feature set-up of a frame: -1 error (reported), 0 no feature active, 1 active.
   int PrepareFeatures(vtkCamera* camera, vtkVolume* volume);

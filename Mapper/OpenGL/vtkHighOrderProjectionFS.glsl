@@ -4,14 +4,15 @@
 // Fragment shader of vtkHighOrderProjectionRenderer (HIAC section 7), one
 // variant per combination of the HOV_* switches (no run-time branches): the
 // opacity of the fragment's ray segment from the 2D texture
-// M(u, v) = 1 - exp(-u v) (methods M1-M3, hovOpacityFromTexture) or
-// interpolated (M0); output premultiplied (k alpha, alpha) (Williams-Max),
+// M(u, v) = 1 - exp(-u v) (methods M1-M3, hovOpacityFromTexture), or
+// 1 - exp(-d) computed here (HOV_ANALYTIC_OPACITY), or interpolated (M0);
+// output premultiplied (k alpha, alpha) (Williams-Max),
 // or (g L phi, alpha) for the effective glow g of Wilhelms-Van Gelder
 // emission (HOV_GLOW, hovProjectionColor.h). Fragments behind the opaque
 // geometry already drawn fail the depth test (vtkHighOrderProjectionRenderer).
 in vec3 segmentVS;
 in vec3 colorVS;
-#if !HOV_TEXTURE_OPACITY
+#if !HOV_TEXTURE_OPACITY && !HOV_ANALYTIC_OPACITY
 in float alphaVS;
 #endif
 #if HOV_PERSPECTIVE
@@ -48,6 +49,8 @@ void main()
   float depth = max(len, 0.0) * max(tauAvg, 0.0);
 #if HOV_TEXTURE_OPACITY
   float alpha = hovOpacityFromTexture(depth);
+#elif HOV_ANALYTIC_OPACITY
+  float alpha = 1.0 - exp(-depth); // vtkHighOrderVolumeMapper::OPACITY_ANALYTIC
 #else
   float alpha = clamp(alphaVS, 0.0, 1.0);
 #endif

@@ -124,7 +124,8 @@ constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
 std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Options& options)
 {
   std::string defines = "#define HOV_PERSPECTIVE " + std::string(options.Parallel ? "0" : "1") +
-    "\n#define HOV_TEXTURE_OPACITY " + (options.TextureOpacity ? "1" : "0") +
+    "\n#define HOV_TEXTURE_OPACITY " + (options.TextureOpacity && !options.AnalyticOpacity ? "1" : "0") +
+    "\n#define HOV_ANALYTIC_OPACITY " + (options.TextureOpacity && options.AnalyticOpacity ? "1" : "0") +
     "\n#define HOV_GLOW " + (options.PremultipliedColor ? "1" : "0") + "\n";
   std::string out = source;
   const std::string tag = "//HOV::Variant::Dec";
@@ -161,7 +162,7 @@ bool vtkHighOrderProjectionRenderer::BindAttributes()
 
 void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
 {
-  if (options.TextureOpacity)
+  if (options.TextureOpacity && !options.AnalyticOpacity)
   {
     this->OpacityTable->Activate();
     this->Program->SetUniformi("opacityTable", this->OpacityTable->GetTextureUnit());
@@ -219,7 +220,7 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren, const Produce
         glFlush();
       }
     }
-    if (options.TextureOpacity)
+    if (options.TextureOpacity && !options.AnalyticOpacity)
     {
       this->OpacityTable->Deactivate();
     }

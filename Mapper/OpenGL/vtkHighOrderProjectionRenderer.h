@@ -56,6 +56,7 @@ public:
   struct Options
   {
     bool TextureOpacity = true;      ///< false: M0 (interpolated vertex opacity)
+    bool AnalyticOpacity = false;    ///< with TextureOpacity: 1 - exp(-d) in the shader, no texture
     bool PremultipliedColor = false; ///< true: the vertex colour is an effective glow (Wilhelms-Van Gelder)
     bool Parallel = false;           ///< the vertex layout of vtkHighOrderProjectionVertex
     glm::dmat4 ClipToData{ 1.0 };    ///< perspective: clip -> dataset coordinates

@@ -14,7 +14,7 @@ in vec3 segmentIn;
 in vec4 colorAlpha;
 out vec3 segmentVS;
 out vec3 colorVS;
-#if !HOV_TEXTURE_OPACITY
+#if !HOV_TEXTURE_OPACITY && !HOV_ANALYTIC_OPACITY
 out float alphaVS;
 #endif
 #if HOV_PERSPECTIVE
@@ -27,7 +27,7 @@ void main()
   gl_Position = vertexClip;
   segmentVS = segmentIn;
   colorVS = colorAlpha.rgb;
-#if !HOV_TEXTURE_OPACITY
+#if !HOV_TEXTURE_OPACITY && !HOV_ANALYTIC_OPACITY
   alphaVS = colorAlpha.a;
 #endif
 #if HOV_PERSPECTIVE

@@ -180,7 +180,8 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     next += group;
     return true;
   };
-  const vtkHighOrderProjectionRenderer::Options options = RenderOptions(settings);
+  vtkHighOrderProjectionRenderer::Options options = RenderOptions(settings);
+  options.AnalyticOpacity = this->ProjectionOpacityLookup == OPACITY_ANALYTIC;
   float* pixels = FloatImagePixels(this->GetFloatImage(), width, height);
   if (!proj.Renderer.Render(ren, produce, proj.Geometry, options, depth, width, height, pixels))
   {

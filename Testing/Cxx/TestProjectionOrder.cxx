@@ -9,7 +9,8 @@
 // 1.2/255 on the holed block where the centroid order inverts neighbours,
 // mean 0.01/255; a broken sort would composite whole layers in the wrong
 // order), its image does not change over frames and does not depend on the
-// number of threads.
+// number of threads; CellOrdering PER_PIXEL_SORT does not change the exact
+// order (it is a CPU-path setting).
 #include "hovTestScenes.h"
 
 #include "hovSortMeshes.h"     // HoledBlock
@@ -60,6 +61,14 @@ int TestProjectionOrder(int, char*[])
       scene.Mapper->SetProjectionOrder(0); // exact (Stein)
       win->Render();
       const Image exact = FloatImage(scene.Mapper);
+      // CellOrdering (a CPU-path setting) must not change the projection's
+      // exact order: with PER_PIXEL_SORT it once drew the cells in index order.
+      scene.Mapper->SetCellOrderingToPerPixelSort();
+      win->Render();
+      const Image exactPerPixel = FloatImage(scene.Mapper);
+      scene.Mapper->SetCellOrderingToVisibilitySort();
+      ck.Check(Diff(exactPerPixel, exact).Max == 0.0,
+        tag + "the exact order is the visibility sort's also with CellOrdering PER_PIXEL_SORT");
       scene.Mapper->SetProjectionOrder(1); // approximate
       win->Render();
       const Image approx = FloatImage(scene.Mapper);

@@ -9,7 +9,8 @@
 // (default 5, after one warm-up frame each) and the ratios ours / VTK.
 // VTK-unstructured opacity semantics (what VTK's mapper computes).
 // Options: --frames N, --data bracket|cube46, --method 1|3, --order 1|0
-// (approximate|Stein), --no-vtk (ours only, for profiling).
+// (approximate|Stein), --lookup 0|1 (opacity texture|analytic), --no-vtk
+// (ours only, for profiling).
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -150,6 +151,7 @@ int main(int argc, char* argv[])
   std::string only;   // --data NAME: one dataset
   int onlyMethod = -1; // --method M: one colour method (1 or 3)
   int onlyOrder = -1;  // --order O: 1 approximate, 0 Stein
+  int onlyLookup = -1; // --lookup K: 0 opacity texture, 1 analytic
   bool skipVTK = false; // --no-vtk: ours only (profiling)
   for (int i = 1; i < argc; ++i)
   {
@@ -169,6 +171,10 @@ int main(int argc, char* argv[])
     else if (!std::strcmp(argv[i], "--order") && next)
     {
       onlyOrder = std::atoi(argv[++i]);
+    }
+    else if (!std::strcmp(argv[i], "--lookup") && next)
+    {
+      onlyLookup = std::atoi(argv[++i]);
     }
     else if (!std::strcmp(argv[i], "--no-vtk"))
     {
@@ -239,7 +245,10 @@ int main(int argc, char* argv[])
     {
       for (int method : { 1, 3 })
       {
-        if ((onlyOrder >= 0 && order != onlyOrder) || (onlyMethod >= 0 && method != onlyMethod))
+        for (int lookup : { 0, 1 })
+        {
+        if ((onlyOrder >= 0 && order != onlyOrder) || (onlyMethod >= 0 && method != onlyMethod) ||
+          (onlyLookup >= 0 && lookup != onlyLookup))
         {
           continue;
         }
@@ -249,14 +258,17 @@ int main(int argc, char* argv[])
         ours->SetRenderModeToOpenGLProjection();
         ours->SetProjectionOrder(order);
         ours->SetProjectionColorMethod(method);
+        ours->SetProjectionOpacityLookup(lookup);
         Config config;
         config.Name = std::string("ours M") + std::to_string(method) +
-          (order ? " approximate order" : " Stein order      ");
+          (order ? " approximate order" : " Stein order      ") +
+          (lookup ? " analytic" : " texture ");
         config.Volume = vtkSmartPointer<vtkVolume>::New();
         config.Volume->SetMapper(ours);
         config.Volume->SetProperty(prop);
         config.Ours = ours;
         configs.push_back(config);
+        }
       }
     }
     TimeAll(win, ren, configs, bounds, frames);
@@ -268,6 +280,17 @@ int main(int argc, char* argv[])
       std::cout << "  " << config.Name << " " << t << " s";
       if (config.Ours)
       {
+        std::vector<double> paired; // per-frame ratio: load changes hit both alike
+        for (size_t f = 0; !skipVTK && f < config.Times.size(); ++f)
+        {
+          paired.push_back(config.Times[f] / configs[0].Times[f]);
+        }
+        std::sort(paired.begin(), paired.end());
+        if (!paired.empty())
+        {
+          std::cout << "  paired ours/VTK " << Median(paired) << " [" << paired.front() << ", "
+                    << paired.back() << "]";
+        }
         std::cout << "  (ours / VTK = " << t / tPT << ", triangles "
                   << config.Ours->GetNumberOfProjectedTriangles() << ")";
       }
