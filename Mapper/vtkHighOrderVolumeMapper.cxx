@@ -22,6 +22,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkRenderWindow.h" // CheckAbortStatus
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
@@ -353,6 +354,9 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
+  this->LastRenderAborted = false;
+  this->AbortExecute = 0; // a request to abort applies to one render
+  this->UpdateProgress(0.0);
 
   const bool ok = this->ValidateInputs(camera, volume, width, height);
   // Isosurfaces are visible even where the volume does not absorb.
@@ -384,6 +388,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     // A cyclic order cannot be exact: fall back to the per-pixel order.
     settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT || impl.OrderHasCycles;
     settings.TileSize = this->TileSize;
+    settings.Progress = [this](double done) { return this->ReportTileProgress(done); };
     const int features = this->PrepareFeatures(camera, volume);
     vtkHighOrderCellProjector::Statistics st;
     if (features > 0) // isosurfaces, separate fields or splatting: the feature path
@@ -402,14 +407,27 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     {
       impl.RGBA.assign(static_cast<size_t>(width) * height * 4, 0.0);
     }
+    this->LastRenderAborted = st.Aborted;
     this->WitnessViolations = st.WitnessViolations;
     this->NumberOfSegments = st.Segments;
     this->NumberOfPieces = st.Pieces;
   }
   this->PublishImage(width, height);
+  if (!this->LastRenderAborted && this->GetProgress() < 1.0)
+  {
+    this->UpdateProgress(1.0); // nothing to render, or no tile loop
+  }
   timer->StopTimer();
   this->LastImageTime = timer->GetElapsedTime();
   return ok ? 1 : 0;
+}
+
+bool vtkHighOrderVolumeMapper::ReportTileProgress(double done)
+{
+  // Called on the rendering thread between tile batches (vtkHighOrderTileBatches.h).
+  this->UpdateProgress(done);
+  vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
+  return this->AbortExecute || (window && window->CheckAbortStatus());
 }
 
 int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, int width, int height)

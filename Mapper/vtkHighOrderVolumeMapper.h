@@ -434,6 +434,21 @@ public:
   vtkGetMacro(LastImageTime, double);
   ///@}
 
+  ///@{
+  /**
+   * Progress and abort (CPU_ACCURATE mode): during the tile loop the mapper
+   * fires vtkCommand::ProgressEvent (UpdateProgress, from the rendering
+   * thread, between batches of about 1/32 of the tiles; 0 at the start,
+   * non-decreasing, 1 when all tiles are done). An observer may call
+   * SetAbortExecute(1), or the render window's AbortRender may be set
+   * (vtkRenderWindow::CheckAbortStatus is polled when drawn by a renderer):
+   * the remaining tiles are skipped and left zero (never NaN), and
+   * GetLastRenderAborted() is true. AbortExecute is reset at the start of
+   * every image. A render that is not aborted gives a bit-identical image.
+   */
+  vtkGetMacro(LastRenderAborted, bool);
+  ///@}
+
   /// The transfer-function table in use (for inspection).
   vtkHighOrderTransferFunction* GetTransferFunction();
 
@@ -478,6 +493,7 @@ protected:
   vtkIdType NumberOfSegments = 0;
   vtkIdType NumberOfPieces = 0;
   double LastImageTime = 0.0;
+  bool LastRenderAborted = false;
 
 private:
   vtkHighOrderVolumeMapper(const vtkHighOrderVolumeMapper&) = delete;
@@ -490,6 +506,8 @@ private:
   bool PrepareTransferFunction(vtkVolumeProperty* property);
   bool PrepareOrder(vtkCamera* camera, vtkVolume* volume);
   void PublishImage(int width, int height);
+  /// Progress callback of the CPU tile loop: true to abort.
+  bool ReportTileProgress(double done);
   /// Feature set-up of a frame: -1 error (reported), 0 no feature active, 1 active.
   int PrepareFeatures(vtkCamera* camera, vtkVolume* volume);
 
