@@ -13,6 +13,7 @@
 #include "vtkSteinVisibilitySort.h" // the default (exact) visibility sort
 
 #include "vtkCamera.h"
+#include "vtkCommand.h" // ProgressEvent
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -388,7 +389,10 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     // A cyclic order cannot be exact: fall back to the per-pixel order.
     settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT || impl.OrderHasCycles;
     settings.TileSize = this->TileSize;
-    settings.Progress = [this](double done) { return this->ReportTileProgress(done); };
+    if (this->HasObserver(vtkCommand::ProgressEvent) || this->FrameRenderer)
+    {
+      settings.Progress = [this](double done) { return this->ReportTileProgress(done); };
+    }
     const int features = this->PrepareFeatures(camera, volume);
     vtkHighOrderCellProjector::Statistics st;
     if (features > 0) // isosurfaces, separate fields or splatting: the feature path

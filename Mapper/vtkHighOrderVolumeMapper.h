@@ -439,7 +439,8 @@ public:
    * Progress and abort (CPU_ACCURATE mode): during the tile loop the mapper
    * fires vtkCommand::ProgressEvent (UpdateProgress, from the rendering
    * thread, between batches of about 1/32 of the tiles; 0 at the start,
-   * non-decreasing, 1 when all tiles are done). An observer may call
+   * non-decreasing, 1 when all tiles are done). The tiles run in batches only
+   * when a ProgressEvent observer is present or a renderer draws the volume. An observer may call
    * SetAbortExecute(1), or the render window's AbortRender may be set
    * (vtkRenderWindow::CheckAbortStatus is polled when drawn by a renderer):
    * the remaining tiles are skipped and left zero (never NaN), and
