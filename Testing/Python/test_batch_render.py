@@ -186,7 +186,8 @@ def run_case(name, spec, args, exe, env):
         for out in ("vti", "png"):
             if os.path.exists(os.path.join(folder, tool + "." + out)):
                 os.remove(os.path.join(folder, tool + "." + out))
-        proc = subprocess.run(command + [path], capture_output=True, text=True, env=env)
+        proc = subprocess.run(command + [path], capture_output=True, text=True, env=env,
+                          cwd=os.path.dirname(path))
         check(proc.returncode == 0, "%s %s: exit code %d %s" % (name, tool, proc.returncode,
                                                                 proc.stderr.strip()[-300:]))
         check("progress 100%" in proc.stderr, "%s %s: progress reported to 100%%" % (name, tool))

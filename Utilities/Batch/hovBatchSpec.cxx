@@ -385,13 +385,14 @@ void ParseInputOutput(Checker& c, const Json::Value& root, const std::string& ba
   const Json::Value& out = root["output"];
   if (c.Object(out, "output", { "vti", "png" }))
   {
-    if (out.isMember("vti") && c.String(out["vti"], "output.vti", spec.OutputVTI))
+    // Outputs are relative to the current directory (data: to the spec's folder).
+    if (out.isMember("vti"))
     {
-      spec.OutputVTI = Resolve(baseDir, spec.OutputVTI);
+      c.String(out["vti"], "output.vti", spec.OutputVTI);
     }
-    if (out.isMember("png") && c.String(out["png"], "output.png", spec.OutputPNG))
+    if (out.isMember("png"))
     {
-      spec.OutputPNG = Resolve(baseDir, spec.OutputPNG);
+      c.String(out["png"], "output.png", spec.OutputPNG);
     }
     if (!out.isMember("vti") && !out.isMember("png"))
     {

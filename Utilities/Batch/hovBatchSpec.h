@@ -54,13 +54,13 @@ struct BatchSpec
   int Integration = 0;  ///< EXACT / APPROXIMATE
   int CellOrdering = 0; ///< VISIBILITY_SORT / PER_PIXEL_SORT
 
-  std::string OutputVTI, OutputPNG; ///< absolute or relative to the spec file's folder
+  std::string OutputVTI, OutputPNG; ///< absolute or relative to the current directory
 };
 
 /**
  * Read and check @p path. Returns true if there is no error; @p errors and
- * @p warnings get one line each. Relative paths in the result are resolved
- * against the spec file's folder.
+ * @p warnings get one line each. A relative data path is resolved against
+ * the spec file's folder (outputs stay relative to the current directory).
  */
 bool ReadBatchSpec(const std::string& path, BatchSpec& spec, std::vector<std::string>& errors,
   std::vector<std::string>& warnings);

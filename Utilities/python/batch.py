@@ -258,8 +258,8 @@ def _parse_io(c, root, base_dir, spec):
     if c.obj(out, "output", ("vti", "png")):
         for key in ("vti", "png"):
             if key in out:
-                path = c.string(out[key], "output." + key)
-                spec["output"][key] = _resolve(base_dir, path) if path is not None else None
+                # relative to the current directory (data: to the spec's folder)
+                spec["output"][key] = c.string(out[key], "output." + key)
         if "vti" not in out and "png" not in out:
             c.error("output", "expected at least one of vti, png")
 
@@ -306,7 +306,7 @@ def parse_spec(root, base_dir="."):
 
 
 def load_spec(path):
-    """Read and check a spec file; relative paths are resolved against its folder."""
+    """Read and check a spec file; a relative data path is resolved against its folder."""
     try:
         with open(path) as f:
             text = f.read()
