@@ -136,6 +136,9 @@ def api_image(spec, data):
         camera.SetPosition(cam["position"])
         camera.SetViewUp(cam.get("view_up", [0, 1, 0]))
     else:
+        up = cam.get("view_up", [0, 1, 0])
+        if abs(up[2]) > 0.999 * (up[0] ** 2 + up[1] ** 2 + up[2] ** 2) ** 0.5:
+            camera.SetPosition(0, -1, 0)  # z up: the fit looks along +y
         renderer.SetAspect(width / height, 1.0)
         renderer.ResetCamera(bounds)
     if "view_angle" in cam:
@@ -158,6 +161,8 @@ def api_image(spec, data):
 
 
 def read_vti(path):
+    if not os.path.isfile(path):
+        return None
     reader = vtkXMLImageDataReader()
     reader.SetFileName(path)
     reader.Update()
@@ -173,8 +178,8 @@ def read_png(path):
 
 
 def run_case(name, spec, args, exe, env):
-    data = os.path.join(args.data, "bracket_tet4_ccx.vtu")
-    folder = os.path.join(args.temp, "batch_" + name)
+    data = os.path.join(os.path.abspath(args.data), "bracket_tet4_ccx.vtu")
+    folder = os.path.join(os.path.abspath(args.temp), "batch_" + name)
     os.makedirs(folder, exist_ok=True)
     results = {}
     for tool, command in (("python", [sys.executable, "-m", "highordervolume.batch"]),
@@ -188,8 +193,8 @@ def run_case(name, spec, args, exe, env):
                 os.remove(os.path.join(folder, tool + "." + out))
         proc = subprocess.run(command + [path], capture_output=True, text=True, env=env,
                           cwd=os.path.dirname(path))
-        check(proc.returncode == 0, "%s %s: exit code %d %s" % (name, tool, proc.returncode,
-                                                                proc.stderr.strip()[-300:]))
+        check(proc.returncode == 0, "%s %s: exit code %d %s" % (
+            name, tool, proc.returncode, proc.stderr.strip()[-300:] if proc.returncode else ""))
         check("progress 100%" in proc.stderr, "%s %s: progress reported to 100%%" % (name, tool))
         results[tool] = read_vti(os.path.join(folder, tool + ".vti"))
         png = os.path.join(folder, tool + ".png")

@@ -145,8 +145,12 @@ void SetupCamera(const hov::BatchSpec& spec, const double bounds[6], vtkRenderer
   else
   {
     // The default fit, at the image aspect (no window: set it by hand).
+    // Looking down -z; along +y if the view up is (nearly) the z axis.
+    const double* up = spec.ViewUp;
+    const double upNorm = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+    const bool zUp = upNorm > 0.0 && std::abs(up[2]) > 0.999 * upNorm;
     camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(0.0, 0.0, 1.0);
+    camera->SetPosition(0.0, zUp ? -1.0 : 0.0, zUp ? 0.0 : 1.0);
     renderer->SetAspect(static_cast<double>(spec.Width) / spec.Height, 1.0);
     renderer->ResetCamera(bounds);
   }

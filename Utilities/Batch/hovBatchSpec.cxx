@@ -436,7 +436,7 @@ bool ParseBatchSpec(const std::string& text, const std::string& baseDir, BatchSp
   {
     ParseCamera(c, root["camera"], spec);
   }
-  const Json::Value& proj = root["projection"];
+  const Json::Value proj = root.get("projection", Json::Value());
   if (root.isMember("projection") && c.Object(proj, "projection", { "type", "parallel_scale" }))
   {
     int type = 0;

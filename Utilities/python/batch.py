@@ -17,6 +17,7 @@ exit code 2, nothing rendered. Unknown fields are errors (keys starting with
     batch.write_outputs(spec, image)
 """
 import json
+import math
 import os
 import sys
 
@@ -398,8 +399,12 @@ def setup_camera(spec, bounds, renderer):
         camera.SetPosition(cam["position"])
         camera.SetViewUp(view_up)
     else:
+        # Looking down -z; along +y if the view up is (nearly) the z axis.
+        norm = math.sqrt(view_up[0] * view_up[0] + view_up[1] * view_up[1] +
+                         view_up[2] * view_up[2])
+        z_up = norm > 0.0 and abs(view_up[2]) > 0.999 * norm
         camera.SetFocalPoint(0.0, 0.0, 0.0)
-        camera.SetPosition(0.0, 0.0, 1.0)
+        camera.SetPosition(0.0, -1.0 if z_up else 0.0, 0.0 if z_up else 1.0)
         renderer.SetAspect(float(width) / height, 1.0)
         renderer.ResetCamera(bounds)
     if "view_angle" in cam:
