@@ -120,7 +120,7 @@ def main():
     env = dict(os.environ)
     env["PYTHONPATH"] = os.path.dirname(os.path.dirname(highordervolume.__file__)) + \
         os.pathsep + env.get("PYTHONPATH", "")
-    folder = os.path.join(args.temp, "batch_errors")
+    folder = os.path.join(os.path.abspath(args.temp), "batch_errors")
     os.makedirs(folder, exist_ok=True)
     data = os.path.join(os.path.abspath(args.data), "bracket_tet4_ccx.vtu")
     tools = (("python", [sys.executable, "-m", "highordervolume.batch"]), ("cxx", [exe]))
