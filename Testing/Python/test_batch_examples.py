@@ -49,8 +49,10 @@ def check_image(path, what):
 
 def run(command, cwd, env, what):
     proc = subprocess.run(command, capture_output=True, text=True, env=env, cwd=cwd)
-    check(proc.returncode == 0, "%s: exit %d %s" % (what, proc.returncode,
-                                                     proc.stderr.strip()[-300:]))
+    check(proc.returncode == 0, "%s: exit %d %s" % (
+        what, proc.returncode, proc.stderr.strip()[-300:] if proc.returncode else ""))
+    check("WARN|" not in proc.stderr and "ERR|" not in proc.stderr,
+          "%s: no VTK warning or error %s" % (what, proc.stderr.strip()[-300:]))
     return proc
 
 

@@ -64,6 +64,8 @@ def make_view(grid, mapper, prop, size):
     window.SetSize(size[0], size[1])
     window.AddRenderer(renderer)
     camera = renderer.GetActiveCamera()
+    camera.SetPosition(0, -1, 0)  # front view, z up (like ParaView's "-Y" view)
+    camera.SetFocalPoint(0, 0, 0)
     camera.SetViewUp(0, 0, 1)
     renderer.ResetCamera(grid.GetBounds())
     camera.Azimuth(35)
