@@ -30,7 +30,7 @@ def main(argv=None):
     parser.add_argument("--data", default=render_vtu.BRACKET)
     parser.add_argument("--array", default="von_mises")
     parser.add_argument("--size", type=int, nargs=2, default=(640, 480))
-    parser.add_argument("--unit-distance", type=float, default=5.0)
+    parser.add_argument("--unit-distance", type=float, default=1.0)
     parser.add_argument("--out", default="compare")
     args = parser.parse_args(argv)
     grid = render_vtu.load(args.data, args.array)

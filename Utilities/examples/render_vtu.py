@@ -99,7 +99,7 @@ def main(argv=None):
     parser.add_argument("--data", default=BRACKET)
     parser.add_argument("--array", default="von_mises")
     parser.add_argument("--size", type=int, nargs=2, default=(640, 480))
-    parser.add_argument("--unit-distance", type=float, default=5.0)
+    parser.add_argument("--unit-distance", type=float, default=1.0)
     parser.add_argument("--out", default="render_vtu", help="output prefix (.png, .vti)")
     args = parser.parse_args(argv)
     grid = load(args.data, args.array)
