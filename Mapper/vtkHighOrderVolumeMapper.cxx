@@ -389,7 +389,9 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     // A cyclic order cannot be exact: fall back to the per-pixel order.
     settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT || impl.OrderHasCycles;
     settings.TileSize = this->TileSize;
-    if (this->HasObserver(vtkCommand::ProgressEvent) || this->FrameRenderer)
+    vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
+    if (this->HasObserver(vtkCommand::ProgressEvent) ||
+      (window && window->HasObserver(vtkCommand::AbortCheckEvent)))
     {
       settings.Progress = [this](double done) { return this->ReportTileProgress(done); };
     }

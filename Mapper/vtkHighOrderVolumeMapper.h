@@ -440,7 +440,8 @@ public:
    * fires vtkCommand::ProgressEvent (UpdateProgress, from the rendering
    * thread, between batches of about 1/32 of the tiles; 0 at the start,
    * non-decreasing, 1 when all tiles are done). The tiles run in batches only
-   * when a ProgressEvent observer is present or a renderer draws the volume. An observer may call
+   * when the mapper has a ProgressEvent observer or the render window drawing
+   * it has an AbortCheckEvent observer (otherwise: one parallel loop, no cost). An observer may call
    * SetAbortExecute(1), or the render window's AbortRender may be set
    * (vtkRenderWindow::CheckAbortStatus is polled when drawn by a renderer):
    * the remaining tiles are skipped and left zero (never NaN), and
