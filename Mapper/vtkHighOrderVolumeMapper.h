@@ -439,14 +439,15 @@ public:
    * Progress and abort (CPU_ACCURATE mode): during the tile loop the mapper
    * fires vtkCommand::ProgressEvent (UpdateProgress, from the rendering
    * thread, between batches of about 1/32 of the tiles; 0 at the start,
-   * non-decreasing, 1 when all tiles are done). The tiles run in batches only
-   * when the mapper has a ProgressEvent observer or the render window drawing
-   * it has an AbortCheckEvent observer (otherwise: one parallel loop, no cost). An observer may call
-   * SetAbortExecute(1), or the render window's AbortRender may be set
-   * (vtkRenderWindow::CheckAbortStatus is polled when drawn by a renderer):
-   * the remaining tiles are skipped and left zero (never NaN), and
+   * non-decreasing, 1 when all tiles are done). An observer may call
+   * SetAbortExecute(1); when a renderer draws the volume, the render window's
+   * AbortRender is also polled (vtkRenderWindow::CheckAbortStatus). Then the
+   * remaining tiles are skipped and left zero (never NaN) and
    * GetLastRenderAborted() is true. AbortExecute is reset at the start of
-   * every image. A render that is not aborted gives a bit-identical image.
+   * every image. The tiles run in batches only when the mapper has a
+   * ProgressEvent observer or the render window an AbortCheckEvent observer
+   * (otherwise one parallel loop, as before); a render that is not aborted
+   * gives a bit-identical image either way.
    */
   vtkGetMacro(LastRenderAborted, bool);
   ///@}
