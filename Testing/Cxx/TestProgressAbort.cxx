@@ -12,6 +12,8 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 
 #include <cmath>
 #include <string>
@@ -97,6 +99,34 @@ void CheckCase(Checker& ck, VolumeScene& scene, vtkCamera* cam, const std::strin
     name + ": the render after an abort is complete and bit-identical");
   mapper->RemoveObserver(tag);
 }
+
+/// In a render window, an AbortCheckEvent observer that sets AbortRender stops the CPU path.
+void CheckWindowAbort(Checker& ck, VolumeScene& scene, vtkCamera* cam)
+{
+  auto renderer = BlackRenderer(cam);
+  renderer->AddVolume(scene.Volume);
+  auto window = OffscreenWindow(renderer, 160, 120);
+  window->Render();
+  const Image full = FloatImage(scene.Mapper);
+  int checks = 0;
+  vtkNew<vtkCallbackCommand> abortCheck;
+  abortCheck->SetClientData(&checks);
+  abortCheck->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
+    if (++*static_cast<int*>(clientData) >= 4)
+    {
+      static_cast<vtkRenderWindow*>(caller)->SetAbortRender(1);
+    }
+  });
+  window->AddObserver(vtkCommand::AbortCheckEvent, abortCheck);
+  window->Render();
+  const Image aborted = FloatImage(scene.Mapper);
+  ck.Check(scene.Mapper->GetLastRenderAborted() && NonZero(aborted) < NonZero(full) &&
+      NonZero(full) > 1000,
+    "window: AbortRender set by an AbortCheckEvent observer stops the render (" +
+      std::to_string(NonZero(aborted)) + " of " + std::to_string(NonZero(full)) +
+      " covered pixels, " + std::to_string(checks) + " abort checks)");
+  renderer->RemoveVolume(scene.Volume);
+}
 }
 
 int TestProgressAbort(int argc, char* argv[])
@@ -117,6 +147,7 @@ int TestProgressAbort(int argc, char* argv[])
   cam->SetClippingRange(50, 600);
 
   CheckCase(ck, scene, cam, "plain path");
+  CheckWindowAbort(ck, scene, cam);
   scene.Mapper->AddIsosurface(80.0, 1.0, 1.0, 0.2, 0.5);
   CheckCase(ck, scene, cam, "feature path (isosurface)");
   ck.Check(scene.NoMessages(), "no error or warning");
