@@ -219,6 +219,32 @@ def run_case(name, spec, args, exe, env):
         check(same, "%s: %s batch image bit-identical to the API image (%s)" % (name, tool, detail))
 
 
+def check_progress(args):
+    """batch.render's progress callback: monotone to 1; aborting leaves zeros, no NaN."""
+    from highordervolume import batch
+    spec = dict(SPECS["fit"], data=os.path.join(os.path.abspath(args.data), "bracket_tet4_ccx.vtu"),
+                output={"vti": "unused.vti"})
+    spec = batch.parse_spec(spec)
+    seen = []
+    full = vtk_to_numpy(batch.render(spec, progress=lambda m, f: seen.append(f))
+                        .GetPointData().GetArray("RGBA")).copy()
+    check(len(seen) > 10 and seen[0] == 0.0 and seen[-1] == 1.0 and
+          all(b >= a for a, b in zip(seen, seen[1:])),
+          "python progress: %d events from 0 to 1, non-decreasing" % len(seen))
+    aborted_flags = []
+
+    def abort(mapper, fraction):
+        if fraction >= 0.25:
+            mapper.SetAbortExecute(1)
+        aborted_flags.append(mapper.GetLastRenderAborted())
+    part = vtk_to_numpy(batch.render(spec, progress=abort).GetPointData().GetArray("RGBA"))
+    zero = (part == 0).all(axis=1)
+    same = (part == full).all(axis=1)
+    check(not np.isnan(part).any() and (zero | same).all() and zero.sum() > (full[:, 3] == 0).sum(),
+          "python abort: no NaN, pixels either complete or zero (%d of %d zero vs %d in the full "
+          "image)" % (zero.sum(), len(zero), (full[:, 3] == 0).sum()))
+
+
 def check_exists(path, what):
     ok = os.path.isfile(path)
     check(ok, what)
@@ -237,6 +263,7 @@ def main():
         os.pathsep + env.get("PYTHONPATH", "")
     for name, spec in SPECS.items():
         run_case(name, spec, args, exe, env)
+    check_progress(args)
     print("%d failure(s)" % len(FAILURES))
     return 1 if FAILURES else 0
 
