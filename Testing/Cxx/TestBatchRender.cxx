@@ -131,7 +131,7 @@ int TestBatchRender(int argc, char* argv[])
     differing += static_cast<double>(rgba->GetValue(k)) != api.V[k];
     covered += k % 4 == 3 && api.V[k] > 0.01;
   }
-  ck.Check(code == 0 && sized && differing == 0 && covered > 1000,
+  ck.Check(code == 0 && sized && differing == 0 && covered > 500,
     "hovBatchRender exit " + std::to_string(code) + ", " + std::to_string(differing) +
       " values differ from the C++ API image (" + std::to_string(covered) + " covered pixels)");
 

@@ -112,7 +112,7 @@ void CheckWindowAbort(Checker& ck, VolumeScene& scene, vtkCamera* cam)
   vtkNew<vtkCallbackCommand> abortCheck;
   abortCheck->SetClientData(&checks);
   abortCheck->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void*) {
-    if (++*static_cast<int*>(clientData) >= 4)
+    if (++*static_cast<int*>(clientData) >= 1) // VTK polls at most 5 times a second
     {
       static_cast<vtkRenderWindow*>(caller)->SetAbortRender(1);
     }
