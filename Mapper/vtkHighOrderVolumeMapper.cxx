@@ -13,6 +13,7 @@
 #include "vtkSteinVisibilitySort.h" // the default (exact) visibility sort
 
 #include "vtkCamera.h"
+#include "vtkCommand.h" // ProgressEvent
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -22,6 +23,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkRenderWindow.h" // CheckAbortStatus
 #include "vtkRenderer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
@@ -354,6 +356,9 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
+  this->LastRenderAborted = false;
+  this->AbortExecute = 0; // a request to abort applies to one render
+  this->UpdateProgress(0.0);
 
   const bool ok = this->ValidateInputs(camera, volume, width, height);
   // Isosurfaces are visible even where the volume does not absorb.
@@ -385,6 +390,12 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     // A cyclic order cannot be exact: fall back to the per-pixel order.
     settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT || impl.OrderHasCycles;
     settings.TileSize = this->TileSize;
+    vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
+    if (this->HasObserver(vtkCommand::ProgressEvent) ||
+      (window && window->HasObserver(vtkCommand::AbortCheckEvent)))
+    {
+      settings.Progress = [this](double done) { return this->ReportTileProgress(done); };
+    }
     const int features = this->PrepareFeatures(camera, volume);
     vtkHighOrderCellProjector::Statistics st;
     if (features > 0) // isosurfaces, separate fields or splatting: the feature path
@@ -403,14 +414,27 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     {
       impl.RGBA.assign(static_cast<size_t>(width) * height * 4, 0.0);
     }
+    this->LastRenderAborted = st.Aborted;
     this->WitnessViolations = st.WitnessViolations;
     this->NumberOfSegments = st.Segments;
     this->NumberOfPieces = st.Pieces;
   }
   this->PublishImage(width, height);
+  if (!this->LastRenderAborted && this->GetProgress() < 1.0)
+  {
+    this->UpdateProgress(1.0); // nothing to render, or no tile loop
+  }
   timer->StopTimer();
   this->LastImageTime = timer->GetElapsedTime();
   return ok ? 1 : 0;
+}
+
+bool vtkHighOrderVolumeMapper::ReportTileProgress(double done)
+{
+  // Called on the rendering thread between tile batches (vtkHighOrderTileBatches.h).
+  this->UpdateProgress(done);
+  vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
+  return this->AbortExecute || (window && window->CheckAbortStatus());
 }
 
 int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, int width, int height)

@@ -458,6 +458,24 @@ public:
   vtkGetMacro(LastImageTime, double);
   ///@}
 
+  ///@{
+  /**
+   * Progress and abort (CPU_ACCURATE mode): during the tile loop the mapper
+   * fires vtkCommand::ProgressEvent (UpdateProgress, from the rendering
+   * thread, between batches of about 1/32 of the tiles; 0 at the start,
+   * non-decreasing, 1 when all tiles are done). An observer may call
+   * SetAbortExecute(1); when a renderer draws the volume, the render window's
+   * AbortRender is also polled (vtkRenderWindow::CheckAbortStatus). Then the
+   * remaining tiles are skipped and left zero (never NaN) and
+   * GetLastRenderAborted() is true. AbortExecute is reset at the start of
+   * every image. The tiles run in batches only when the mapper has a
+   * ProgressEvent observer or the render window an AbortCheckEvent observer
+   * (otherwise one parallel loop, as before); a render that is not aborted
+   * gives a bit-identical image either way.
+   */
+  vtkGetMacro(LastRenderAborted, bool);
+  ///@}
+
   /// The transfer-function table in use (for inspection).
   vtkHighOrderTransferFunction* GetTransferFunction();
 
@@ -503,6 +521,7 @@ protected:
   vtkIdType NumberOfSegments = 0;
   vtkIdType NumberOfPieces = 0;
   double LastImageTime = 0.0;
+  bool LastRenderAborted = false;
 
 private:
   vtkHighOrderVolumeMapper(const vtkHighOrderVolumeMapper&) = delete;
@@ -518,6 +537,8 @@ private:
   /// per-pixel sort).
   bool PrepareOrder(vtkCamera* camera, vtkVolume* volume, bool needVisibilitySort = false);
   void PublishImage(int width, int height);
+  /// Progress callback of the CPU tile loop: true to abort.
+  bool ReportTileProgress(double done);
   /// Feature set-up of a frame: -1 error (reported), 0 no feature active, 1 active.
   int PrepareFeatures(vtkCamera* camera, vtkVolume* volume);
 

@@ -1,6 +1,7 @@
 #include "vtkHighOrderCellProjector.h"
 
 #include "vtkHighOrderProjectorTile.h" // the per-tile work
+#include "vtkHighOrderTileBatches.h"   // progress and abort between tile batches
 #include "vtkHighOrderTetraSetup.h"
 #include "vtkHighOrderViewRays.h"
 
@@ -260,13 +261,10 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderCellProjector::Render(
   // buffers keep their capacity (the result does not depend on which thread
   // runs a tile).
   vtkSMPThreadLocal<vtkHighOrderProjectorTile>& tiles = buf.Tiles;
-  vtkSMPTools::For(0, numTiles, 1, [&](vtkIdType tBegin, vtkIdType tEnd) {
-    vtkHighOrderProjectorTile& tile = tiles.Local();
-    for (vtkIdType t = tBegin; t < tEnd; ++t)
-    {
-      tile.Render(frame, static_cast<int>(t), rgba, tileStats[t]);
-    }
-  });
+  const int tilesDone = vtkHighOrderForTileBatches(numTiles, settings.Progress,
+    [&](vtkIdType t) { tiles.Local().Render(frame, static_cast<int>(t), rgba, tileStats[t]); });
+  stats.Aborted = tilesDone < numTiles;
+  vtkHighOrderClearTiles(tilesDone, numTiles, bins.TilesX, bins.Size, width, height, rgba);
   for (const Statistics& st : tileStats)
   {
     stats.WitnessViolations += st.WitnessViolations;

@@ -65,6 +65,7 @@
 
 #include "vtkType.h" // vtkIdType
 
+#include <functional> // progress callback
 #include <memory> // scratch buffers
 #include <vector> // image, order
 
@@ -86,6 +87,8 @@ public:
     /// Order each pixel's segments by entry distance instead of trusting the
     /// cell order (exact for any set of non-overlapping cells).
     bool PerPixelSort = false;
+    /// If set: called between tile batches with the fraction done; true aborts (vtkHighOrderTileBatches.h).
+    std::function<bool(double)> Progress;
   };
 
   struct Statistics
@@ -93,6 +96,7 @@ public:
     vtkIdType WitnessViolations = 0; ///< pixels where the order was wrong
     vtkIdType Segments = 0;          ///< ray-cell segments integrated
     vtkIdType Pieces = 0;            ///< linear pieces integrated (>= Segments)
+    bool Aborted = false;            ///< Progress returned true: unrendered tiles are zero
   };
 
   /**

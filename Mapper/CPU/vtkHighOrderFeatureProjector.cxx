@@ -2,6 +2,7 @@
 
 #include "vtkHighOrderFeatureTile.h" // per-tile work
 #include "vtkHighOrderProjectorTile.h" // BoxMargin, MaxTileSize
+#include "vtkHighOrderTileBatches.h" // progress and abort between tile batches
 #include "vtkHighOrderFeatures.h"    // settings
 #include "vtkHighOrderTetraSetup.h"  // the cells
 #include "vtkHighOrderViewRays.h"    // rays, projection
@@ -340,13 +341,11 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderFeatureProjector::Render(
 
   const int numTiles = f.TilesX * f.TilesY;
   std::vector<vtkHighOrderCellProjector::Statistics> tileStats(numTiles);
-  vtkSMPTools::For(0, numTiles, 1, [&](vtkIdType t0, vtkIdType t1) {
-    vtkHighOrderFeatureTile& tile = this->Tiles->Tiles.Local();
-    for (vtkIdType t = t0; t < t1; ++t)
-    {
-      tile.Render(f, static_cast<int>(t), rgba, tileStats[t]);
-    }
+  const int tilesDone = vtkHighOrderForTileBatches(numTiles, settings.Progress, [&](vtkIdType t) {
+    this->Tiles->Tiles.Local().Render(f, static_cast<int>(t), rgba, tileStats[t]);
   });
+  stats.Aborted = tilesDone < numTiles;
+  vtkHighOrderClearTiles(tilesDone, numTiles, f.TilesX, f.TileSize, width, height, rgba);
   for (const auto& st : tileStats)
   {
     stats.WitnessViolations += st.WitnessViolations;

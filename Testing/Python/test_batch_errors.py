@@ -1,0 +1,166 @@
+"""Batch renderer: malformed specs are rejected, naming the field at fault.
+
+Each case is a valid spec with one defect (missing data, missing file, wrong
+types, a bad enum value, a wrong camera arity, an unknown field, a missing
+array, an out-of-range component, invalid JSON, ...). Both entry points
+(``python3 -m highordervolume.batch`` and ``hovBatchRender``) must exit with
+code 2, print a message containing the expected "<field>: <text>", and write
+no output. The valid base spec must render (exit 0), so the cases fail for
+their defect only. Unknown fields are errors (documented in README
+"Batch rendering"); keys starting with "_" are comments.
+"""
+import argparse
+import copy
+import json
+import os
+import subprocess
+import sys
+
+import highordervolume
+
+FAILURES = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        FAILURES.append(what)
+
+
+def base_spec(data):
+    return {
+        "_comment": "a valid spec; each case breaks one thing",
+        "data": data,
+        "array": {"name": "von_mises"},
+        "image": {"width": 24, "height": 16},
+        "camera": {"azimuth": 10},
+        "transfer_function": {"color": [[0, 0, 0, 1], [170, 1, 0, 0]],
+                              "opacity": [[0, 0.1], [170, 0.8]]},
+        "output": {"vti": "out.vti"},
+    }
+
+
+def set_path(spec, path, value):
+    keys = path.split(".")
+    node = spec
+    for k in keys[:-1]:
+        node = node[k]
+    if value is DELETE:
+        del node[keys[-1]]
+    else:
+        node[keys[-1]] = value
+
+
+DELETE = object()
+
+# (name, edits [(dotted path, value)], expected message fragment)
+CASES = [
+    ("missing data", [("data", DELETE)], "data: expected a string, got nothing"),
+    ("data file absent", [("data", "no_such_file.vtu")], "data: cannot read"),
+    ("data wrong type", [("data", 3)], "data: expected a string, got a number"),
+    ("array missing", [("array", DELETE)], "array: expected an object, got nothing"),
+    ("array unknown", [("array.name", "no_such_array")], "array.name: no point array 'no_such_array'"),
+    ("component too big", [("array.component", 1)], "array.component: 1 but 'von_mises' has 1"),
+    ("association enum", [("array.association", "vertex")],
+     "array.association: unknown value 'vertex' (expected one of: point, cell)"),
+    ("camera arity", [("camera", {"position": [1, 2], "focal_point": [0, 0, 0]})],
+     "camera.position: expected 3 numbers, got 2"),
+    ("camera element type", [("camera", {"position": [1, "2", 3], "focal_point": [0, 0, 0]})],
+     "camera.position[1]: expected a number, got a string"),
+    ("camera focal point missing", [("camera", {"position": [1, 2, 3]})],
+     "camera.focal_point: required when camera.position is given"),
+    ("camera unknown field", [("camera", {"positon": [1, 2, 3]})],
+     "camera.positon: unknown field"),
+    ("zoom not positive", [("camera", {"zoom": 0})], "camera.zoom: expected a positive number"),
+    ("view angle type", [("camera", {"view_angle": "wide"})],
+     "camera.view_angle: expected a number, got a string"),
+    ("top-level unknown", [("colour_map", "jet")], "colour_map: unknown field"),
+    ("projection enum", [("projection", {"type": "fisheye"})],
+     "projection.type: unknown value 'fisheye' (expected one of: perspective, orthographic)"),
+    ("render mode enum", [("render_mode", "gpu")],
+     "render_mode: unknown value 'gpu' (expected one of: cpu_accurate, opengl_projection)"),
+    ("render mode unsupported feature",
+     [("render_mode", "opengl_projection"), ("isosurfaces", [{"value": 50}])],
+     "render_mode: opengl_projection does not support isosurfaces or clipping"),
+    ("semantics enum", [("transfer_function.opacity_semantics", "linear")],
+     "transfer_function.opacity_semantics: unknown value 'linear'"),
+    ("emission enum", [("transfer_function.emission_model", 1)],
+     "transfer_function.emission_model: expected a string, got a number"),
+    ("colour node arity", [("transfer_function.color", [[0, 0, 0, 1], [170, 1, 0]])],
+     "transfer_function.color[1]: expected 4 numbers, got 3"),
+    ("opacity empty", [("transfer_function.opacity", [])],
+     "transfer_function.opacity: expected a non-empty array of [s, a] nodes, got an empty array"),
+    ("unit distance", [("transfer_function.unit_distance", -1)],
+     "transfer_function.unit_distance: expected a positive number"),
+    ("width type", [("image.width", "big")], "image.width: expected an integer, got a string"),
+    ("height range", [("image.height", 0)], "image.height: expected an integer in [1, 16384], got 0"),
+    ("clip plane arity", [("clipping", {"planes": [{"origin": [0, 0, 0], "normal": [1, 0]}]})],
+     "clipping.planes[0].normal: expected 3 numbers, got 2"),
+    ("depth range order", [("clipping", {"view_depth_range": [5, 1]})],
+     "clipping.view_depth_range: expected [near, far] with near < far"),
+    ("isosurface value", [("isosurfaces", [{"color": [1, 0, 0]}])],
+     "isosurfaces[0].value: expected a number, got nothing"),
+    ("output none", [("output", {})], "output: expected at least one of vti, png"),
+    ("output unknown", [("output", {"jpg": "a.jpg"})], "output.jpg: unknown field"),
+]
+
+
+def run(command, path, env):
+    return subprocess.run(command + [path], capture_output=True, text=True, env=env,
+                          cwd=os.path.dirname(path))
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--temp", required=True)
+    args = parser.parse_args()
+    exe = os.environ.get("HOV_BATCH_RENDER") or os.path.join(
+        os.path.dirname(os.path.dirname(os.path.abspath(args.temp))), "bin", "hovBatchRender")
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.path.dirname(os.path.dirname(highordervolume.__file__)) + \
+        os.pathsep + env.get("PYTHONPATH", "")
+    folder = os.path.join(os.path.abspath(args.temp), "batch_errors")
+    os.makedirs(folder, exist_ok=True)
+    data = os.path.join(os.path.abspath(args.data), "bracket_tet4_ccx.vtu")
+    tools = (("python", [sys.executable, "-m", "highordervolume.batch"]), ("cxx", [exe]))
+    out = os.path.join(folder, "out.vti")
+
+    path = os.path.join(folder, "valid.json")
+    with open(path, "w") as f:
+        json.dump(base_spec(data), f)
+    for tool, command in tools:
+        if os.path.exists(out):
+            os.remove(out)
+        proc = run(command, path, env)
+        check(proc.returncode == 0 and os.path.isfile(out),
+              "valid base spec renders with %s (exit %d) %s" % (tool, proc.returncode,
+                                                                proc.stderr.strip()[-200:]))
+
+    for name, edits, expected in CASES:
+        spec = copy.deepcopy(base_spec(data))
+        for key, value in edits:
+            set_path(spec, key, value)
+        path = os.path.join(folder, "case.json")
+        with open(path, "w") as f:
+            json.dump(spec, f)
+        for tool, command in tools:
+            if os.path.exists(out):
+                os.remove(out)
+            proc = run(command, path, env)
+            ok = proc.returncode == 2 and expected in proc.stderr and not os.path.exists(out)
+            check(ok, "%s (%s): exit %d, message %r" % (name, tool, proc.returncode,
+                                                         proc.stderr.strip()[:300]))
+
+    with open(path, "w") as f:
+        f.write('{"data": "x.vtu", "array": "a",,}')
+    for tool, command in tools:
+        proc = run(command, path, env)
+        check(proc.returncode == 2 and "(file): not valid JSON" in proc.stderr,
+              "invalid JSON (%s): %r" % (tool, proc.stderr.strip()[:200]))
+    print("%d failure(s)" % len(FAILURES))
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
