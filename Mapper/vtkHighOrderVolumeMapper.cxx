@@ -4,6 +4,7 @@
 #include "vtkHighOrderFeatureSetup.h"  // isosurfaces, fields, splatting
 #include "vtkHighOrderImageDisplay.h"  // OpenGL blit of the float image
 #include "vtkHighOrderProjection.h"    // OPENGL_PROJECTION mode
+#include "vtkHighOrderRayCastState.h"  // RAY_CAST mode
 #include "vtkHighOrderTetraSetup.h"    // per-cell preparation
 #include "vtkHighOrderTransferFunction.h"
 #include "vtkHighOrderViewRays.h" // pixel rays
@@ -68,6 +69,7 @@ struct vtkHighOrderVolumeMapper::Internals
 
 vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
   : ProjectionImpl(new vtkHighOrderProjection)
+  , RayCastImpl(new vtkHighOrderRayCastState)
   , Impl(new Internals)
   , FeatureImpl(new vtkHighOrderFeatureSetup)
 {
@@ -350,6 +352,15 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   Internals& impl = *this->Impl;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
+  if (this->RenderMode == RAY_CAST)
+  {
+    const int status =
+      this->ComputeRayCastImage(camera, volume, width, height, aspect, depth, impl.RGBA);
+    this->PublishImage(width, height);
+    timer->StopTimer();
+    this->LastImageTime = timer->GetElapsedTime();
+    return status;
+  }
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;

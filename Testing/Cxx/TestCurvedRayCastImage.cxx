@@ -58,7 +58,7 @@ int TestCurvedRayCastImage(int argc, char* argv[])
   }
   vtkHighOrderRayCast cast;
   std::string msg;
-  ck.Check(cast.SetInput(grid, grid->GetPointData()->GetScalars(), &msg) &&
+  ck.Check(cast.SetInput(grid, grid->GetPointData()->GetScalars(), 0, &msg) &&
       cast.GetNumberOfSkippedCells() == 0 && msg.empty(),
     "SetInput: 192 cells, none skipped " + msg);
   vtkNew<vtkCamera> camera;
@@ -96,7 +96,7 @@ int TestCurvedRayCastImage(int argc, char* argv[])
   }
   // A second, independent adapter must render the same image bit for bit.
   vtkHighOrderRayCast second;
-  second.SetInput(grid, grid->GetPointData()->GetScalars(), nullptr);
+  second.SetInput(grid, grid->GetPointData()->GetScalars(), 0, nullptr);
   std::vector<float> rgba2(4 * W * H);
   second.Render(rays, tf, settings, rgba2.data(), nullptr, nullptr);
   for (size_t k = 0; k < rgba.size(); ++k)
