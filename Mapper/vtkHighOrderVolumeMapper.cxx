@@ -501,6 +501,8 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderMode: " << this->RenderMode << " (projection colour method "
      << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ")\n";
+  os << indent << "RayCastTolerance: " << this->RayCastTolerance << " (interactive above "
+     << this->RayCastInteractiveUpdateRate << " frames/s)\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";
