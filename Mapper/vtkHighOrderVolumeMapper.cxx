@@ -4,6 +4,7 @@
 #include "vtkHighOrderFeatureSetup.h"  // isosurfaces, fields, splatting
 #include "vtkHighOrderImageDisplay.h"  // OpenGL blit of the float image
 #include "vtkHighOrderProjection.h"    // OPENGL_PROJECTION mode
+#include "vtkHighOrderRayCastState.h"  // RAY_CAST mode
 #include "vtkHighOrderTetraSetup.h"    // per-cell preparation
 #include "vtkHighOrderTransferFunction.h"
 #include "vtkHighOrderViewRays.h" // pixel rays
@@ -70,6 +71,7 @@ struct vtkHighOrderVolumeMapper::Internals
 
 vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
   : ProjectionImpl(new vtkHighOrderProjection)
+  , RayCastImpl(new vtkHighOrderRayCastState)
   , Impl(new Internals)
   , FeatureImpl(new vtkHighOrderFeatureSetup)
 {
@@ -353,6 +355,15 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   Internals& impl = *this->Impl;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
+  if (this->RenderMode == RAY_CAST)
+  {
+    const int status =
+      this->ComputeRayCastImage(camera, volume, width, height, aspect, depth, impl.RGBA);
+    this->PublishImage(width, height);
+    timer->StopTimer();
+    this->LastImageTime = timer->GetElapsedTime();
+    return status;
+  }
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
@@ -516,6 +527,8 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RenderMode: " << this->RenderMode << " (projection colour method "
      << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ", opacity lookup "
      << this->ProjectionOpacityLookup << ")\n";
+  os << indent << "RayCastTolerance: " << this->RayCastTolerance << " (interactive above "
+     << this->RayCastInteractiveUpdateRate << " frames/s)\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";

@@ -410,6 +410,8 @@ def main():
     if not args.no_issue4:
         for ds in hov_demo_datasets.ISSUE4_DATASETS:
             lines.extend(hov_demo_datasets.issue4_dataset(ds, args, frames, catcher, log, failures))
+        for ds in hov_demo_datasets.RAYCAST_DATASETS:  # issue 6: curved Lagrange, RAY_CAST
+            lines.extend(hov_demo_datasets.raycast_dataset(ds, args, catcher, log, failures))
     table = "\n".join(lines)
     print(table)
     with open(os.path.join(args.out, "hov_demo_table.md"), "w") as f:

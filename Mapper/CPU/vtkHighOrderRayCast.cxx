@@ -3,17 +3,15 @@
 
 #include "vtkHighOrderViewRays.h" // pixel rays
 
-#include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkPoints.h"
 #include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 
-#include <cstdint> // 64-bit connectivity copies
-#include <vector>  // the converted arrays
+#include <cmath>   // std::isfinite
+#include <cstdint> // 64-bit connectivity
 
 bool vtkHighOrderRayCast::SetInput(
-  vtkUnstructuredGrid* grid, vtkDataArray* scalars, std::string* message)
+  vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, std::string* message)
 {
   this->Ready = false;
   if (!grid || !scalars || !grid->GetPoints() ||
@@ -25,40 +23,31 @@ bool vtkHighOrderRayCast::SetInput(
     }
     return false;
   }
-  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
-  std::vector<double> points(3 * np), values(np);
-  for (vtkIdType i = 0; i < np; ++i)
+  vtkHighOrderRayCastCells& mesh = this->Mesh;
+  mesh.Convert(grid, scalars, component);
+  hov::CurvedMeshInput input;
+  input.Points = mesh.Points.data();
+  input.NumberOfPoints = static_cast<std::int64_t>(mesh.Scalars.size());
+  input.Scalars = mesh.Scalars.data();
+  input.CellTypes = mesh.Types.data();
+  input.Offsets = mesh.Offsets.data();
+  input.Connectivity = mesh.Connectivity.data();
+  input.NumberOfCells = static_cast<std::int64_t>(mesh.Types.size());
+  input.Degrees = mesh.Degrees.empty() ? nullptr : mesh.Degrees.data();
+  std::string casterMessage;
+  this->Ready = !mesh.Types.empty() && this->Caster.Build(input, &casterMessage);
+  if (message)
   {
-    grid->GetPoints()->GetPoint(i, &points[3 * i]);
-    values[i] = scalars->GetComponent(i, 0);
-  }
-  std::vector<unsigned char> types(nc);
-  std::vector<std::int64_t> offsets{ 0 }, connectivity;
-  vtkDataArray* degreesArray = grid->GetCellData()->GetHigherOrderDegrees();
-  std::vector<int> degrees;
-  for (vtkIdType c = 0; c < nc; ++c)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    grid->GetCellPoints(c, n, ids);
-    connectivity.insert(connectivity.end(), ids, ids + n);
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    types[c] = static_cast<unsigned char>(grid->GetCellType(c));
-    for (int k = 0; degreesArray && degreesArray->GetNumberOfComponents() == 3 && k < 3; ++k)
+    *message = mesh.Summary();
+    if (!casterMessage.empty())
     {
-      degrees.push_back(static_cast<int>(degreesArray->GetComponent(c, k)));
+      *message += (message->empty() ? "" : "; ") + casterMessage;
     }
   }
-  hov::CurvedMeshInput input;
-  input.Points = points.data();
-  input.NumberOfPoints = np;
-  input.Scalars = values.data();
-  input.CellTypes = types.data();
-  input.Offsets = offsets.data();
-  input.Connectivity = connectivity.data();
-  input.NumberOfCells = nc;
-  input.Degrees = degrees.size() == static_cast<size_t>(3 * nc) ? degrees.data() : nullptr;
-  this->Ready = this->Caster.Build(input, message);
+  // The converted arrays are only read by Build(): keep the counts, free the rest.
+  mesh.Points = std::vector<double>();
+  mesh.Scalars = std::vector<double>();
+  mesh.Connectivity = std::vector<std::int64_t>();
   return this->Ready;
 }
 
@@ -86,6 +75,12 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
           const double o[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
           const double d[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
           c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e);
+        }
+        if (!(std::isfinite(c.R) && std::isfinite(c.G) && std::isfinite(c.B) &&
+              std::isfinite(c.A) && std::isfinite(e)))
+        {
+          c = hov::RGBA(); // never a NaN pixel: report it through the error image
+          e = 1.0;
         }
         rgba[4 * p] = static_cast<float>(c.R);
         rgba[4 * p + 1] = static_cast<float>(c.G);

@@ -5,10 +5,11 @@
  *
  * SetInput() converts a vtkUnstructuredGrid (points, its cells' types,
  * connectivity and the cell-data HigherOrderDegrees array, a point scalar
- * array) into a hov::CurvedMeshInput and builds the caster: per cell its
- * boundary patches and bounding box, one BVH over the cells. Cells that are
- * not VTK Lagrange tetrahedra/hexahedra/wedges (71, 72, 73), or whose node
- * count/degrees VTK cannot store, are skipped with one summary message.
+ * array) into a hov::CurvedMeshInput (vtkHighOrderRayCastCells: Lagrange
+ * cells as they are, linear and quadratic cells converted to Lagrange
+ * cells) and builds the caster: per cell its boundary patches and bounding
+ * box, one BVH over the cells. Other cells, bad nodes and inverted cells are
+ * skipped with one summary message.
  * Render() traces one ray per pixel (vtkHighOrderViewRays::TracedPixelRay:
  * OpenGL pixel centres, clipping, an optional opaque depth) with
  * vtkSMPTools::For over rows; each ray's segments are categorized
@@ -17,8 +18,7 @@
  * float RGBA, and optionally the per-pixel error estimate (ElVis's
  * "pixel-exact" target is an estimate below 1e-3 per channel).
  *
- * Not wired into vtkHighOrderVolumeMapper yet (issue 6: a render mode of the
- * mapper; this class is what that mode will call).
+ * Used by vtkHighOrderVolumeMapper's RAY_CAST render mode.
  *
  * Thread safety: SetInput() is not thread safe; Render() runs its own
  * parallel loop and must not be called concurrently with SetInput().
@@ -29,6 +29,7 @@
 
 #include "hovCurvedRayCaster.h" // the caster
 #include "hovCurvedSegment.h"   // CurvedSegmentSettings
+#include "vtkHighOrderRayCastCells.h" // grid conversion
 
 #include "vtkType.h" // vtkMTimeType
 
@@ -47,11 +48,16 @@ class vtkHighOrderRayCast
 {
 public:
   /**
-   * Prepare @p grid with the point scalars @p scalars (component 0). Returns
+   * Prepare @p grid with the point scalars @p scalars (component
+   * @p component, -1: magnitude; cells converted by vtkHighOrderRayCastCells). Returns
    * false if no cell is usable; @p message receives a summary of skipped
    * cells or the reason for failure (empty if everything was usable).
    */
-  bool SetInput(vtkUnstructuredGrid* grid, vtkDataArray* scalars, std::string* message);
+  bool SetInput(
+    vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, std::string* message);
+
+  /// Conversion counts of the last SetInput() (vtkHighOrderRayCastCells).
+  const vtkHighOrderRayCastCells& GetConversion() const { return this->Mesh; }
 
   /// Cells prepared / skipped by the last SetInput().
   long long GetNumberOfCells() const { return this->Caster.GetNumberOfCells(); }
@@ -70,6 +76,7 @@ public:
 
 private:
   hov::CurvedRayCaster Caster;
+  vtkHighOrderRayCastCells Mesh;
   bool Ready = false;
 };
 

@@ -1,0 +1,69 @@
+/**
+ * @class   vtkHighOrderRayCastCells
+ * @brief   Converts a vtkUnstructuredGrid into the Lagrange mesh the ray
+ *          caster (hov::CurvedRayCaster) takes: native Lagrange cells are
+ *          copied, linear and quadratic cells are re-expressed as Lagrange
+ *          cells of the same order.
+ *
+ * Native: VTK Lagrange tetrahedra, hexahedra, wedges (71, 72, 73), node ids
+ * referenced as given (orders from HigherOrderDegrees or the node count).
+ * Converted: tetrahedron 10 and voxel 11, hexahedron 12, wedge 13 (order 1),
+ * quadratic tetrahedron 24, quadratic (serendipity, 20-node) hexahedron 25,
+ * triquadratic hexahedron 29, quadratic wedge 26 and biquadratic-quadratic
+ * wedge 32 (order 2). Each node of the Lagrange cell (its parametric
+ * coordinates from hov::LagrangeBasis) gets the position and scalar of the
+ * source cell's own shape functions there (vtkCell::InterpolateFunctions):
+ * for the serendipity hexahedron and the 15-node wedge the missing face and
+ * body nodes come from the serendipity functions, so the Lagrange cell
+ * reproduces the source cell's geometry and field exactly wherever the
+ * serendipity space lies inside the Lagrange space (it does: Q2 contains the
+ * 20-node serendipity space, the 18-node wedge space contains the 15-node one).
+ *
+ * Skipped, counted per reason: other types (pyramids 14/27, Bezier 78-80,
+ * 2D Lagrange cells 74/81, polyhedra, ...), NaN/Inf points or scalars, point
+ * ids out of range, and cells whose Jacobian determinant is <= 1e-12 x
+ * size^3 at some node (inverted or degenerate; sampled at the nodes, so a
+ * tangle strictly between nodes is not detected here).
+ *
+ * Thread safety: Convert() is re-entrant (no shared state).
+ * @sa vtkHighOrderRayCast, hovLagrangeBasis.h
+ */
+#ifndef vtkHighOrderRayCastCells_h
+#define vtkHighOrderRayCastCells_h
+
+#include "vtkType.h" // vtkIdType
+
+#include <cstdint> // 64-bit connectivity
+#include <string>  // summary
+#include <vector>  // arrays
+
+class vtkDataArray;
+class vtkUnstructuredGrid;
+
+class vtkHighOrderRayCastCells
+{
+public:
+  std::vector<double> Points, Scalars;
+  std::vector<unsigned char> Types;
+  std::vector<std::int64_t> Offsets, Connectivity;
+  std::vector<int> Degrees; ///< empty or 3 per kept cell
+
+  vtkIdType Cells = 0;       ///< cells of the input
+  vtkIdType Native = 0;      ///< Lagrange cells kept as they are
+  vtkIdType Converted = 0;   ///< linear/quadratic cells converted
+  vtkIdType Unsupported = 0; ///< skipped: type not handled
+  int FirstUnsupportedType = -1;
+  vtkIdType NonFinite = 0; ///< skipped: NaN/Inf point or scalar, bad id or node count
+  vtkIdType Inverted = 0;  ///< skipped: Jacobian <= 0 at a node
+
+  /**
+   * Fill the arrays from @p grid and point scalars @p scalars (component
+   * @p component, or the magnitude if -1). Returns the number of kept cells.
+   */
+  vtkIdType Convert(vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component);
+
+  /// One line naming the skipped counts (empty if nothing was skipped).
+  std::string Summary() const;
+};
+
+#endif

@@ -1,0 +1,195 @@
+// vtkHighOrderVolumeMapper's RAY_CAST render mode (issue 6): input
+// conversion and caching, the transfer-function table, the interaction level
+// of detail, and the error image. See the RenderMode doc in the header.
+#include "vtkHighOrderVolumeMapper.h"
+
+#include "vtkHighOrderRayCastState.h" // caster, cache keys, error image
+#include "vtkHighOrderViewRays.h"     // pixel rays
+
+#include "hovCurvedSegment.h"    // CurvedSegmentSettings
+#include "hovTransferFunction.h" // the kernel table
+
+#include "vtkAlgorithm.h"
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm> // std::min, std::max
+#include <string>    // messages
+
+namespace
+{
+void PublishError(vtkImageData* image, const std::vector<float>& error, int width, int height)
+{
+  image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
+  vtkNew<vtkFloatArray> array;
+  array->SetName("Error");
+  array->SetNumberOfComponents(1);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(error.size()));
+  std::copy(error.begin(), error.end(), array->GetPointer(0));
+  image->GetPointData()->SetScalars(array);
+}
+
+/// Pixel (i of n) of the full image -> pixel of the reduced one (m <= n).
+inline int Reduced(int i, int n, int m)
+{
+  return std::min(static_cast<int>(static_cast<long long>(i) * m / n), m - 1);
+}
+}
+
+vtkImageData* vtkHighOrderVolumeMapper::GetRayCastErrorImage()
+{
+  return this->RayCastImpl->ErrorImage;
+}
+
+int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* volume, int width,
+  int height, double aspect, const float* depth, std::vector<double>& rgba)
+{
+  vtkHighOrderRayCastState& st = *this->RayCastImpl;
+  const size_t pixels = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
+  rgba.assign(4 * pixels, 0.0);
+  st.Error.assign(pixels, 0.0f);
+  this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  this->NumberOfSplattedCells = this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
+  this->LastRenderWasInteractive = false;
+  auto finish = [&](int status) {
+    PublishError(st.ErrorImage, st.Error, width, height);
+    return status;
+  };
+  if (!camera || !volume || width <= 0 || height <= 0)
+  {
+    vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
+    return finish(0);
+  }
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
+  vtkVolumeProperty* property = volume->GetProperty();
+  if (!grid || !property)
+  {
+    vtkErrorMacro("RAY_CAST needs a vtkUnstructuredGrid input and a vtkVolumeProperty.");
+    return finish(0);
+  }
+  int cellFlag = 0;
+  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(
+    grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (!scalars || cellFlag != 0)
+  {
+    vtkErrorMacro("RAY_CAST needs numeric point scalars (set point scalars on the input or "
+                  "select a numeric point array with SelectScalarArray()).");
+    st.Valid = false;
+    return finish(0);
+  }
+  const int nc = scalars->GetNumberOfComponents();
+  const int component = nc == 1
+    ? 0
+    : (this->VectorMode == COMPONENT ? std::min(std::max(this->VectorComponent, 0), nc - 1) : -1);
+  if (!st.Valid || st.InputTime != grid->GetMTime() || st.Array != scalars ||
+    st.ArrayTime != scalars->GetMTime() || st.Component != component)
+  {
+    std::string message;
+    const bool ok = st.Caster.SetInput(grid, scalars, component, &message);
+    if (!message.empty())
+    {
+      vtkWarningMacro("RAY_CAST: skipped " << message << "; the rest is rendered.");
+    }
+    if (!ok)
+    {
+      vtkWarningMacro("RAY_CAST: no usable cell in the input (" << grid->GetNumberOfCells()
+                                                                << " cells): nothing rendered.");
+    }
+    st.Valid = true; // cached also when nothing is usable: one warning per input
+    st.InputTime = grid->GetMTime();
+    st.Array = scalars;
+    st.ArrayTime = scalars->GetMTime();
+    st.Component = component;
+  }
+  const bool features = this->GetNumberOfIsosurfaces() > 0 || this->Splatting ||
+    (this->ColorArrayName && *this->ColorArrayName) ||
+    (this->IsosurfaceArrayName && *this->IsosurfaceArrayName);
+  if (features && !st.FeatureWarned)
+  {
+    st.FeatureWarned = true;
+    vtkWarningMacro("RAY_CAST does not apply isosurfaces, separate colour/isosurface fields or "
+                    "splatting; they are ignored in this mode.");
+  }
+  this->NumberOfRenderedCells = st.Caster.GetNumberOfCells();
+  this->NumberOfSkippedCells = grid->GetNumberOfCells() - this->NumberOfRenderedCells;
+
+  vtkHighOrderTransferFunction* tf = st.TransferFunction;
+  tf->SetOpacitySemantics(this->OpacitySemantics);
+  tf->SetGPUTolerance(this->GPUOpacityTolerance);
+  tf->SetEmissionScale(this->EmissionScale);
+  tf->SetComponent(component > 0 && property->GetIndependentComponents() ? std::min(component, 3) : 0);
+  const int buildsBefore = tf->GetBuildCount();
+  tf->Update(property);
+  for (int i = 0; tf->GetBuildCount() != buildsBefore && i < tf->GetNumberOfMessages(); ++i)
+  {
+    vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
+  }
+  if (this->NumberOfRenderedCells == 0 ||
+    (!tf->GetTable().HasExtinction() && this->EmissionModel != WILHELMS_VAN_GELDER))
+  {
+    return finish(1); // nothing visible
+  }
+
+  // Interaction level of detail (see the RenderMode doc).
+  vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
+  const bool interactive =
+    window && window->GetDesiredUpdateRate() >= this->RayCastInteractiveUpdateRate;
+  this->LastRenderWasInteractive = interactive;
+  const int rw = interactive ? (width + 1) / 2 : width, rh = interactive ? (height + 1) / 2 : height;
+  vtkHighOrderViewRays rays;
+  if (!rays.Setup(camera, volume->GetMatrix(), rw, rh, aspect))
+  {
+    vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
+    return finish(0);
+  }
+  rays.SetupClipping(
+    this, camera, volume->GetMatrix(), this->ViewDepthClipping ? this->ViewDepthRange : nullptr);
+  const float* rayDepth = depth;
+  if (depth && interactive)
+  {
+    st.Depth.assign(static_cast<size_t>(rw) * rh, 1.0f);
+    for (int j = 0; j < height; ++j)
+    {
+      for (int i = 0; i < width; ++i)
+      {
+        float& d = st.Depth[static_cast<size_t>(Reduced(j, height, rh)) * rw + Reduced(i, width, rw)];
+        d = std::min(d, depth[static_cast<size_t>(j) * width + i]);
+      }
+    }
+    rayDepth = st.Depth.data();
+  }
+  hov::CurvedSegmentSettings settings;
+  settings.Quadrature.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
+  settings.Quadrature.Tolerance =
+    interactive ? std::min(10.0 * this->RayCastTolerance, 0.05) : this->RayCastTolerance;
+  st.RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
+  std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
+  st.Caster.Render(rays, tf->GetTable(), settings, st.RGBA.data(), error.data(), rayDepth);
+  for (int j = 0; j < height; ++j)
+  {
+    for (int i = 0; i < width; ++i)
+    {
+      const size_t p = static_cast<size_t>(j) * width + i;
+      const size_t q = interactive
+        ? static_cast<size_t>(Reduced(j, height, rh)) * rw + Reduced(i, width, rw)
+        : p;
+      for (int c = 0; c < 4; ++c)
+      {
+        rgba[4 * p + c] = st.RGBA[4 * q + c];
+      }
+      st.Error[p] = error[q];
+    }
+  }
+  return finish(1);
+}
