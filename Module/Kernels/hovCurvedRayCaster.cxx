@@ -291,6 +291,7 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     CompositeBehind(accum, r.Color);
     ++st.Segments;
     st.Breakpoints += r.Breakpoints;
+    st.Samples += r.Samples;
     st.Converged = st.Converged && r.Converged;
   }
   if (errorEstimate)

@@ -87,6 +87,7 @@ struct CurvedRayStats
   int CandidateCells = 0; ///< boxes hit
   int Segments = 0;       ///< inside intervals integrated
   int Breakpoints = 0;
+  int Samples = 0;        ///< field samples of the fixed-sample rules (CurvedSegmentResult::Samples)
   bool Converged = true;
 };
 

@@ -2,6 +2,7 @@
 // Lagrange cell: see hovCurvedSegment.h.
 #include "hovCurvedSegment.h"
 
+#include "hovCurvedSampling.h" // the fixed-sample rules
 #include "hovTransferFunction.h"
 
 #include <algorithm> // std::lower_bound, std::upper_bound, std::sort
@@ -168,11 +169,26 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   const double tolerance = settings.FieldTolerance * bounds.FieldScale;
   const double speed =
     std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
-  const std::vector<double>& nodes = tf.GetNodes();
-  std::vector<double> cuts;
   for (const FieldPiece& p : pieces)
   {
     result.FieldError = std::max(result.FieldError, p.Error);
+  }
+  if (settings.Method != CurvedQuadrature::LocatedBreakpoints)
+  {
+    detail::IntegrateSampledSegment(tf, pieces,
+      result.Class.Category == SegmentCategory::Smooth, t0, t1, speed, settings, result);
+    return result;
+  }
+  const std::vector<double>& nodes = tf.GetNodes();
+  std::vector<double> cuts;
+  struct SubPiece
+  {
+    BernsteinPolynomial G;
+    double A, B;
+  };
+  std::vector<SubPiece> subs;
+  for (const FieldPiece& p : pieces)
+  {
     cuts.assign({ p.T0, p.T1 });
     for (int k = 0; k < result.Class.NodeCount; ++k)
     {
@@ -188,12 +204,28 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
     for (size_t i = 0; i + 1 < cuts.size(); ++i)
     {
       const double a = std::max(cuts[i], p.T0), b = std::min(cuts[i + 1], p.T1);
-      if (!(b > a))
+      if (b > a)
       {
-        continue;
+        subs.push_back({ RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h), a, b });
       }
-      const BernsteinPolynomial sub = RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h);
-      IntegrateSubPiece(tf, sub, a, b, speed, tolerance, 8, settings, result);
+    }
+  }
+  const bool emission = settings.Quadrature.Emission == EmissionModel::WilhelmsVanGelder;
+  for (const SubPiece& sp : subs)
+  {
+    if (settings.Samples > 0)
+    {
+      // Fixed rule: half the segment's nodes shared equally among the pieces, half by
+      // length (so every piece's rule refines with Samples: spectral convergence even
+      // on the short pieces next to a near-tangent breakpoint), at least one each.
+      const double share = 0.5 * settings.Samples / static_cast<double>(subs.size()) +
+        0.5 * settings.Samples * (sp.B - sp.A) / (t1 - t0);
+      const int m = std::max(1, static_cast<int>(std::lround(share)));
+      detail::IntegrateSubPieceFixed(tf, sp.G, sp.A, sp.B, speed, m, emission, result);
+    }
+    else
+    {
+      IntegrateSubPiece(tf, sp.G, sp.A, sp.B, speed, tolerance, 8, settings, result);
     }
   }
   // Field-error contribution (see file doc), on the range widened by the error.

@@ -85,6 +85,36 @@ struct SegmentClassification
 HOV_EXPORT SegmentClassification CategorizeSegment(
   const TransferFunction& tf, double lo, double hi, EmissionModel emission);
 
+/**
+ * Quadrature of a non-empty segment (the categorization and empty-space
+ * skipping are the same for all):
+ *  - LocatedBreakpoints (ours, default): breakpoints located, exact optical
+ *    depth per smooth piece, adaptive Gauss-Kronrod colour to
+ *    Quadrature.Tolerance; with Samples > 0 instead a fixed Gauss-Legendre
+ *    rule of ~Samples nodes per segment (half shared equally among the
+ *    smooth pieces, half by length, >= 1 each) on the exact depth (for
+ *    convergence studies);
+ *  - ElVis (ElVis 5.2.3): Samples equispaced samples, trapezoid rule for
+ *    both the inner (depth) and the outer (colour) integral on PS segments;
+ *    on S segments composite 7-15 Gauss-Kronrod outer (max(1, Samples/15)
+ *    panels) with the trapezoid rule for the depth on the sorted nodes
+ *    (plus both ends);
+ *  - Riemann: Samples steps of length L/Samples, left end value per step,
+ *    alpha = 1 - exp(-tau h) composited (ElVis's public code's fixed step).
+ * The sampled methods read the field from RepresentFieldOnSegment's pieces
+ * (exact on the affine path, within FieldTolerance on curved pieces).
+ * Implemented in hovCurvedSampling.cxx.
+ */
+enum class CurvedQuadrature
+{
+  LocatedBreakpoints = 0,
+  ElVis = 1,
+  Riemann = 2
+};
+
+/// Samples used by ElVis / Riemann when CurvedSegmentSettings::Samples is 0.
+constexpr int DefaultSegmentSamples = 64;
+
 struct CurvedSegmentSettings
 {
   PolynomialSegmentSettings Quadrature;
@@ -93,6 +123,11 @@ struct CurvedSegmentSettings
   double FieldTolerance = 1e-10;
   /// Field pieces allowed per segment (curved geometry).
   int MaxPieces = 64;
+  /// Quadrature method (see CurvedQuadrature).
+  CurvedQuadrature Method = CurvedQuadrature::LocatedBreakpoints;
+  /// Samples per segment of the fixed-sample rules (0: adaptive for
+  /// LocatedBreakpoints, DefaultSegmentSamples for ElVis / Riemann).
+  int Samples = 0;
 };
 
 struct CurvedSegmentResult
@@ -107,6 +142,7 @@ struct CurvedSegmentResult
   int Pieces = 0;              ///< polynomial pieces integrated
   bool ExactField = false;     ///< affine path (rigorous field bound)
   bool Converged = true;
+  int Samples = 0;             ///< field samples of the fixed-sample rules (0: adaptive)
 };
 
 /**
