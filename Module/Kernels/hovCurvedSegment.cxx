@@ -12,6 +12,14 @@ namespace hov
 {
 namespace
 {
+/// Remainder tolerance (relative to the field scale) of the first, coarse
+/// categorization enclosure. The enclosure stays rigorous; coarser only means
+/// a PS verdict may be conservative, which costs our breakpoint location a
+/// Bernstein exclusion test per extra node (the field representation, not
+/// the enclosure, is integrated). Taylor-model remainders are O(h^2), so
+/// 1e-3 instead of 1e-6 needs ~30x fewer pieces on curved segments.
+constexpr double CoarseEnclosureTolerance = 1e-3;
+
 /// Table values at s (Find + Evaluate).
 SegmentEnd ValueAt(const TransferFunction& tf, double s, bool emission)
 {
@@ -23,6 +31,31 @@ SegmentEnd ValueAt(const TransferFunction& tf, double s, bool emission)
 double MaxColor(const SegmentEnd& v)
 {
   return std::max(std::max(std::abs(v.Color[0]), std::abs(v.Color[1])), std::abs(v.Color[2]));
+}
+
+/// True if the table's extinction (and, WVG, emission) is 0 somewhere on
+/// [lo, hi]: at lo, hi or a node (one-sided values), since it is linear between nodes.
+bool MayBeEmpty(const TransferFunction& tf, double lo, double hi, EmissionModel emission)
+{
+  const bool wvg = emission == EmissionModel::WilhelmsVanGelder;
+  auto zero = [&](const SegmentEnd& v) { return v.Tau == 0.0 && (!wvg || MaxColor(v) == 0.0); };
+  if (zero(ValueAt(tf, lo, wvg)) || zero(ValueAt(tf, hi, wvg)))
+  {
+    return true;
+  }
+  for (double x : tf.GetNodes())
+  {
+    if (x >= lo && x <= hi)
+    {
+      SegmentEnd down;
+      tf.Evaluate(tf.FindIntervalDownward(x), x, wvg, down);
+      if (zero(ValueAt(tf, x, wvg)) || zero(down))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 /// Largest |value|s and slopes d/ds of the table on [lo, hi] (jumps skipped).
@@ -145,21 +178,54 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   const CurvedSegmentSettings& settings)
 {
   CurvedSegmentResult result;
-  const FieldEnclosure enc =
-    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure);
-  if (!enc.Valid || !(t1 > t0))
+  if (!(t1 > t0))
   {
     return result; // transparent
   }
+  // Stage 1: a coarse rigorous enclosure (see CoarseEnclosureTolerance).
+  EnclosureSettings coarse = settings.Enclosure;
+  coarse.RemainderTolerance = std::max(coarse.RemainderTolerance, CoarseEnclosureTolerance);
+  std::vector<EnclosurePiece> model;
+  FieldEnclosure enc =
+    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, coarse, &model);
+  if (!enc.Valid)
+  {
+    return result; // transparent
+  }
+  result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
+  // Stage 2: the requested tolerance, only where a tighter range can change what is
+  // done: a PS verdict that may turn E (a zero of the table in the range), or S (ElVis).
+  if (result.Class.Category == SegmentCategory::PiecewiseSmooth &&
+    coarse.RemainderTolerance > settings.Enclosure.RemainderTolerance &&
+    (settings.Method == CurvedQuadrature::ElVis ||
+      MayBeEmpty(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission)))
+  {
+    enc = EncloseFieldOnSegment(
+      cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure, &model);
+    result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
+  }
   result.Lo = enc.Lo;
   result.Hi = enc.Hi;
-  result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
   if (result.Class.Category == SegmentCategory::Empty)
   {
     return result; // empty-space skipping: exactly zero
   }
   std::vector<FieldPiece> pieces;
-  if (!RepresentFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, settings, pieces))
+  // The first Taylor model is on the whole segment; if it meets the field tolerance
+  // the geometry is affine (enough): the same test as RepresentFieldOnSegment's.
+  const double fieldTolerance = settings.FieldTolerance * bounds.FieldScale;
+  if (model.size() == 1 && !model[0].Loose && model[0].Remainder <= fieldTolerance)
+  {
+    FieldPiece p;
+    p.T0 = t0;
+    p.T1 = t1;
+    p.G = model[0].Q;
+    p.Error = model[0].Remainder;
+    p.Exact = true;
+    pieces.push_back(p);
+  }
+  else if (!detail::RepresentCurvedField(
+             cell, bounds, origin, direction, t0, t1, pcGuess, settings, pieces))
   {
     result.Converged = false;
     return result;
