@@ -5,7 +5,9 @@
 #include "hovTransferFunction.h"  // TraceRay's table
 
 #include <algorithm> // std::nth_element, std::sort, std::min, std::max
+#include <atomic>    // Build()'s work counter
 #include <cmath>     // std::isfinite
+#include <thread>    // Build()'s face-net pass
 
 namespace hov
 {
@@ -15,6 +17,9 @@ namespace
 constexpr int LeafSize = 4;
 /// Intervals per ray and cell kept.
 constexpr int MaxIntervalsPerCell = 16;
+/// Build(): cells per work item and the thread cap of the face-net pass.
+constexpr size_t FaceBatch = 32;
+constexpr unsigned MaxBuildThreads = 16;
 
 /// Ray parameter range [t0, t1] inside @p box, clipped to [tMin, tMax]; false if empty.
 bool SlabTest(const double box[6], const double o[3], const double d[3], double tMin, double tMax,
@@ -83,6 +88,7 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
     }
     return false;
   }
+  std::vector<std::int64_t> inputIds; // input cell id of each kept cell
   for (std::int64_t c = 0; c < input.NumberOfCells; ++c)
   {
     const int type = input.CellTypes[c];
@@ -131,15 +137,58 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
       cell.Scalars[i] = ok ? input.Scalars[id] : 0.0;
       ok = ok && std::isfinite(cell.Scalars[i]);
     }
-    const LagrangeCellView view{ &this->Bases[basis], cell.Points.data(), cell.Scalars.data() };
     cell.BoundsOnce = std::make_unique<std::once_flag>();
-    if (!ok || !BuildCurvedFaces(view, cell.Faces))
+    if (!ok)
     {
       skip(c, "point id out of range or non-finite point/scalar");
       continue;
     }
     this->Cells.push_back(std::move(cell));
+    inputIds.push_back(c);
   }
+  // The face nets (the costly part of Build), on all cores: cells are independent.
+  std::vector<char> built(this->Cells.size(), 0);
+  std::atomic<size_t> next{ 0 };
+  auto work = [&]() {
+    for (size_t i = next.fetch_add(FaceBatch); i < this->Cells.size(); i = next.fetch_add(FaceBatch))
+    {
+      for (size_t j = i; j < std::min(i + FaceBatch, this->Cells.size()); ++j)
+      {
+        Cell& cell = this->Cells[j];
+        const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
+          cell.Scalars.data() };
+        built[j] = BuildCurvedFaces(view, cell.Faces) ? 1 : 0;
+      }
+    }
+  };
+  const unsigned threads = std::max(1u,
+    std::min({ std::thread::hardware_concurrency(), MaxBuildThreads,
+      static_cast<unsigned>(this->Cells.size() / FaceBatch) }));
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+  {
+    pool.emplace_back(work);
+  }
+  work();
+  for (std::thread& t : pool)
+  {
+    t.join();
+  }
+  size_t kept = 0;
+  for (size_t j = 0; j < this->Cells.size(); ++j)
+  {
+    if (!built[j])
+    {
+      skip(inputIds[j], "face patches could not be built");
+      continue;
+    }
+    if (kept != j)
+    {
+      this->Cells[kept] = std::move(this->Cells[j]);
+    }
+    ++kept;
+  }
+  this->Cells.resize(kept);
   if (message)
   {
     *message = this->Skipped
