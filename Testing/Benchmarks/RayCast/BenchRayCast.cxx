@@ -154,7 +154,7 @@ double Median(std::vector<double> v)
 int main(int argc, char* argv[])
 {
   int size = 256, step = 8, repeat = 3;
-  std::string data = HOV_BENCH_DATA_DIR, method = "ours";
+  std::string data = HOV_BENCH_DATA_DIR, method = "ours", only;
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string a = argv[i];
@@ -168,6 +168,8 @@ int main(int argc, char* argv[])
       data = argv[i + 1];
     else if (a == "--method")
       method = argv[i + 1];
+    else if (a == "--only")
+      only = argv[i + 1]; // run the datasets whose file name contains this
   }
   hov::CurvedSegmentSettings settings;
   settings.Method = method == "elvis" ? hov::CurvedQuadrature::ElVis
@@ -185,6 +187,10 @@ int main(int argc, char* argv[])
             << "-th pixel, method " << method << ", median of " << repeat << std::endl;
   for (const Set& s : sets)
   {
+    if (!only.empty() && std::string(s.File).find(only) == std::string::npos)
+    {
+      continue;
+    }
     Mesh mesh;
     if (!Load(data + "/" + s.File, s.Array, mesh))
     {
