@@ -121,6 +121,9 @@ public:
 private:
   template <class Visitor>
   void VisitNodes(const double pc[3], bool derivatives, Visitor&& visit) const;
+  /// Interpolate() for hexahedra by sum factorisation (tensor-product basis).
+  void InterpolateHexahedron(const double pc[3], const double* values, int components,
+    double* value, double* gradient) const;
   template <class Visitor>
   void VisitSpecial(const double pc[3], Visitor&& visit) const;
 
