@@ -130,6 +130,77 @@ void IntegrateSubPiece(const TransferFunction& tf, const BernsteinPolynomial& g,
   CompositeBehind(result.Color, r.Color);
   ++result.Pieces;
 }
+/// The categorization enclosure in two stages (see hovCurvedSegment.h); sets
+/// result.Class, fills @p model with the Taylor models.
+FieldEnclosure TwoStageEnclosure(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
+  const TransferFunction& tf, const double origin[3], const double direction[3], double t0,
+  double t1, const double* pcGuess, const CurvedSegmentSettings& settings,
+  std::vector<EnclosurePiece>& model, CurvedSegmentResult& result)
+{
+  // Stage 1: a coarse rigorous enclosure (see CoarseEnclosureTolerance).
+  EnclosureSettings coarse = settings.Enclosure;
+  coarse.RemainderTolerance = std::max(coarse.RemainderTolerance, CoarseEnclosureTolerance);
+  FieldEnclosure enc =
+    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, coarse, &model);
+  if (!enc.Valid)
+  {
+    return enc;
+  }
+  result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
+  // Stage 2: the requested tolerance, only where a tighter range can change what is
+  // done: a PS verdict that may turn E (a zero of the table in the range), or S (ElVis).
+  if (result.Class.Category == SegmentCategory::PiecewiseSmooth &&
+    coarse.RemainderTolerance > settings.Enclosure.RemainderTolerance &&
+    (settings.Method == CurvedQuadrature::ElVis ||
+      MayBeEmpty(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission)))
+  {
+    enc = EncloseFieldOnSegment(
+      cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure, &model);
+    result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
+  }
+  return enc;
+}
+
+/// One smooth piece of the field between located breakpoints.
+struct SubPiece
+{
+  BernsteinPolynomial G;
+  double A, B;
+};
+
+/// The field pieces cut at every located crossing of the table nodes of result.Class.
+std::vector<SubPiece> CutAtBreakpoints(const LagrangeCellView& cell, const double origin[3],
+  const double direction[3], const TransferFunction& tf, const std::vector<FieldPiece>& pieces,
+  CurvedSegmentResult& result)
+{
+  const std::vector<double>& nodes = tf.GetNodes();
+  std::vector<double> cuts;
+  std::vector<SubPiece> subs;
+  for (const FieldPiece& p : pieces)
+  {
+    cuts.assign({ p.T0, p.T1 });
+    for (int k = 0; k < result.Class.NodeCount; ++k)
+    {
+      const double level = nodes[result.Class.FirstNode + k];
+      if (k > 0 && level == nodes[result.Class.FirstNode + k - 1])
+      {
+        continue; // a jump: one location
+      }
+      result.Breakpoints += LocateBreakpoints(cell, origin, direction, p, level, cuts);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    const double h = p.T1 - p.T0;
+    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+    {
+      const double a = std::max(cuts[i], p.T0), b = std::min(cuts[i + 1], p.T1);
+      if (b > a)
+      {
+        subs.push_back({ RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h), a, b });
+      }
+    }
+  }
+  return subs;
+}
 }
 
 SegmentClassification CategorizeSegment(
@@ -182,27 +253,12 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   {
     return result; // transparent
   }
-  // Stage 1: a coarse rigorous enclosure (see CoarseEnclosureTolerance).
-  EnclosureSettings coarse = settings.Enclosure;
-  coarse.RemainderTolerance = std::max(coarse.RemainderTolerance, CoarseEnclosureTolerance);
   std::vector<EnclosurePiece> model;
-  FieldEnclosure enc =
-    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, coarse, &model);
+  const FieldEnclosure enc =
+    TwoStageEnclosure(cell, bounds, tf, origin, direction, t0, t1, pcGuess, settings, model, result);
   if (!enc.Valid)
   {
     return result; // transparent
-  }
-  result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
-  // Stage 2: the requested tolerance, only where a tighter range can change what is
-  // done: a PS verdict that may turn E (a zero of the table in the range), or S (ElVis).
-  if (result.Class.Category == SegmentCategory::PiecewiseSmooth &&
-    coarse.RemainderTolerance > settings.Enclosure.RemainderTolerance &&
-    (settings.Method == CurvedQuadrature::ElVis ||
-      MayBeEmpty(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission)))
-  {
-    enc = EncloseFieldOnSegment(
-      cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure, &model);
-    result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
   }
   result.Lo = enc.Lo;
   result.Hi = enc.Hi;
@@ -245,37 +301,7 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
       result.Class.Category == SegmentCategory::Smooth, t0, t1, speed, settings, result);
     return result;
   }
-  const std::vector<double>& nodes = tf.GetNodes();
-  std::vector<double> cuts;
-  struct SubPiece
-  {
-    BernsteinPolynomial G;
-    double A, B;
-  };
-  std::vector<SubPiece> subs;
-  for (const FieldPiece& p : pieces)
-  {
-    cuts.assign({ p.T0, p.T1 });
-    for (int k = 0; k < result.Class.NodeCount; ++k)
-    {
-      const double level = nodes[result.Class.FirstNode + k];
-      if (k > 0 && level == nodes[result.Class.FirstNode + k - 1])
-      {
-        continue; // a jump: one location
-      }
-      result.Breakpoints += LocateBreakpoints(cell, origin, direction, p, level, cuts);
-    }
-    std::sort(cuts.begin(), cuts.end());
-    const double h = p.T1 - p.T0;
-    for (size_t i = 0; i + 1 < cuts.size(); ++i)
-    {
-      const double a = std::max(cuts[i], p.T0), b = std::min(cuts[i + 1], p.T1);
-      if (b > a)
-      {
-        subs.push_back({ RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h), a, b });
-      }
-    }
-  }
+  const std::vector<SubPiece> subs = CutAtBreakpoints(cell, origin, direction, tf, pieces, result);
   const bool emission = settings.Quadrature.Emission == EmissionModel::WilhelmsVanGelder;
   for (const SubPiece& sp : subs)
   {

@@ -16,6 +16,12 @@
  * emission) is 0 on the range but the extinction is not. Since the
  * enclosure is rigorous, E and S are never wrong (a PS verdict may be
  * conservative: a node in the enclosure but not in the true range).
+ * IntegrateCurvedSegment first encloses with a coarse remainder tolerance
+ * (1e-3 of the field scale, ~30x fewer Taylor-model pieces on curved
+ * segments) and refines to Enclosure.RemainderTolerance only when a PS
+ * verdict could change what is done: the table is zero somewhere on the
+ * range (may become E), or the ElVis rule is selected (may become S).
+ * Its first Taylor model doubles as RepresentFieldOnSegment's affine test.
  *
  * Integration (IntegrateCurvedSegment), the improvement on ElVis's
  * "trapezoid on PS": the field g(t) on [t0, t1] is represented by pieces
@@ -49,6 +55,15 @@
  * (affine path), 50 segments, 84 breakpoints located: max RGBA error
  * 4.0e-14; a curved cubic hexahedron (x = r + 0.35 s^2; curved path on
  * every segment), 30 segments: 6.1e-16.
+ *
+ * Quadrature options (CurvedQuadrature), measured by TestCurvedConvergence
+ * (ElVis's f = x^2 + y^2 + z^2 on a cubic hexahedron, 16x16 rays, reference
+ * with analytic breakpoints and Boost gauss_kronrod in long double): ElVis
+ * trapezoid on PS segments order 2.09, Riemann order 1.00 (PS and S),
+ * ElVis Kronrod outer + trapezoid depth on S segments order 2.00; ours with
+ * fixed Gauss-Legendre nodes: 1.6e-8 at 32 samples per ray, <= 1e-15 from
+ * 64 (spectral; ElVis 5e-4 there); ours adaptive: max error 5.6e-12 /
+ * 1.0e-12 / 1.7e-14 at tolerance 1e-3 / 1e-5 / 1e-7.
  *
  * Thread safety: re-entrant (the table and cell are read only); allocates
  * small vectors.
