@@ -57,6 +57,88 @@ struct Lagrange1D
   }
 };
 
+/// The sum-factorised hexahedron interpolation for @p C components (see
+/// InterpolateHexahedron); C is a template argument so the loops unroll.
+template <int C, bool G>
+void SumFactorised(const std::vector<std::array<int, 4>>& nodes, int nodeCount, int n0, int n1,
+  int n2, const Lagrange1D (&l)[3], const double* values, double* value, double* gradient)
+{
+  constexpr int M = MaxLagrangeOrder + 1;
+  // Gather the node values in tensor order: T[(k n1 + j) n0 + i][c].
+  double tensor[M * M * M][C];
+  for (int i = 0; i < nodeCount; ++i)
+  {
+    const std::array<int, 4>& ijk = nodes[i];
+    double* t = tensor[(ijk[2] * n1 + ijk[1]) * n0 + ijk[0]];
+    const double* node = values + static_cast<size_t>(i) * C;
+    for (int c = 0; c < C; ++c)
+    {
+      t[c] = node[c];
+    }
+  }
+  double v[C] = {}, g[3 * C] = {};
+  for (int k = 0; k < n2; ++k)
+  {
+    double b[C] = {}, br[C] = {}, bs[C] = {};
+    for (int j = 0; j < n1; ++j)
+    {
+      double a[C] = {}, ar[C] = {};
+      const double(*row)[C] = tensor + (k * n1 + j) * n0;
+      for (int i = 0; i < n0; ++i)
+      {
+        for (int c = 0; c < C; ++c)
+        {
+          a[c] += l[0].L[i] * row[i][c];
+          if (G)
+          {
+            ar[c] += l[0].D[i] * row[i][c];
+          }
+        }
+      }
+      for (int c = 0; c < C; ++c)
+      {
+        b[c] += l[1].L[j] * a[c];
+        if (G)
+        {
+          br[c] += l[1].L[j] * ar[c];
+          bs[c] += l[1].D[j] * a[c];
+        }
+      }
+    }
+    for (int c = 0; c < C; ++c)
+    {
+      v[c] += l[2].L[k] * b[c];
+      if (!G)
+      {
+        continue;
+      }
+      g[3 * c] += l[2].L[k] * br[c];
+      g[3 * c + 1] += l[2].L[k] * bs[c];
+      g[3 * c + 2] += l[2].D[k] * b[c];
+    }
+  }
+  std::copy(v, v + C, value);
+  if (G)
+  {
+    std::copy(g, g + 3 * C, gradient);
+  }
+}
+
+/// SumFactorised with or without the gradient.
+template <int C>
+void SumFactorisedAny(const std::vector<std::array<int, 4>>& nodes, int nodeCount, int n0, int n1,
+  int n2, const Lagrange1D (&l)[3], const double* values, double* value, double* gradient)
+{
+  if (gradient)
+  {
+    SumFactorised<C, true>(nodes, nodeCount, n0, n1, n2, l, values, value, gradient);
+  }
+  else
+  {
+    SumFactorised<C, false>(nodes, nodeCount, n0, n1, n2, l, values, value, gradient);
+  }
+}
+
 /// Silvester's Eta(n, c, x) for c = 0..n and d/dx (vtkHigherOrderTriangle::Eta/Deta).
 struct Eta1D
 {
@@ -392,54 +474,19 @@ void LagrangeBasis::InterpolateHexahedron(const double pc[3], const double* valu
   l[0].Compute(p0, pc[0], derivs);
   l[1].Compute(p1, pc[1], derivs);
   l[2].Compute(p2, pc[2], derivs);
-  constexpr int M = MaxLagrangeOrder + 1;
-  // Gather the node values in tensor order: T[(k n1 + j) n0 + i][c].
-  double tensor[M * M * M][4];
-  for (int i = 0; i < this->NodeCount; ++i)
+  switch (components)
   {
-    const std::array<int, 4>& ijk = this->Nodes[i];
-    double* t = tensor[(ijk[2] * n1 + ijk[1]) * n0 + ijk[0]];
-    const double* node = values + static_cast<size_t>(i) * components;
-    for (int c = 0; c < components; ++c)
-    {
-      t[c] = node[c];
-    }
-  }
-  double v[4] = { 0.0, 0.0, 0.0, 0.0 }, g[12] = {};
-  for (int k = 0; k < n2; ++k)
-  {
-    double b[4] = { 0, 0, 0, 0 }, br[4] = { 0, 0, 0, 0 }, bs[4] = { 0, 0, 0, 0 };
-    for (int j = 0; j < n1; ++j)
-    {
-      double a[4] = { 0, 0, 0, 0 }, ar[4] = { 0, 0, 0, 0 };
-      const double(*row)[4] = tensor + (k * n1 + j) * n0;
-      for (int i = 0; i < n0; ++i)
-      {
-        for (int c = 0; c < components; ++c)
-        {
-          a[c] += l[0].L[i] * row[i][c];
-          ar[c] += l[0].D[i] * row[i][c];
-        }
-      }
-      for (int c = 0; c < components; ++c)
-      {
-        b[c] += l[1].L[j] * a[c];
-        br[c] += l[1].L[j] * ar[c];
-        bs[c] += l[1].D[j] * a[c];
-      }
-    }
-    for (int c = 0; c < components; ++c)
-    {
-      v[c] += l[2].L[k] * b[c];
-      g[3 * c] += l[2].L[k] * br[c];
-      g[3 * c + 1] += l[2].L[k] * bs[c];
-      g[3 * c + 2] += l[2].D[k] * b[c];
-    }
-  }
-  std::copy(v, v + components, value);
-  if (gradient)
-  {
-    std::copy(g, g + 3 * components, gradient);
+    case 1:
+      SumFactorisedAny<1>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
+      return;
+    case 3:
+      SumFactorisedAny<3>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
+      return;
+    case 2:
+      SumFactorisedAny<2>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
+      return;
+    default:
+      SumFactorisedAny<4>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
   }
 }
 
