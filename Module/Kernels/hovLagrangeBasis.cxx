@@ -490,6 +490,31 @@ void LagrangeBasis::InterpolateHexahedron(const double pc[3], const double* valu
   }
 }
 
+template <int C, bool G>
+void LagrangeBasis::InterpolateNodes(
+  const double pc[3], const double* values, double* value, double* gradient) const
+{
+  double v[C] = {}, g[3 * C] = {};
+  this->VisitNodes(pc, G, [&](int i, double wi, const double* dw) {
+    const double* node = values + static_cast<size_t>(i) * C;
+    for (int c = 0; c < C; ++c)
+    {
+      v[c] += wi * node[c];
+      if (G)
+      {
+        g[3 * c] += dw[0] * node[c];
+        g[3 * c + 1] += dw[1] * node[c];
+        g[3 * c + 2] += dw[2] * node[c];
+      }
+    }
+  });
+  std::copy(v, v + C, value);
+  if (G)
+  {
+    std::copy(g, g + 3 * C, gradient);
+  }
+}
+
 void LagrangeBasis::Interpolate(const double pc[3], const double* values, int components,
   double* value, double* gradient) const
 {
@@ -497,6 +522,22 @@ void LagrangeBasis::Interpolate(const double pc[3], const double* values, int co
   if (this->Shape == LagrangeShape::Hexahedron && !this->Special)
   {
     this->InterpolateHexahedron(pc, values, components, value, gradient);
+    return;
+  }
+  // The common cases with compile-time loops: positions (3) and scalars (1).
+  if (components == 3 || components == 1)
+  {
+    const bool three = components == 3;
+    if (gradient)
+    {
+      three ? this->InterpolateNodes<3, true>(pc, values, value, gradient)
+            : this->InterpolateNodes<1, true>(pc, values, value, gradient);
+    }
+    else
+    {
+      three ? this->InterpolateNodes<3, false>(pc, values, value, gradient)
+            : this->InterpolateNodes<1, false>(pc, values, value, gradient);
+    }
     return;
   }
   double v[4] = { 0.0, 0.0, 0.0, 0.0 }, g[12] = {};
