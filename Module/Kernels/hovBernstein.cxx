@@ -1,6 +1,8 @@
 // Bernstein-form polynomials on [0, 1]: see hovBernstein.h.
 #include "hovBernstein.h"
 
+#include <vector> // the equispaced-Lagrange table
+
 #include <algorithm> // std::min, std::max
 #include <cmath>     // std::abs, std::cos
 #include <limits>    // epsilon
@@ -465,7 +467,10 @@ int BernsteinRoots(const BernsteinPolynomial& b, double level, double* roots, in
   return count;
 }
 
-BernsteinPolynomial EquispacedLagrangeBernstein(int n, int i)
+namespace
+{
+/// EquispacedLagrangeBernstein's product (below), uncached.
+BernsteinPolynomial EquispacedLagrangeProduct(int n, int i)
 {
   // Product over k != i of the linear factors (n y - k) / (i - k), each with
   // Bernstein coefficients (value at 0, value at 1).
@@ -486,5 +491,36 @@ BernsteinPolynomial EquispacedLagrangeBernstein(int n, int i)
     MultiplyBernstein(p, f, p);
   }
   return p;
+}
+
+/// Every (n, i) with 0 <= i <= n <= MaxBernsteinDegree (~500 polynomials, ~0.2 MB),
+/// built once (a function-local static: thread-safe initialisation). The face
+/// nets, derivative bounds and field restrictions ask for these thousands of
+/// times per cell.
+struct EquispacedTable
+{
+  std::vector<BernsteinPolynomial> P;
+  EquispacedTable()
+  {
+    for (int n = 0; n <= MaxBernsteinDegree; ++n)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        P.push_back(EquispacedLagrangeProduct(n, i));
+      }
+    }
+  }
+};
+}
+
+BernsteinPolynomial EquispacedLagrangeBernstein(int n, int i)
+{
+  static const EquispacedTable table;
+  const int c = ClampDegree(n);
+  if (n < 0 || i < 0 || i > c)
+  {
+    return EquispacedLagrangeProduct(n, i); // outside the table: as before
+  }
+  return table.P[c * (c + 1) / 2 + i];
 }
 }

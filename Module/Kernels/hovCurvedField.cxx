@@ -2,6 +2,8 @@
 // see hovCurvedSegment.h (RepresentFieldOnSegment, LocateBreakpoints).
 #include "hovCurvedSegment.h"
 
+#include "hovCurvedSampling.h" // detail::RepresentCurvedField
+
 #include <algorithm> // std::min, std::max
 #include <cmath>     // std::cos, std::abs
 #include <limits>    // epsilon
@@ -127,6 +129,15 @@ bool RepresentFieldOnSegment(const LagrangeCellView& cell, const CellDerivativeB
     out.push_back(p);
     return true;
   }
+  return detail::RepresentCurvedField(cell, bounds, origin, direction, t0, t1, pcGuess, settings, out);
+}
+
+bool detail::RepresentCurvedField(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
+  const double origin[3], const double direction[3], double t0, double t1, const double* pcGuess,
+  const CurvedSegmentSettings& settings, std::vector<FieldPiece>& out)
+{
+  out.clear();
+  const double tol = settings.FieldTolerance * bounds.FieldScale;
   // Curved: Chebyshev pieces, bisected (left first) until the estimate meets the tolerance.
   double pc[3];
   cell.Basis->ParametricCenter(pc);

@@ -5,7 +5,9 @@
 #include "hovTransferFunction.h"  // TraceRay's table
 
 #include <algorithm> // std::nth_element, std::sort, std::min, std::max
+#include <atomic>    // Build()'s work counter
 #include <cmath>     // std::isfinite
+#include <thread>    // Build()'s face-net pass
 
 namespace hov
 {
@@ -15,6 +17,12 @@ namespace
 constexpr int LeafSize = 4;
 /// Intervals per ray and cell kept.
 constexpr int MaxIntervalsPerCell = 16;
+/// A cell is affine if every node lies within this x extent of the affine map
+/// through its unit points (far below any visible effect, far above rounding).
+constexpr double AffineTolerance = 1e-12;
+/// Build(): cells per work item and the thread cap of the face-net pass.
+constexpr size_t FaceBatch = 32;
+constexpr unsigned MaxBuildThreads = 16;
 
 /// Ray parameter range [t0, t1] inside @p box, clipped to [tMin, tMax]; false if empty.
 bool SlabTest(const double box[6], const double o[3], const double d[3], double tMin, double tMax,
@@ -83,6 +91,7 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
     }
     return false;
   }
+  std::vector<std::int64_t> inputIds; // input cell id of each kept cell
   for (std::int64_t c = 0; c < input.NumberOfCells; ++c)
   {
     const int type = input.CellTypes[c];
@@ -131,15 +140,62 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
       cell.Scalars[i] = ok ? input.Scalars[id] : 0.0;
       ok = ok && std::isfinite(cell.Scalars[i]);
     }
-    const LagrangeCellView view{ &this->Bases[basis], cell.Points.data(), cell.Scalars.data() };
     cell.BoundsOnce = std::make_unique<std::once_flag>();
-    if (!ok || !BuildCurvedFaces(view, cell.Faces))
+    if (!ok)
     {
       skip(c, "point id out of range or non-finite point/scalar");
       continue;
     }
     this->Cells.push_back(std::move(cell));
+    inputIds.push_back(c);
   }
+  // The face nets (the costly part of Build), on all cores: cells are independent.
+  std::vector<char> built(this->Cells.size(), 0);
+  std::atomic<size_t> next{ 0 };
+  auto work = [&]() {
+    for (size_t i = next.fetch_add(FaceBatch); i < this->Cells.size(); i = next.fetch_add(FaceBatch))
+    {
+      for (size_t j = i; j < std::min(i + FaceBatch, this->Cells.size()); ++j)
+      {
+        Cell& cell = this->Cells[j];
+        const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
+          cell.Scalars.data() };
+        built[j] = BuildCurvedFaces(view, cell.Faces) ? 1 : 0;
+      }
+    }
+  };
+  const unsigned threads = std::max(1u,
+    std::min({ std::thread::hardware_concurrency(), MaxBuildThreads,
+      static_cast<unsigned>(this->Cells.size() / FaceBatch) }));
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+  {
+    pool.emplace_back(work);
+  }
+  work();
+  for (std::thread& t : pool)
+  {
+    t.join();
+  }
+  for (Cell& cell : this->Cells)
+  {
+    this->DetectAffine(cell);
+  }
+  size_t kept = 0;
+  for (size_t j = 0; j < this->Cells.size(); ++j)
+  {
+    if (!built[j])
+    {
+      skip(inputIds[j], "face patches could not be built");
+      continue;
+    }
+    if (kept != j)
+    {
+      this->Cells[kept] = std::move(this->Cells[j]);
+    }
+    ++kept;
+  }
+  this->Cells.resize(kept);
   if (message)
   {
     *message = this->Skipped
@@ -237,6 +293,116 @@ void CurvedRayCaster::CollectCandidates(
   }
 }
 
+void CurvedRayCaster::DetectAffine(Cell& cell) const
+{
+  cell.Affine = false;
+  const LagrangeBasis& basis = this->Bases[cell.Basis];
+  const LagrangeCellView view{ &basis, cell.Points.data(), cell.Scalars.data() };
+  // x0 = x(0) and the columns of J from the unit points (vertices of every shape).
+  double J[9];
+  const double zero[3] = { 0.0, 0.0, 0.0 };
+  EvaluateLagrangePosition(view, zero, cell.X0);
+  for (int k = 0; k < 3; ++k)
+  {
+    double e[3] = { 0.0, 0.0, 0.0 }, x[3];
+    e[k] = 1.0;
+    EvaluateLagrangePosition(view, e, x);
+    for (int i = 0; i < 3; ++i)
+    {
+      J[3 * i + k] = x[i] - cell.X0[i];
+    }
+  }
+  // Every node on the map (to AffineTolerance x extent): the interpolant IS the map.
+  const double tol = AffineTolerance * cell.Faces.Extent;
+  for (int n = 0; n < basis.GetNodeCount(); ++n)
+  {
+    double pc[3];
+    basis.NodeParametricCoords(n, pc);
+    for (int i = 0; i < 3; ++i)
+    {
+      const double x = cell.X0[i] + J[3 * i] * pc[0] + J[3 * i + 1] * pc[1] + J[3 * i + 2] * pc[2];
+      if (!(std::abs(x - cell.Points[3 * n + i]) <= tol))
+      {
+        return;
+      }
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const double e[3] = { k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0 };
+    double col[3];
+    if (!Solve3x3(J, e, col, 1e-10))
+    {
+      return; // (nearly) degenerate: keep the general path
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      cell.InverseJ[3 * i + k] = col[i];
+    }
+  }
+  cell.Affine = true;
+}
+
+int CurvedRayCaster::AffineInterval(const Cell& cell, const double o[3], const double d[3],
+  double t0, double t1, double& ta, double& tb, double pc[3]) const
+{
+  // pc(t) = p0 + t v; each face g(pc) = g0 + t g1 >= 0 bounds t on one side.
+  double p0[3], v[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const double* row = cell.InverseJ + 3 * i;
+    p0[i] = row[0] * (o[0] - cell.X0[0]) + row[1] * (o[1] - cell.X0[1]) + row[2] * (o[2] - cell.X0[2]);
+    v[i] = row[0] * d[0] + row[1] * d[1] + row[2] * d[2];
+  }
+  ta = t0;
+  tb = t1;
+  auto clip = [&](double g0, double g1) {
+    if (g1 == 0.0)
+    {
+      if (g0 < 0.0)
+      {
+        tb = -1e300; // parallel and outside
+      }
+      return;
+    }
+    const double t = -g0 / g1;
+    if (g1 > 0.0)
+    {
+      ta = std::max(ta, t);
+    }
+    else
+    {
+      tb = std::min(tb, t);
+    }
+  };
+  const LagrangeShape shape = this->Bases[cell.Basis].GetShape();
+  for (int k = 0; k < 3; ++k)
+  {
+    clip(p0[k], v[k]); // pc_k >= 0
+    if (shape == LagrangeShape::Hexahedron || (shape == LagrangeShape::Wedge && k == 2))
+    {
+      clip(1.0 - p0[k], -v[k]); // pc_k <= 1
+    }
+  }
+  if (shape == LagrangeShape::Tetra)
+  {
+    clip(1.0 - p0[0] - p0[1] - p0[2], -(v[0] + v[1] + v[2]));
+  }
+  else if (shape == LagrangeShape::Wedge)
+  {
+    clip(1.0 - p0[0] - p0[1], -(v[0] + v[1]));
+  }
+  if (!(tb > ta))
+  {
+    return 0;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    pc[i] = p0[i] + ta * v[i];
+  }
+  return 1;
+}
+
 const CellDerivativeBounds& CurvedRayCaster::CellBounds(const Cell& cell) const
 {
   std::call_once(*cell.BoundsOnce, [&]() {
@@ -266,6 +432,15 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     {
       continue;
     }
+    if (cell.Affine)
+    {
+      double ta, tb, pc[3];
+      if (this->AffineInterval(cell, origin, direction, t0, t1, ta, tb, pc))
+      {
+        segments.push_back({ ta, tb, c, { pc[0], pc[1], pc[2] } });
+      }
+      continue;
+    }
     const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
     CurvedRayInterval iv[MaxIntervalsPerCell];
     const int n = RayCurvedCellIntervals(
@@ -291,6 +466,7 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     CompositeBehind(accum, r.Color);
     ++st.Segments;
     st.Breakpoints += r.Breakpoints;
+    st.Samples += r.Samples;
     st.Converged = st.Converged && r.Converged;
   }
   if (errorEstimate)

@@ -2,6 +2,7 @@
 // Lagrange cell: see hovCurvedSegment.h.
 #include "hovCurvedSegment.h"
 
+#include "hovCurvedSampling.h" // the fixed-sample rules
 #include "hovTransferFunction.h"
 
 #include <algorithm> // std::lower_bound, std::upper_bound, std::sort
@@ -11,6 +12,14 @@ namespace hov
 {
 namespace
 {
+/// Remainder tolerance (relative to the field scale) of the first, coarse
+/// categorization enclosure. The enclosure stays rigorous; coarser only means
+/// a PS verdict may be conservative, which costs our breakpoint location a
+/// Bernstein exclusion test per extra node (the field representation, not
+/// the enclosure, is integrated). Taylor-model remainders are O(h^2), so
+/// 1e-3 instead of 1e-6 needs ~30x fewer pieces on curved segments.
+constexpr double CoarseEnclosureTolerance = 1e-3;
+
 /// Table values at s (Find + Evaluate).
 SegmentEnd ValueAt(const TransferFunction& tf, double s, bool emission)
 {
@@ -22,6 +31,31 @@ SegmentEnd ValueAt(const TransferFunction& tf, double s, bool emission)
 double MaxColor(const SegmentEnd& v)
 {
   return std::max(std::max(std::abs(v.Color[0]), std::abs(v.Color[1])), std::abs(v.Color[2]));
+}
+
+/// True if the table's extinction (and, WVG, emission) is 0 somewhere on
+/// [lo, hi]: at lo, hi or a node (one-sided values), since it is linear between nodes.
+bool MayBeEmpty(const TransferFunction& tf, double lo, double hi, EmissionModel emission)
+{
+  const bool wvg = emission == EmissionModel::WilhelmsVanGelder;
+  auto zero = [&](const SegmentEnd& v) { return v.Tau == 0.0 && (!wvg || MaxColor(v) == 0.0); };
+  if (zero(ValueAt(tf, lo, wvg)) || zero(ValueAt(tf, hi, wvg)))
+  {
+    return true;
+  }
+  for (double x : tf.GetNodes())
+  {
+    if (x >= lo && x <= hi)
+    {
+      SegmentEnd down;
+      tf.Evaluate(tf.FindIntervalDownward(x), x, wvg, down);
+      if (zero(ValueAt(tf, x, wvg)) || zero(down))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 /// Largest |value|s and slopes d/ds of the table on [lo, hi] (jumps skipped).
@@ -96,6 +130,77 @@ void IntegrateSubPiece(const TransferFunction& tf, const BernsteinPolynomial& g,
   CompositeBehind(result.Color, r.Color);
   ++result.Pieces;
 }
+/// The categorization enclosure in two stages (see hovCurvedSegment.h); sets
+/// result.Class, fills @p model with the Taylor models.
+FieldEnclosure TwoStageEnclosure(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
+  const TransferFunction& tf, const double origin[3], const double direction[3], double t0,
+  double t1, const double* pcGuess, const CurvedSegmentSettings& settings,
+  std::vector<EnclosurePiece>& model, CurvedSegmentResult& result)
+{
+  // Stage 1: a coarse rigorous enclosure (see CoarseEnclosureTolerance).
+  EnclosureSettings coarse = settings.Enclosure;
+  coarse.RemainderTolerance = std::max(coarse.RemainderTolerance, CoarseEnclosureTolerance);
+  FieldEnclosure enc =
+    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, coarse, &model);
+  if (!enc.Valid)
+  {
+    return enc;
+  }
+  result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
+  // Stage 2: the requested tolerance, only where a tighter range can change what is
+  // done: a PS verdict that may turn E (a zero of the table in the range), or S (ElVis).
+  if (result.Class.Category == SegmentCategory::PiecewiseSmooth &&
+    coarse.RemainderTolerance > settings.Enclosure.RemainderTolerance &&
+    (settings.Method == CurvedQuadrature::ElVis ||
+      MayBeEmpty(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission)))
+  {
+    enc = EncloseFieldOnSegment(
+      cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure, &model);
+    result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
+  }
+  return enc;
+}
+
+/// One smooth piece of the field between located breakpoints.
+struct SubPiece
+{
+  BernsteinPolynomial G;
+  double A, B;
+};
+
+/// The field pieces cut at every located crossing of the table nodes of result.Class.
+std::vector<SubPiece> CutAtBreakpoints(const LagrangeCellView& cell, const double origin[3],
+  const double direction[3], const TransferFunction& tf, const std::vector<FieldPiece>& pieces,
+  CurvedSegmentResult& result)
+{
+  const std::vector<double>& nodes = tf.GetNodes();
+  std::vector<double> cuts;
+  std::vector<SubPiece> subs;
+  for (const FieldPiece& p : pieces)
+  {
+    cuts.assign({ p.T0, p.T1 });
+    for (int k = 0; k < result.Class.NodeCount; ++k)
+    {
+      const double level = nodes[result.Class.FirstNode + k];
+      if (k > 0 && level == nodes[result.Class.FirstNode + k - 1])
+      {
+        continue; // a jump: one location
+      }
+      result.Breakpoints += LocateBreakpoints(cell, origin, direction, p, level, cuts);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    const double h = p.T1 - p.T0;
+    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+    {
+      const double a = std::max(cuts[i], p.T0), b = std::min(cuts[i + 1], p.T1);
+      if (b > a)
+      {
+        subs.push_back({ RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h), a, b });
+      }
+    }
+  }
+  return subs;
+}
 }
 
 SegmentClassification CategorizeSegment(
@@ -144,21 +249,39 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   const CurvedSegmentSettings& settings)
 {
   CurvedSegmentResult result;
+  if (!(t1 > t0))
+  {
+    return result; // transparent
+  }
+  std::vector<EnclosurePiece> model;
   const FieldEnclosure enc =
-    EncloseFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure);
-  if (!enc.Valid || !(t1 > t0))
+    TwoStageEnclosure(cell, bounds, tf, origin, direction, t0, t1, pcGuess, settings, model, result);
+  if (!enc.Valid)
   {
     return result; // transparent
   }
   result.Lo = enc.Lo;
   result.Hi = enc.Hi;
-  result.Class = CategorizeSegment(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission);
   if (result.Class.Category == SegmentCategory::Empty)
   {
     return result; // empty-space skipping: exactly zero
   }
   std::vector<FieldPiece> pieces;
-  if (!RepresentFieldOnSegment(cell, bounds, origin, direction, t0, t1, pcGuess, settings, pieces))
+  // The first Taylor model is on the whole segment; if it meets the field tolerance
+  // the geometry is affine (enough): the same test as RepresentFieldOnSegment's.
+  const double fieldTolerance = settings.FieldTolerance * bounds.FieldScale;
+  if (model.size() == 1 && !model[0].Loose && model[0].Remainder <= fieldTolerance)
+  {
+    FieldPiece p;
+    p.T0 = t0;
+    p.T1 = t1;
+    p.G = model[0].Q;
+    p.Error = model[0].Remainder;
+    p.Exact = true;
+    pieces.push_back(p);
+  }
+  else if (!detail::RepresentCurvedField(
+             cell, bounds, origin, direction, t0, t1, pcGuess, settings, pieces))
   {
     result.Converged = false;
     return result;
@@ -168,32 +291,33 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   const double tolerance = settings.FieldTolerance * bounds.FieldScale;
   const double speed =
     std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
-  const std::vector<double>& nodes = tf.GetNodes();
-  std::vector<double> cuts;
   for (const FieldPiece& p : pieces)
   {
     result.FieldError = std::max(result.FieldError, p.Error);
-    cuts.assign({ p.T0, p.T1 });
-    for (int k = 0; k < result.Class.NodeCount; ++k)
+  }
+  if (settings.Method != CurvedQuadrature::LocatedBreakpoints)
+  {
+    detail::IntegrateSampledSegment(tf, pieces,
+      result.Class.Category == SegmentCategory::Smooth, t0, t1, speed, settings, result);
+    return result;
+  }
+  const std::vector<SubPiece> subs = CutAtBreakpoints(cell, origin, direction, tf, pieces, result);
+  const bool emission = settings.Quadrature.Emission == EmissionModel::WilhelmsVanGelder;
+  for (const SubPiece& sp : subs)
+  {
+    if (settings.Samples > 0)
     {
-      const double level = nodes[result.Class.FirstNode + k];
-      if (k > 0 && level == nodes[result.Class.FirstNode + k - 1])
-      {
-        continue; // a jump: one location
-      }
-      result.Breakpoints += LocateBreakpoints(cell, origin, direction, p, level, cuts);
+      // Fixed rule: half the segment's nodes shared equally among the pieces, half by
+      // length (so every piece's rule refines with Samples: spectral convergence even
+      // on the short pieces next to a near-tangent breakpoint), at least one each.
+      const double share = 0.5 * settings.Samples / static_cast<double>(subs.size()) +
+        0.5 * settings.Samples * (sp.B - sp.A) / (t1 - t0);
+      const int m = std::max(1, static_cast<int>(std::lround(share)));
+      detail::IntegrateSubPieceFixed(tf, sp.G, sp.A, sp.B, speed, m, emission, result);
     }
-    std::sort(cuts.begin(), cuts.end());
-    const double h = p.T1 - p.T0;
-    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+    else
     {
-      const double a = std::max(cuts[i], p.T0), b = std::min(cuts[i + 1], p.T1);
-      if (!(b > a))
-      {
-        continue;
-      }
-      const BernsteinPolynomial sub = RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h);
-      IntegrateSubPiece(tf, sub, a, b, speed, tolerance, 8, settings, result);
+      IntegrateSubPiece(tf, sp.G, sp.A, sp.B, speed, tolerance, 8, settings, result);
     }
   }
   // Field-error contribution (see file doc), on the range widened by the error.

@@ -12,42 +12,132 @@ namespace hov
 namespace
 {
 /// 1D Lagrange polynomials of order p on the nodes m/p at x, and derivatives
-/// (vtkLagrangeInterpolation::EvaluateShapeAndGradient's formulas).
+/// (the same values as vtkLagrangeInterpolation::EvaluateShapeAndGradient).
 struct Lagrange1D
 {
   double L[MaxLagrangeOrder + 1];
   double D[MaxLagrangeOrder + 1];
+  /// L_j = prod_{k != j} (v - k) / (j - k), v = p x, and (derivatives) L_j' =
+  /// p sum_{k != j} prod_{q != j, k} (v - q) / prod_{q != j} (j - q), the inner
+  /// products from prefix / suffix products: O(p^2) per direction.
   void Compute(int p, double x, bool derivatives)
   {
     const double v = p * x;
+    double num[MaxLagrangeOrder + 1], prefix[MaxLagrangeOrder + 2];
+    for (int k = 0; k <= p; ++k)
+    {
+      num[k] = v - k;
+    }
     for (int j = 0; j <= p; ++j)
     {
-      double l = 1.0, d = 0.0;
+      double denom = 1.0;
+      prefix[0] = 1.0;
       for (int k = 0; k <= p; ++k)
       {
-        if (k == j)
-        {
-          continue;
-        }
-        l *= (v - k) / (j - k);
-        if (derivatives)
-        {
-          double term = 1.0;
-          for (int q = 0; q <= p; ++q)
-          {
-            if (q != j)
-            {
-              term *= (q == k ? 1.0 : (v - q)) / (j - q);
-            }
-          }
-          d += p * term;
-        }
+        prefix[k + 1] = prefix[k] * (k == j ? 1.0 : num[k]);
+        denom *= k == j ? 1.0 : static_cast<double>(j - k);
       }
-      this->L[j] = l;
+      this->L[j] = prefix[p + 1] / denom;
+      double d = 0.0;
+      if (derivatives)
+      {
+        double suffix = 1.0;
+        for (int k = p; k >= 0; --k)
+        {
+          if (k != j)
+          {
+            d += prefix[k] * suffix;
+            suffix *= num[k];
+          }
+        }
+        d *= p / denom;
+      }
       this->D[j] = d;
     }
   }
 };
+
+/// The sum-factorised hexahedron interpolation for @p C components (see
+/// InterpolateHexahedron); C is a template argument so the loops unroll.
+template <int C, bool G>
+void SumFactorised(const std::vector<std::array<int, 4>>& nodes, int nodeCount, int n0, int n1,
+  int n2, const Lagrange1D (&l)[3], const double* values, double* value, double* gradient)
+{
+  constexpr int M = MaxLagrangeOrder + 1;
+  // Gather the node values in tensor order: T[(k n1 + j) n0 + i][c].
+  double tensor[M * M * M][C];
+  for (int i = 0; i < nodeCount; ++i)
+  {
+    const std::array<int, 4>& ijk = nodes[i];
+    double* t = tensor[(ijk[2] * n1 + ijk[1]) * n0 + ijk[0]];
+    const double* node = values + static_cast<size_t>(i) * C;
+    for (int c = 0; c < C; ++c)
+    {
+      t[c] = node[c];
+    }
+  }
+  double v[C] = {}, g[3 * C] = {};
+  for (int k = 0; k < n2; ++k)
+  {
+    double b[C] = {}, br[C] = {}, bs[C] = {};
+    for (int j = 0; j < n1; ++j)
+    {
+      double a[C] = {}, ar[C] = {};
+      const double(*row)[C] = tensor + (k * n1 + j) * n0;
+      for (int i = 0; i < n0; ++i)
+      {
+        for (int c = 0; c < C; ++c)
+        {
+          a[c] += l[0].L[i] * row[i][c];
+          if (G)
+          {
+            ar[c] += l[0].D[i] * row[i][c];
+          }
+        }
+      }
+      for (int c = 0; c < C; ++c)
+      {
+        b[c] += l[1].L[j] * a[c];
+        if (G)
+        {
+          br[c] += l[1].L[j] * ar[c];
+          bs[c] += l[1].D[j] * a[c];
+        }
+      }
+    }
+    for (int c = 0; c < C; ++c)
+    {
+      v[c] += l[2].L[k] * b[c];
+      if (!G)
+      {
+        continue;
+      }
+      g[3 * c] += l[2].L[k] * br[c];
+      g[3 * c + 1] += l[2].L[k] * bs[c];
+      g[3 * c + 2] += l[2].D[k] * b[c];
+    }
+  }
+  std::copy(v, v + C, value);
+  if (G)
+  {
+    std::copy(g, g + 3 * C, gradient);
+  }
+}
+
+/// SumFactorised with or without the gradient.
+template <int C>
+void SumFactorisedAny(const std::vector<std::array<int, 4>>& nodes, int nodeCount, int n0, int n1,
+  int n2, const Lagrange1D (&l)[3], const double* values, double* value, double* gradient)
+{
+  if (gradient)
+  {
+    SumFactorised<C, true>(nodes, nodeCount, n0, n1, n2, l, values, value, gradient);
+  }
+  else
+  {
+    SumFactorised<C, false>(nodes, nodeCount, n0, n1, n2, l, values, value, gradient);
+  }
+}
 
 /// Silvester's Eta(n, c, x) for c = 0..n and d/dx (vtkHigherOrderTriangle::Eta/Deta).
 struct Eta1D
@@ -372,10 +462,84 @@ void LagrangeBasis::FunctionsAndDerivatives(const double pc[3], double* w, doubl
   });
 }
 
+void LagrangeBasis::InterpolateHexahedron(const double pc[3], const double* values,
+  int components, double* value, double* gradient) const
+{
+  // Sum factorisation: x(r,s,t) = sum_k L_k(t) sum_j L_j(s) sum_i L_i(r) X_ijk,
+  // O(p^4) instead of the O(p^3) node loop's ~3x larger constant per node.
+  const int p0 = this->Order[0], p1 = this->Order[1], p2 = this->Order[2];
+  const int n0 = p0 + 1, n1 = p1 + 1, n2 = p2 + 1;
+  const bool derivs = gradient != nullptr;
+  Lagrange1D l[3];
+  l[0].Compute(p0, pc[0], derivs);
+  l[1].Compute(p1, pc[1], derivs);
+  l[2].Compute(p2, pc[2], derivs);
+  switch (components)
+  {
+    case 1:
+      SumFactorisedAny<1>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
+      return;
+    case 3:
+      SumFactorisedAny<3>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
+      return;
+    case 2:
+      SumFactorisedAny<2>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
+      return;
+    default:
+      SumFactorisedAny<4>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
+  }
+}
+
+template <int C, bool G>
+void LagrangeBasis::InterpolateNodes(
+  const double pc[3], const double* values, double* value, double* gradient) const
+{
+  double v[C] = {}, g[3 * C] = {};
+  this->VisitNodes(pc, G, [&](int i, double wi, const double* dw) {
+    const double* node = values + static_cast<size_t>(i) * C;
+    for (int c = 0; c < C; ++c)
+    {
+      v[c] += wi * node[c];
+      if (G)
+      {
+        g[3 * c] += dw[0] * node[c];
+        g[3 * c + 1] += dw[1] * node[c];
+        g[3 * c + 2] += dw[2] * node[c];
+      }
+    }
+  });
+  std::copy(v, v + C, value);
+  if (G)
+  {
+    std::copy(g, g + 3 * C, gradient);
+  }
+}
+
 void LagrangeBasis::Interpolate(const double pc[3], const double* values, int components,
   double* value, double* gradient) const
 {
   components = std::min(std::max(components, 1), 4);
+  if (this->Shape == LagrangeShape::Hexahedron && !this->Special)
+  {
+    this->InterpolateHexahedron(pc, values, components, value, gradient);
+    return;
+  }
+  // The common cases with compile-time loops: positions (3) and scalars (1).
+  if (components == 3 || components == 1)
+  {
+    const bool three = components == 3;
+    if (gradient)
+    {
+      three ? this->InterpolateNodes<3, true>(pc, values, value, gradient)
+            : this->InterpolateNodes<1, true>(pc, values, value, gradient);
+    }
+    else
+    {
+      three ? this->InterpolateNodes<3, false>(pc, values, value, gradient)
+            : this->InterpolateNodes<1, false>(pc, values, value, gradient);
+    }
+    return;
+  }
   double v[4] = { 0.0, 0.0, 0.0, 0.0 }, g[12] = {};
   this->VisitNodes(pc, gradient != nullptr, [&](int i, double wi, const double* dw) {
     const double* node = values + static_cast<size_t>(i) * components;

@@ -121,6 +121,13 @@ public:
 private:
   template <class Visitor>
   void VisitNodes(const double pc[3], bool derivatives, Visitor&& visit) const;
+  /// Interpolate() by the node loop for @p C components, gradient if @p G.
+  template <int C, bool G>
+  void InterpolateNodes(const double pc[3], const double* values, double* value,
+    double* gradient) const;
+  /// Interpolate() for hexahedra by sum factorisation (tensor-product basis).
+  void InterpolateHexahedron(const double pc[3], const double* values, int components,
+    double* value, double* gradient) const;
   template <class Visitor>
   void VisitSpecial(const double pc[3], Visitor&& visit) const;
 

@@ -1,0 +1,247 @@
+// hovBenchRayCast: speed of hov::CurvedRayCaster (issue 6) on the real
+// curved Lagrange datasets platehole_lagrange_hex_q4.vtu (192 Q4 hexahedra)
+// and tjunction_lagrange_tet_p4.vtu (3790 P4 tetrahedra): Build() time, then
+// an orthographic size x size view along -z through the mesh bounds, every
+// step-th pixel in each direction traced (so the cost sample covers the whole
+// image), with 1 and 2 std::threads (rows interleaved); prints ms per ray,
+// rays per second, segments per ray and the worst error estimate. Each
+// configuration is run --repeat times (interleaved) and the median printed.
+// Not a test: no pass/fail.
+#include "hovCurvedRayCaster.h"
+#include "hovTransferFunction.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+struct Mesh
+{
+  std::vector<double> Points, Scalars;
+  std::vector<unsigned char> Types;
+  std::vector<std::int64_t> Offsets{ 0 }, Connectivity;
+  std::vector<int> Degrees;
+  hov::CurvedMeshInput Input() const
+  {
+    hov::CurvedMeshInput in;
+    in.Points = this->Points.data();
+    in.NumberOfPoints = static_cast<std::int64_t>(this->Scalars.size());
+    in.Scalars = this->Scalars.data();
+    in.CellTypes = this->Types.data();
+    in.Offsets = this->Offsets.data();
+    in.Connectivity = this->Connectivity.data();
+    in.NumberOfCells = static_cast<std::int64_t>(this->Types.size());
+    in.Degrees = this->Degrees.size() == 3 * this->Types.size() ? this->Degrees.data() : nullptr;
+    return in;
+  }
+};
+
+bool Load(const std::string& file, const char* array, Mesh& m)
+{
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  vtkDataArray* s = grid ? grid->GetPointData()->GetArray(array) : nullptr;
+  if (!grid || !s || grid->GetNumberOfCells() == 0)
+  {
+    return false;
+  }
+  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
+  m.Points.resize(3 * np);
+  m.Scalars.resize(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    grid->GetPoints()->GetPoint(i, &m.Points[3 * i]);
+    m.Scalars[i] = s->GetComponent(i, 0);
+  }
+  vtkDataArray* degrees = grid->GetCellData()->GetHigherOrderDegrees();
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    grid->GetCellPoints(c, n, ids);
+    m.Connectivity.insert(m.Connectivity.end(), ids, ids + n);
+    m.Offsets.push_back(static_cast<std::int64_t>(m.Connectivity.size()));
+    m.Types.push_back(static_cast<unsigned char>(grid->GetCellType(c)));
+    for (int k = 0; degrees && degrees->GetNumberOfComponents() == 3 && k < 3; ++k)
+    {
+      m.Degrees.push_back(static_cast<int>(degrees->GetComponent(c, k)));
+    }
+  }
+  return true;
+}
+
+struct Frame
+{
+  double Seconds = 0.0, WorstError = 0.0;
+  long Rays = 0, Segments = 0, Hit = 0;
+};
+
+Frame Render(const hov::CurvedRayCaster& caster, const hov::TransferFunction& tf,
+  const hov::CurvedSegmentSettings& settings, int size, int step, int threads)
+{
+  const double* B = caster.GetBounds();
+  std::vector<Frame> parts(threads);
+  std::atomic<int> nextRow{ 0 };
+  auto work = [&](int id) {
+    Frame& f = parts[id];
+    for (int j = nextRow.fetch_add(step); j < size; j = nextRow.fetch_add(step))
+    {
+      for (int i = 0; i < size; i += step)
+      {
+        const double o[3] = { B[0] + (i + 0.5) / size * (B[1] - B[0]),
+          B[2] + (j + 0.5) / size * (B[3] - B[2]), B[5] + 1.0 };
+        const double d[3] = { 0.0, 0.0, -1.0 };
+        double error = 0.0;
+        hov::CurvedRayStats stats;
+        const hov::RGBA c =
+          caster.TraceRay(o, d, 0.0, B[5] - B[4] + 2.0, tf, settings, &error, &stats);
+        f.WorstError = std::max(f.WorstError, error);
+        f.Segments += stats.Segments;
+        f.Hit += c.A > 0.0 ? 1 : 0;
+        ++f.Rays;
+      }
+    }
+  };
+  const auto start = Clock::now();
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+  {
+    pool.emplace_back(work, t);
+  }
+  work(0);
+  for (std::thread& t : pool)
+  {
+    t.join();
+  }
+  Frame total;
+  total.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  for (const Frame& f : parts)
+  {
+    total.Rays += f.Rays;
+    total.Segments += f.Segments;
+    total.Hit += f.Hit;
+    total.WorstError = std::max(total.WorstError, f.WorstError);
+  }
+  return total;
+}
+
+double Median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+}
+
+int main(int argc, char* argv[])
+{
+  int size = 256, step = 8, repeat = 3;
+  std::string data = HOV_BENCH_DATA_DIR, method = "ours", only;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string a = argv[i];
+    if (a == "--size")
+      size = std::atoi(argv[i + 1]);
+    else if (a == "--step")
+      step = std::max(1, std::atoi(argv[i + 1]));
+    else if (a == "--repeat")
+      repeat = std::max(1, std::atoi(argv[i + 1]));
+    else if (a == "--data")
+      data = argv[i + 1];
+    else if (a == "--method")
+      method = argv[i + 1];
+    else if (a == "--only")
+      only = argv[i + 1]; // run the datasets whose file name contains this
+  }
+  hov::CurvedSegmentSettings settings;
+  settings.Method = method == "elvis" ? hov::CurvedQuadrature::ElVis
+    : method == "riemann"             ? hov::CurvedQuadrature::Riemann
+                                      : hov::CurvedQuadrature::LocatedBreakpoints;
+  struct Set
+  {
+    const char* File;
+    const char* Array;
+    double Lo, Hi;
+  };
+  const Set sets[2] = { { "platehole_lagrange_hex_q4.vtu", "von_mises", 1.8, 361.0 },
+    { "tjunction_lagrange_tet_p4.vtu", "speed", 0.05, 2.63 } };
+  std::cout << "hovBenchRayCast: " << size << "x" << size << " view along -z, every " << step
+            << "-th pixel, method " << method << ", median of " << repeat << std::endl;
+  for (const Set& s : sets)
+  {
+    if (!only.empty() && std::string(s.File).find(only) == std::string::npos)
+    {
+      continue;
+    }
+    Mesh mesh;
+    if (!Load(data + "/" + s.File, s.Array, mesh))
+    {
+      std::cerr << "cannot read " << data << "/" << s.File << std::endl;
+      return 1;
+    }
+    hov::CurvedRayCaster caster;
+    std::string message;
+    const auto buildStart = Clock::now();
+    const bool built = caster.Build(mesh.Input(), &message);
+    const double build = std::chrono::duration<double>(Clock::now() - buildStart).count();
+    if (!built)
+    {
+      std::cerr << s.File << ": " << message << std::endl;
+      return 1;
+    }
+    hov::TransferFunctionSpec spec;
+    spec.Semantics = hov::OpacitySemantics::VTKUnstructured;
+    const double span = s.Hi - s.Lo;
+    spec.Color = { { s.Lo, 0.1, 0.2, 0.9 }, { s.Lo + 0.5 * span, 0.2, 0.9, 0.2 },
+      { s.Hi, 0.9, 0.1, 0.1 } };
+    spec.Opacity = { { s.Lo, 0.0 }, { s.Lo + 0.3 * span, 0.2 }, { s.Lo + 0.6 * span, 0.6 },
+      { s.Hi, 1.0 } };
+    spec.UnitDistance = 0.05 * (caster.GetBounds()[1] - caster.GetBounds()[0]);
+    hov::TransferFunction tf;
+    tf.Build(spec);
+    std::cout << s.File << ": " << caster.GetNumberOfCells() << " cells, Build " << build << " s"
+              << std::endl;
+    // The first frame pays the lazily computed per-cell bounds: reported apart.
+    const Frame first = Render(caster, tf, settings, size, step, 2);
+    std::cout << "  first frame (2 threads, includes lazy cell bounds): " << first.Seconds
+              << " s, " << first.Rays << " rays, " << first.Hit << " hit, "
+              << static_cast<double>(first.Segments) / std::max(first.Hit, 1L)
+              << " segments per hit ray, worst error estimate " << first.WorstError << std::endl;
+    std::vector<double> times[2];
+    long rays = first.Rays;
+    for (int r = 0; r < repeat; ++r)
+    {
+      for (int threads : { 1, 2 })
+      {
+        const Frame f = Render(caster, tf, settings, size, step, threads);
+        times[threads - 1].push_back(f.Seconds);
+      }
+    }
+    for (int threads : { 1, 2 })
+    {
+      const double t = Median(times[threads - 1]);
+      std::cout << "  " << threads << " thread(s): " << 1e3 * t / rays << " ms/ray, "
+                << rays / t << " rays/s (full " << size << "x" << size << " image ~"
+                << t * size * size / rays << " s)" << std::endl;
+    }
+  }
+  return 0;
+}
