@@ -332,7 +332,8 @@ int main(int argc, char* argv[])
       if (config.Ours)
       {
         std::cout << "  (PT/ours = " << tPT / t << ", triangles "
-                  << config.Ours->GetNumberOfProjectedTriangles() << ")";
+                  << config.Ours->GetNumberOfProjectedTriangles() << ", slabs "
+                  << config.Ours->GetNumberOfProjectedSlabs() << ")";
       }
       std::cout << "\n";
     }
