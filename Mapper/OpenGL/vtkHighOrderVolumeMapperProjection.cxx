@@ -21,7 +21,7 @@
 #include "vtkTimerLog.h"
 #include "vtkVolume.h"
 
-#include <algorithm> // std::reverse_copy
+#include <algorithm> // std::reverse_copy, std::all_of
 #include <cstring>   // std::memcpy
 
 namespace
@@ -62,14 +62,23 @@ void ViewSettings(vtkCamera* camera, vtkVolume* volume, double aspect,
   settings.Parallel = camera->GetParallelProjection() != 0;
 }
 
-/// The scene depth of the viewport into @p depth; null if it cannot be read.
+/**
+ * The scene depth of the viewport into @p depth; null if it cannot be read or
+ * if it is the far plane everywhere (no opaque geometry in the viewport: the
+ * depth test could reject nothing, so the projection skips it and its
+ * per-fragment cost).
+ */
 const float* SceneDepth(
   vtkRenderer* ren, int width, int height, int x0, int y0, std::vector<float>& depth)
 {
   depth.resize(static_cast<size_t>(width) * height);
-  return vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, depth.data())
-    ? depth.data()
-    : nullptr;
+  if (!vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, depth.data()))
+  {
+    return nullptr;
+  }
+  const bool allFar =
+    std::all_of(depth.begin(), depth.end(), [](float z) { return z >= 1.0f; });
+  return allFar ? nullptr : depth.data();
 }
 
 /// proj.BackToFront: @p frontToBack reversed (exact order) or, if null, the centroid order.
