@@ -207,12 +207,12 @@ def describe_types(grid):
 # Issue 6: the curved order-4 Lagrange datasets (Testing/Data) in the RAY_CAST render mode.
 # Small images: the ray caster costs ~1 ms (plate) to ~15-50 ms (T-junction) per ray on one core
 # of this machine (hovCurvedRayCaster.h), so the demo stays within a minute or so. Same transfer
-# function scheme as the issue-4 datasets; camera: oblique, 2 bounding-box diagonals away.
+# function scheme as the issue-4 datasets; camera: oblique, 1.6 bounding-box diagonals away.
 RAYCAST_DATASETS = [
     {"tag": "platehole_raycast", "file": "platehole_lagrange_hex_q4.vtu", "array": "von_mises",
-     "direction": (0.3, -0.5, 0.81), "size": 64},
+     "direction": (0.3, -0.5, 0.81), "size": 192},
     {"tag": "tjunction_p4_raycast", "file": "tjunction_lagrange_tet_p4.vtu", "array": "speed",
-     "direction": (0.35, -0.8, 0.49), "size": 32},
+     "direction": (0.35, -0.8, 0.49), "size": 128},
 ]
 
 
@@ -234,7 +234,7 @@ def raycast_dataset(ds, args, catcher, log, failures):
     prop, _ = issue4_property(smin, smax, 0.05 * (b[1] - b[0]))
     camera = vtkCamera()
     camera.SetFocalPoint(*centre)
-    camera.SetPosition(*[centre[k] + 2.0 * diag * ds["direction"][k] for k in range(3)])
+    camera.SetPosition(*[centre[k] + 1.6 * diag * ds["direction"][k] for k in range(3)])
     camera.SetViewUp(0, 0, 1)
     camera.SetViewAngle(30.0)
     camera.SetClippingRange(0.5 * diag, 4.0 * diag)
