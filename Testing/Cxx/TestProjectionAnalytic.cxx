@@ -148,6 +148,7 @@ int TestProjectionAnalytic(int, char*[])
           {
             vs.Mapper->SetRenderModeToOpenGLProjection();
             vs.Mapper->SetProjectionColorMethod(m);
+            vs.Mapper->SetProjectionOpacityLookupToTexture(); // HIAC's texture (the default is analytic)
             win->Render();
             const Image proj = FloatImage(vs.Mapper);
             const Errors e = Compare(proj, cpu);
