@@ -460,7 +460,7 @@ public:
    * grid, within 1.2e-5 of 1 - exp(-d); the analytic lookup is the shader's
    * float exp (about 1e-7) and skips the texture fetch, which on llvmpipe is
    * about a fifth of the frame on large meshes (hovBenchProjection --lookup).
-   * The default is therefore the analytic lookup: more accurate and faster
+   * The default is therefore the analytic lookup: more accurate and 6-15% faster
    * on llvmpipe (and no slower on a GPU, where exp is one instruction); the
    * texture is HIAC's route for hardware without fragment arithmetic and is
    * kept, tested to the same 2/255 acceptance (TestProjectionAnalytic).
