@@ -6,7 +6,8 @@
 
 #include <algorithm> // std::nth_element, std::sort, std::min, std::max
 #include <atomic>    // Build()'s work counter
-#include <cmath>     // std::isfinite
+#include <cmath>     // std::isfinite, std::abs
+#include <limits>    // infinity
 #include <thread>    // Build()'s face-net pass
 
 namespace hov
@@ -23,6 +24,13 @@ constexpr double AffineTolerance = 1e-12;
 /// Build(): cells per work item and the thread cap of the face-net pass.
 constexpr size_t FaceBatch = 32;
 constexpr unsigned MaxBuildThreads = 16;
+/// TraceRay: integrations of one ray at most (the first plus re-integrations
+/// with tighter segment tolerances), and the tightest segment tolerance.
+constexpr int MaxTolerancePasses = 3;
+constexpr double MinSegmentTolerance = 1e-13;
+/// TraceRay: an interval ending within this (relative) of what earlier
+/// intervals cover adds nothing and is dropped.
+constexpr double CoverTolerance = 1e-10;
 
 /// Ray parameter range [t0, t1] inside @p box, clipped to [tMin, tMax]; false if empty.
 bool SlabTest(const double box[6], const double o[3], const double d[3], double tMin, double tMax,
@@ -451,23 +459,68 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     }
   }
   std::sort(segments.begin(), segments.end(),
-    [](const Segment& a, const Segment& b) { return a.T0 < b.T0; });
-  for (const Segment& s : segments)
+    [](const Segment& a, const Segment& b) { return a.T0 < b.T0 || (a.T0 == b.T0 && a.T1 < b.T1); });
+  // Each part of the ray once: a ray lying in a face shared by two cells (or
+  // on an edge shared by several) gets the same interval from every one of
+  // them, and a ray in a plane of coplanar faces partitions differently on
+  // either side. Keep what is not yet covered, trimming starts (the entry
+  // point stays a Newton guess).
   {
-    if (accum.A >= 1.0 - OpacityCutoff)
+    size_t kept = 0;
+    double covered = -std::numeric_limits<double>::infinity();
+    for (Segment s : segments)
     {
+      if (s.T1 <= covered + CoverTolerance * (1.0 + std::abs(covered)))
+      {
+        continue;
+      }
+      s.T0 = std::max(s.T0, covered);
+      covered = s.T1;
+      segments[kept++] = s;
+    }
+    segments.resize(kept);
+  }
+  // The tolerance is per pixel: each segment is integrated to it, and if the
+  // transmittance-weighted sum of the segments' estimates exceeds it (many
+  // segments along the ray), the ray is integrated again with every segment's
+  // tolerance scaled by 0.5 x tolerance / sum (at most MaxTolerancePasses).
+  const bool adaptive =
+    settings.Method == CurvedQuadrature::LocatedBreakpoints && settings.Samples <= 0;
+  CurvedSegmentSettings pass = settings;
+  for (int attempt = 0; attempt < MaxTolerancePasses; ++attempt)
+  {
+    accum = RGBA();
+    error = 0.0;
+    CurvedRayStats passStats = st;
+    for (const Segment& s : segments)
+    {
+      if (accum.A >= 1.0 - OpacityCutoff)
+      {
+        break;
+      }
+      const Cell& cell = this->Cells[s.Cell];
+      const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
+        cell.Scalars.data() };
+      const CurvedSegmentResult r = IntegrateCurvedSegment(
+        view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, pass);
+      error += (1.0 - accum.A) * r.ErrorEstimate;
+      CompositeBehind(accum, r.Color);
+      ++passStats.Segments;
+      passStats.Breakpoints += r.Breakpoints;
+      passStats.Samples += r.Samples;
+      passStats.Converged = passStats.Converged && r.Converged;
+    }
+    const double target = settings.Quadrature.Tolerance;
+    const bool last = !adaptive || !(error > target) || attempt + 1 == MaxTolerancePasses ||
+      pass.Quadrature.Tolerance <= MinSegmentTolerance;
+    if (last)
+    {
+      passStats.TolerancePasses = attempt + 1;
+      st = passStats;
       break;
     }
-    const Cell& cell = this->Cells[s.Cell];
-    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
-    const CurvedSegmentResult r = IntegrateCurvedSegment(
-      view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, settings);
-    error += (1.0 - accum.A) * r.ErrorEstimate;
-    CompositeBehind(accum, r.Color);
-    ++st.Segments;
-    st.Breakpoints += r.Breakpoints;
-    st.Samples += r.Samples;
-    st.Converged = st.Converged && r.Converged;
+    pass.Quadrature.Tolerance =
+      std::max(MinSegmentTolerance, pass.Quadrature.Tolerance * 0.5 * target / error);
   }
   if (errorEstimate)
   {

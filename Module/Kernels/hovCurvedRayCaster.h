@@ -27,9 +27,15 @@
  * BVH: binary, split at the median centroid along the
  * longest axis of the centroids' box, leaves of <= 4 cells.
  * TraceRay(): the cells whose boxes the ray meets (slab test, front to back
- * traversal), their inside intervals, sorted by entry; segments are
+ * traversal), their inside intervals, sorted by entry, each part of the
+ * ray kept once (a ray in a face shared by two cells, or on an edge shared
+ * by several, gets the same interval from each); segments are
  * integrated in that order and composited; the ray stops when its opacity
- * exceeds 1 - OpacityCutoff. Overlapping intervals (a shared face computed
+ * exceeds 1 - OpacityCutoff. The tolerance is per pixel: when the sum of
+ * the segments' error estimates (each weighted by the transmittance in front
+ * of it) exceeds Quadrature.Tolerance, the ray is integrated again with the
+ * segment tolerance scaled by 0.5 x tolerance / sum (adaptive method only, at
+ * most 3 integrations, not below 1e-13). Overlapping intervals (a shared face computed
  * from both sides: ~1e-13 apart) are not an issue at that size.
  *
  * Bad input: cell types other than 71/72/73, node counts or degrees VTK
@@ -98,6 +104,9 @@ struct CurvedRayStats
   int Breakpoints = 0;
   int Samples = 0;        ///< field samples of the fixed-sample rules (CurvedSegmentResult::Samples)
   bool Converged = true;
+  /// Integrations of the ray (1; more when the summed error estimate
+  /// exceeded the tolerance and the ray was integrated again, tighter).
+  int TolerancePasses = 0;
 };
 
 class HOV_EXPORT CurvedRayCaster
