@@ -175,7 +175,16 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
     interactive ? std::min(10.0 * this->RayCastTolerance, 0.05) : this->RayCastTolerance;
   st.RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
   std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
-  st.Caster.Render(rays, tf->GetTable(), settings, st.RGBA.data(), error.data(), rayDepth);
+  vtkHighOrderRayCast::Issues issues;
+  st.Caster.Render(rays, tf->GetTable(), settings, st.RGBA.data(), error.data(), rayDepth, &issues);
+  if (issues.NotConverged > 0 || issues.NotFinite > 0)
+  {
+    vtkWarningMacro("RAY_CAST: " << issues.NotConverged << " of " << rw * rh
+                                 << " pixels did not converge to the tolerance (Newton inversion "
+                                    "or quadrature; see GetRayCastErrorImage() for how far), "
+                                 << issues.NotFinite
+                                 << " had a non-finite colour and are drawn transparent.");
+  }
   for (int j = 0; j < height; ++j)
   {
     for (int i = 0; i < width; ++i)

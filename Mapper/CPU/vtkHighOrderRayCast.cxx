@@ -7,6 +7,7 @@
 #include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <atomic> // issue counters
 #include <cmath>   // std::isfinite
 #include <cstdint> // 64-bit connectivity
 
@@ -52,8 +53,10 @@ bool vtkHighOrderRayCast::SetInput(
 }
 
 bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
-  const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth) const
+  const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
+  Issues* issues) const
 {
+  std::atomic<long long> notConverged(0), notFinite(0);
   if (!this->Ready || !rgba)
   {
     return false;
@@ -74,13 +77,19 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
         {
           const double o[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
           const double d[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
-          c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e);
+          hov::CurvedRayStats stats;
+          c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e, &stats);
+          if (!stats.Converged)
+          {
+            ++notConverged;
+          }
         }
         if (!(std::isfinite(c.R) && std::isfinite(c.G) && std::isfinite(c.B) &&
               std::isfinite(c.A) && std::isfinite(e)))
         {
           c = hov::RGBA(); // never a NaN pixel: report it through the error image
           e = 1.0;
+          ++notFinite;
         }
         rgba[4 * p] = static_cast<float>(c.R);
         rgba[4 * p + 1] = static_cast<float>(c.G);
@@ -93,5 +102,10 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
       }
     }
   });
+  if (issues)
+  {
+    issues->NotConverged = notConverged.load();
+    issues->NotFinite = notFinite.load();
+  }
   return true;
 }

@@ -68,11 +68,18 @@ public:
    * premultiplied, row j = 0 at the bottom) and, if given, @p error (1 float
    * per pixel). @p depth (may be null): the OpenGL window depth per pixel of
    * opaque geometry (1 = nothing). Returns false if SetInput() has not
-   * succeeded.
+   * succeeded. If given, @p issues receives the pixels whose quadrature or
+   * Newton inversion did not converge (their error estimate says how far)
+   * and those whose colour was not finite (drawn transparent, error 1).
    */
+  struct Issues
+  {
+    long long NotConverged = 0;
+    long long NotFinite = 0;
+  };
   bool Render(const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
-    const hov::CurvedSegmentSettings& settings, float* rgba, float* error,
-    const float* depth) const;
+    const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
+    Issues* issues = nullptr) const;
 
 private:
   hov::CurvedRayCaster Caster;
