@@ -470,11 +470,15 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     double covered = -std::numeric_limits<double>::infinity();
     for (Segment s : segments)
     {
-      if (s.T1 <= covered + CoverTolerance * (1.0 + std::abs(covered)))
+      s.T0 = std::max(s.T0, covered);
+      // Nothing new, or a sliver at the rounding level (a ray through a
+      // cell's edge or corner, or a shared face computed from both sides):
+      // no contribution, except that an opaque medium would turn the pixel
+      // opaque on a length that is only rounding.
+      if (s.T1 - s.T0 <= CoverTolerance * (1.0 + std::abs(s.T1)))
       {
         continue;
       }
-      s.T0 = std::max(s.T0, covered);
       covered = s.T1;
       segments[kept++] = s;
     }

@@ -6,7 +6,7 @@
 #include "hovTransferFunction.h"
 
 #include <algorithm> // std::lower_bound, std::upper_bound, std::sort
-#include <cmath>     // std::abs
+#include <cmath>     // std::abs, std::isfinite, std::sqrt
 
 namespace hov
 {
@@ -62,6 +62,9 @@ bool MayBeEmpty(const TransferFunction& tf, double lo, double hi, EmissionModel 
 struct TableSensitivity
 {
   double TauMax = 0.0, ColorMax = 0.0, TauSlope = 0.0, ColorSlope = 0.0;
+  /// Infinite extinction somewhere (an opaque medium: opacity 1 in
+  /// GPU-compatible semantics); TauMax and TauSlope cover the finite values.
+  bool Opaque = false;
 };
 
 TableSensitivity Sensitivity(const TransferFunction& tf, double lo, double hi, bool emission)
@@ -80,7 +83,14 @@ TableSensitivity Sensitivity(const TransferFunction& tf, double lo, double hi, b
   for (size_t i = 0; i < points.size(); ++i)
   {
     const SegmentEnd v = ValueAt(tf, points[i], emission);
-    s.TauMax = std::max(s.TauMax, std::abs(v.Tau));
+    if (std::isfinite(v.Tau))
+    {
+      s.TauMax = std::max(s.TauMax, std::abs(v.Tau));
+    }
+    else
+    {
+      s.Opaque = true;
+    }
     s.ColorMax = std::max(s.ColorMax, MaxColor(v));
     if (i + 1 < points.size() && points[i + 1] > points[i])
     {
@@ -90,7 +100,10 @@ TableSensitivity Sensitivity(const TransferFunction& tf, double lo, double hi, b
       const int k = tf.FindIntervalUpward(m);
       tf.Evaluate(k, a, emission, va);
       tf.Evaluate(k, b, emission, vb);
-      s.TauSlope = std::max(s.TauSlope, std::abs(vb.Tau - va.Tau) / (b - a));
+      if (std::isfinite(va.Tau) && std::isfinite(vb.Tau))
+      {
+        s.TauSlope = std::max(s.TauSlope, std::abs(vb.Tau - va.Tau) / (b - a));
+      }
       for (int c = 0; c < 3; ++c)
       {
         s.ColorSlope = std::max(s.ColorSlope, std::abs(vb.Color[c] - va.Color[c]) / (b - a));
@@ -130,6 +143,39 @@ void IntegrateSubPiece(const TransferFunction& tf, const BernsteinPolynomial& g,
   CompositeBehind(result.Color, r.Color);
   ++result.Pieces;
 }
+/// Order-1 cells (linear tetrahedra and wedges, trilinear hexahedra) have
+/// non-negative shape functions: their field stays within the node values.
+/// The pieces' end values (first and last Bernstein coefficients) are clamped
+/// to that range, so that rounding (an interval end a hair outside the cell,
+/// where the field extrapolates) cannot carry the field past a table node at
+/// the range's end: with opacity 1 there (GPU-compatible semantics) that would
+/// be an opaque medium.
+void ClampOrderOneEnds(const LagrangeCellView& cell, std::vector<FieldPiece>& pieces)
+{
+  if (!cell.Basis || !cell.Scalars)
+  {
+    return;
+  }
+  const int* order = cell.Basis->GetOrder();
+  if (order[0] != 1 || order[1] != 1 || order[2] != 1)
+  {
+    return;
+  }
+  double lo = cell.Scalars[0], hi = cell.Scalars[0];
+  for (int i = 1; i < cell.Basis->GetNodeCount(); ++i)
+  {
+    lo = std::min(lo, cell.Scalars[i]);
+    hi = std::max(hi, cell.Scalars[i]);
+  }
+  for (FieldPiece& p : pieces)
+  {
+    double& a = p.G.B[0];
+    double& b = p.G.B[p.G.Degree];
+    a = std::min(std::max(a, lo), hi);
+    b = std::min(std::max(b, lo), hi);
+  }
+}
+
 /// The categorization enclosure in two stages (see hovCurvedSegment.h); sets
 /// result.Class, fills @p model with the Taylor models.
 FieldEnclosure TwoStageEnclosure(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
@@ -253,6 +299,37 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   {
     return result; // transparent
   }
+  // A cell whose node scalars are all equal carries that constant exactly
+  // (partition of unity); interpolating it would round it (1 - 1e-16), which
+  // matters where the table is singular: opacity 1 at a node in GPU-compatible
+  // semantics is an opaque medium at the node and a finite (clamped)
+  // extinction just below it. The segment then has one exact table value.
+  if (cell.Scalars && cell.Basis)
+  {
+    const int n = cell.Basis->GetNodeCount();
+    const double c = cell.Scalars[0];
+    bool constant = n > 0 && std::isfinite(c);
+    for (int i = 1; constant && i < n; ++i)
+    {
+      constant = cell.Scalars[i] == c;
+    }
+    if (constant)
+    {
+      const EmissionModel model = settings.Quadrature.Emission;
+      result.Lo = result.Hi = c;
+      result.Class = CategorizeSegment(tf, c, c, model);
+      result.ExactField = true;
+      if (result.Class.Category != SegmentCategory::Empty)
+      {
+        const SegmentEnd v = ValueAt(tf, c, model == EmissionModel::WilhelmsVanGelder);
+        const double length = (t1 - t0) * std::sqrt(direction[0] * direction[0] +
+                                            direction[1] * direction[1] + direction[2] * direction[2]);
+        result.Color = IntegrateSegment(length, v, v, model, SegmentMethod::Exact);
+        result.Pieces = 1;
+      }
+      return result;
+    }
+  }
   std::vector<EnclosurePiece> model;
   const FieldEnclosure enc =
     TwoStageEnclosure(cell, bounds, tf, origin, direction, t0, t1, pcGuess, settings, model, result);
@@ -286,6 +363,7 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
     result.Converged = false;
     return result;
   }
+  ClampOrderOneEnds(cell, pieces);
   result.FieldPieces = static_cast<int>(pieces.size());
   result.ExactField = !pieces.empty() && pieces[0].Exact;
   const double tolerance = settings.FieldTolerance * bounds.FieldScale;
@@ -323,9 +401,15 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   // Field-error contribution (see file doc), on the range widened by the error.
   const TableSensitivity s = Sensitivity(tf, enc.Lo - result.FieldError, enc.Hi + result.FieldError,
     settings.Quadrature.Emission == EmissionModel::WilhelmsVanGelder);
+  // An opaque medium ends the ray where it starts: a field error e moves that
+  // point, and the colour there changes by at most ColorSlope e.
   const double length = (t1 - t0) * speed;
-  result.ErrorEstimate +=
-    length * (s.ColorSlope * s.TauMax + s.ColorMax * s.TauSlope) * result.FieldError;
+  if (result.FieldError > 0.0)
+  {
+    result.ErrorEstimate +=
+      (length * (s.ColorSlope * s.TauMax + s.ColorMax * s.TauSlope) + (s.Opaque ? s.ColorSlope : 0.0)) *
+      result.FieldError;
+  }
   return result;
 }
 }

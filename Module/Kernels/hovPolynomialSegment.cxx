@@ -5,7 +5,8 @@
 #include "hovTransferFunction.h" // the table walked here
 
 #include <algorithm> // std::min, std::max, std::sort
-#include <cmath>     // exp, expm1, fabs, isfinite
+#include <cmath>     // exp, expm1, fabs, isfinite, abs
+#include <vector>    // table nodes
 
 namespace hov
 {
@@ -15,6 +16,27 @@ namespace
 constexpr int MaxFieldDegree = Polynomial::MaxDegree - 1;
 
 using detail::PieceOutput;
+
+/// Relative distance to a table node below which a field value is taken to be
+/// at the node: the rounding of a field that reaches a node value (a maximum
+/// at a node with opacity 1, a constant cell) must not cross into the next
+/// interval, which in GPU-compatible semantics may be an opaque medium.
+constexpr double NodeSnap = 8.0 * 2.220446049250313e-16;
+
+/// @p v, or the table node within NodeSnap (relative) of it.
+double SnapToNode(const TransferFunction& tf, double v)
+{
+  const std::vector<double>& x = tf.GetNodes();
+  const auto it = std::lower_bound(x.begin(), x.end(), v);
+  for (auto c : { it, it == x.begin() ? it : it - 1 })
+  {
+    if (c != x.end() && std::abs(*c - v) <= NodeSnap * std::max(std::abs(*c), 1e-300))
+    {
+      return *c;
+    }
+  }
+  return v;
+}
 
 /**
  * Piece [tA, tA + h] of the segment in table interval @p k, where s goes
@@ -137,7 +159,8 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
     IntegrationSettings linear;
     linear.Emission = settings.Emission;
     linear.Method = SegmentMethod::Exact;
-    result.Color = IntegrateLinearScalar(tf, s.C[0], Evaluate(s, length), length, linear, &result.Pieces);
+    result.Color = IntegrateLinearScalar(tf, SnapToNode(tf, s.C[0]),
+      SnapToNode(tf, Evaluate(s, length)), length, linear, &result.Pieces);
     return result;
   }
   if (degree > MaxFieldDegree)
@@ -178,10 +201,10 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
   }
   ends[nEnds++] = length;
 
-  double sRunStart = field.C[0];
+  double sRunStart = SnapToNode(tf, field.C[0]);
   for (int run = 0; run + 1 < nEnds; ++run)
   {
-    const double sRunEnd = EvaluateCompensated(field, ends[run + 1]);
+    const double sRunEnd = SnapToNode(tf, EvaluateCompensated(field, ends[run + 1]));
     if (!walker.Walk(ends[run], ends[run + 1], sRunStart, sRunEnd))
     {
       break; // opaque: nothing behind is visible
