@@ -355,11 +355,18 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   Internals& impl = *this->Impl;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
+  this->LastRenderAborted = false;
+  this->AbortExecute = 0; // a request to abort applies to one render
+  this->UpdateProgress(0.0);
   if (this->RenderMode == RAY_CAST)
   {
     const int status =
       this->ComputeRayCastImage(camera, volume, width, height, aspect, depth, impl.RGBA);
     this->PublishImage(width, height);
+    if (!this->LastRenderAborted && this->GetProgress() < 1.0)
+    {
+      this->UpdateProgress(1.0); // nothing to trace
+    }
     timer->StopTimer();
     this->LastImageTime = timer->GetElapsedTime();
     return status;
@@ -367,9 +374,6 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
-  this->LastRenderAborted = false;
-  this->AbortExecute = 0; // a request to abort applies to one render
-  this->UpdateProgress(0.0);
 
   const bool ok = this->ValidateInputs(camera, volume, width, height);
   // Isosurfaces are visible even where the volume does not absorb.

@@ -517,7 +517,8 @@ public:
 
   ///@{
   /**
-   * Progress and abort (CPU_ACCURATE mode): during the tile loop the mapper
+   * Progress and abort (the CPU modes, CPU_ACCURATE and RAY_CAST, where rows
+   * of rays play the part of tiles): during the tile loop the mapper
    * fires vtkCommand::ProgressEvent (UpdateProgress, from the rendering
    * thread, between batches of about 1/32 of the tiles; 0 at the start,
    * non-decreasing, 1 when all tiles are done). An observer may call

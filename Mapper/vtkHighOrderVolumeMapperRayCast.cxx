@@ -11,6 +11,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h" // ProgressEvent, AbortCheckEvent
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkPointData.h"
@@ -176,7 +177,15 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   st.RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
   std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
   vtkHighOrderRayCast::Issues issues;
-  st.Caster.Render(rays, tf->GetTable(), settings, st.RGBA.data(), error.data(), rayDepth, &issues);
+  vtkHighOrderProgressFunction progress;
+  if (this->HasObserver(vtkCommand::ProgressEvent) ||
+    (window && window->HasObserver(vtkCommand::AbortCheckEvent)))
+  {
+    progress = [this](double done) { return this->ReportTileProgress(done); };
+  }
+  st.Caster.Render(
+    rays, tf->GetTable(), settings, st.RGBA.data(), error.data(), rayDepth, &issues, progress);
+  this->LastRenderAborted = issues.Aborted;
   if (issues.NotConverged > 0 || issues.NotFinite > 0)
   {
     vtkWarningMacro("RAY_CAST: " << issues.NotConverged << " of " << rw * rh

@@ -54,7 +54,7 @@ bool vtkHighOrderRayCast::SetInput(
 
 bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
   const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
-  Issues* issues) const
+  Issues* issues, const vtkHighOrderProgressFunction& progress) const
 {
   std::atomic<long long> notConverged(0), notFinite(0);
   if (!this->Ready || !rgba)
@@ -62,8 +62,8 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
     return false;
   }
   const int width = rays.GetWidth(), height = rays.GetHeight();
-  vtkSMPTools::For(0, height, [&](vtkIdType jBegin, vtkIdType jEnd) {
-    for (vtkIdType j = jBegin; j < jEnd; ++j)
+  // One row is one "tile" of the batch loop; rows not traced stay zero.
+  const int rowsDone = vtkHighOrderForTileBatches(height, progress, [&](vtkIdType j) {
     {
       for (int i = 0; i < width; ++i)
       {
@@ -106,6 +106,7 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
   {
     issues->NotConverged = notConverged.load();
     issues->NotFinite = notFinite.load();
+    issues->Aborted = rowsDone < height;
   }
   return true;
 }

@@ -30,6 +30,7 @@
 #include "hovCurvedRayCaster.h" // the caster
 #include "hovCurvedSegment.h"   // CurvedSegmentSettings
 #include "vtkHighOrderRayCastCells.h" // grid conversion
+#include "vtkHighOrderTileBatches.h"  // progress batches
 
 #include "vtkType.h" // vtkMTimeType
 
@@ -76,10 +77,14 @@ public:
   {
     long long NotConverged = 0;
     long long NotFinite = 0;
+    bool Aborted = false; ///< @p progress returned true: the rows not traced are zero
   };
+  /// @p progress (may be empty): called on the calling thread after each of
+  /// about vtkHighOrderProgressBatches batches of rows with the fraction done;
+  /// returning true stops the render (vtkHighOrderTileBatches.h).
   bool Render(const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
     const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
-    Issues* issues = nullptr) const;
+    Issues* issues = nullptr, const vtkHighOrderProgressFunction& progress = {}) const;
 
 private:
   hov::CurvedRayCaster Caster;

@@ -6,7 +6,8 @@
 // that sets AbortExecute at 25% stops the render early (LastRenderAborted,
 // last progress < 1, no NaN, every pixel either equal to the full image or
 // zero, fewer non-zero pixels); the next render without abort is complete
-// and bit-identical again.
+// and bit-identical again. The same for the RAY_CAST mode (rows of rays in
+// batches), and an AbortCheckEvent observer of a render window stops both.
 #include "hovTestScenes.h"
 
 #include "vtkCallbackCommand.h"
@@ -150,6 +151,10 @@ int TestProgressAbort(int argc, char* argv[])
   CheckWindowAbort(ck, scene, cam);
   scene.Mapper->AddIsosurface(80.0, 1.0, 1.0, 0.2, 0.5);
   CheckCase(ck, scene, cam, "feature path (isosurface)");
+  scene.Mapper->RemoveAllIsosurfaces();
+  scene.Mapper->SetRenderModeToRayCast(); // rows of rays are its tiles
+  CheckCase(ck, scene, cam, "RAY_CAST");
+  CheckWindowAbort(ck, scene, cam);
   ck.Check(scene.NoMessages(), "no error or warning");
   return ck.Result();
 }
