@@ -5,7 +5,9 @@ field (default fit with azimuth/elevation/roll/zoom/view angle, perspective;
 explicit position/focal point/view up, orthographic with a parallel scale,
 per-pixel ordering, VTK-unstructured opacity, Wilhelms-Van Gelder emission,
 a component of a 3-component array, an isosurface, a clipping plane and a
-view-depth slab), the float image is rendered three ways:
+view-depth slab), and a third of the curved order-4 Lagrange plate in the
+RAY_CAST mode (tolerance 1e-4, a clipping plane), the float image is rendered
+three ways:
   1. directly with the wrapped C++ API (vtkHighOrderVolumeMapper, code written
      here, independent of highordervolume.batch),
   2. ``/usr/bin/python3 -m highordervolume.batch spec.json`` (.vti output),
@@ -74,6 +76,18 @@ SPECS = {
         "cell_ordering": "per_pixel_sort",
         "integration": "exact",
     },
+    "ray_cast": {
+        "_comment": "curved order-4 Lagrange hexahedra in the RAY_CAST mode",
+        "_data": "platehole_lagrange_hex_q4.vtu",
+        "array": "von_mises",
+        "image": {"width": 64, "height": 48},
+        "camera": {"azimuth": 25, "elevation": 35, "zoom": 1.2, "view_up": [0, 0, 1]},
+        "transfer_function": {"color": [[0, 0.1, 0.2, 0.9], [120, 0.2, 0.9, 0.3], [361, 1, 0.2, 0.1]],
+                              "opacity": [[0, 0.05], [150, 0.4], [361, 0.9]], "unit_distance": 0.05},
+        "clipping": {"planes": [{"origin": [0.5, 0.5, 0.05], "normal": [1, -0.3, 0]}]},
+        "render_mode": "ray_cast",
+        "ray_cast_tolerance": 1e-4,
+    },
 }
 
 
@@ -99,6 +113,9 @@ def api_image(spec, data):
     mapper.SetEmissionScale(tf.get("emission_scale", 1.0))
     if spec.get("cell_ordering") == "per_pixel_sort":
         mapper.SetCellOrderingToPerPixelSort()
+    if spec.get("render_mode") == "ray_cast":
+        mapper.SetRenderModeToRayCast()
+        mapper.SetRayCastTolerance(spec.get("ray_cast_tolerance", 1e-3))
     for iso in spec.get("isosurfaces", []):
         mapper.AddIsosurface(iso["value"], *iso["color"], iso["opacity"])
     clip = spec.get("clipping", {})
@@ -178,7 +195,7 @@ def read_png(path):
 
 
 def run_case(name, spec, args, exe, env):
-    data = os.path.join(os.path.abspath(args.data), "bracket_tet4_ccx.vtu")
+    data = os.path.join(os.path.abspath(args.data), spec.get("_data", "bracket_tet4_ccx.vtu"))
     folder = os.path.join(os.path.abspath(args.temp), "batch_" + name)
     os.makedirs(folder, exist_ok=True)
     results = {}
@@ -207,7 +224,7 @@ def run_case(name, spec, args, exe, env):
                   % (name, tool, diff))
     reference = api_image(spec, data)
     alpha = reference[:, 3]
-    check(alpha.max() > 0.3 and (alpha > 0.01).sum() > 500,
+    check(alpha.max() > 0.3 and (alpha > 0.01).sum() > 300,
           "%s: API image not trivial (max alpha %.3f, %d covered pixels)"
           % (name, alpha.max(), (alpha > 0.01).sum()))
     for tool in ("python", "cxx"):

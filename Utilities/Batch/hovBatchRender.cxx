@@ -112,6 +112,7 @@ void SetupMapper(const hov::BatchSpec& spec, vtkHighOrderVolumeMapper* mapper)
   mapper->SetIntegrationMethod(spec.Integration);
   mapper->SetCellOrdering(spec.CellOrdering);
   mapper->SetRenderMode(spec.RenderMode);
+  mapper->SetRayCastTolerance(spec.RayCastTolerance);
   for (size_t i = 0; i + 4 < spec.Isosurfaces.size(); i += 5)
   {
     const double* s = &spec.Isosurfaces[i];
@@ -230,7 +231,7 @@ int Render(const hov::BatchSpec& spec, vtkUnstructuredGrid* grid)
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(spec.Background[0], spec.Background[1], spec.Background[2]);
   SetupCamera(spec, grid->GetBounds(), renderer);
-  if (spec.RenderMode == vtkHighOrderVolumeMapper::CPU_ACCURATE)
+  if (spec.RenderMode != vtkHighOrderVolumeMapper::OPENGL_PROJECTION) // the CPU modes
   {
     if (!mapper->RenderImage(renderer->GetActiveCamera(), volume, spec.Width, spec.Height))
     {

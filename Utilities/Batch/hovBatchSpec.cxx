@@ -418,7 +418,8 @@ bool ParseBatchSpec(const std::string& text, const std::string& baseDir, BatchSp
   }
   if (!c.Object(root, "",
         { "data", "array", "image", "background", "camera", "projection", "transfer_function",
-          "isosurfaces", "clipping", "render_mode", "integration", "cell_ordering", "output" }))
+          "isosurfaces", "clipping", "render_mode", "ray_cast_tolerance", "integration",
+          "cell_ordering", "output" }))
   {
     return false;
   }
@@ -454,7 +455,14 @@ bool ParseBatchSpec(const std::string& text, const std::string& baseDir, BatchSp
   ParseFeatures(c, root, spec);
   if (root.isMember("render_mode"))
   {
-    c.Enum(root["render_mode"], "render_mode", { "cpu_accurate", "opengl_projection" }, spec.RenderMode);
+    c.Enum(root["render_mode"], "render_mode", { "cpu_accurate", "opengl_projection", "ray_cast" },
+      spec.RenderMode);
+  }
+  if (root.isMember("ray_cast_tolerance") &&
+    c.Positive(root["ray_cast_tolerance"], "ray_cast_tolerance", spec.RayCastTolerance) &&
+    (spec.RayCastTolerance < 1e-12 || spec.RayCastTolerance > 0.1))
+  {
+    c.Error("ray_cast_tolerance", "expected a number in [1e-12, 0.1]");
   }
   if (root.isMember("integration"))
   {
@@ -468,6 +476,10 @@ bool ParseBatchSpec(const std::string& text, const std::string& baseDir, BatchSp
   if (spec.RenderMode == 1 && (!spec.Isosurfaces.empty() || !spec.ClipPlanes.empty() || spec.ViewDepthClipping))
   {
     c.Error("render_mode", "opengl_projection does not support isosurfaces or clipping (use cpu_accurate)");
+  }
+  if (spec.RenderMode == 2 && !spec.Isosurfaces.empty())
+  {
+    c.Error("render_mode", "ray_cast does not support isosurfaces (use cpu_accurate)");
   }
   return errors.empty();
 }

@@ -51,6 +51,7 @@ struct BatchSpec
   double ViewDepthRange[2] = { 0.0, 1.0 };
 
   int RenderMode = 0;   ///< vtkHighOrderVolumeMapper::RenderModeType
+  double RayCastTolerance = 1e-3; ///< RAY_CAST: per-pixel, per-channel tolerance
   int Integration = 0;  ///< EXACT / APPROXIMATE
   int CellOrdering = 0; ///< VISIBILITY_SORT / PER_PIXEL_SORT
 

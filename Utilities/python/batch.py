@@ -31,14 +31,14 @@ from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderWind
 
 from . import vtkHighOrderVolumeMapper
 
-RENDER_MODES = ("cpu_accurate", "opengl_projection")
+RENDER_MODES = ("cpu_accurate", "opengl_projection", "ray_cast")
 OPACITY_SEMANTICS = ("gpu_compatible", "vtk_unstructured", "raw_extinction")
 EMISSION_MODELS = ("williams_max", "wilhelms_van_gelder")
 INTEGRATIONS = ("exact", "approximate")
 CELL_ORDERINGS = ("visibility_sort", "per_pixel_sort")
 TOP_FIELDS = ("data", "array", "image", "background", "camera", "projection",
               "transfer_function", "isosurfaces", "clipping", "render_mode",
-              "integration", "cell_ordering", "output")
+              "ray_cast_tolerance", "integration", "cell_ordering", "output")
 _MISSING = object()
 
 
@@ -272,7 +272,8 @@ def parse_spec(root, base_dir="."):
             "image": [512, 512], "background": [0.0, 0.0, 0.0], "camera": {},
             "projection": {"orthographic": False}, "transfer_function": {},
             "isosurfaces": [], "clip_planes": [], "view_depth_range": None,
-            "render_mode": 0, "integration": 0, "cell_ordering": 0, "output": {}}
+            "render_mode": 0, "ray_cast_tolerance": 1e-3, "integration": 0, "cell_ordering": 0,
+            "output": {}}
     if not c.obj(root, "", TOP_FIELDS):
         raise SpecError(c.errors)
     _parse_io(c, root, base_dir, spec)
@@ -297,10 +298,18 @@ def parse_spec(root, base_dir="."):
                        ("cell_ordering", CELL_ORDERINGS)):
         if key in root:
             spec[key] = c.enum(root[key], key, names)
+    if "ray_cast_tolerance" in root:
+        tol = c.positive(root["ray_cast_tolerance"], "ray_cast_tolerance")
+        if tol is not None and not 1e-12 <= tol <= 0.1:
+            c.error("ray_cast_tolerance", "expected a number in [1e-12, 0.1]")
+        elif tol is not None:
+            spec["ray_cast_tolerance"] = tol
     if spec["render_mode"] == 1 and (spec["isosurfaces"] or spec["clip_planes"]
                                      or spec["view_depth_range"]):
         c.error("render_mode",
                 "opengl_projection does not support isosurfaces or clipping (use cpu_accurate)")
+    if spec["render_mode"] == 2 and spec["isosurfaces"]:
+        c.error("render_mode", "ray_cast does not support isosurfaces (use cpu_accurate)")
     if c.errors:
         raise SpecError(c.errors)
     return spec
@@ -376,6 +385,7 @@ def setup_mapper(spec, mapper):
     mapper.SetIntegrationMethod(spec["integration"])
     mapper.SetCellOrdering(spec["cell_ordering"])
     mapper.SetRenderMode(spec["render_mode"])
+    mapper.SetRayCastTolerance(spec["ray_cast_tolerance"])
     for value, (r, g, b), opacity in spec["isosurfaces"]:
         mapper.AddIsosurface(value, r, g, b, opacity)
     for origin, normal in spec["clip_planes"]:
@@ -442,7 +452,7 @@ def render(spec, grid=None, progress=None):
     renderer.SetBackground(spec["background"])
     setup_camera(spec, grid.GetBounds(), renderer)
     width, height = spec["image"]
-    if spec["render_mode"] == 0:
+    if spec["render_mode"] != 1:  # the CPU modes
         if not mapper.RenderImage(renderer.GetActiveCamera(), volume, width, height):
             raise RuntimeError("render failed (see the messages above)")
     else:
