@@ -9,7 +9,9 @@ xvfb-run -a -s "-screen 0 1280x1024x24 -noreset"):
 
   hov_cpu_<s>       ours, CPU_ACCURATE, exact integral, per-pixel sort: the REFERENCE of
                     opacity semantics <s> (vtk = VTK-unstructured a/u, gpu = GPU-compatible
-                    -ln(1-a)/u); native cells
+                    -ln(1-a)/u); native cells. For data with cells only RAY_CAST renders
+                    (Lagrange), hov_ray_<s> at its "pixel-exact" tolerance 1e-3 is the
+                    reference instead.
   hov_proj_m<k>_<s> ours, OPENGL_PROJECTION with ProjectionColorMethod M<k> (k = 0..3)
   hov_ray_<s>       ours, RAY_CAST (only if the mapper has that render mode)
   vtk_pt            vtkProjectedTetrahedraMapper                        } tetrahedra of the
@@ -37,6 +39,7 @@ import sys
 import time
 
 import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow, vtkStringOutputWindow
 from vtkmodules.vtkRenderingVolume import (vtkGPUVolumeRayCastMapper,
                                            vtkProjectedTetrahedraMapper,
@@ -107,6 +110,30 @@ def has_ray_cast():
     return hasattr(vtkHighOrderVolumeMapper, "RAY_CAST")
 
 
+# Cell types CPU_ACCURATE renders (linear and quadratic, straight-sided); other volumetric
+# cells (Lagrange, Bezier) need RAY_CAST, which then gives the reference image.
+CPU_CELL_TYPES = {10, 11, 12, 13, 14, 24, 25, 26, 27, 29}
+
+
+def needs_ray_reference(grid):
+    """True if the grid has cells CPU_ACCURATE does not render and RAY_CAST is available."""
+    types = set(np.unique(vtk_to_numpy(grid.GetCellTypesArray())).tolist()) \
+        if grid.GetNumberOfCells() else set()
+    return has_ray_cast() and bool(types - CPU_CELL_TYPES)
+
+
+def reference_spec(semantics, ray_reference):
+    """The reference method of one opacity semantics: CPU_ACCURATE, or RAY_CAST at its
+    default "pixel-exact" tolerance for cells only the ray caster renders."""
+    if ray_reference:
+        return {"key": "hov_ray_" + semantics, "input": "native", "semantics": semantics,
+                "reference": True, "name": "ours RAY_CAST (reference, pixel-exact)",
+                "make": lambda s=semantics: hov_mapper(s, "ray")}
+    return {"key": "hov_cpu_" + semantics, "input": "native", "semantics": semantics,
+            "reference": True, "name": "ours CPU_ACCURATE (reference)",
+            "make": lambda s=semantics: hov_mapper(s, "cpu")}
+
+
 def ug_raycast(image_sample_distance=1.0):
     m = vtkUnstructuredGridVolumeRayCastMapper()
     m.SetRayIntegrator(vtkUnstructuredGridLinearRayIntegrator())
@@ -132,19 +159,18 @@ def gpu_mapper(sample_distance):
     return m
 
 
-def method_specs(semantics, resolutions, ray_cast):
+def method_specs(semantics, resolutions, ray_cast, ray_reference=False):
     """All methods as dicts: key, name, semantics ('vtk'|'gpu'), input ('native'|'tets'|
-    'resample'), make (mapper factory; for 'resample' it takes the sample distance)."""
+    'resample'), make (mapper factory; for 'resample' it takes the sample distance); the
+    reference of each semantics first ("reference": True)."""
     specs = []
     for s in semantics:
-        specs.append({"key": "hov_cpu_" + s, "input": "native", "semantics": s,
-                      "name": "ours CPU_ACCURATE (reference)",
-                      "make": lambda s=s: hov_mapper(s, "cpu")})
+        specs.append(reference_spec(s, ray_reference))
         for k in range(4):
             specs.append({"key": "hov_proj_m%d_%s" % (k, s), "input": "native", "semantics": s,
                           "name": "ours OPENGL_PROJECTION M%d" % k,
                           "make": lambda s=s, k=k: hov_mapper(s, "proj", k)})
-        if ray_cast:
+        if ray_cast and not ray_reference:
             specs.append({"key": "hov_ray_" + s, "input": "native", "semantics": s,
                           "name": "ours RAY_CAST", "make": lambda s=s: hov_mapper(s, "ray")})
     if "vtk" in semantics:
@@ -179,6 +205,7 @@ class Scene:
                                     args.azimuth, args.elevation, args.zoom)
         self.subdivisions = args.subdivisions
         self.gpu_sample_factor = args.gpu_sample_factor
+        self.ray_reference = needs_ray_reference(self.grid)
         self.cache = {}
 
     def prepare(self, spec):
@@ -303,10 +330,10 @@ def parse_args(argv=None):
     return args
 
 
-def selected_specs(args):
-    specs = method_specs(args.semantics, args.resolutions, has_ray_cast())
+def selected_specs(args, ray_reference=False):
+    specs = method_specs(args.semantics, args.resolutions, has_ray_cast(), ray_reference)
     patterns = [p.strip() for p in args.methods.split(",") if p.strip()]
-    return [s for s in specs if s["key"].startswith("hov_cpu_")
+    return [s for s in specs if s.get("reference")
             or any(fnmatch.fnmatch(s["key"], p) for p in patterns)]
 
 
@@ -323,7 +350,7 @@ def add_errors(row, image, reference, ref_key):
 def run(args):
     """Render every selected method; returns (rows, montage entries, scene)."""
     scene = Scene(args)
-    specs = selected_specs(args)
+    specs = selected_specs(args, scene.ray_reference)
     os.makedirs(args.out, exist_ok=True)
     log = vtkStringOutputWindow()
     vtkOutputWindow.SetInstance(log)
@@ -345,7 +372,7 @@ def run(args):
         if image is not None:
             row["image"] = "compare_%s.npy" % spec["key"]
             np.save(os.path.join(args.out, row["image"]), image)
-        if spec["key"].startswith("hov_cpu_"):
+        if spec.get("reference"):
             refs[spec["semantics"]] = (spec["key"], image)
         ref_key, reference = refs.get(spec["semantics"], ("", None))
         add_errors(row, image, reference, ref_key)
@@ -366,19 +393,20 @@ def notes(args, scene):
            args.elevation, args.zoom, "/".join("%.3g" % v for v in b),
            scene.prop.GetScalarOpacityUnitDistance()),
         "Errors: |image - reference| per channel R/G/B over all pixels, RGB over black in "
-        "[0,1]; reference: our CPU_ACCURATE float image in the row's opacity semantics "
+        "[0,1]; reference: our %s float image in the row's opacity semantics "
         "(VTK-unstructured a/u for VTK's unstructured mappers, GPU-compatible -ln(1-a)/u for "
         "the GPU ray caster). VTK's images are 8-bit captures (0.002 is quantisation). "
         "Times: seconds, first render (includes setup and sorting structures) and the median "
         "of %d further renders; prep: tessellation / resampling (shared by the rows using that "
         "input). Memory: resident-set growth over the row, and the rendered dataset's size."
-        % args.frames]
+        % ("RAY_CAST (tolerance 1e-3; the cells need the ray caster)" if scene.ray_reference
+           else "CPU_ACCURATE", args.frames)]
 
 
 def main(argv=None):
     args = parse_args(argv)
     if args.list:
-        for spec in selected_specs(args):
+        for spec in selected_specs(args, needs_ray_reference(rt.read_grid(args.data, args.array))):
             print(spec["key"], "-", spec["name"])
         return 0
     try:

@@ -6,7 +6,8 @@
 Studies (knob, reference, cost in samples):
   resample            vtkResampleToImage points on the longest side + vtkGPUVolumeRayCastMapper
                       (sample distance --gpu-sample-factor x voxel spacing); reference: our
-                      CPU_ACCURATE image, GPU-compatible semantics; samples = voxels
+                      CPU_ACCURATE image (RAY_CAST for Lagrange cells), GPU-compatible
+                      semantics; samples = voxels
   gpu-sample          GPU sample distance as a fraction of the voxel spacing of a
                       --resolution resample; samples = 1 / fraction
   ugrc-sample         vtkUnstructuredGridVolumeRayCastMapper ImageSampleDistance (pixels
@@ -101,8 +102,7 @@ def run_study(args):
     progress = cmp.Progress(len(values) + 1)
     rt.warm_up_gl()
     os.makedirs(args.out, exist_ok=True)
-    ref_spec = {"key": "reference_" + sem, "input": "native", "semantics": sem,
-                "name": "ours CPU_ACCURATE", "make": lambda: cmp.hov_mapper(sem, "cpu")}
+    ref_spec = dict(cmp.reference_spec(sem, scene.ray_reference), key="reference_" + sem)
     progress.start(ref_spec["key"])
     ref_row, _, reference = cmp.run_one(scene, ref_spec, args.frames, catcher, log, progress)
     progress.finish(ref_row["status"])
