@@ -378,8 +378,9 @@ public:
    * RayCastTolerance per channel). Cells: Lagrange tetrahedra, hexahedra,
    * wedges (71-73, curved, HigherOrderDegrees or node counts) and linear and
    * quadratic tetrahedra, hexahedra, voxels, wedges (10-13, 24-26, 29, 32),
+   * and Bezier tetrahedra, hexahedra, wedges (78-80, not rational),
    * converted exactly to Lagrange cells (vtkHighOrderRayCastCells); other
-   * types (pyramids, Bezier, 2D cells), NaN/Inf nodes and inverted or
+   * types (pyramids, 2D cells), NaN/Inf nodes and inverted or
    * degenerate cells are skipped with one warning giving the counts. Point
    * scalars only. The float image is in GetFloatImage(), the per-pixel error
    * estimate in GetRayCastErrorImage(); RenderImage() uses this mode too.

@@ -4,6 +4,7 @@
 #include "hovLagrangeBasis.h" // node parametric coordinates, Jacobians
 
 #include "vtkCellData.h"
+#include "vtkPointData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkGenericCell.h" // the source cell's shape functions
@@ -90,6 +91,20 @@ int CheckJacobian(const hov::LagrangeBasis& basis, const double* x)
   return (negative && basis.GetShape() != hov::LagrangeShape::Wedge) ? -1 : 1;
 }
 
+/// True if a point of the cell has a rational weight other than 1.
+bool IsRational(vtkDataArray* weights, const vtkIdType* ids, vtkIdType n)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (ids[i] < 0 || ids[i] >= weights->GetNumberOfTuples() ||
+      weights->GetComponent(ids[i], 0) != 1.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 double PointValue(vtkDataArray* scalars, vtkIdType i, int component)
 {
   const int nc = scalars->GetNumberOfComponents();
@@ -122,6 +137,7 @@ vtkIdType vtkHighOrderRayCastCells::Convert(
     this->Scalars[i] = PointValue(scalars, i, component);
   }
   vtkDataArray* degreesArray = grid->GetCellData()->GetHigherOrderDegrees();
+  vtkDataArray* weights = grid->GetPointData()->GetRationalWeights();
   const bool useDegrees = degreesArray && degreesArray->GetNumberOfComponents() == 3 &&
     degreesArray->GetNumberOfTuples() == this->Cells;
   std::map<std::tuple<int, int, int, int, int>, hov::LagrangeBasis> bases;
@@ -135,12 +151,24 @@ vtkIdType vtkHighOrderRayCastCells::Convert(
     grid->GetCellPoints(c, n, ids);
     int lagrangeType = type, order = 0, deg[3] = { 0, 0, 0 };
     const bool native = type >= 71 && type <= 73;
-    if (!native && !ConversionTarget(type, lagrangeType, order))
+    // Bezier tetrahedra, hexahedra and wedges (78-80): the Lagrange cell of the same
+    // type and order through the same polynomial (its values at the Lagrange nodes).
+    const bool bezier = type >= VTK_BEZIER_TETRAHEDRON && type <= VTK_BEZIER_WEDGE;
+    if (bezier)
+    {
+      lagrangeType = type - (VTK_BEZIER_TETRAHEDRON - VTK_LAGRANGE_TETRAHEDRON);
+    }
+    else if (!native && !ConversionTarget(type, lagrangeType, order))
     {
       this->FirstUnsupportedType = this->Unsupported++ ? this->FirstUnsupportedType : type;
       continue;
     }
-    if (native && useDegrees)
+    if (bezier && weights && IsRational(weights, ids, n))
+    {
+      ++this->Rational; // not a polynomial: no Lagrange cell represents it
+      continue;
+    }
+    if ((native || bezier) && useDegrees)
     {
       for (int k = 0; k < 3; ++k)
       {
@@ -151,15 +179,16 @@ vtkIdType vtkHighOrderRayCastCells::Convert(
     {
       deg[0] = deg[1] = deg[2] = order;
     }
-    const int nodes = native ? static_cast<int>(n)
-                             : hov::LagrangeNodeCount(static_cast<hov::LagrangeShape>(lagrangeType), deg);
+    const int nodes = (native || bezier)
+      ? static_cast<int>(n)
+      : hov::LagrangeNodeCount(static_cast<hov::LagrangeShape>(lagrangeType), deg);
     const auto key = std::make_tuple(lagrangeType, nodes, deg[0], deg[1], deg[2]);
     auto it = bases.find(key);
     if (it == bases.end())
     {
       hov::LagrangeBasis basis;
       const bool ok = basis.Initialize(static_cast<hov::LagrangeShape>(lagrangeType), nodes,
-        (native && !useDegrees) ? nullptr : deg);
+        ((native || bezier) && !useDegrees) ? nullptr : deg);
       it = bases.emplace(key, ok ? basis : hov::LagrangeBasis()).first;
     }
     const hov::LagrangeBasis& basis = it->second;
@@ -246,7 +275,12 @@ std::string vtkHighOrderRayCastCells::Summary() const
   {
     out += std::to_string(this->Unsupported) + " cells of types the ray caster does not handle " +
       "(first type: " + std::to_string(this->FirstUnsupportedType) +
-      "; handled: 10-13, 24-26, 29, 32, 71-73)";
+      "; handled: 10-13, 24-26, 29, 32, 71-73, 78-80)";
+  }
+  if (this->Rational)
+  {
+    out += (out.empty() ? "" : ", ") + std::to_string(this->Rational) +
+      " rational Bezier cells (RationalWeights other than 1: not polynomial)";
   }
   if (this->NonFinite)
   {

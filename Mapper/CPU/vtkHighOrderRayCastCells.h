@@ -18,9 +18,15 @@
  * reproduces the source cell's geometry and field exactly wherever the
  * serendipity space lies inside the Lagrange space (it does: Q2 contains the
  * 20-node serendipity space, the 18-node wedge space contains the 15-node one).
+ * Bezier tetrahedra, hexahedra and wedges (78, 79, 80, any order, from
+ * HigherOrderDegrees or the node count) become the Lagrange cell of the same
+ * type and order the same way (VTK's Bezier shape functions at the Lagrange
+ * nodes): the same polynomial map and field, exactly up to rounding. Rational
+ * Bezier cells (a RationalWeights point array with a weight other than 1)
+ * are not polynomials and are skipped.
  *
- * Skipped, counted per reason: other types (pyramids 14/27, Bezier 78-80,
- * 2D Lagrange cells 74/81, polyhedra, ...), NaN/Inf points or scalars, point
+ * Skipped, counted per reason: other types (pyramids 14/27, Lagrange and
+ * Bezier pyramids 74/81, 2D cells, polyhedra, ...), rational Bezier cells, NaN/Inf points or scalars, point
  * ids out of range, and cells whose Jacobian determinant is <= 1e-12 x
  * size^3 at some node (inverted or degenerate; sampled at the nodes, so a
  * tangle strictly between nodes is not detected here).
@@ -52,6 +58,7 @@ public:
   vtkIdType Native = 0;      ///< Lagrange cells kept as they are
   vtkIdType Converted = 0;   ///< linear/quadratic cells converted
   vtkIdType Unsupported = 0; ///< skipped: type not handled
+  vtkIdType Rational = 0;    ///< skipped: rational Bezier cell
   int FirstUnsupportedType = -1;
   vtkIdType NonFinite = 0; ///< skipped: NaN/Inf point or scalar, bad id or node count
   vtkIdType Inverted = 0;  ///< skipped: Jacobian <= 0 at a node
