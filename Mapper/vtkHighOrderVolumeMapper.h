@@ -146,7 +146,8 @@ public:
 
   ///@{
   /// Relative tolerance of the linearised GPU-compatible extinction (default 1e-4).
-  vtkSetClampMacro(GPUOpacityTolerance, double, 1e-12, 0.1);
+  /// Clamped to [1e-12, 0.1]; NaN/Inf is refused with an error (the value stays).
+  virtual void SetGPUOpacityTolerance(double value);
   vtkGetMacro(GPUOpacityTolerance, double);
   ///@}
 
@@ -239,7 +240,8 @@ public:
    * A pixel stops compositing once its transmittance is at most this value
    * (the error this causes is at most the value). Default 1e-9; 0 disables.
    */
-  vtkSetClampMacro(TerminationTransmittance, double, 0.0, 0.1);
+  /// Clamped to [0.0, 0.1]; NaN/Inf is refused with an error (the value stays).
+  virtual void SetTerminationTransmittance(double value);
   vtkGetMacro(TerminationTransmittance, double);
   ///@}
 
@@ -339,7 +341,8 @@ public:
   vtkSetMacro(Splatting, bool);
   vtkGetMacro(Splatting, bool);
   vtkBooleanMacro(Splatting, bool);
-  vtkSetClampMacro(SplatPixelThreshold, double, 0.0, 1e6);
+  /// Clamped to [0.0, 1e6]; NaN/Inf is refused with an error (the value stays).
+  virtual void SetSplatPixelThreshold(double value);
   vtkGetMacro(SplatPixelThreshold, double);
   /// Cells splatted in the last render.
   vtkGetMacro(NumberOfSplattedCells, vtkIdType);
@@ -377,10 +380,10 @@ public:
    * enclosures, breakpoints located, adaptive quadrature to
    * RayCastTolerance per channel). Cells: Lagrange tetrahedra, hexahedra,
    * wedges (71-73, curved, HigherOrderDegrees or node counts) and linear and
-   * quadratic tetrahedra, hexahedra, voxels, wedges (10-13, 24-26, 29, 32),
-   * and Bezier tetrahedra, hexahedra, wedges (78-80, not rational),
-   * converted exactly to Lagrange cells (vtkHighOrderRayCastCells); other
-   * types (pyramids, 2D cells), NaN/Inf nodes and inverted or
+   * quadratic tetrahedra, hexahedra, voxels, wedges, pyramids (10-14,
+   * 24-27, 29, 32), and Bezier tetrahedra, hexahedra, wedges (78-80, not
+   * rational), converted exactly to Lagrange cells (vtkHighOrderRayCastCells);
+   * other types (Lagrange/Bezier pyramids 74/81, 2D cells), NaN/Inf nodes and inverted or
    * degenerate cells are skipped with one warning giving the counts. Point
    * scalars only. The float image is in GetFloatImage(), the per-pixel error
    * estimate in GetRayCastErrorImage(); RenderImage() uses this mode too.
@@ -410,13 +413,15 @@ public:
    * premultiplied RGBA (ElVis's "pixel-exact" 0.001 by default), handed to
    * the segment quadrature (CurvedSegmentSettings::Quadrature.Tolerance).
    */
-  vtkSetClampMacro(RayCastTolerance, double, 1e-12, 0.1);
+  /// Clamped to [1e-12, 0.1]; NaN/Inf is refused with an error (the value stays).
+  virtual void SetRayCastTolerance(double value);
   vtkGetMacro(RayCastTolerance, double);
   ///@}
 
   ///@{
   /// RAY_CAST interaction threshold in frames per second (see RenderMode).
-  vtkSetClampMacro(RayCastInteractiveUpdateRate, double, 0.0, 1e6);
+  /// Clamped to [0.0, 1e6]; NaN/Inf is refused with an error (the value stays).
+  virtual void SetRayCastInteractiveUpdateRate(double value);
   vtkGetMacro(RayCastInteractiveUpdateRate, double);
   /// Whether the last RAY_CAST frame was the cheaper interactive one.
   vtkGetMacro(LastRenderWasInteractive, bool);

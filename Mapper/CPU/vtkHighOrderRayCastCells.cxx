@@ -28,6 +28,13 @@ bool ConversionTarget(int type, int& lagrangeType, int& order)
     case VTK_VOXEL:
     case VTK_HEXAHEDRON: lagrangeType = 72; order = 1; return true;
     case VTK_WEDGE: lagrangeType = 73; order = 1; return true;
+    // vtkPyramid's interpolant is the trilinear hexahedron's with the top face
+    // collapsed to the apex (N0..N3 = (1-r)(1-s)(1-t) ..., N4 = t), and every
+    // vtkQuadraticPyramid function is of degree <= 2 in each of r, s, t: an
+    // order-1 (order-2) hexahedron whose top nodes sit at the apex carries the
+    // same map and field, node values from the pyramid's own interpolation.
+    case VTK_PYRAMID: lagrangeType = 72; order = 1; return true;
+    case VTK_QUADRATIC_PYRAMID: lagrangeType = 72; order = 2; return true;
     case VTK_QUADRATIC_TETRA: lagrangeType = 71; order = 2; return true;
     case VTK_QUADRATIC_HEXAHEDRON:
     case VTK_TRIQUADRATIC_HEXAHEDRON: lagrangeType = 72; order = 2; return true;
@@ -43,7 +50,7 @@ bool ConversionTarget(int type, int& lagrangeType, int& order)
  * writers), 0 degenerate or tangled (|det| <= 1e-12 size^3 or mixed signs),
  * -1 uniformly inverted (tetrahedra, hexahedra).
  */
-int CheckJacobian(const hov::LagrangeBasis& basis, const double* x)
+int CheckJacobian(const hov::LagrangeBasis& basis, const double* x, bool collapsedTop = false)
 {
   const int n = basis.GetNodeCount();
   double lo[3] = { x[0], x[1], x[2] }, hi[3] = { x[0], x[1], x[2] };
@@ -63,6 +70,10 @@ int CheckJacobian(const hov::LagrangeBasis& basis, const double* x)
   {
     double pc[3];
     k < n ? basis.NodeParametricCoords(k, pc) : basis.ParametricCenter(pc);
+    if (collapsedTop && pc[2] == 1.0)
+    {
+      continue; // a pyramid's apex (the collapsed top face): the Jacobian vanishes there
+    }
     basis.FunctionsAndDerivatives(pc, nullptr, derivs.data());
     double j[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 }; // j[3 r + d] = dx_r / dpc_d
     for (int i = 0; i < n; ++i)
@@ -235,7 +246,7 @@ vtkIdType vtkHighOrderRayCastCells::Convert(
         }
       }
     }
-    if (CheckJacobian(basis, x.data()) <= 0)
+    if (CheckJacobian(basis, x.data(), type == VTK_PYRAMID || type == VTK_QUADRATIC_PYRAMID) <= 0)
     {
       ++this->Inverted;
       continue;
@@ -275,7 +286,7 @@ std::string vtkHighOrderRayCastCells::Summary() const
   {
     out += std::to_string(this->Unsupported) + " cells of types the ray caster does not handle " +
       "(first type: " + std::to_string(this->FirstUnsupportedType) +
-      "; handled: 10-13, 24-26, 29, 32, 71-73, 78-80)";
+      "; handled: 10-14, 24-27, 29, 32, 71-73, 78-80)";
   }
   if (this->Rational)
   {

@@ -24,12 +24,20 @@
  * nodes): the same polynomial map and field, exactly up to rounding. Rational
  * Bezier cells (a RationalWeights point array with a weight other than 1)
  * are not polynomials and are skipped.
+ * Pyramids: vtkPyramid (14) is the trilinear hexahedron with its top face
+ * collapsed to the apex, and every vtkQuadraticPyramid (27) function has
+ * degree <= 2 in each of r, s, t, so they become order-1 and order-2
+ * Lagrange hexahedra (same InterpolateFunctions sampling) whose top nodes all
+ * sit at the apex. The Jacobian vanishes there (not checked at those nodes);
+ * the inversion accepts such a singular point when it maps to the target to
+ * rounding.
  *
- * Skipped, counted per reason: other types (pyramids 14/27, Lagrange and
- * Bezier pyramids 74/81, 2D cells, polyhedra, ...), rational Bezier cells, NaN/Inf points or scalars, point
- * ids out of range, and cells whose Jacobian determinant is <= 1e-12 x
- * size^3 at some node (inverted or degenerate; sampled at the nodes, so a
- * tangle strictly between nodes is not detected here).
+ * Skipped, counted per reason: other types (Lagrange and Bezier pyramids
+ * 74/81, the 19-node pyramid 37, 2D cells, polyhedra, ...), rational Bezier
+ * cells, NaN/Inf points or scalars, point ids out of range, and cells whose
+ * Jacobian determinant is <= 1e-12 x size^3 at some node (inverted or
+ * degenerate; sampled at the nodes, so a tangle strictly between nodes is not
+ * detected here).
  *
  * Thread safety: Convert() is re-entrant (no shared state).
  * @sa vtkHighOrderRayCast, hovLagrangeBasis.h

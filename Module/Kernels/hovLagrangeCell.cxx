@@ -65,7 +65,11 @@ InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], 
     const double minusF[3] = { -F[0], -F[1], -F[2] };
     if (!Solve3x3(J, minusF, step, s.SingularTolerance))
     {
-      return InversionStatus::SingularJacobian;
+      // A point where the map is singular (a collapsed vertex, such as a
+      // pyramid's apex as a degenerate hexahedron) that already maps to the
+      // target to rounding is a solution: no step can improve it.
+      return fNorm <= floor && iter > 0 ? InversionStatus::Converged
+                                        : InversionStatus::SingularJacobian;
     }
     const double length = NormInf(step);
     if (!(length <= s.MaxStep))

@@ -7,8 +7,8 @@
 //  - finite, 0 <= alpha <= 1, error estimates below ElVis's 1e-3, the plate
 //    visible and the hole (radius 0.25 about the origin) exactly transparent;
 //  - an opaque depth of 0 everywhere hides everything;
-//  - a linear pyramid added to the grid is skipped with a message naming
-//    its type, and the image is unchanged.
+//  - a Lagrange pyramid (74) added to the grid is skipped with a message
+//    naming its type, and the image is unchanged.
 #include "vtkHighOrderRayCast.h"
 #include "vtkHighOrderViewRays.h"
 
@@ -122,18 +122,18 @@ int TestCurvedRayCastImage(int argc, char* argv[])
   }
   ck.Check(allZero, "opaque depth 0 hides everything");
 
-  // A linear pyramid added (a type the ray caster does not handle): skipped
+  // A Lagrange pyramid added (a type the ray caster does not handle): skipped
   // with a message, the image unchanged.
   vtkNew<vtkUnstructuredGrid> mixed;
   mixed->DeepCopy(grid);
   const vtkIdType pyramid[5] = { 0, 1, 2, 3, 4 };
-  mixed->InsertNextCell(VTK_PYRAMID, 5, pyramid);
+  mixed->InsertNextCell(VTK_LAGRANGE_PYRAMID, 5, pyramid);
   vtkHighOrderRayCast third;
   std::string why;
   const bool built = third.SetInput(mixed, mixed->GetPointData()->GetScalars(), 0, &why);
   ck.Check(built && third.GetConversion().Unsupported == 1 &&
-      why.find("first type: 14") != std::string::npos,
-    "linear pyramid skipped: " + why);
+      why.find("first type: 74") != std::string::npos,
+    "Lagrange pyramid skipped: " + why);
   std::vector<float> rgba3(4 * W * H);
   third.Render(rays, tf, settings, rgba3.data(), nullptr, nullptr);
   double diff3 = 0.0;

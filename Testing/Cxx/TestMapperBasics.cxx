@@ -14,7 +14,11 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include "vtkCommand.h"
+
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 int TestMapperBasics(int, char*[])
@@ -37,6 +41,36 @@ int TestMapperBasics(int, char*[])
   mapper->SetOpacitySemantics(99);
   check(mapper->GetOpacitySemantics() == vtkHighOrderVolumeMapper::RAW_EXTINCTION, "clamped setter");
   check(mapper->GetVisibilitySort() != nullptr, "a default visibility sort");
+  {
+    // Real-valued knobs: clamped like vtkSetClampMacro, NaN/Inf refused with
+    // an error naming the setter (vtkSetClampMacro would store the NaN).
+    vtkNew<vtkTest::ErrorObserver> observer;
+    mapper->AddObserver(vtkCommand::ErrorEvent, observer);
+    mapper->SetRayCastTolerance(1e-4);
+    mapper->SetRayCastTolerance(std::numeric_limits<double>::quiet_NaN());
+    check(mapper->GetRayCastTolerance() == 1e-4 && observer->GetError() &&
+        observer->GetErrorMessage().find("SetRayCastTolerance") != std::string::npos,
+      "NaN tolerance refused with an error, value kept");
+    observer->Clear();
+    mapper->SetTerminationTransmittance(std::numeric_limits<double>::infinity());
+    mapper->SetGPUOpacityTolerance(-std::numeric_limits<double>::infinity());
+    mapper->SetSplatPixelThreshold(std::numeric_limits<double>::quiet_NaN());
+    mapper->SetRayCastInteractiveUpdateRate(std::numeric_limits<double>::quiet_NaN());
+    check(observer->GetError() && std::isfinite(mapper->GetTerminationTransmittance()) &&
+        std::isfinite(mapper->GetGPUOpacityTolerance()) &&
+        std::isfinite(mapper->GetSplatPixelThreshold()) &&
+        std::isfinite(mapper->GetRayCastInteractiveUpdateRate()),
+      "non-finite values refused by every real-valued setter");
+    observer->Clear();
+    mapper->SetRayCastTolerance(5.0);
+    mapper->SetTerminationTransmittance(-1.0);
+    check(mapper->GetRayCastTolerance() == 0.1 && mapper->GetTerminationTransmittance() == 0.0 &&
+        !observer->GetError(),
+      "finite values clamped silently");
+    mapper->SetRayCastTolerance(1e-3);
+    mapper->SetTerminationTransmittance(1e-9);
+    mapper->RemoveObserver(observer);
+  }
   std::ostringstream printed;
   mapper->Print(printed);
   check(printed.str().find("OpacitySemantics: 2") != std::string::npos, "PrintSelf");

@@ -2,7 +2,8 @@
 // tetrahedra plus cells the ray caster must skip, each reason counted in one
 // warning, the rest rendered exactly as without them, no NaN pixel:
 //  - unsupported types: Lagrange pyramid 74, Bezier pyramid 81, Lagrange
-//    triangle 69 (a 2D cell), linear pyramid 14;
+//    triangle 69 (a 2D cell), a second Lagrange pyramid with 14 nodes
+//    (linear and quadratic pyramids, 14 and 27, are rendered: TestRayCastPyramid);
 //  - an inverted (mirrored) order-2 Lagrange tetrahedron, curved;
 //  - a tangled order-2 Lagrange tetrahedron (a mid-edge node pushed through
 //    the opposite face: the Jacobian changes sign);
@@ -17,6 +18,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkPointData.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -64,7 +66,11 @@ int TestRayCastBadInput(int, char*[])
   bad.AddCell(VTK_LAGRANGE_PYRAMID, { p[0], p[1], p[3], p[2], p[4] });
   bad.AddCell(VTK_BEZIER_PYRAMID, { p[0], p[1], p[3], p[2], p[4] });
   bad.AddCell(VTK_LAGRANGE_TRIANGLE, { p[0], p[1], p[2] });
-  bad.AddCell(VTK_PYRAMID, { p[0], p[1], p[3], p[2], p[4] });
+  {
+    std::vector<vtkIdType> many(14, p[0]);
+    std::copy(p.begin(), p.end(), many.begin());
+    bad.AddCell(VTK_LAGRANGE_PYRAMID, many);
+  }
   const double good[4][3] = { { 5, 5, 5 }, { 6, 5, 5 }, { 5, 6, 5 }, { 5, 5, 6 } };
   const double mirrored[4][3] = { { 5, 5, 5 }, { 5, 6, 5 }, { 6, 5, 5 }, { 5, 5, 6 } };
   const double curve[3] = { 0.0, -0.1, 0.0 }, through[3] = { 0.0, 1.5, 1.5 }, none[3] = { 0, 0, 0 };

@@ -161,4 +161,35 @@ TEST(LagrangeInversion, BadInputIsReportedNotNaN)
   EXPECT_TRUE(std::isfinite(pc[0]) && std::isfinite(pc[1]) && std::isfinite(pc[2]));
   EXPECT_NE(std::string(hov::InversionStatusName(res.Status)).find("singular"), std::string::npos);
 }
+/// A pyramid as an order-1 hexahedron whose top face is collapsed to the apex
+/// (how the ray caster takes VTK pyramids): the Jacobian is singular at the
+/// apex, yet points at and near it invert (to a point mapping to them to
+/// rounding) instead of failing with "singular Jacobian".
+TEST(LagrangeInversion, CollapsedTopFaceInvertsAtTheApex)
+{
+  hovtest::LagrangeTestCell cell;
+  ASSERT_TRUE(cell.Basis.Initialize(LagrangeShape::Hexahedron, 8));
+  cell.Points.resize(24);
+  cell.Scalars.assign(8, 1.0);
+  for (int k = 0; k < 8; ++k)
+  {
+    double pc[3];
+    cell.Basis.NodeParametricCoords(k, pc);
+    const bool top = pc[2] == 1.0;
+    cell.Points[3 * k] = top ? 0.5 : pc[0];
+    cell.Points[3 * k + 1] = top ? 0.5 : pc[1];
+    cell.Points[3 * k + 2] = top ? 1.0 : 0.0;
+  }
+  for (double below : { 0.0, 1e-14, 1e-10, 1e-6 })
+  {
+    const double x[3] = { 0.5, 0.5, 1.0 - below };
+    double pc[3] = { 0.5, 0.5, 0.5 };
+    const hov::LagrangeInversionResult res = hov::InvertLagrangeGeometry(cell.View(), x, pc);
+    EXPECT_EQ(res.Status, hov::InversionStatus::Converged) << "below apex " << below;
+    double y[3];
+    hov::EvaluateLagrangePosition(cell.View(), pc, y, nullptr);
+    EXPECT_NEAR(y[2], x[2], 1e-12) << "below apex " << below;
+    EXPECT_NEAR(pc[2], 1.0 - below, 1e-8) << "below apex " << below;
+  }
+}
 }

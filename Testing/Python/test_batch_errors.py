@@ -168,6 +168,29 @@ def main():
         proc = run(command, path, env)
         check(proc.returncode == 2 and "(file): not valid JSON" in proc.stderr,
               "invalid JSON (%s): %r" % (tool, proc.stderr.strip()[:200]))
+
+    # Non-finite numbers: NaN/Infinity are not JSON and a literal beyond the
+    # double range is not a number (jsoncpp's words): both refuse the file.
+    text = json.dumps(base_spec(data))
+    raw_cases = [
+        ("NaN token", text.replace('"azimuth": 10', '"azimuth": NaN'), "(file): not valid JSON"),
+        ("Infinity token", text.replace('"azimuth": 10', '"azimuth": -Infinity'),
+         "(file): not valid JSON"),
+        ("overflowing number", text.replace('"azimuth": 10', '"azimuth": 1e999'),
+         "'1e999' is not a number"),
+        ("overflowing integer", text.replace('"width": 24', '"width": -1e999'),
+         "'-1e999' is not a number"),
+    ]
+    for name, body, expected in raw_cases:
+        with open(path, "w") as f:
+            f.write(body)
+        for tool, command in tools:
+            if os.path.exists(out):
+                os.remove(out)
+            proc = run(command, path, env)
+            ok = proc.returncode == 2 and expected in proc.stderr and not os.path.exists(out)
+            check(ok, "%s (%s): exit %d, message %r" % (name, tool, proc.returncode,
+                                                         proc.stderr.strip()[:300]))
     print("%d failure(s)" % len(FAILURES))
     return 1 if FAILURES else 0
 

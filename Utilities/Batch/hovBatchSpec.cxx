@@ -2,6 +2,7 @@
 
 #include <vtk_jsoncpp.h> // VTK's JSON parser (jsoncpp)
 
+#include <cmath>   // std::isfinite
 #include <fstream> // the spec file
 #include <memory>  // the reader
 #include <sstream> // messages
@@ -77,6 +78,11 @@ struct Checker
       return false;
     }
     out = v.asDouble();
+    if (!std::isfinite(out)) // jsoncpp reads 1e999 as infinity
+    {
+      this->Error(field, "expected a finite number");
+      return false;
+    }
     return true;
   }
 

@@ -92,6 +92,9 @@ class _Checker:
         if not _is_number(v):
             self.error(field, "expected a number, got " + _type_name(v))
             return None
+        if not math.isfinite(v):  # NaN, Infinity, 1e999 (json reads them; C++ refuses them)
+            self.error(field, "expected a finite number")
+            return None
         return float(v)
 
     def positive(self, v, field):
@@ -102,7 +105,7 @@ class _Checker:
         return x
 
     def integer(self, v, field, lo, hi):
-        if not _is_number(v) or float(v) != int(v):
+        if not _is_number(v) or not math.isfinite(v) or float(v) != int(v):
             self.error(field, "expected an integer, got " + _type_name(v))
             return None
         if not lo <= int(v) <= hi:
@@ -315,6 +318,19 @@ def parse_spec(root, base_dir="."):
     return spec
 
 
+def _reject_constant(token):
+    # Python's json reads NaN and Infinity; they are not JSON (jsoncpp refuses them too).
+    raise ValueError("%s is not a JSON number" % token)
+
+
+def _finite_float(token):
+    # A literal beyond the double range (1e999): refused as jsoncpp does, not read as infinity.
+    value = float(token)
+    if not math.isfinite(value):
+        raise ValueError("'%s' is not a number" % token)
+    return value
+
+
 def load_spec(path):
     """Read and check a spec file; a relative data path is resolved against its folder."""
     try:
@@ -323,7 +339,7 @@ def load_spec(path):
     except OSError as e:
         raise SpecError(["(file): cannot read '%s' (%s)" % (path, e.strerror)])
     try:
-        root = json.loads(text)
+        root = json.loads(text, parse_constant=_reject_constant, parse_float=_finite_float)
     except ValueError as e:
         raise SpecError(["(file): not valid JSON: %s" % e])
     return parse_spec(root, os.path.dirname(path) or ".")
