@@ -448,6 +448,20 @@ public:
   vtkGetMacro(ProjectionColorMethod, int);
   ///@}
 
+  ///@{
+  /**
+   * OPENGL_PROJECTION in GPU-compatible semantics: the tolerance of the
+   * linearised extinction table it draws from, in place of
+   * GPUOpacityTolerance (the CPU and ray-cast paths' 1e-4). The table's image
+   * error bound is twice the tolerance; the table's nodes, and so the slabs a
+   * cell is cut into, grow like tolerance^(-1/2) (the chord error of the
+   * convex -ln(1 - a) is quadratic in the interval). Default 1e-3
+   * (bound 2e-3, about 0.5/255). Clamped to [1e-12, 0.1]; NaN/Inf refused.
+   */
+  virtual void SetProjectionGPUOpacityTolerance(double value);
+  vtkGetMacro(ProjectionGPUOpacityTolerance, double);
+  ///@}
+
   enum ProjectionOrderType
   {
     EXACT_ORDER = 0,      ///< the VisibilitySort (default: vtkSteinVisibilitySort)
@@ -555,6 +569,7 @@ protected:
   double RayCastInteractiveUpdateRate = 1.0;
   bool LastRenderWasInteractive = false;
   int ProjectionColorMethod = EXACT_COLOR;
+  double ProjectionGPUOpacityTolerance = 1e-3;
   int ProjectionOrder = EXACT_ORDER;
   int ProjectionOpacityLookup = OPACITY_ANALYTIC;
   vtkIdType NumberOfProjectedTriangles = 0;
@@ -598,7 +613,7 @@ private:
     const float* depth);
   bool ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height);
   bool PrepareCells(vtkVolume* volume);
-  bool PrepareTransferFunction(vtkVolumeProperty* property);
+  bool PrepareTransferFunction(vtkVolumeProperty* property, double gpuTolerance);
   /// The front-to-back cell order: the VisibilitySort's, or any order with
   /// PER_PIXEL_SORT unless @p needVisibilitySort (cell projection has no
   /// per-pixel sort).

@@ -15,7 +15,9 @@
 // 552960 tets, RTData). Prints `uptime` before and after each dataset.
 // Options: --frames N, --data bracket|cube46|rt, --method 1|3, --order 1|0
 // (approximate|Stein), --lookup 0|1 (opacity texture|analytic), --no-vtk
-// (ours only, for profiling).
+// (ours only, for profiling), --semantics vtk|gpu (ours in VTK-unstructured,
+// the default, or GPU-compatible semantics), --gpu-tolerance T (ours: the
+// GPU-compatible table's tolerance, see SetProjectionGPUOpacityTolerance).
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -207,6 +209,8 @@ int main(int argc, char* argv[])
   int onlyOrder = -1;  // --order O: 1 approximate, 0 Stein
   int onlyLookup = -1; // --lookup K: 0 opacity texture, 1 analytic
   bool skipVTK = false; // --no-vtk: ours only (profiling)
+  bool gpuSemantics = false; // --semantics gpu: ours in GPU-compatible semantics
+  double gpuTolerance = -1.0; // --gpu-tolerance T
   for (int i = 1; i < argc; ++i)
   {
     const bool next = i + 1 < argc;
@@ -233,6 +237,14 @@ int main(int argc, char* argv[])
     else if (!std::strcmp(argv[i], "--no-vtk"))
     {
       skipVTK = true;
+    }
+    else if (!std::strcmp(argv[i], "--semantics") && next)
+    {
+      gpuSemantics = !std::strcmp(argv[++i], "gpu");
+    }
+    else if (!std::strcmp(argv[i], "--gpu-tolerance") && next)
+    {
+      gpuTolerance = std::atof(argv[++i]);
     }
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -315,7 +327,18 @@ int main(int argc, char* argv[])
         }
         vtkNew<vtkHighOrderVolumeMapper> ours;
         ours->SetInputData(d.Grid);
-        ours->SetOpacitySemanticsToVTKUnstructured();
+        if (gpuSemantics)
+        {
+          ours->SetOpacitySemanticsToGPUCompatible();
+        }
+        else
+        {
+          ours->SetOpacitySemanticsToVTKUnstructured();
+        }
+        if (gpuTolerance > 0.0)
+        {
+          ours->SetProjectionGPUOpacityTolerance(gpuTolerance);
+        }
         ours->SetRenderModeToOpenGLProjection();
         ours->SetProjectionOrder(order);
         ours->SetProjectionColorMethod(method);
