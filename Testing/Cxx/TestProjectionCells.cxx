@@ -68,15 +68,6 @@ vtkSmartPointer<vtkUnstructuredGrid> Zoo()
   return grid;
 }
 
-double MaxError(const Image& a, const Image& b)
-{
-  double m = 0;
-  for (size_t k = 0; k < 4 * a.Pixels(); ++k)
-  {
-    m = std::max(m, std::fabs(a.V[k] - b.V[k]));
-  }
-  return m;
-}
 }
 
 int TestProjectionCells(int, char*[])
@@ -115,7 +106,7 @@ int TestProjectionCells(int, char*[])
       scene.Mapper->SetProjectionColorMethod(vtkHighOrderVolumeMapper::EXACT_COLOR);
       win->Render();
       const Image proj = FloatImage(scene.Mapper);
-      const double err = MaxError(proj, cpu);
+      const double err = Diff(proj, cpu).Max;
       const std::string label = std::string(parallel ? "parallel" : "perspective") +
         (inside ? ", node inside the cells" : ", no node inside");
       std::cout << label << ": max |M3 - CPU| = " << err * 255 << "/255, slabs "

@@ -23,19 +23,6 @@
 
 using namespace hovTest;
 
-namespace
-{
-double MaxError(const Image& a, const Image& b)
-{
-  double m = 0;
-  for (size_t k = 0; k < 4 * a.Pixels(); ++k)
-  {
-    m = std::max(m, std::fabs(a.V[k] - b.V[k]));
-  }
-  return m;
-}
-}
-
 int TestProjectionGPUTolerance(int, char*[])
 {
   Checker ck;
@@ -66,7 +53,7 @@ int TestProjectionGPUTolerance(int, char*[])
   {
     scene.Mapper->SetProjectionGPUOpacityTolerance(tolerances[k]);
     win->Render();
-    err[k] = MaxError(FloatImage(scene.Mapper), cpu);
+    err[k] = Diff(FloatImage(scene.Mapper), cpu).Max;
     slabs[k] = scene.Mapper->GetNumberOfProjectedSlabs();
     triangles[k] = scene.Mapper->GetNumberOfProjectedTriangles();
     std::cout << "[measured] tolerance " << tolerances[k] << ": max |M3 - CPU| = " << err[k] * 255
@@ -85,7 +72,7 @@ int TestProjectionGPUTolerance(int, char*[])
   // The CPU path keeps GPUOpacityTolerance.
   scene.Mapper->SetRenderModeToCPUAccurate();
   win->Render();
-  ck.Check(MaxError(FloatImage(scene.Mapper), cpu) == 0.0, "CPU image independent of the setting");
+  ck.Check(Diff(FloatImage(scene.Mapper), cpu).Max == 0.0, "CPU image independent of the setting");
 
   // VTK-unstructured semantics: extinction linear in s, no refinement.
   scene.Mapper->SetOpacitySemanticsToVTKUnstructured();

@@ -50,18 +50,6 @@ using namespace hovTest;
 
 namespace
 {
-/// Largest value of the mapper's error image.
-double MaxError(vtkHighOrderVolumeMapper* mapper)
-{
-  vtkDataArray* e = mapper->GetRayCastErrorImage()->GetPointData()->GetScalars();
-  double m = e ? 0.0 : -1.0;
-  for (vtkIdType i = 0; e && i < e->GetNumberOfTuples(); ++i)
-  {
-    m = std::max(m, e->GetComponent(i, 0));
-  }
-  return m;
-}
-
 /// CPU_ACCURATE and RAY_CAST images of @p grid; the difference statistics.
 DiffStats Compare(Checker& ck, vtkUnstructuredGrid* grid, vtkCamera* cam, int w, int h,
   const std::string& name, double bound)
@@ -74,7 +62,7 @@ DiffStats Compare(Checker& ck, vtkUnstructuredGrid* grid, vtkCamera* cam, int w,
   const Image ray = Render(scene.Mapper, cam, scene.Volume, w, h, &status);
   const Sanity s = CheckImage(ray), sc = CheckImage(cpu);
   const DiffStats d = Diff(cpu, ray, 0, 4, bound);
-  const double err = MaxError(scene.Mapper);
+  const double err = MaxRayCastError(scene.Mapper);
   std::cout << "[measured] " << name << ": RAY_CAST vs CPU_ACCURATE " << d.Str()
             << "; ray " << s.Str() << "; cpu covered " << sc.Covered << "; max error estimate "
             << err << "; ray time " << scene.Mapper->GetLastImageTime() << " s" << std::endl;
@@ -257,7 +245,7 @@ void BezierCells(Checker& ck)
   const DiffStats d = Diff(cpu, ray, 0, 4, 1e-3);
   const Sanity sr = CheckImage(ray);
   std::cout << "[measured] Bezier tet/hex/wedge (order 3) RAY_CAST vs linear cells CPU_ACCURATE "
-            << d.Str() << "; ray " << sr.Str() << "; max error estimate " << MaxError(rayScene.Mapper)
+            << d.Str() << "; ray " << sr.Str() << "; max error estimate " << MaxRayCastError(rayScene.Mapper)
             << std::endl;
   ck.Check(rayScene.NoMessages() && cpuScene.NoMessages(), "Bezier: no warning");
   ck.Check(rayScene.Mapper->GetNumberOfSkippedCells() == 0 &&

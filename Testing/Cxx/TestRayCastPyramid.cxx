@@ -113,17 +113,6 @@ vtkSmartPointer<vtkUnstructuredGrid> LoosePyramids()
   return m.Grid();
 }
 
-double MaxError(vtkHighOrderVolumeMapper* mapper)
-{
-  vtkDataArray* e = mapper->GetRayCastErrorImage()->GetPointData()->GetScalars();
-  double m = e ? 0.0 : -1.0;
-  for (vtkIdType i = 0; e && i < e->GetNumberOfTuples(); ++i)
-  {
-    m = std::max(m, e->GetComponent(i, 0));
-  }
-  return m;
-}
-
 /// CPU_ACCURATE vs RAY_CAST on @p grid; returns the RAY_CAST image.
 Image Compare(Checker& ck, vtkUnstructuredGrid* grid, vtkCamera* cam, int w, int h,
   const std::string& name, vtkIdType cells)
@@ -137,7 +126,7 @@ Image Compare(Checker& ck, vtkUnstructuredGrid* grid, vtkCamera* cam, int w, int
   const Image ray = Render(scene.Mapper, cam, scene.Volume, w, h, &status);
   const Sanity s = CheckImage(ray), sc = CheckImage(cpu);
   const DiffStats d = Diff(cpu, ray, 0, 4, 1e-3);
-  const double err = MaxError(scene.Mapper);
+  const double err = MaxRayCastError(scene.Mapper);
   std::cout << "[measured] " << name << ": RAY_CAST vs CPU_ACCURATE " << d.Str() << "; ray "
             << s.Str() << "; cpu covered " << sc.Covered << "; max error estimate " << err
             << std::endl;

@@ -27,6 +27,17 @@ std::string Fmt(double v)
   return buf;
 }
 
+double MaxRayCastError(vtkHighOrderVolumeMapper* mapper)
+{
+  vtkDataArray* e = mapper->GetRayCastErrorImage()->GetPointData()->GetScalars();
+  double m = e ? 0.0 : -1.0;
+  for (vtkIdType i = 0; e && i < e->GetNumberOfTuples(); ++i)
+  {
+    m = std::max(m, e->GetComponent(i, 0));
+  }
+  return m;
+}
+
 Image FloatImage(vtkHighOrderVolumeMapper* mapper)
 {
   Image img;

@@ -34,6 +34,9 @@ struct Image
 /// The mapper's float image (empty, with a note, if it is missing or malformed).
 Image FloatImage(vtkHighOrderVolumeMapper* mapper);
 
+/// Largest value of the mapper's RAY_CAST error image (-1 if it has none).
+double MaxRayCastError(vtkHighOrderVolumeMapper* mapper);
+
 /// RenderImage of @p w x @p h and its float image; RenderImage's status in
 /// @p status if given.
 Image Render(vtkHighOrderVolumeMapper* mapper, vtkCamera* cam, vtkVolume* vol, int w, int h,
