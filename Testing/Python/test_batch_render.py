@@ -14,7 +14,8 @@ three ways:
   3. the C++ executable ``hovBatchRender spec.json`` (.vti output),
 and the RGBA arrays must be exactly equal (and not empty). The PNG outputs
 must exist and match the float image composited over the background to
-within one 8-bit step.
+within one 8-bit step. In opengl_projection mode, transfer_function.
+gpu_opacity_tolerance reaches the projection's table in both entry points.
 """
 import argparse
 import json
@@ -236,6 +237,47 @@ def run_case(name, spec, args, exe, env):
         check(same, "%s: %s batch image bit-identical to the API image (%s)" % (name, tool, detail))
 
 
+def check_projection_tolerance(args, exe, env):
+    """opengl_projection: transfer_function.gpu_opacity_tolerance, when given, is
+    the projection's table tolerance too (else the mapper's 1e-3): a coarse 0.05
+    changes the image, the same way in both entry points."""
+    folder = os.path.join(os.path.abspath(args.temp), "batch_projection_tolerance")
+    os.makedirs(folder, exist_ok=True)
+    base = {"data": os.path.join(os.path.abspath(args.data), "bracket_tet4_ccx.vtu"),
+            "array": "von_mises", "image": {"width": 64, "height": 48},
+            "camera": {"azimuth": 30, "elevation": 20}, "render_mode": "opengl_projection",
+            "transfer_function": {"color": [[0, 0.1, 0.2, 0.9], [170, 1, 0.2, 0.1]],
+                                  "opacity": [[0, 0.02], [170, 0.95]], "unit_distance": 4}}
+    images = {}
+    for variant, tolerance in (("default", None), ("coarse", 0.05)):
+        spec = json.loads(json.dumps(base))
+        if tolerance is not None:
+            spec["transfer_function"]["gpu_opacity_tolerance"] = tolerance
+        for tool, command in (("python", [sys.executable, "-m", "highordervolume.batch"]),
+                              ("cxx", [exe])):
+            spec["output"] = {"vti": "%s_%s.vti" % (variant, tool)}
+            path = os.path.join(folder, "spec_%s_%s.json" % (variant, tool))
+            with open(path, "w") as f:
+                json.dump(spec, f)
+            proc = subprocess.run(command + [path], capture_output=True, text=True, env=env,
+                                  cwd=folder)
+            check(proc.returncode == 0, "projection %s %s: exit %d %s" % (
+                variant, tool, proc.returncode,
+                proc.stderr.strip()[-300:] if proc.returncode else ""))
+            images[variant, tool] = read_vti(os.path.join(folder, spec["output"]["vti"]))
+    if any(v is None for v in images.values()):
+        check(False, "projection tolerance: every image written")
+        return
+    for variant in ("default", "coarse"):
+        d = np.abs(images[variant, "python"] - images[variant, "cxx"]).max()
+        check(d <= 1e-6, "projection %s: python and C++ images agree (max %.3g)" % (variant, d))
+    d = np.abs(images["default", "cxx"] - images["coarse", "cxx"]).max()
+    alpha = images["default", "cxx"][:, 3].max()
+    check(alpha > 0.3 and d > 1e-4,
+          "projection: gpu_opacity_tolerance 0.05 reaches the projection (max |diff| %.3g, "
+          "max alpha %.2f)" % (d, alpha))
+
+
 def check_progress(args):
     """batch.render's progress callback: monotone to 1; aborting leaves zeros, no NaN."""
     from highordervolume import batch
@@ -280,6 +322,7 @@ def main():
         os.pathsep + env.get("PYTHONPATH", "")
     for name, spec in SPECS.items():
         run_case(name, spec, args, exe, env)
+    check_projection_tolerance(args, exe, env)
     check_progress(args)
     print("%d failure(s)" % len(FAILURES))
     return 1 if FAILURES else 0

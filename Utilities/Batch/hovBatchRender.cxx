@@ -107,6 +107,10 @@ void SetupMapper(const hov::BatchSpec& spec, vtkHighOrderVolumeMapper* mapper)
   }
   mapper->SetOpacitySemantics(spec.OpacitySemantics);
   mapper->SetGPUOpacityTolerance(spec.GPUOpacityTolerance);
+  if (spec.GPUOpacityToleranceGiven)
+  {
+    mapper->SetProjectionGPUOpacityTolerance(spec.GPUOpacityTolerance);
+  }
   mapper->SetEmissionModel(spec.EmissionModel);
   mapper->SetEmissionScale(spec.EmissionScale);
   mapper->SetIntegrationMethod(spec.Integration);
