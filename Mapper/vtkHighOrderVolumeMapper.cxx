@@ -535,6 +535,8 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->ProjectionOpacityLookup << ")\n";
   os << indent << "RayCastTolerance: " << this->RayCastTolerance << " (interactive above "
      << this->RayCastInteractiveUpdateRate << " frames/s)\n";
+  os << indent << "RayCastInteractiveSubsampling: " << this->RayCastInteractiveSubsampling
+     << " (0: from the time budget; last frame " << this->LastRayCastSubsampling << ")\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";

@@ -394,11 +394,15 @@ public:
    * at least RayCastInteractiveUpdateRate (default 1 frame/s:
    * vtkRenderWindowInteractor sets its InteractiveUpdateRate, 15, while the
    * camera moves and its StillUpdateRate, 0.0001, when it stops), the frame
-   * is cheaper: rays at half resolution (every second pixel centre in x and
-   * y of a half-size viewport, each ray stopping at the nearest opaque depth
-   * of its 2 x 2 block) replicated to 2 x 2 pixels, and the tolerance
-   * loosened 10x (at most 0.05). The still frame is at full accuracy.
-   * GetLastRenderWasInteractive() tells which one was drawn.
+   * is cheaper: rays on a coarser grid (an f x f block of pixels per ray:
+   * every f-th pixel centre in x and y of a reduced viewport, each ray
+   * stopping at the nearest opaque depth of its block) replicated to its
+   * block, and the tolerance loosened 10x (at most 0.05). The factor f is
+   * RayCastInteractiveSubsampling, or by default chosen so that the frame fits
+   * the window's time budget 1/DesiredUpdateRate at the cost per ray of the
+   * previous RAY_CAST frame (2 <= f <= 16; 2 before any frame). The still
+   * frame is at full accuracy. GetLastRenderWasInteractive() tells which one
+   * was drawn, GetLastRayCastSubsampling() its f (1 for a still frame).
    */
   vtkSetClampMacro(RenderMode, int, CPU_ACCURATE, RAY_CAST);
   vtkGetMacro(RenderMode, int);
@@ -425,6 +429,12 @@ public:
   vtkGetMacro(RayCastInteractiveUpdateRate, double);
   /// Whether the last RAY_CAST frame was the cheaper interactive one.
   vtkGetMacro(LastRenderWasInteractive, bool);
+  /// RAY_CAST interactive frames: pixels per ray in x and y (0, the default:
+  /// from the time budget; see RenderMode). Clamped to [0, 64].
+  vtkSetClampMacro(RayCastInteractiveSubsampling, int, 0, 64);
+  vtkGetMacro(RayCastInteractiveSubsampling, int);
+  /// The pixels per ray in x and y of the last RAY_CAST frame.
+  vtkGetMacro(LastRayCastSubsampling, int);
   ///@}
 
   /**
@@ -568,6 +578,8 @@ protected:
   double RayCastTolerance = 1e-3;
   double RayCastInteractiveUpdateRate = 1.0;
   bool LastRenderWasInteractive = false;
+  int RayCastInteractiveSubsampling = 0;
+  int LastRayCastSubsampling = 1;
   int ProjectionColorMethod = EXACT_COLOR;
   double ProjectionGPUOpacityTolerance = 1e-3;
   int ProjectionOrder = EXACT_ORDER;

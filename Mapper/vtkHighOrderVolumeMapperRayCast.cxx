@@ -22,6 +22,8 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm> // std::min, std::max
+#include <chrono>    // the interactive frame's time budget
+#include <cmath>     // std::sqrt, std::ceil
 #include <string>    // messages
 
 namespace
@@ -147,7 +149,22 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   const bool interactive =
     window && window->GetDesiredUpdateRate() >= this->RayCastInteractiveUpdateRate;
   this->LastRenderWasInteractive = interactive;
-  const int rw = interactive ? (width + 1) / 2 : width, rh = interactive ? (height + 1) / 2 : height;
+  int f = 1;
+  if (interactive)
+  {
+    f = this->RayCastInteractiveSubsampling;
+    if (f <= 0)
+    {
+      // The factor that fits the time budget at the last frame's cost per ray.
+      const double budget = 1.0 / window->GetDesiredUpdateRate();
+      const double cost = st.SecondsPerRay * width * height;
+      f = st.SecondsPerRay > 0.0
+        ? std::min(std::max(static_cast<int>(std::ceil(std::sqrt(cost / budget))), 2), 16)
+        : 2;
+    }
+  }
+  this->LastRayCastSubsampling = f;
+  const int rw = (width + f - 1) / f, rh = (height + f - 1) / f;
   vtkHighOrderViewRays rays;
   if (!rays.Setup(camera, volume->GetMatrix(), rw, rh, aspect))
   {
@@ -183,8 +200,14 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   {
     progress = [this](double done) { return this->ReportTileProgress(done); };
   }
+  const auto start = std::chrono::steady_clock::now();
   st.Caster.Render(
     rays, tf->GetTable(), settings, st.RGBA.data(), error.data(), rayDepth, &issues, progress);
+  if (!issues.Aborted && rw * rh > 0)
+  {
+    st.SecondsPerRay =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / (rw * rh);
+  }
   this->LastRenderAborted = issues.Aborted;
   if (issues.NotConverged > 0 || issues.NotFinite > 0)
   {

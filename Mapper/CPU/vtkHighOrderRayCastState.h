@@ -34,6 +34,9 @@ struct vtkHighOrderRayCastState
   vtkNew<vtkHighOrderTransferFunction> TransferFunction;
   vtkNew<vtkImageData> ErrorImage;
   std::vector<float> RGBA, Error, Depth;
+  /// Wall seconds per traced ray of the last frame (0: none yet), for the
+  /// interactive frame's time budget.
+  double SecondsPerRay = 0.0;
 };
 
 #endif

@@ -14,7 +14,8 @@
 // caster's error.
 //  3. Interaction level of detail: in a render window with DesiredUpdateRate
 //     15 (interactive) the frame is the cheap one, with 0.0001 (still) the
-//     full one, equal to RenderImage()'s image.
+//     full one, equal to RenderImage()'s image; the automatic subsampling
+//     factor follows the time budget (16 for 1 us, 2 for 1 s).
 //  4. An opaque medium (opacity 1 in GPU-compatible semantics), see
 //     OpaqueMedium.
 //  5. Bezier tetrahedron, hexahedron and wedge of order 3 against the
@@ -284,9 +285,11 @@ void LevelOfDetail(Checker& ck, vtkUnstructuredGrid* grid)
   vtkSmartPointer<vtkRenderer> ren = BlackRenderer(cam);
   ren->AddVolume(scene.Volume);
   vtkSmartPointer<vtkRenderWindow> win = OffscreenWindow(ren, 48, 48);
+  scene.Mapper->SetRayCastInteractiveSubsampling(2); // fixed: the checks below need f = 2
   win->SetDesiredUpdateRate(15.0);
   win->Render();
-  const bool interactive = scene.Mapper->GetLastRenderWasInteractive();
+  const bool interactive = scene.Mapper->GetLastRenderWasInteractive() &&
+    scene.Mapper->GetLastRayCastSubsampling() == 2;
   const Image fast = FloatImage(scene.Mapper);
   win->SetDesiredUpdateRate(0.0001);
   win->Render();
@@ -299,6 +302,37 @@ void LevelOfDetail(Checker& ck, vtkUnstructuredGrid* grid)
   ck.Check(dFull.Count > 0 && dFull.Max < 1e-6, "LOD: still window frame equals RenderImage");
   ck.Check(dFast.Count > 0 && dFast.Max > 0.0 && dFast.Mean < 0.02,
     "LOD: interactive frame differs (half resolution) but is close on average");
+  ck.Check(scene.Mapper->GetLastRayCastSubsampling() == 1, "LOD: the still frame has f = 1");
+
+  // Automatic factor from the time budget 1/DesiredUpdateRate and the last
+  // frame's cost per ray (tens of microseconds here): a budget of 1 us needs
+  // the largest factor, 16 (48 / 16 = 3 rays per row, each replicated to its
+  // 16 x 16 block); a budget of 1 s the smallest, 2.
+  scene.Mapper->SetRayCastInteractiveSubsampling(0);
+  win->SetDesiredUpdateRate(1e6);
+  win->Render();
+  const int tight = scene.Mapper->GetLastRayCastSubsampling();
+  const Image coarse = FloatImage(scene.Mapper);
+  bool blocks = coarse.W == 48 && coarse.H == 48;
+  for (int j = 0; blocks && j < 48; ++j)
+  {
+    for (int i = 0; blocks && i < 48; ++i)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        blocks = blocks && coarse.At(i, j, c) == coarse.At(16 * (i / 16), 16 * (j / 16), c);
+      }
+    }
+  }
+  win->SetDesiredUpdateRate(1.0);
+  win->Render();
+  const int loose = scene.Mapper->GetLastRayCastSubsampling();
+  std::cout << "[measured] LOD: automatic factor " << tight << " at 1e6 frames/s, " << loose
+            << " at 1 frame/s" << std::endl;
+  ck.Check(tight == 16 && blocks && CheckImage(coarse).Covered > 0,
+    "LOD: a 1 us budget gives f = 16, one ray per 16 x 16 block");
+  ck.Check(loose == 2 && scene.Mapper->GetLastRenderWasInteractive(),
+    "LOD: a 1 s budget gives f = 2");
   ck.Check(scene.NoMessages(), "LOD: no error or warning");
 }
 }
