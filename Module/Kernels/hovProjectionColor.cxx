@@ -1,7 +1,10 @@
 #include "hovProjectionColor.h"
 
+#include "hovOpacityRefinement.h" // OpaqueClamp
+
 #include <algorithm> // std::min, std::max
-#include <cmath>     // std::expm1, std::sqrt
+#include <cmath>     // std::expm1, std::sqrt, std::log1p
+#include <limits>    // infinity
 
 namespace hov
 {
@@ -115,6 +118,35 @@ ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method, Emis
     }
   }
   return out;
+}
+
+double GPUAverageExtinction(double aFront, double aBack)
+{
+  const double lo = std::min(aFront, aBack), hi = std::max(aFront, aBack);
+  if (!(lo < 1.0))
+  {
+    return std::numeric_limits<double>::infinity(); // a = 1 all along: opaque medium
+  }
+  const double big = std::max(1.0 - lo, OpaqueClamp);
+  const double small = std::max(1.0 - hi, OpaqueClamp);
+  const double x = std::min(std::max(hi - lo, 0.0) / big, 1.0);
+  double m;
+  if (x < 0.1)
+  {
+    // sum_{n>=1} x^n / (n (n+1)) to n = 9: the tail is below 1e-12 relative.
+    m = 0.0;
+    for (int n = 9; n >= 1; --n)
+    {
+      m = x * (1.0 / (n * (n + 1.0)) + m);
+    }
+  }
+  else
+  {
+    const double ratio = small / big; // 1 - x, without cancellation
+    m = 1.0 + ratio * std::log(ratio) / x;
+  }
+  const double lnBig = 1.0 - lo > OpaqueClamp ? std::log1p(-std::max(lo, 0.0)) : std::log(OpaqueClamp);
+  return m - lnBig;
 }
 
 std::vector<float> OpacityTexture::Texels()

@@ -103,6 +103,25 @@ HOV_EXPORT ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod m
   EmissionModel emission, double length, const SegmentEnd& front, const SegmentEnd& back,
   const SegmentColorTable& table);
 
+/**
+ * GPU-compatible semantics without slabs: on an interval of the transfer
+ * function the opacity a is linear in s, so along a segment through a convex
+ * cell (s affine) a goes linearly from @p aFront to @p aBack, and the average
+ * extinction (unit distance 1) is the mean of -ln(1 - a) over that range.
+ * With P = 1 - min(a), Q = 1 - max(a) and x = (P - Q)/P (the antiderivative
+ * of -ln p is p - p ln p):
+ *   mean = -ln P + M(x),  M(x) = 1 + (1 - x) ln(1 - x) / x = sum_n x^n / (n (n + 1)),
+ * both terms >= 0 (no cancellation); -ln P = -log1p(-min a) (accurate for
+ * small opacities), M by its series below x = 0.1. 1 - a is clamped at
+ * OpaqueClamp as in hov::TransferFunction (a = 1 at one end: the integrable
+ * log singularity); a >= 1 at both ends gives +infinity (an opaque medium).
+ * The OpenGL projection's fragment shader computes the same formula in float
+ * (vtkHighOrderProjectionFS.glsl, hovGPUAverageExtinction), from the
+ * opacities, which float keeps to 6e-8 relative (1 - a would lose small
+ * opacities).
+ */
+HOV_EXPORT double GPUAverageExtinction(double aFront, double aBack);
+
 /// Layout of the opacity texture (see file doc).
 struct OpacityTexture
 {
