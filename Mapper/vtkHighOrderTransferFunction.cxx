@@ -1,5 +1,6 @@
 #include "vtkHighOrderTransferFunction.h"
 
+#include "hovOpacityRefinement.h" // the slab nodes of the linear-opacity table
 #include "hovTransferFunction.h" // the kernel table built here
 
 #include "vtkColorTransferFunction.h"
@@ -182,8 +183,59 @@ void ReadOpacity(vtkPiecewiseFunction* opacity, double tol, std::vector<hov::Opa
 }
 }
 
+namespace
+{
+/**
+ * The opacity nodes @p nodes (clamped to [0, 1]) plus, inside each interval,
+ * the nodes of a coarse GPU-compatible refinement (relative chord error of
+ * -ln(1 - a) at most @p tolerance), with the opacity's own (linear) values:
+ * the same function a(s), cut where -ln(1 - a) bends, so that colours
+ * interpolated over a slab's regions stay accurate (GetLinearOpacityTable).
+ */
+std::vector<hov::OpacityNode> SlabNodes(
+  const std::vector<hov::OpacityNode>& nodes, double unit, double tolerance)
+{
+  std::vector<hov::OpacityInterval> intervals;
+  std::vector<size_t> starts;
+  for (size_t i = 0; i + 1 < nodes.size(); ++i)
+  {
+    const hov::OpacityNode &a = nodes[i], &b = nodes[i + 1];
+    const bool finite = std::isfinite(a.X) && std::isfinite(b.X) && std::isfinite(a.Opacity) &&
+      std::isfinite(b.Opacity);
+    if (finite && b.X > a.X && a.Opacity != b.Opacity && std::min(a.Opacity, b.Opacity) < 1.0)
+    {
+      intervals.push_back({ a.X, a.Opacity, b.X, b.Opacity });
+      starts.push_back(i);
+    }
+  }
+  if (intervals.empty())
+  {
+    return nodes;
+  }
+  const hov::RefinementResult refined = hov::RefineGPUExtinction(intervals, unit, tolerance, 100000);
+  std::vector<hov::OpacityNode> out;
+  size_t next = 0;
+  for (size_t i = 0; i < nodes.size(); ++i)
+  {
+    out.push_back(nodes[i]);
+    if (next < starts.size() && starts[next] == i)
+    {
+      const hov::OpacityInterval& in = intervals[next];
+      for (const auto& node : refined.Interior[next])
+      {
+        const double t = (node.first - in.S0) / (in.S1 - in.S0);
+        out.push_back({ node.first, in.A0 + t * (in.A1 - in.A0) });
+      }
+      ++next;
+    }
+  }
+  return out;
+}
+}
+
 vtkHighOrderTransferFunction::vtkHighOrderTransferFunction()
   : Table(new hov::TransferFunction)
+  , LinearOpacityTable(new hov::TransferFunction)
 {
 }
 
@@ -216,6 +268,21 @@ bool vtkHighOrderTransferFunction::Update(vtkVolumeProperty* property)
   ReadColor(property, comp, this->SamplingTolerance, spec.Color);
   ReadOpacity(property->GetScalarOpacity(comp), this->SamplingTolerance, spec.Opacity);
   this->Table->Build(spec, &this->Messages);
+  // As hov::TransferFunction::Build takes it (a bad value is reported there).
+  this->UnitDistance =
+    spec.UnitDistance > 0.0 && std::isfinite(spec.UnitDistance) ? spec.UnitDistance : 1.0;
+  if (spec.Semantics == hov::OpacitySemantics::GPUCompatible)
+  {
+    // The same nodes, the opacity itself as the linear quantity (its
+    // problems are those reported above).
+    spec.Semantics = hov::OpacitySemantics::RawExtinction;
+    for (hov::OpacityNode& node : spec.Opacity)
+    {
+      node.Opacity = std::min(std::max(node.Opacity, 0.0), 1.0);
+    }
+    spec.Opacity = SlabNodes(spec.Opacity, this->UnitDistance, this->SlabTolerance);
+    this->LinearOpacityTable->Build(spec, nullptr);
+  }
   return true;
 }
 

@@ -88,7 +88,30 @@ public:
 
 #ifndef __VTK_WRAP__
   const hov::TransferFunction& GetTable() const { return *this->Table; }
+  /**
+   * GPU-compatible semantics only (else GetTable()): the table of the same
+   * colour and opacity nodes without refinement, whose "extinction" is the
+   * opacity a(s) itself (clamped to [0, 1], linear between nodes), for the
+   * OpenGL projection's exact per-fragment extinction
+   * (hov::GPUAverageExtinction): its slabs need only these nodes.
+   */
+  const hov::TransferFunction& GetLinearOpacityTable() const
+  {
+    return this->OpacitySemantics == 0 ? *this->LinearOpacityTable : *this->Table;
+  }
+  /// The unit distance of the last build (vtkVolumeProperty's, per component).
+  double GetUnitDistance() const { return this->UnitDistance; }
 #endif
+  ///@{
+  /**
+   * GPU-compatible semantics: the linear-opacity table also has the nodes of
+   * a coarse refinement of -ln(1 - a) (relative chord error at most this;
+   * default 0.1), so that the OpenGL projection's slabs, over which vertex
+   * colours are interpolated, follow the curvature of the extinction.
+   */
+  vtkSetClampMacro(SlabTolerance, double, 1e-6, 1.0);
+  vtkGetMacro(SlabTolerance, double);
+  ///@}
 
 protected:
   vtkHighOrderTransferFunction();
@@ -99,6 +122,7 @@ protected:
   double EmissionScale = 1.0;
   int Component = 0;
   double SamplingTolerance = 1e-6;
+  double SlabTolerance = 0.1;
   int BuildCount = 0;
 
 private:
@@ -106,6 +130,8 @@ private:
   void operator=(const vtkHighOrderTransferFunction&) = delete;
 
   std::unique_ptr<hov::TransferFunction> Table;
+  std::unique_ptr<hov::TransferFunction> LinearOpacityTable;
+  double UnitDistance = 1.0;
   std::vector<std::string> Messages;
   vtkVolumeProperty* LastProperty = nullptr;
   vtkMTimeType LastPropertyTime = 0;

@@ -308,13 +308,12 @@ bool vtkHighOrderVolumeMapper::ValidateInputs(vtkCamera* camera, vtkVolume* volu
   return true;
 }
 
-bool vtkHighOrderVolumeMapper::PrepareTransferFunction(
-  vtkVolumeProperty* property, double gpuTolerance)
+bool vtkHighOrderVolumeMapper::PrepareTransferFunction(vtkVolumeProperty* property)
 {
   Internals& impl = *this->Impl;
   vtkHighOrderTransferFunction* tf = impl.TransferFunction;
   tf->SetOpacitySemantics(this->OpacitySemantics);
-  tf->SetGPUTolerance(gpuTolerance);
+  tf->SetGPUTolerance(this->GPUOpacityTolerance);
   tf->SetEmissionScale(this->EmissionScale);
   // One component of a multi-component array with independent components
   // uses that component's functions; everything else uses component 0's.
@@ -379,8 +378,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   const bool ok = this->ValidateInputs(camera, volume, width, height);
   // Isosurfaces are visible even where the volume does not absorb.
   bool render = ok && impl.Setup.GetNumberOfRenderedCells() > 0 &&
-    (this->PrepareTransferFunction(volume->GetProperty(), this->GPUOpacityTolerance) ||
-      this->GetNumberOfIsosurfaces() > 0);
+    (this->PrepareTransferFunction(volume->GetProperty()) || this->GetNumberOfIsosurfaces() > 0);
   vtkHighOrderViewRays rays;
   if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
   {
@@ -470,7 +468,7 @@ bool vtkHighOrderVolumeMapper::PrepareProjectionFrame(vtkCamera* camera, vtkVolu
   *tf = impl.TransferFunction;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
   return this->ValidateInputs(camera, volume, 1, 1) && impl.Setup.GetNumberOfRenderedCells() > 0 &&
-    this->PrepareTransferFunction(volume->GetProperty(), this->ProjectionGPUOpacityTolerance) &&
+    this->PrepareTransferFunction(volume->GetProperty()) &&
     (!exactOrder || this->PrepareOrder(camera, volume, true));
 }
 
@@ -540,7 +538,6 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";
-  os << indent << "ProjectionGPUOpacityTolerance: " << this->ProjectionGPUOpacityTolerance << "\n";
   os << indent << "EmissionModel: " << this->EmissionModel << "\n";
   os << indent << "EmissionScale: " << this->EmissionScale << "\n";
   os << indent << "IntegrationMethod: " << this->IntegrationMethod << "\n";

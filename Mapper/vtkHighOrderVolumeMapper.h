@@ -361,8 +361,10 @@ public:
    * interaction: every cell (linear tetrahedra; hexahedra, wedges, pyramids
    * and voxels whole when no transfer-function node lies inside their scalar
    * range, else split into tetrahedra of their corners) and each of its
-   * transfer-function slabs (HIAC Fig. 3; all three opacity semantics, GPU-
-   * compatible through the refined table) is divided into the homogeneous
+   * transfer-function slabs (HIAC Fig. 3; all three opacity semantics; GPU-
+   * compatible with the exact mean extinction of each fragment's segment from
+   * the linear opacity, hov::GPUAverageExtinction, and slabs at the property's
+   * nodes plus a coarse refinement) is divided into the homogeneous
    * regions of its projection, drawn with per-vertex segment length L, average
    * extinction and colour by ProjectionColorMethod, opacity per fragment from a
    * float texture of 1 - exp(-L tau_avg), premultiplied blending into a
@@ -458,19 +460,6 @@ public:
   vtkGetMacro(ProjectionColorMethod, int);
   ///@}
 
-  ///@{
-  /**
-   * OPENGL_PROJECTION in GPU-compatible semantics: the tolerance of the
-   * linearised extinction table it draws from, in place of
-   * GPUOpacityTolerance (the CPU and ray-cast paths' 1e-4). The table's image
-   * error bound is twice the tolerance; the table's nodes, and so the slabs a
-   * cell is cut into, grow like tolerance^(-1/2) (the chord error of the
-   * convex -ln(1 - a) is quadratic in the interval). Default 1e-3
-   * (bound 2e-3, about 0.5/255). Clamped to [1e-12, 0.1]; NaN/Inf refused.
-   */
-  virtual void SetProjectionGPUOpacityTolerance(double value);
-  vtkGetMacro(ProjectionGPUOpacityTolerance, double);
-  ///@}
 
   enum ProjectionOrderType
   {
@@ -581,7 +570,6 @@ protected:
   int RayCastInteractiveSubsampling = 0;
   int LastRayCastSubsampling = 1;
   int ProjectionColorMethod = EXACT_COLOR;
-  double ProjectionGPUOpacityTolerance = 1e-3;
   int ProjectionOrder = EXACT_ORDER;
   int ProjectionOpacityLookup = OPACITY_ANALYTIC;
   vtkIdType NumberOfProjectedTriangles = 0;
@@ -625,7 +613,7 @@ private:
     const float* depth);
   bool ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height);
   bool PrepareCells(vtkVolume* volume);
-  bool PrepareTransferFunction(vtkVolumeProperty* property, double gpuTolerance);
+  bool PrepareTransferFunction(vtkVolumeProperty* property);
   /// The front-to-back cell order: the VisibilitySort's, or any order with
   /// PER_PIXEL_SORT unless @p needVisibilitySort (cell projection has no
   /// per-pixel sort).

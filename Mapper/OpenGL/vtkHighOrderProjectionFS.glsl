@@ -35,22 +35,72 @@ float hovOpacityFromTexture(float d)
 }
 #endif
 
+#if HOV_GPU_OPACITY
+uniform float inverseUnit; // 1 / unit distance
+
+// GPU-compatible semantics: the mean of -ln(1 - a) over the segment, a linear
+// from aF to aB, unit distance 1. Port of hov::GPUAverageExtinction
+// (Module/Kernels/hovProjectionColor.cxx): -ln(1 - min a) + M(x),
+// M(x) = sum x^n / (n (n+1)) (series below x = 0.1) = 1 + (1-x) ln(1-x) / x,
+// x = (max a - min a) / (1 - min a); 1 - a clamped at 1e-12. An opaque
+// medium (a = 1 over the whole transfer-function interval) arrives as the
+// marker a = 2 (vtkHighOrderProjectionVertex): a huge extinction.
+float hovGPUAverageExtinction(float aF, float aB)
+{
+  if (min(aF, aB) >= 1.5)
+  {
+    return 1e30;
+  }
+  // (Both ends at 1 without the marker: a segment at the node where a reaches
+  // 1, rounded; the clamp below gives -ln(1e-12), as the tables do.)
+  float lo = clamp(min(aF, aB), 0.0, 1.0), hi = clamp(max(aF, aB), 0.0, 1.0);
+  float big = max(1.0 - lo, 1e-12), small = max(1.0 - hi, 1e-12);
+  float x = min((hi - lo) / big, 1.0);
+  float m;
+  if (x < 0.1)
+  {
+    m = x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 12.0 + x * (1.0 / 20.0 + x * (1.0 / 30.0)))));
+  }
+  else
+  {
+    float ratio = small / big;
+    m = 1.0 + ratio * log(ratio) / x;
+  }
+  // ln(1 - lo): by its series below lo = 0.05 (GLSL's log is only accurate
+  // to 2^-21 absolute near 1, useless for small opacities), else log(big).
+  float lnBig = lo < 0.05
+    ? -lo * (1.0 + lo * (1.0 / 2.0 + lo * (1.0 / 3.0 + lo * (1.0 / 4.0 + lo * (1.0 / 5.0 + lo * (1.0 / 6.0))))))
+    : log(big);
+  return m - lnBig;
+}
+#endif
+
 void main()
 {
   // Segment length and average extinction (vtkHighOrderProjectionVertex).
 #if HOV_PERSPECTIVE
   float inverseMu = 1.0 / max(segmentVS.x, 1e-30);
   float len = length(frontVS) * max(inverseMu - 1.0, 0.0);
-  float tauAvg = 0.5 * (segmentVS.y + segmentVS.z * inverseMu);
+  float backValue = segmentVS.z * inverseMu;
 #else
   float len = segmentVS.x;
-  float tauAvg = 0.5 * (segmentVS.y + segmentVS.z);
+  float backValue = segmentVS.z;
+#endif
+#if HOV_GPU_OPACITY
+  // The ends carry opacities (GPU-compatible semantics; vtkHighOrderProjectionVertex).
+  float tauAvg = hovGPUAverageExtinction(segmentVS.y, backValue) * inverseUnit;
+#else
+  float tauAvg = 0.5 * (segmentVS.y + backValue);
 #endif
   float depth = max(len, 0.0) * max(tauAvg, 0.0);
 #if HOV_TEXTURE_OPACITY
   float alpha = hovOpacityFromTexture(depth);
 #elif HOV_ANALYTIC_OPACITY
-  float alpha = 1.0 - exp(-depth); // vtkHighOrderVolumeMapper::OPACITY_ANALYTIC
+  // vtkHighOrderVolumeMapper::OPACITY_ANALYTIC: 1 - exp(-d), by its series
+  // below d = 1e-3 (1 - exp(-d) in float is a multiple of 6e-8 there: faint
+  // volumes, alpha ~ 1e-7, were off by up to 400%).
+  float alpha = depth < 1e-3 ? depth * (1.0 - depth * (0.5 - depth * (1.0 / 6.0)))
+                             : 1.0 - exp(-depth);
 #else
   float alpha = clamp(alphaVS, 0.0, 1.0);
 #endif

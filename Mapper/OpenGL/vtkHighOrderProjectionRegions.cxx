@@ -242,6 +242,8 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
   frame.Emission = settings.Emission;
   frame.Parallel = settings.Parallel;
   frame.Eye = settings.Eye;
+  frame.ExtinctionTf = settings.ExtinctionTf;
+  frame.InverseUnit = settings.InverseUnit;
 
   vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
     CellEmitter emitter{ &setup, &tf, &settings, &frame, {}, {} };

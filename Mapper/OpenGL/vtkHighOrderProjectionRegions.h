@@ -7,8 +7,9 @@
  * For each cell, in the back-to-front order given, and for each slab of it
  * between consecutive transfer-function nodes (HIAC Fig. 3; for linear
  * tetrahedra the field is affine, so a slab is the convex polyhedron cut by
- * the planes s = node; for GPU-compatible semantics the nodes include the
- * refinement nodes of the table, so extinction is linear in s on every slab),
+ * the planes s = node; for GPU-compatible semantics the table given is
+ * vtkHighOrderTransferFunction's linear-opacity table: opacity linear in s on
+ * every slab, the fragment shader's extinction exact from it),
  * the slab polyhedron's faces are projected to normalised device
  * coordinates (NDC) and classified front or back by their NDC plane. The
  * overlay of every front face with every back face (convex polygon clipping)
@@ -107,6 +108,10 @@ public:
     bool Parallel = false;
     glm::dvec3 Eye{ 0.0 };       ///< perspective: camera position (dataset coordinates)
     glm::dvec3 Direction{ 0.0 }; ///< parallel: direction of projection (dataset coordinates)
+    /// GPU-compatible semantics: the refined extinction table (Build()'s table
+    /// is then the linear-opacity one; vtkHighOrderProjectionFrame).
+    const hov::TransferFunction* ExtinctionTf = nullptr;
+    double InverseUnit = 1.0;
   };
 
   struct Statistics

@@ -126,7 +126,8 @@ std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Op
   std::string defines = "#define HOV_PERSPECTIVE " + std::string(options.Parallel ? "0" : "1") +
     "\n#define HOV_TEXTURE_OPACITY " + (options.TextureOpacity && !options.AnalyticOpacity ? "1" : "0") +
     "\n#define HOV_ANALYTIC_OPACITY " + (options.TextureOpacity && options.AnalyticOpacity ? "1" : "0") +
-    "\n#define HOV_GLOW " + (options.PremultipliedColor ? "1" : "0") + "\n";
+    "\n#define HOV_GLOW " + (options.PremultipliedColor ? "1" : "0") +
+    "\n#define HOV_GPU_OPACITY " + (options.GPUOpacity ? "1" : "0") + "\n";
   std::string out = source;
   const std::string tag = "//HOV::Variant::Dec";
   const size_t at = out.find(tag);
@@ -171,6 +172,10 @@ void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
       "opacityScale", static_cast<float>((n - 1.0) / (hov::OpacityTexture::UMax * n)));
     this->Program->SetUniformf("opacityOffset", static_cast<float>(0.5 / n));
     this->Program->SetUniformf("opacityLast", static_cast<float>((n - 0.5) / n));
+  }
+  if (options.GPUOpacity)
+  {
+    this->Program->SetUniformf("inverseUnit", static_cast<float>(options.InverseUnit));
   }
   if (!options.Parallel)
   {

@@ -59,6 +59,8 @@ public:
     bool AnalyticOpacity = false;    ///< with TextureOpacity: 1 - exp(-d) in the shader, no texture
     bool PremultipliedColor = false; ///< true: the vertex colour is an effective glow (Wilhelms-Van Gelder)
     bool Parallel = false;           ///< the vertex layout of vtkHighOrderProjectionVertex
+    bool GPUOpacity = false;         ///< GPU-compatible semantics: the vertices carry opacities
+    double InverseUnit = 1.0;        ///< with GPUOpacity: 1 / unit distance
     glm::dmat4 ClipToData{ 1.0 };    ///< perspective: clip -> dataset coordinates
     glm::dvec3 Eye{ 0.0 };           ///< perspective: camera position (dataset coordinates)
   };

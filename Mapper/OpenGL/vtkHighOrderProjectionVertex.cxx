@@ -1,8 +1,10 @@
 #include "vtkHighOrderProjectionVertex.h"
 
+#include "hovRayIntegrator.h"    // IntegrateLinearScalar (M3, GPU-compatible semantics)
 #include "hovTransferFunction.h" // Evaluate
 
-#include <cmath> // std::isfinite
+#include <algorithm> // std::max
+#include <cmath>     // std::isfinite, std::log, std::expm1
 
 unsigned int vtkHighOrderProjectionChunk::NumberOfVertices() const
 {
@@ -26,6 +28,75 @@ double vtkHighOrderProjectionVertex::Unproject(const vtkHighOrderProjectionFrame
   return 1.0 / hf.w; // Inverse * clip = (X, 1), so the NDC point has w = 1 / w_clip
 }
 
+namespace
+{
+/**
+ * GPU-compatible semantics: whether interval @p k of the linear-opacity table
+ * is an opaque medium (a = 1 all over it; infinite extinction). Its vertices
+ * carry the opacity 2 instead of 1 (the fragment shader's marker): in float,
+ * an interpolated 1 cannot be told from the 1 - 6e-8 of an interval that
+ * only reaches a = 1 at its end (a finite mean extinction).
+ */
+bool OpaqueInterval(const hov::TransferFunction& tf, int k)
+{
+  const int n = tf.GetNumberOfNodes();
+  if (n == 0)
+  {
+    return false;
+  }
+  if (k < 0 || k >= n - 1)
+  {
+    return tf.GetNode(k < 0 ? 0 : n - 1).Tau >= 1.0;
+  }
+  const hov::TransferFunction::Node& node = tf.GetNode(k);
+  const double width = tf.GetNodes()[k + 1] - tf.GetNodes()[k];
+  return node.Tau >= 1.0 && node.Tau + node.DTau * width >= 1.0;
+}
+
+/// Extinction -ln(1 - a)/u at one end (1 - a clamped as the tables do).
+double EndExtinction(double a, double inverseUnit)
+{
+  return -std::log(std::max(1.0 - a, hov::OpaqueClamp)) * inverseUnit;
+}
+
+/// The vertex colour in GPU-compatible semantics (see the class doc): the
+/// ends' opacities @p ef.Tau, @p eb.Tau from the linear-opacity table.
+hov::ProjectionVertexColor GPUVertex(const vtkHighOrderProjectionFrame& f, double length,
+  double sFront, double sBack, const hov::SegmentEnd& ef, const hov::SegmentEnd& eb)
+{
+  hov::SegmentEnd front = ef, back = eb; // the same colours, exact end extinctions
+  front.Tau = EndExtinction(ef.Tau, f.InverseUnit);
+  back.Tau = EndExtinction(eb.Tau, f.InverseUnit);
+  hov::ProjectionVertexColor v =
+    hov::ComputeProjectionVertex(f.Method, f.Emission, length, front, back, *f.Table);
+  const double tauAvg = hov::GPUAverageExtinction(ef.Tau, eb.Tau) * f.InverseUnit;
+  const double depth = std::max(length, 0.0) * tauAvg;
+  if (f.Method == hov::ProjectionColorMethod::InterpolatedOpacity)
+  {
+    v.Alpha = -std::expm1(-depth);
+  }
+  else if (f.Method == hov::ProjectionColorMethod::ExactColor)
+  {
+    hov::IntegrationSettings settings;
+    settings.Emission = f.Emission;
+    const hov::RGBA c = hov::IntegrateLinearScalar(*f.ExtinctionTf, sFront, sBack, length, settings);
+    // Williams-Max: k = C / A; Wilhelms-Van Gelder: the effective glow C / (L phi(D)).
+    const double glow = depth > 1e-8 ? -std::expm1(-depth) / depth : 1.0;
+    const double denominator = f.Emission == hov::EmissionModel::WilhelmsVanGelder
+      ? length * glow
+      : c.A;
+    v.Alpha = c.A;
+    if (denominator > 0.0 && std::isfinite(denominator))
+    {
+      v.Color[0] = c.R / denominator;
+      v.Color[1] = c.G / denominator;
+      v.Color[2] = c.B / denominator;
+    }
+  }
+  return v;
+}
+}
+
 bool vtkHighOrderProjectionVertex::Write(const vtkHighOrderProjectionFrame& f, int k, double x,
   double y, double zFront, double w, const glm::dvec3& front, const glm::dvec3& back,
   double sFront, double sBack, float* out)
@@ -35,13 +106,25 @@ bool vtkHighOrderProjectionVertex::Write(const vtkHighOrderProjectionFrame& f, i
   hov::SegmentEnd ef, eb;
   f.Tf->Evaluate(k, sFront, wvg, ef);
   f.Tf->Evaluate(k, sBack, wvg, eb);
-  const hov::ProjectionVertexColor v =
-    hov::ComputeProjectionVertex(f.Method, f.Emission, length, ef, eb, *f.Table);
+  hov::ProjectionVertexColor v;
+  if (f.ExtinctionTf)
+  {
+    v = GPUVertex(f, length, sFront, sBack, ef, eb); // ef.Tau, eb.Tau are opacities
+    if (OpaqueInterval(*f.Tf, k))
+    {
+      ef.Tau = eb.Tau = 2.0;
+    }
+  }
+  else
+  {
+    v = hov::ComputeProjectionVertex(f.Method, f.Emission, length, ef, eb, *f.Table);
+  }
   out[0] = static_cast<float>(x * w);
   out[1] = static_cast<float>(y * w);
   out[2] = static_cast<float>(zFront * w);
   out[3] = static_cast<float>(w);
   // An opaque medium (infinite extinction) stays finite: alpha is 1 either way.
+  // (GPU-compatible semantics: the opacities, in [0, 1].)
   const double tauFront = std::min(ef.Tau, 1e30), tauBack = std::min(eb.Tau, 1e30);
   double first = length, scale = 1.0;
   if (!f.Parallel)
@@ -70,6 +153,10 @@ void vtkHighOrderProjectionVertex::WriteCorner(
 {
   hov::SegmentEnd e;
   f.Tf->Evaluate(k, s, f.Emission == hov::EmissionModel::WilhelmsVanGelder, e);
+  if (f.ExtinctionTf && OpaqueInterval(*f.Tf, k))
+  {
+    e.Tau = 2.0; // the opaque-medium marker (see OpaqueInterval)
+  }
   const double tau = std::min(e.Tau, 1e30);
   for (int c = 0; c < 4; ++c)
   {

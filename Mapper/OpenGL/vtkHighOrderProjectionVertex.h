@@ -17,6 +17,13 @@
  *    (tauBack mu)/mu)/2 (vtkHighOrderProjectionFS.glsl);
  *  - 7-9: colour by method M0-M3 (hov::ComputeProjectionVertex);
  *  - 10: the vertex opacity 1 - exp(-L tau_avg) (method M0 only).
+ * GPU-compatible semantics (Frame::ExtinctionTf set): tau = -ln(1 - a)/u is
+ * not linear in s, but the opacity a is (between the property's nodes, the
+ * only slab boundaries then), so 5-6 carry aFront and aBack (x mu) instead
+ * and the fragment shader takes tau_avg = hov::GPUAverageExtinction(aFront,
+ * aBack)/u, exact on the segment; M3's colour integrates the refined
+ * extinction table over the segment (hov::IntegrateLinearScalar), M0's
+ * vertex opacity uses the exact tau_avg.
  * A vertex at a cell corner has L = 0: its colour is the transfer function's
  * colour there (the L -> 0 limit of every method), its opacity 0.
  *
@@ -50,6 +57,11 @@ struct vtkHighOrderProjectionFrame
   hov::EmissionModel Emission = hov::EmissionModel::WilliamsMax;
   bool Parallel = false;
   glm::dvec3 Eye{ 0.0 }; ///< perspective: camera position (dataset coordinates)
+  /// GPU-compatible semantics: Tf is the linear-opacity table (its "tau" is
+  /// the opacity a), this the refined extinction table (M3's integral), and
+  /// the vertex carries opacities instead of extinctions (see the class doc).
+  const hov::TransferFunction* ExtinctionTf = nullptr;
+  double InverseUnit = 1.0; ///< 1 / unit distance (GPU-compatible semantics)
 };
 
 /// A growable array of plain values that never zero-fills and keeps its

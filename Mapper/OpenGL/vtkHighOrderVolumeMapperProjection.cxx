@@ -173,6 +173,13 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   if (this->PrepareProjectionFrame(camera, vol, exactOrder, &setup, &frontToBack, &tf))
   {
     BackToFront(proj, *setup, exactOrder ? frontToBack : nullptr, settings);
+    if (this->OpacitySemantics == GPU_COMPATIBLE)
+    {
+      // Slabs at the property's nodes only; the opacity per fragment is exact
+      // (hov::GPUAverageExtinction), M3 integrates the refined table.
+      settings.ExtinctionTf = &tf->GetTable();
+      settings.InverseUnit = 1.0 / tf->GetUnitDistance();
+    }
   }
   // The cells in groups, built while the previous group is drawn.
   const vtkIdType total = static_cast<vtkIdType>(proj.BackToFront.size());
@@ -184,13 +191,15 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     {
       return false;
     }
-    proj.Statistics.Add(proj.Regions.Build(
-      *setup, proj.BackToFront, next, next + group, tf->GetTable(), settings, geometry));
+    proj.Statistics.Add(proj.Regions.Build(*setup, proj.BackToFront, next, next + group,
+      settings.ExtinctionTf ? tf->GetLinearOpacityTable() : tf->GetTable(), settings, geometry));
     next += group;
     return true;
   };
   vtkHighOrderProjectionRenderer::Options options = RenderOptions(settings);
   options.AnalyticOpacity = this->ProjectionOpacityLookup == OPACITY_ANALYTIC;
+  options.GPUOpacity = settings.ExtinctionTf != nullptr;
+  options.InverseUnit = settings.InverseUnit;
   float* pixels = FloatImagePixels(this->GetFloatImage(), width, height);
   if (!proj.Renderer.Render(ren, produce, proj.Geometry, options, depth, width, height, pixels))
   {

@@ -15,7 +15,7 @@ three ways:
 and the RGBA arrays must be exactly equal (and not empty). The PNG outputs
 must exist and match the float image composited over the background to
 within one 8-bit step. In opengl_projection mode, transfer_function.
-gpu_opacity_tolerance reaches the projection's table in both entry points.
+gpu_opacity_tolerance reaches the projection in both entry points.
 """
 import argparse
 import json
@@ -238,9 +238,10 @@ def run_case(name, spec, args, exe, env):
 
 
 def check_projection_tolerance(args, exe, env):
-    """opengl_projection: transfer_function.gpu_opacity_tolerance, when given, is
-    the projection's table tolerance too (else the mapper's 1e-3): a coarse 0.05
-    changes the image, the same way in both entry points."""
+    """opengl_projection: transfer_function.gpu_opacity_tolerance reaches the
+    projection (its M3 vertex colours integrate the refined extinction table of
+    that tolerance): a coarse 0.05 changes the image (by 1.5e-4 here), the same
+    way in both entry points."""
     folder = os.path.join(os.path.abspath(args.temp), "batch_projection_tolerance")
     os.makedirs(folder, exist_ok=True)
     base = {"data": os.path.join(os.path.abspath(args.data), "bracket_tet4_ccx.vtu"),
@@ -273,7 +274,7 @@ def check_projection_tolerance(args, exe, env):
         check(d <= 1e-6, "projection %s: python and C++ images agree (max %.3g)" % (variant, d))
     d = np.abs(images["default", "cxx"] - images["coarse", "cxx"]).max()
     alpha = images["default", "cxx"][:, 3].max()
-    check(alpha > 0.3 and d > 1e-4,
+    check(alpha > 0.3 and d > 3e-5,
           "projection: gpu_opacity_tolerance 0.05 reaches the projection (max |diff| %.3g, "
           "max alpha %.2f)" % (d, alpha))
 

@@ -107,10 +107,6 @@ void SetupMapper(const hov::BatchSpec& spec, vtkHighOrderVolumeMapper* mapper)
   }
   mapper->SetOpacitySemantics(spec.OpacitySemantics);
   mapper->SetGPUOpacityTolerance(spec.GPUOpacityTolerance);
-  if (spec.GPUOpacityToleranceGiven)
-  {
-    mapper->SetProjectionGPUOpacityTolerance(spec.GPUOpacityTolerance);
-  }
   mapper->SetEmissionModel(spec.EmissionModel);
   mapper->SetEmissionScale(spec.EmissionScale);
   mapper->SetIntegrationMethod(spec.Integration);

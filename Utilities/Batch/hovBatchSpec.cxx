@@ -289,7 +289,7 @@ void ParseTransferFunction(Checker& c, const Json::Value& tf, BatchSpec& spec)
   }
   if (tf.isMember("gpu_opacity_tolerance"))
   {
-    spec.GPUOpacityToleranceGiven = c.Positive(
+    c.Positive(
       tf["gpu_opacity_tolerance"], "transfer_function.gpu_opacity_tolerance", spec.GPUOpacityTolerance);
   }
   if (tf.isMember("emission_model"))

@@ -42,7 +42,6 @@ struct BatchSpec
   double UnitDistance = 1.0;
   int OpacitySemantics = 0; ///< vtkHighOrderVolumeMapper::OpacitySemanticsType
   double GPUOpacityTolerance = 1e-4;
-  bool GPUOpacityToleranceGiven = false; ///< then OPENGL_PROJECTION uses it too (else its 1e-3)
   int EmissionModel = 0;
   double EmissionScale = 1.0;
 

@@ -396,8 +396,6 @@ def setup_mapper(spec, mapper):
         mapper.SetVectorComponent(a["component"])
     mapper.SetOpacitySemantics(t.get("opacity_semantics", 0))
     mapper.SetGPUOpacityTolerance(t.get("gpu_opacity_tolerance", 1e-4))
-    if "gpu_opacity_tolerance" in t:  # else opengl_projection keeps its own 1e-3
-        mapper.SetProjectionGPUOpacityTolerance(t["gpu_opacity_tolerance"])
     mapper.SetEmissionModel(t.get("emission_model", 0))
     mapper.SetEmissionScale(t.get("emission_scale", 1.0))
     mapper.SetIntegrationMethod(spec["integration"])

@@ -16,8 +16,7 @@
 // Options: --frames N, --data bracket|cube46|rt, --method 1|3, --order 1|0
 // (approximate|Stein), --lookup 0|1 (opacity texture|analytic), --no-vtk
 // (ours only, for profiling), --semantics vtk|gpu (ours in VTK-unstructured,
-// the default, or GPU-compatible semantics), --gpu-tolerance T (ours: the
-// GPU-compatible table's tolerance, see SetProjectionGPUOpacityTolerance).
+// the default, or GPU-compatible semantics).
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -210,7 +209,6 @@ int main(int argc, char* argv[])
   int onlyLookup = -1; // --lookup K: 0 opacity texture, 1 analytic
   bool skipVTK = false; // --no-vtk: ours only (profiling)
   bool gpuSemantics = false; // --semantics gpu: ours in GPU-compatible semantics
-  double gpuTolerance = -1.0; // --gpu-tolerance T
   for (int i = 1; i < argc; ++i)
   {
     const bool next = i + 1 < argc;
@@ -242,10 +240,7 @@ int main(int argc, char* argv[])
     {
       gpuSemantics = !std::strcmp(argv[++i], "gpu");
     }
-    else if (!std::strcmp(argv[i], "--gpu-tolerance") && next)
-    {
-      gpuTolerance = std::atof(argv[++i]);
-    }
+
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(HOV_BENCH_DATA_DIR "/bracket_tet4_ccx.vtu");
@@ -334,10 +329,6 @@ int main(int argc, char* argv[])
         else
         {
           ours->SetOpacitySemanticsToVTKUnstructured();
-        }
-        if (gpuTolerance > 0.0)
-        {
-          ours->SetProjectionGPUOpacityTolerance(gpuTolerance);
         }
         ours->SetRenderModeToOpenGLProjection();
         ours->SetProjectionOrder(order);
