@@ -9,12 +9,13 @@
 // perspective, against the CPU path's float image (GPU-compatible, refined
 // table at 1e-4):
 //  1. a steep ramp to opacity 0.95 (strongly convex -ln(1 - a)): M3 within
-//     2/255 with slabs within 3x VTK-unstructured semantics' (the coarse
+//     2/255 (also with Wilhelms-Van Gelder emission and with the opacity
+//     texture) with slabs within 3x VTK-unstructured semantics' (the coarse
 //     refinement of vtkHighOrderTransferFunction::SlabTolerance 0.1; with
 //     slabs at the property's nodes only, M3 was 2.2/255 off: vertex colours
 //     interpolated over too large regions);
 //  2. faint opacities (1e-7 .. 1e-6, where 1 - a in float is useless):
-//     alpha within 1% of the CPU's;
+//     alpha within 1% of the CPU's (analytic lookup and texture);
 //  3. opacity 1 over the top of the range (an opaque medium, a log
 //     singularity where a reaches 1): finite, alpha <= 1, M3 within 2/255.
 #include "hovTestScenes.h"
@@ -68,7 +69,9 @@ Result Run(VolumeScene& scene, vtkRenderWindow* win, int semantics)
   }
   r.Slabs = scene.Mapper->GetNumberOfProjectedSlabs();
   r.Triangles = scene.Mapper->GetNumberOfProjectedTriangles();
-  r.Sane = CheckImage(proj).Ok() && CheckImage(cpu).Covered > 2000;
+  // Finite, 0 <= alpha <= 1 (colour <= alpha does not hold for Wilhelms-Van Gelder glow).
+  const Sanity sp = CheckImage(proj);
+  r.Sane = sp.NonFinite == 0 && sp.AlphaOut == 0 && CheckImage(cpu).Covered > 2000;
   return r;
 }
 }
@@ -98,6 +101,19 @@ int TestProjectionGPUOpacity(int, char*[])
   ck.Check(gpu.Sane && vtk.Sane, "ramp: sane images");
   ck.Check(gpu.Slabs < 3 * vtk.Slabs, "ramp: slabs within 3x VTK-unstructured semantics'");
   ck.Check(gpu.MaxError <= 2.0 / 255, "ramp: M3 within 2/255 of the CPU image");
+  // The same with Wilhelms-Van Gelder emission (the glow divides by the exact
+  // mean extinction) and with HIAC's opacity texture instead of the analytic
+  // lookup.
+  scene.Mapper->SetEmissionModelToWilhelmsVanGelder();
+  const Result wvg = Run(scene, win, vtkHighOrderVolumeMapper::GPU_COMPATIBLE);
+  scene.Mapper->SetEmissionModelToWilliamsMax();
+  scene.Mapper->SetProjectionOpacityLookupToTexture();
+  const Result texture = Run(scene, win, vtkHighOrderVolumeMapper::GPU_COMPATIBLE);
+  scene.Mapper->SetProjectionOpacityLookupToAnalytic();
+  std::cout << "[measured] ramp: Wilhelms-Van Gelder max |M3 - CPU| " << wvg.MaxError * 255
+            << "/255; opacity texture " << texture.MaxError * 255 << "/255" << std::endl;
+  ck.Check(wvg.Sane && wvg.MaxError <= 2.0 / 255, "ramp, Wilhelms-Van Gelder: M3 within 2/255");
+  ck.Check(texture.Sane && texture.MaxError <= 2.0 / 255, "ramp, opacity texture: M3 within 2/255");
 
   // 2. Faint opacities: 1 - a is 1 in float below a = 6e-8, and off by up to
   // 30% at a = 1e-7 (its spacing near 1 is 6e-8): the fragment shader must
@@ -114,6 +130,12 @@ int TestProjectionGPUOpacity(int, char*[])
   ck.Check(faint.MaxAlpha > 0.0 && faint.MaxAlphaError <= 1e-2 * faint.MaxAlpha &&
       faint.MaxRelativeAlpha <= 1e-2,
     "faint: alpha within 1% of the CPU's (of the largest alpha, and per pixel)");
+  scene.Mapper->SetProjectionOpacityLookupToTexture();
+  const Result faintTexture = Run(scene, win, vtkHighOrderVolumeMapper::GPU_COMPATIBLE);
+  scene.Mapper->SetProjectionOpacityLookupToAnalytic();
+  std::cout << "[measured] faint, opacity texture: max relative alpha error "
+            << faintTexture.MaxRelativeAlpha << std::endl;
+  ck.Check(faintTexture.MaxRelativeAlpha <= 1e-2, "faint, opacity texture: alpha within 1%");
 
   // 3. Opaque medium over the top of the range.
   scene.Tf.Opacity->RemoveAllPoints();
