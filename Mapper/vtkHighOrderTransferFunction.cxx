@@ -328,5 +328,6 @@ void vtkHighOrderTransferFunction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EmissionScale: " << this->EmissionScale << "\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "SamplingTolerance: " << this->SamplingTolerance << "\n";
+  os << indent << "SlabTolerance: " << this->SlabTolerance << "\n";
   os << indent << "NumberOfNodes: " << this->Table->GetNumberOfNodes() << "\n";
 }
