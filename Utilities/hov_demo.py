@@ -11,6 +11,7 @@ Renders the bundled bracket (linear tetrahedra, CalculiX von Mises stress) with
   * vtkProjectedTetrahedraMapper with its default vtkCellCenterDepthSort and with our
     vtkSteinVisibilitySort,
   * vtkUnstructuredGridVolumeRayCastMapper (Bunyk + vtkUnstructuredGridLinearRayIntegrator),
+  * vtkHighOrderVolumeMapper's fast OPENGL_PROJECTION mode (HIAC 7), colour methods M1 and M3,
   * vtkHighOrderVolumeMapper in GPU-compatible opacity semantics (extra, not comparable),
 
 all under the same camera and the same vtkVolumeProperty, 512x512 offscreen; then (unless
@@ -311,6 +312,14 @@ def main():
             m.SetCellOrderingToVisibilitySort()
         return m
 
+    def hov_projection(method):
+        # The fast OpenGL path (HIAC 7), default exact (Stein) order.
+        m = vtkHighOrderVolumeMapper()
+        m.SetRenderModeToOpenGLProjection()
+        m.SetOpacitySemanticsToVTKUnstructured()
+        m.SetProjectionColorMethod(method)
+        return m
+
     pt = vtkProjectedTetrahedraMapper()
     pt_stein = vtkProjectedTetrahedraMapper()
     pt_stein.SetVisibilitySort(vtkSteinVisibilitySort())
@@ -340,6 +349,14 @@ def main():
         {"key": "ug_raycast", "mapper": rc, "semantics": "VTK-unstructured",
          "name": "vtkUnstructuredGridVolumeRayCastMapper (Bunyk, linear integrator)",
          "label": "vtkUnstructuredGridVolumeRayCastMapper"},
+        {"key": "hov_projection_m1", "mapper": hov_projection(1),
+         "semantics": "VTK-unstructured",
+         "name": "vtkHighOrderVolumeMapper, OPENGL_PROJECTION M1 (fast path)",
+         "label": "HighOrderVolume OpenGL projection M1"},
+        {"key": "hov_projection_m3", "mapper": hov_projection(3),
+         "semantics": "VTK-unstructured",
+         "name": "vtkHighOrderVolumeMapper, OPENGL_PROJECTION M3 (fast path, default colour)",
+         "label": "HighOrderVolume OpenGL projection M3"},
         {"key": "hov_gpu", "mapper": hov("gpu", "pixel"), "semantics": "GPU-compatible",
          "name": "vtkHighOrderVolumeMapper, per-pixel sort, GPU-compatible (extra)",
          "label": "HighOrderVolume, GPU-compatible semantics"},
