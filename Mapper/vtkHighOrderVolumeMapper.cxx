@@ -372,6 +372,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     return status;
   }
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  this->NumberOfRays = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
 

@@ -530,6 +530,11 @@ public:
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(NumberOfSegments, vtkIdType);
   vtkGetMacro(NumberOfPieces, vtkIdType);
+  /// RAY_CAST: rays traced (pixels with a non-empty view interval; of the
+  /// reduced grid in an interactive frame). NumberOfSegments then counts the
+  /// cell intervals integrated, NumberOfPieces those plus the breakpoints
+  /// located in them (the smooth pieces).
+  vtkGetMacro(NumberOfRays, vtkIdType);
   /// Wall-clock seconds of the last image computation (sort + integration).
   vtkGetMacro(LastImageTime, double);
   ///@}
@@ -602,6 +607,7 @@ protected:
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfSegments = 0;
   vtkIdType NumberOfPieces = 0;
+  vtkIdType NumberOfRays = 0;
   double LastImageTime = 0.0;
   bool LastRenderAborted = false;
 

@@ -59,6 +59,7 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   rgba.assign(4 * pixels, 0.0);
   st.Error.assign(pixels, 0.0f);
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  this->NumberOfRays = 0;
   this->NumberOfSplattedCells = this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
   this->LastRenderWasInteractive = false;
   auto finish = [&](int status) {
@@ -209,6 +210,9 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / (rw * rh);
   }
   this->LastRenderAborted = issues.Aborted;
+  this->NumberOfRays = issues.Rays;
+  this->NumberOfSegments = issues.Segments;
+  this->NumberOfPieces = issues.Segments + issues.Breakpoints;
   if (issues.NotConverged > 0 || issues.NotFinite > 0)
   {
     vtkWarningMacro("RAY_CAST: " << issues.NotConverged << " of " << rw * rh

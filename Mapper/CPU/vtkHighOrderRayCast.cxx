@@ -56,7 +56,7 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
   const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
   Issues* issues, const vtkHighOrderProgressFunction& progress) const
 {
-  std::atomic<long long> notConverged(0), notFinite(0);
+  std::atomic<long long> notConverged(0), notFinite(0), traced(0), segments(0), breakpoints(0);
   if (!this->Ready || !rgba)
   {
     return false;
@@ -65,6 +65,7 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
   // One row is one "tile" of the batch loop; rows not traced stay zero.
   const int rowsDone = vtkHighOrderForTileBatches(height, progress, [&](vtkIdType j) {
     {
+      long long rowRays = 0, rowSegments = 0, rowBreakpoints = 0;
       for (int i = 0; i < width; ++i)
       {
         const size_t p = static_cast<size_t>(j) * width + i;
@@ -83,6 +84,9 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
           {
             ++notConverged;
           }
+          ++rowRays;
+          rowSegments += stats.Segments;
+          rowBreakpoints += stats.Breakpoints;
         }
         if (!(std::isfinite(c.R) && std::isfinite(c.G) && std::isfinite(c.B) &&
               std::isfinite(c.A) && std::isfinite(e)))
@@ -100,12 +104,18 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
           error[p] = static_cast<float>(e);
         }
       }
+      traced += rowRays;
+      segments += rowSegments;
+      breakpoints += rowBreakpoints;
     }
   });
   if (issues)
   {
     issues->NotConverged = notConverged.load();
     issues->NotFinite = notFinite.load();
+    issues->Rays = traced.load();
+    issues->Segments = segments.load();
+    issues->Breakpoints = breakpoints.load();
     issues->Aborted = rowsDone < height;
   }
   return true;

@@ -77,6 +77,9 @@ public:
   {
     long long NotConverged = 0;
     long long NotFinite = 0;
+    long long Rays = 0;        ///< rays traced (pixels with a non-empty view interval)
+    long long Segments = 0;    ///< cell intervals integrated (CurvedRayStats::Segments)
+    long long Breakpoints = 0; ///< transfer-function breakpoints located inside them
     bool Aborted = false; ///< @p progress returned true: the rows not traced are zero
   };
   /// @p progress (may be empty): called on the calling thread after each of

@@ -147,6 +147,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     return;
   }
   this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
+  this->NumberOfRays = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfProjectedTriangles = this->NumberOfProjectedSlabs = 0;
   if (!proj.WarnedFeatures &&

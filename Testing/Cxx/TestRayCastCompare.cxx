@@ -73,6 +73,14 @@ DiffStats Compare(Checker& ck, vtkUnstructuredGrid* grid, vtkCamera* cam, int w,
   ck.Check(s.Ok() && s.Covered > 0 && s.Covered == sc.Covered, name + ": sane, same coverage");
   ck.Check(d.Count > 0 && d.Max < bound, name + ": max difference below " + Fmt(bound));
   ck.Check(err >= 0.0 && err <= 1e-3, name + ": error estimate <= tolerance 1e-3");
+  // Statistics: every covered pixel traced a ray with at least one segment.
+  const vtkIdType rays = scene.Mapper->GetNumberOfRays(), segments = scene.Mapper->GetNumberOfSegments();
+  std::cout << "[measured] " << name << ": rays " << rays << ", segments " << segments
+            << ", pieces " << scene.Mapper->GetNumberOfPieces() << std::endl;
+  ck.Check(rays >= static_cast<vtkIdType>(s.Covered) && rays <= static_cast<vtkIdType>(w) * h &&
+      segments >= static_cast<vtkIdType>(s.Covered) &&
+      scene.Mapper->GetNumberOfPieces() >= segments,
+    name + ": rays, segments and pieces counted");
   return d;
 }
 
@@ -289,7 +297,7 @@ void LevelOfDetail(Checker& ck, vtkUnstructuredGrid* grid)
   win->SetDesiredUpdateRate(15.0);
   win->Render();
   const bool interactive = scene.Mapper->GetLastRenderWasInteractive() &&
-    scene.Mapper->GetLastRayCastSubsampling() == 2;
+    scene.Mapper->GetLastRayCastSubsampling() == 2 && scene.Mapper->GetNumberOfRays() <= 24 * 24;
   const Image fast = FloatImage(scene.Mapper);
   win->SetDesiredUpdateRate(0.0001);
   win->Render();
