@@ -71,6 +71,7 @@ void CheckCase(Checker& ck, VolumeScene& scene, vtkCamera* cam, const std::strin
   ck.Check(monotone && log.Values.back() == 1.0 && log.Values.size() >= 10,
     name + ": " + std::to_string(log.Values.size()) + " progress events from 0, non-decreasing, last " +
       Fmt(log.Values.empty() ? -1.0 : log.Values.back()));
+  const vtkIdType fullWork = mapper->GetNumberOfSegments();
   ck.Check(observed.V == plain.V && NonZero(plain) > 1000 && !mapper->GetLastRenderAborted(),
     name + ": image with progress bit-identical to the plain one (" + std::to_string(NonZero(plain)) +
       " covered pixels)");
@@ -89,6 +90,9 @@ void CheckCase(Checker& ck, VolumeScene& scene, vtkCamera* cam, const std::strin
   }
   ck.Check(mapper->GetLastRenderAborted() && log.Values.back() < 0.5,
     name + ": aborted at progress " + Fmt(log.Values.back()));
+  ck.Check(mapper->GetNumberOfSegments() < fullWork,
+    name + ": the aborted render integrated fewer segments (" +
+      std::to_string(mapper->GetNumberOfSegments()) + " of " + std::to_string(fullWork) + ")");
   ck.Check(nan == 0 && mismatch == 0 && NonZero(aborted) < NonZero(plain),
     name + ": aborted image: " + std::to_string(nan) + " NaN, " + std::to_string(mismatch) +
       " values differing from the full image outside zero tiles, " +
