@@ -90,10 +90,10 @@ public:
   const hov::TransferFunction& GetTable() const { return *this->Table; }
   /**
    * GPU-compatible semantics only (else GetTable()): the table of the same
-   * colour and opacity nodes without refinement, whose "extinction" is the
-   * opacity a(s) itself (clamped to [0, 1], linear between nodes), for the
-   * OpenGL projection's exact per-fragment extinction
-   * (hov::GPUAverageExtinction): its slabs need only these nodes.
+   * colour and opacity nodes, plus the coarse refinement nodes of
+   * SlabTolerance, whose "extinction" is the opacity a(s) itself (clamped to
+   * [0, 1], linear between nodes), for the OpenGL projection's exact
+   * per-fragment extinction (hov::GPUAverageExtinction).
    */
   const hov::TransferFunction& GetLinearOpacityTable() const
   {

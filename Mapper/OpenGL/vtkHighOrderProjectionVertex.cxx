@@ -1,10 +1,9 @@
 #include "vtkHighOrderProjectionVertex.h"
 
-#include "hovRayIntegrator.h"    // IntegrateLinearScalar (M3, GPU-compatible semantics)
 #include "hovTransferFunction.h" // Evaluate
 
-#include <algorithm> // std::max
-#include <cmath>     // std::isfinite, std::log, std::expm1
+#include <algorithm> // std::min
+#include <cmath>     // std::isfinite
 
 unsigned int vtkHighOrderProjectionChunk::NumberOfVertices() const
 {
@@ -52,49 +51,6 @@ bool OpaqueInterval(const hov::TransferFunction& tf, int k)
   const double width = tf.GetNodes()[k + 1] - tf.GetNodes()[k];
   return node.Tau >= 1.0 && node.Tau + node.DTau * width >= 1.0;
 }
-
-/// Extinction -ln(1 - a)/u at one end (1 - a clamped as the tables do).
-double EndExtinction(double a, double inverseUnit)
-{
-  return -std::log(std::max(1.0 - a, hov::OpaqueClamp)) * inverseUnit;
-}
-
-/// The vertex colour in GPU-compatible semantics (see the class doc): the
-/// ends' opacities @p ef.Tau, @p eb.Tau from the linear-opacity table.
-hov::ProjectionVertexColor GPUVertex(const vtkHighOrderProjectionFrame& f, double length,
-  double sFront, double sBack, const hov::SegmentEnd& ef, const hov::SegmentEnd& eb)
-{
-  hov::SegmentEnd front = ef, back = eb; // the same colours, exact end extinctions
-  front.Tau = EndExtinction(ef.Tau, f.InverseUnit);
-  back.Tau = EndExtinction(eb.Tau, f.InverseUnit);
-  hov::ProjectionVertexColor v =
-    hov::ComputeProjectionVertex(f.Method, f.Emission, length, front, back, *f.Table);
-  const double tauAvg = hov::GPUAverageExtinction(ef.Tau, eb.Tau) * f.InverseUnit;
-  const double depth = std::max(length, 0.0) * tauAvg;
-  if (f.Method == hov::ProjectionColorMethod::InterpolatedOpacity)
-  {
-    v.Alpha = -std::expm1(-depth);
-  }
-  else if (f.Method == hov::ProjectionColorMethod::ExactColor)
-  {
-    hov::IntegrationSettings settings;
-    settings.Emission = f.Emission;
-    const hov::RGBA c = hov::IntegrateLinearScalar(*f.ExtinctionTf, sFront, sBack, length, settings);
-    // Williams-Max: k = C / A; Wilhelms-Van Gelder: the effective glow C / (L phi(D)).
-    const double glow = depth > 1e-8 ? -std::expm1(-depth) / depth : 1.0;
-    const double denominator = f.Emission == hov::EmissionModel::WilhelmsVanGelder
-      ? length * glow
-      : c.A;
-    v.Alpha = c.A;
-    if (denominator > 0.0 && std::isfinite(denominator))
-    {
-      v.Color[0] = c.R / denominator;
-      v.Color[1] = c.G / denominator;
-      v.Color[2] = c.B / denominator;
-    }
-  }
-  return v;
-}
 }
 
 bool vtkHighOrderProjectionVertex::Write(const vtkHighOrderProjectionFrame& f, int k, double x,
@@ -109,7 +65,9 @@ bool vtkHighOrderProjectionVertex::Write(const vtkHighOrderProjectionFrame& f, i
   hov::ProjectionVertexColor v;
   if (f.ExtinctionTf)
   {
-    v = GPUVertex(f, length, sFront, sBack, ef, eb); // ef.Tau, eb.Tau are opacities
+    // ef.Tau, eb.Tau are opacities (the linear-opacity table).
+    v = hov::ComputeProjectionVertexGPU(f.Method, f.Emission, length, ef, eb, sFront, sBack,
+      *f.ExtinctionTf, f.InverseUnit, *f.Table);
     if (OpaqueInterval(*f.Tf, k))
     {
       ef.Tau = eb.Tau = 2.0;

@@ -1,6 +1,7 @@
 #include "hovProjectionColor.h"
 
-#include "hovOpacityRefinement.h" // OpaqueClamp
+#include "hovOpacityRefinement.h" // OpaqueClamp, GPUExtinction
+#include "hovRayIntegrator.h"     // IntegrateLinearScalar (M3 in GPU-compatible semantics)
 
 #include <algorithm> // std::min, std::max
 #include <cmath>     // std::expm1, std::sqrt, std::log1p
@@ -28,6 +29,27 @@ double GlowFactor(double depth)
 {
   // Below 1e-8 the ratio is 1 - D/2 + ... = 1 to double precision.
   return depth > 1e-8 ? -std::expm1(-depth) / depth : 1.0;
+}
+
+/**
+ * Method M3 from the segment's exact integral @p c (optical depth @p depth):
+ * chromaticity C / A (Williams-Max) or effective glow C / (L phi(D))
+ * (Wilhelms-Van Gelder). The thin-segment series keeps C and A relatively
+ * accurate, so the ratios are accurate for any positive denominator; at zero
+ * @p out keeps its colour (the average, the limit).
+ */
+void ExactColor(const RGBA& c, EmissionModel emission, double length, double depth,
+  ProjectionVertexColor& out)
+{
+  out.Alpha = c.A;
+  const double denominator =
+    emission == EmissionModel::WilhelmsVanGelder ? length * GlowFactor(depth) : c.A;
+  if (denominator > 0.0 && std::isfinite(denominator))
+  {
+    out.Color[0] = c.R / denominator;
+    out.Color[1] = c.G / denominator;
+    out.Color[2] = c.B / denominator;
+  }
 }
 }
 
@@ -104,18 +126,38 @@ ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method, Emis
   }
   else if (method == ProjectionColorMethod::ExactColor)
   {
-    const RGBA c = IntegrateSegment(length, front, back, emission, SegmentMethod::Exact);
-    out.Alpha = c.A;
-    // The thin-segment series keeps C and A relatively accurate, so the
-    // ratios are accurate for any positive denominator; at zero the limit is
-    // the average.
-    const double denominator = wvg ? length * GlowFactor(depth) : c.A;
-    if (denominator > 0.0)
-    {
-      out.Color[0] = c.R / denominator;
-      out.Color[1] = c.G / denominator;
-      out.Color[2] = c.B / denominator;
-    }
+    ExactColor(IntegrateSegment(length, front, back, emission, SegmentMethod::Exact), emission,
+      length, depth, out);
+  }
+  return out;
+}
+
+ProjectionVertexColor ComputeProjectionVertexGPU(ProjectionColorMethod method,
+  EmissionModel emission, double length, const SegmentEnd& front, const SegmentEnd& back,
+  double sFront, double sBack, const TransferFunction& extinction, double inverseUnit,
+  const SegmentColorTable& table)
+{
+  // The same colours, the exact extinctions of the ends (M2's table reads them).
+  SegmentEnd f = front, b = back;
+  f.Tau = GPUExtinction(front.Tau, 1.0 - front.Tau, inverseUnit);
+  b.Tau = GPUExtinction(back.Tau, 1.0 - back.Tau, inverseUnit);
+  const bool exact = method == ProjectionColorMethod::ExactColor;
+  // M3 replaces the colour below: start from M1 (its fallback) rather than
+  // integrating the linearised segment for nothing.
+  ProjectionVertexColor out = ComputeProjectionVertex(
+    exact ? ProjectionColorMethod::AverageColor : method, emission, length, f, b, table);
+  const double depth =
+    std::max(length, 0.0) * GPUAverageExtinction(front.Tau, back.Tau) * inverseUnit;
+  if (method == ProjectionColorMethod::InterpolatedOpacity)
+  {
+    out.Alpha = -std::expm1(-depth);
+  }
+  else if (exact)
+  {
+    IntegrationSettings settings;
+    settings.Emission = emission;
+    ExactColor(IntegrateLinearScalar(extinction, sFront, sBack, length, settings), emission, length,
+      depth, out);
   }
   return out;
 }

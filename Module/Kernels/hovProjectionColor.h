@@ -57,6 +57,7 @@
 
 namespace hov
 {
+class TransferFunction;
 /// HIAC section 7's colour methods, in increasing order of accuracy.
 enum class ProjectionColorMethod
 {
@@ -101,6 +102,20 @@ private:
  */
 HOV_EXPORT ProjectionVertexColor ComputeProjectionVertex(ProjectionColorMethod method,
   EmissionModel emission, double length, const SegmentEnd& front, const SegmentEnd& back,
+  const SegmentColorTable& table);
+
+/**
+ * The vertex quantities in GPU-compatible semantics, where the projection's
+ * slabs follow the linear opacity (GPUAverageExtinction): @p front.Tau and
+ * @p back.Tau are the opacities at the segment's ends, @p sFront, @p sBack its
+ * scalars, @p extinction the refined extinction table. M0's opacity uses the
+ * exact mean extinction; M3 integrates @p extinction over the segment
+ * (hov::IntegrateLinearScalar, the CPU path's kernel); M1, M2 as
+ * ComputeProjectionVertex with the ends' exact extinctions.
+ */
+HOV_EXPORT ProjectionVertexColor ComputeProjectionVertexGPU(ProjectionColorMethod method,
+  EmissionModel emission, double length, const SegmentEnd& front, const SegmentEnd& back,
+  double sFront, double sBack, const TransferFunction& extinction, double inverseUnit,
   const SegmentColorTable& table);
 
 /**

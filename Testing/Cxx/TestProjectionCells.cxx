@@ -100,13 +100,8 @@ int TestProjectionCells(int, char*[])
       cam->SetParallelScale(1.3);
       cam->SetViewAngle(35);
       cam->SetClippingRange(1, 10);
-      scene.Mapper->SetRenderModeToCPUAccurate();
-      win->Render();
-      const Image cpu = FloatImage(scene.Mapper);
-      scene.Mapper->SetRenderModeToOpenGLProjection();
-      scene.Mapper->SetProjectionColorMethod(vtkHighOrderVolumeMapper::EXACT_COLOR);
-      win->Render();
-      const Image proj = FloatImage(scene.Mapper);
+      const CPUAndProjection images = RenderCPUAndProjectionM3(scene.Mapper, win);
+      const Image &cpu = images.CPU, &proj = images.Projection;
       const double err = Diff(proj, cpu).Max;
       const std::string label = std::string(parallel ? "parallel" : "perspective") +
         (inside ? ", node inside the cells" : ", no node inside");
@@ -136,12 +131,8 @@ int TestProjectionCells(int, char*[])
   // node of the property inside; the extinction per fragment is exact.
   scene.Mapper->SetOpacitySemanticsToGPUCompatible();
   cam->SetParallelProjection(0);
-  scene.Mapper->SetRenderModeToCPUAccurate();
-  win->Render();
-  const Image cpuGPU = FloatImage(scene.Mapper);
-  scene.Mapper->SetRenderModeToOpenGLProjection();
-  win->Render();
-  const double errGPU = Diff(FloatImage(scene.Mapper), cpuGPU).Max;
+  const CPUAndProjection gpu = RenderCPUAndProjectionM3(scene.Mapper, win);
+  const double errGPU = Diff(gpu.Projection, gpu.CPU).Max;
   std::cout << "GPU-compatible semantics, perspective: max |M3 - CPU| = " << errGPU * 255
             << "/255, slabs " << scene.Mapper->GetNumberOfProjectedSlabs() << "\n";
   ck.Check(errGPU <= 8.0 / 255 && scene.Mapper->GetNumberOfProjectedSlabs() > 4,

@@ -48,13 +48,8 @@ Result Run(VolumeScene& scene, vtkRenderWindow* win, int semantics)
 {
   Result r;
   scene.Mapper->SetOpacitySemantics(semantics);
-  scene.Mapper->SetRenderModeToCPUAccurate();
-  win->Render();
-  const Image cpu = FloatImage(scene.Mapper);
-  scene.Mapper->SetRenderModeToOpenGLProjection();
-  scene.Mapper->SetProjectionColorMethod(vtkHighOrderVolumeMapper::EXACT_COLOR);
-  win->Render();
-  const Image proj = FloatImage(scene.Mapper);
+  const CPUAndProjection images = RenderCPUAndProjectionM3(scene.Mapper, win);
+  const Image &cpu = images.CPU, &proj = images.Projection;
   r.MaxError = Diff(proj, cpu).Max;
   r.MaxAlphaError = Diff(proj, cpu, 3, 4).Max;
   r.MaxAlpha = CheckImage(cpu).MaxA;

@@ -202,6 +202,19 @@ vtkSmartPointer<vtkRenderWindow> OffscreenWindow(vtkRenderer* ren, int w, int h,
   return win;
 }
 
+CPUAndProjection RenderCPUAndProjectionM3(vtkHighOrderVolumeMapper* mapper, vtkRenderWindow* win)
+{
+  CPUAndProjection out;
+  mapper->SetRenderModeToCPUAccurate();
+  win->Render();
+  out.CPU = FloatImage(mapper);
+  mapper->SetRenderModeToOpenGLProjection();
+  mapper->SetProjectionColorMethod(vtkHighOrderVolumeMapper::EXACT_COLOR);
+  win->Render();
+  out.Projection = FloatImage(mapper);
+  return out;
+}
+
 vtkSmartPointer<vtkActor> BoxActor(const double b[6], const double rgb[3], double opacity)
 {
   // (Built by hand: vtkCubeSource's module is not linked into the tests.)

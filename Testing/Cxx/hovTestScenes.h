@@ -132,6 +132,14 @@ vtkSmartPointer<vtkRenderer> BlackRenderer(vtkCamera* cam);
 vtkSmartPointer<vtkRenderWindow> OffscreenWindow(
   vtkRenderer* ren, int w, int h, int multiSamples = -1);
 
+/// The float images of @p mapper rendered in @p win with CPU_ACCURATE, then
+/// with OPENGL_PROJECTION and colour method M3 (the mapper is left in that mode).
+struct CPUAndProjection
+{
+  Image CPU, Projection;
+};
+CPUAndProjection RenderCPUAndProjectionM3(vtkHighOrderVolumeMapper* mapper, vtkRenderWindow* win);
+
 /// An unlit box actor over @p b (xmin,xmax,ymin,ymax,zmin,zmax) of flat
 /// colour @p rgb and opacity @p opacity.
 vtkSmartPointer<vtkActor> BoxActor(const double b[6], const double rgb[3], double opacity = 1.0);
