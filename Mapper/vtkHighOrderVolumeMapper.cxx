@@ -277,12 +277,17 @@ bool vtkHighOrderVolumeMapper::PrepareOrder(
   return true;
 }
 
-bool vtkHighOrderVolumeMapper::ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height)
+bool vtkHighOrderVolumeMapper::ValidateInputs(
+  vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect)
 {
   if (!camera || !volume || width <= 0 || height <= 0)
   {
     vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
     return false;
+  }
+  if (!this->CheckFrameView(camera, volume, aspect))
+  {
+    return false; // the error was reported
   }
   if (this->GetNumberOfInputConnections(0) > 0)
   {
@@ -308,7 +313,7 @@ bool vtkHighOrderVolumeMapper::ValidateInputs(vtkCamera* camera, vtkVolume* volu
   return true;
 }
 
-bool vtkHighOrderVolumeMapper::PrepareTransferFunction(vtkVolumeProperty* property)
+bool vtkHighOrderVolumeMapper::PrepareTransferFunction(vtkVolumeProperty* property, bool* rebuilt)
 {
   Internals& impl = *this->Impl;
   vtkHighOrderTransferFunction* tf = impl.TransferFunction;
@@ -328,13 +333,18 @@ bool vtkHighOrderVolumeMapper::PrepareTransferFunction(vtkVolumeProperty* proper
       vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
     }
   }
+  if (rebuilt)
+  {
+    *rebuilt = tf->GetBuildCount() != buildsBefore;
+  }
   // Nothing absorbs: nothing to see, unless the glow does not need extinction.
   return tf->GetTable().HasExtinction() || this->EmissionModel == WILHELMS_VAN_GELDER;
 }
 
-void vtkHighOrderVolumeMapper::PublishImage(int width, int height)
+void vtkHighOrderVolumeMapper::PublishImage(int width, int height, bool drawn)
 {
   Internals& impl = *this->Impl;
+  this->CheckFrameImage(impl.RGBA.data(), impl.RGBA.size() / 4, drawn);
   vtkImageData* image = impl.FloatImage;
   image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
   vtkNew<vtkFloatArray> array;
@@ -360,9 +370,10 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   this->UpdateProgress(0.0);
   if (this->RenderMode == RAY_CAST)
   {
+    bool drawn = false;
     const int status =
-      this->ComputeRayCastImage(camera, volume, width, height, aspect, depth, impl.RGBA);
-    this->PublishImage(width, height);
+      this->ComputeRayCastImage(camera, volume, width, height, aspect, depth, impl.RGBA, drawn);
+    this->PublishImage(width, height, drawn);
     if (!this->LastRenderAborted && this->GetProgress() < 1.0)
     {
       this->UpdateProgress(1.0); // nothing to trace
@@ -376,15 +387,24 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   this->NumberOfSplattedCells = 0;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
 
-  const bool ok = this->ValidateInputs(camera, volume, width, height);
+  bool ok = this->ValidateInputs(camera, volume, width, height, aspect);
   // Isosurfaces are visible even where the volume does not absorb.
-  bool render = ok && impl.Setup.GetNumberOfRenderedCells() > 0 &&
-    (this->PrepareTransferFunction(volume->GetProperty()) || this->GetNumberOfIsosurfaces() > 0);
+  bool render = ok && impl.Setup.GetNumberOfRenderedCells() > 0;
+  bool rebuilt = false;
+  if (render && !this->PrepareTransferFunction(volume->GetProperty(), &rebuilt) &&
+    this->GetNumberOfIsosurfaces() == 0)
+  {
+    if (rebuilt)
+    {
+      this->WarnTransparent();
+    }
+    render = false;
+  }
   vtkHighOrderViewRays rays;
   if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
   {
     vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
-    render = false;
+    render = ok = false;
   }
   if (render)
   {
@@ -435,7 +455,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     this->NumberOfSegments = st.Segments;
     this->NumberOfPieces = st.Pieces;
   }
-  this->PublishImage(width, height);
+  this->PublishImage(width, height, render);
   if (!this->LastRenderAborted && this->GetProgress() < 1.0)
   {
     this->UpdateProgress(1.0); // nothing to render, or no tile loop
@@ -460,7 +480,7 @@ int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, 
 }
 
 bool vtkHighOrderVolumeMapper::PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume,
-  bool exactOrder, const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
+  double aspect, bool exactOrder, const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
   vtkHighOrderTransferFunction** tf)
 {
   Internals& impl = *this->Impl;
@@ -468,9 +488,21 @@ bool vtkHighOrderVolumeMapper::PrepareProjectionFrame(vtkCamera* camera, vtkVolu
   *frontToBack = &impl.FrontToBack;
   *tf = impl.TransferFunction;
   this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
-  return this->ValidateInputs(camera, volume, 1, 1) && impl.Setup.GetNumberOfRenderedCells() > 0 &&
-    this->PrepareTransferFunction(volume->GetProperty()) &&
-    (!exactOrder || this->PrepareOrder(camera, volume, true));
+  if (!this->ValidateInputs(camera, volume, 1, 1, aspect) ||
+    impl.Setup.GetNumberOfRenderedCells() == 0)
+  {
+    return false;
+  }
+  bool rebuilt = false;
+  if (!this->PrepareTransferFunction(volume->GetProperty(), &rebuilt))
+  {
+    if (rebuilt)
+    {
+      this->WarnTransparent();
+    }
+    return false;
+  }
+  return !exactOrder || this->PrepareOrder(camera, volume, true);
 }
 
 void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)

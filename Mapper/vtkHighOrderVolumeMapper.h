@@ -146,7 +146,7 @@ public:
 
   ///@{
   /// Relative tolerance of the linearised GPU-compatible extinction (default 1e-4).
-  /// Clamped to [1e-12, 0.1]; NaN/Inf is refused with an error (the value stays).
+  /// Clamped to [1e-12, 0.1] (with a warning); NaN/Inf is refused with an error (the value stays).
   virtual void SetGPUOpacityTolerance(double value);
   vtkGetMacro(GPUOpacityTolerance, double);
   ///@}
@@ -162,7 +162,10 @@ public:
   vtkGetMacro(EmissionModel, int);
   void SetEmissionModelToWilliamsMax() { this->SetEmissionModel(WILLIAMS_MAX); }
   void SetEmissionModelToWilhelmsVanGelder() { this->SetEmissionModel(WILHELMS_VAN_GELDER); }
-  vtkSetMacro(EmissionScale, double);
+  /// Glow multiplier of WILHELMS_VAN_GELDER. Clamped to [0, 1e6] with a
+  /// warning (larger values only overflow the image); NaN/Inf is refused with
+  /// an error (the value stays).
+  virtual void SetEmissionScale(double value);
   vtkGetMacro(EmissionScale, double);
   ///@}
 
@@ -240,7 +243,7 @@ public:
    * A pixel stops compositing once its transmittance is at most this value
    * (the error this causes is at most the value). Default 1e-9; 0 disables.
    */
-  /// Clamped to [0.0, 0.1]; NaN/Inf is refused with an error (the value stays).
+  /// Clamped to [0.0, 0.1] (with a warning); NaN/Inf is refused with an error (the value stays).
   virtual void SetTerminationTransmittance(double value);
   vtkGetMacro(TerminationTransmittance, double);
   ///@}
@@ -341,7 +344,7 @@ public:
   vtkSetMacro(Splatting, bool);
   vtkGetMacro(Splatting, bool);
   vtkBooleanMacro(Splatting, bool);
-  /// Clamped to [0.0, 1e6]; NaN/Inf is refused with an error (the value stays).
+  /// Clamped to [0.0, 1e6] (with a warning); NaN/Inf is refused with an error (the value stays).
   virtual void SetSplatPixelThreshold(double value);
   vtkGetMacro(SplatPixelThreshold, double);
   /// Cells splatted in the last render.
@@ -419,14 +422,14 @@ public:
    * premultiplied RGBA (ElVis's "pixel-exact" 0.001 by default), handed to
    * the segment quadrature (CurvedSegmentSettings::Quadrature.Tolerance).
    */
-  /// Clamped to [1e-12, 0.1]; NaN/Inf is refused with an error (the value stays).
+  /// Clamped to [1e-12, 0.1] (with a warning); NaN/Inf is refused with an error (the value stays).
   virtual void SetRayCastTolerance(double value);
   vtkGetMacro(RayCastTolerance, double);
   ///@}
 
   ///@{
   /// RAY_CAST interaction threshold in frames per second (see RenderMode).
-  /// Clamped to [0.0, 1e6]; NaN/Inf is refused with an error (the value stays).
+  /// Clamped to [0.0, 1e6] (with a warning); NaN/Inf is refused with an error (the value stays).
   virtual void SetRayCastInteractiveUpdateRate(double value);
   vtkGetMacro(RayCastInteractiveUpdateRate, double);
   /// Whether the last RAY_CAST frame was the cheaper interactive one.
@@ -617,14 +620,27 @@ private:
 
   int ComputeImage(vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect,
     const float* depth);
-  bool ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height);
+  bool ValidateInputs(vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect);
+  // Frame checks shared by every mode (vtkHighOrderVolumeMapperChecks.cxx).
+  /// False (an error reported) if the camera/volume give no usable view.
+  bool CheckFrameView(vtkCamera* camera, vtkVolume* volume, double aspect);
+  /// Zeroes non-finite/overflowing pixels (one warning) and warns once when a
+  /// drawn image (@p drawn: cells were rendered) is empty.
+  template <typename T>
+  void CheckFrameImage(T* rgba, size_t pixels, bool drawn);
+  void WarnTransparent();
+  bool WarnedEmptyImage = false;
+  vtkMTimeType WarnedEmptyTime = 0;
   bool PrepareCells(vtkVolume* volume);
-  bool PrepareTransferFunction(vtkVolumeProperty* property);
+  /// False if the volume is invisible (no extinction and no WVG glow);
+  /// @p rebuilt (if given): whether the table was rebuilt now.
+  bool PrepareTransferFunction(vtkVolumeProperty* property, bool* rebuilt = nullptr);
   /// The front-to-back cell order: the VisibilitySort's, or any order with
   /// PER_PIXEL_SORT unless @p needVisibilitySort (cell projection has no
   /// per-pixel sort).
   bool PrepareOrder(vtkCamera* camera, vtkVolume* volume, bool needVisibilitySort = false);
-  void PublishImage(int width, int height);
+  /// impl.RGBA into the float image, after CheckFrameImage (@p drawn: see there).
+  void PublishImage(int width, int height, bool drawn);
   /// Progress callback of the CPU tile loop: true to abort.
   bool ReportTileProgress(double done);
   /// Feature set-up of a frame: -1 error (reported), 0 no feature active, 1 active.
@@ -634,15 +650,18 @@ private:
   void RenderProjection(vtkRenderer* ren, vtkVolume* vol);
   /// Cells, transfer function and (exact order) front-to-back order of a
   /// projection frame; false if nothing is to be drawn (errors reported).
-  bool PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume, bool exactOrder,
+  bool PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume, double aspect, bool exactOrder,
     const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
     vtkHighOrderTransferFunction** tf);
+  /// One warning when the table's colours exceed float's range (the GL path).
+  void CheckProjectionColorRange(vtkHighOrderTransferFunction* tf);
   std::unique_ptr<vtkHighOrderProjection> ProjectionImpl;
 
   // RAY_CAST mode (Mapper/vtkHighOrderVolumeMapperRayCast.cxx): fills @p rgba
-  // (4 doubles per pixel); returns 1 on success, 0 on error (reported).
+  // (4 doubles per pixel); returns 1 on success, 0 on error (reported);
+  // @p drawn: whether visible cells were traced.
   int ComputeRayCastImage(vtkCamera* camera, vtkVolume* volume, int width, int height,
-    double aspect, const float* depth, std::vector<double>& rgba);
+    double aspect, const float* depth, std::vector<double>& rgba, bool& drawn);
   std::unique_ptr<vtkHighOrderRayCastState> RayCastImpl;
 
   struct Internals;

@@ -52,8 +52,9 @@ vtkImageData* vtkHighOrderVolumeMapper::GetRayCastErrorImage()
 }
 
 int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* volume, int width,
-  int height, double aspect, const float* depth, std::vector<double>& rgba)
+  int height, double aspect, const float* depth, std::vector<double>& rgba, bool& drawn)
 {
+  drawn = false;
   vtkHighOrderRayCastState& st = *this->RayCastImpl;
   const size_t pixels = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
   rgba.assign(4 * pixels, 0.0);
@@ -70,6 +71,10 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   {
     vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
     return finish(0);
+  }
+  if (!this->CheckFrameView(camera, volume, aspect))
+  {
+    return finish(0); // the error was reported
   }
   if (this->GetNumberOfInputConnections(0) > 0)
   {
@@ -139,9 +144,16 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   {
     vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
   }
-  if (this->NumberOfRenderedCells == 0 ||
-    (!tf->GetTable().HasExtinction() && this->EmissionModel != WILHELMS_VAN_GELDER))
+  if (this->NumberOfRenderedCells == 0)
   {
+    return finish(1); // nothing to render (warned above)
+  }
+  if (!tf->GetTable().HasExtinction() && this->EmissionModel != WILHELMS_VAN_GELDER)
+  {
+    if (tf->GetBuildCount() != buildsBefore)
+    {
+      this->WarnTransparent();
+    }
     return finish(1); // nothing visible
   }
 
@@ -174,6 +186,7 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   }
   rays.SetupClipping(
     this, camera, volume->GetMatrix(), this->ViewDepthClipping ? this->ViewDepthRange : nullptr);
+  drawn = true;
   const float* rayDepth = depth;
   if (depth && interactive)
   {

@@ -5,6 +5,7 @@
 #include "vtkHighOrderTetraSetup.h"
 #include "vtkHighOrderViewRays.h"
 
+#include "hovPixelRange.h"       // pixel boxes of far-off cells
 #include "hovTransferFunction.h" // the table
 
 #include "vtkSMPThreadLocal.h"
@@ -65,13 +66,7 @@ Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
     y0 = std::min(y0, window[id].y);
     y1 = std::max(y1, window[id].y);
   }
-  const double lim = 1e9; // keep the int conversion defined for far-off cells
-  Box b;
-  b[0] = static_cast<int>(std::max(0.0, std::ceil(std::max(x0, -lim) - 0.5 - BoxMargin)));
-  b[1] = static_cast<int>(std::min(width - 1.0, std::floor(std::min(x1, lim) - 0.5 + BoxMargin)));
-  b[2] = static_cast<int>(std::max(0.0, std::ceil(std::max(y0, -lim) - 0.5 - BoxMargin)));
-  b[3] = static_cast<int>(std::min(height - 1.0, std::floor(std::min(y1, lim) - 0.5 + BoxMargin)));
-  return b;
+  return hov::PixelBoxOf(x0, x1, y0, y1, width, height, BoxMargin);
 }
 
 /// Centroid of the corners of general cell @p g (per-pixel mode's depth key).

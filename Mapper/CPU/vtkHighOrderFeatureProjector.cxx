@@ -8,6 +8,7 @@
 #include "vtkHighOrderViewRays.h"    // rays, projection
 
 #include "hovCellShapes.h"       // general cells' splat centre and scalars
+#include "hovPixelRange.h"       // pixel boxes of far-off cells
 #include "hovRayCell.h"          // faces (general cells' volume)
 #include "hovTransferFunction.h" // centroid extinction/colour of splats
 
@@ -31,13 +32,7 @@ constexpr double WitnessRelativeTolerance = 1e-9; // as vtkHighOrderCellProjecto
 vtkHighOrderFeatureProjector::Box PixelBox(
   double x0, double x1, double y0, double y1, int width, int height)
 {
-  const double lim = 1e9;
-  vtkHighOrderFeatureProjector::Box b;
-  b[0] = static_cast<int>(std::max(0.0, std::ceil(std::max(x0, -lim) - 0.5 - BoxMargin)));
-  b[1] = static_cast<int>(std::min(width - 1.0, std::floor(std::min(x1, lim) - 0.5 + BoxMargin)));
-  b[2] = static_cast<int>(std::max(0.0, std::ceil(std::max(y0, -lim) - 0.5 - BoxMargin)));
-  b[3] = static_cast<int>(std::min(height - 1.0, std::floor(std::min(y1, lim) - 0.5 + BoxMargin)));
-  return b;
+  return hov::PixelBoxOf(x0, x1, y0, y1, width, height, BoxMargin);
 }
 
 /// Cross-section (dataset units^2) of the ray bundle of pixel (i, j) on the

@@ -5,6 +5,7 @@
 #include "vtkHighOrderTileGeometry.h"  // ClipRayFaces
 
 #include "hovCompositing.h" // CompositeBehind
+#include "hovPixelRange.h"  // row spans
 
 #include <algorithm> // std::sort, std::min, std::max
 #include <cmath>     // NaN
@@ -132,8 +133,10 @@ void vtkHighOrderFeatureTile::ForIntervals(
       {
         continue;
       }
-      r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - this->X0);
-      r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - this->X0);
+      const hov::PixelRange span =
+        hov::PixelCentresIn(xMin, xMax, this->X0 + r0, this->X0 + r1, BoxMargin);
+      r0 = span.First - this->X0;
+      r1 = span.Last - this->X0;
     }
     for (int i = r0; i <= r1; ++i)
     {

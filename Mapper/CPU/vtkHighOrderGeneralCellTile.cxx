@@ -3,6 +3,7 @@
 #include "vtkHighOrderGeneralCells.h"  // the cells
 #include "vtkHighOrderProjectorTile.h" // BoxMargin, shared with the tetrahedra
 
+#include "hovPixelRange.h"  // pixel boxes and row spans
 #include "hovPolynomial.h" // constant pieces
 
 #include <algorithm> // std::min, std::max
@@ -99,13 +100,7 @@ std::array<int, 4> vtkHighOrderGeneralCellTile::PixelBox(
     y0 = std::min(y0, frame.Window[id].y);
     y1 = std::max(y1, frame.Window[id].y);
   }
-  const double lim = 1e9; // keep the int conversion defined for far-off cells
-  std::array<int, 4> b;
-  b[0] = static_cast<int>(std::max(0.0, std::ceil(std::max(x0, -lim) - 0.5 - BoxMargin)));
-  b[1] = static_cast<int>(std::min(width - 1.0, std::floor(std::min(x1, lim) - 0.5 + BoxMargin)));
-  b[2] = static_cast<int>(std::max(0.0, std::ceil(std::max(y0, -lim) - 0.5 - BoxMargin)));
-  b[3] = static_cast<int>(std::min(height - 1.0, std::floor(std::min(y1, lim) - 0.5 + BoxMargin)));
-  return b;
+  return hov::PixelBoxOf(x0, x1, y0, y1, width, height, BoxMargin);
 }
 
 hov::RayPerturbation vtkHighOrderGeneralCellTile::PerturbationOf(const vtkHighOrderViewRays& rays)
@@ -151,8 +146,10 @@ const std::vector<vtkHighOrderGeneralCellTile::Hit>& vtkHighOrderGeneralCellTile
       {
         continue;
       }
-      r0 = std::max(r0, static_cast<int>(std::ceil(xMin - 0.5 - BoxMargin)) - rows.X0);
-      r1 = std::min(r1, static_cast<int>(std::floor(xMax - 0.5 + BoxMargin)) - rows.X0);
+      const hov::PixelRange span =
+        hov::PixelCentresIn(xMin, xMax, rows.X0 + r0, rows.X0 + r1, BoxMargin);
+      r0 = span.First - rows.X0;
+      r1 = span.Last - rows.X0;
     }
     for (int i = r0; i <= r1; ++i)
     {

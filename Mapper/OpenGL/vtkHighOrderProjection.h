@@ -24,6 +24,9 @@ struct vtkHighOrderProjection
   std::vector<float> Depth;
   std::vector<vtkIdType> BackToFront;
   bool WarnedFeatures = false;
+  /// The table build (and emission model) whose colour range was checked.
+  int ColorRangeCheckedBuild = -1;
+  int ColorRangeCheckedModel = -1;
 };
 
 #endif

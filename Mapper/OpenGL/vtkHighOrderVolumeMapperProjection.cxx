@@ -22,6 +22,8 @@
 #include "vtkVolume.h"
 
 #include <algorithm> // std::reverse_copy, std::all_of
+#include <cfloat>    // FLT_MAX
+#include <cmath>     // std::abs
 #include <cstring>   // std::memcpy
 
 namespace
@@ -150,6 +152,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   this->NumberOfRays = 0;
   this->NumberOfSplattedCells = 0;
   this->NumberOfProjectedTriangles = this->NumberOfProjectedSlabs = 0;
+  this->LastRenderAborted = false; // a projection frame is never aborted
   if (!proj.WarnedFeatures &&
     (this->GetNumberOfIsosurfaces() > 0 || this->Splatting || this->ViewDepthClipping ||
       (this->ColorArrayName && *this->ColorArrayName) ||
@@ -171,9 +174,12 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   settings.Method = static_cast<hov::ProjectionColorMethod>(this->ProjectionColorMethod);
   settings.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
   proj.BackToFront.clear();
-  if (this->PrepareProjectionFrame(camera, vol, exactOrder, &setup, &frontToBack, &tf))
+  const bool drawn = this->PrepareProjectionFrame(
+    camera, vol, ren->GetTiledAspectRatio(), exactOrder, &setup, &frontToBack, &tf);
+  if (drawn)
   {
     BackToFront(proj, *setup, exactOrder ? frontToBack : nullptr, settings);
+    this->CheckProjectionColorRange(tf);
     if (this->OpacitySemantics == GPU_COMPATIBLE)
     {
       // Slabs at the property's nodes only; the opacity per fragment is exact
@@ -207,8 +213,39 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     vtkErrorMacro("Could not draw the cell projection with OpenGL.");
     std::fill(pixels, pixels + static_cast<size_t>(width) * height * 4, 0.0f);
   }
+  this->CheckFrameImage(pixels, static_cast<size_t>(width) * height, drawn);
   this->NumberOfProjectedTriangles = proj.Statistics.Triangles;
   this->NumberOfProjectedSlabs = proj.Statistics.Slabs;
   timer->StopTimer();
   this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
+}
+
+void vtkHighOrderVolumeMapper::CheckProjectionColorRange(vtkHighOrderTransferFunction* tf)
+{
+  // The vertex colours go to OpenGL as floats: a colour (times the
+  // Wilhelms-Van Gelder emission factor) beyond float's range becomes Inf and
+  // the fragments that carry it are lost. Warned once per table build.
+  vtkHighOrderProjection& proj = *this->ProjectionImpl;
+  if (proj.ColorRangeCheckedBuild == tf->GetBuildCount() &&
+    proj.ColorRangeCheckedModel == this->EmissionModel)
+  {
+    return;
+  }
+  proj.ColorRangeCheckedBuild = tf->GetBuildCount();
+  proj.ColorRangeCheckedModel = this->EmissionModel;
+  const hov::TransferFunction& table = tf->GetTable();
+  const double factor = this->EmissionModel == WILHELMS_VAN_GELDER ? table.GetEmissionFactor() : 1.0;
+  double largest = 0.0;
+  for (int k = 0; k < table.GetNumberOfNodes(); ++k)
+  {
+    const hov::TransferFunction::Node& n = table.GetNode(k);
+    largest = std::max(largest, std::max(std::abs(n.R), std::max(std::abs(n.G), std::abs(n.B))));
+  }
+  if (!(largest * factor < 0.01 * FLT_MAX))
+  {
+    vtkWarningMacro("OPENGL_PROJECTION computes in float: colours up to "
+      << largest * factor << " (colour" << (factor != 1.0 ? " x EmissionScale / unit distance" : "")
+      << ") exceed its range; cells carrying them are not drawn. CPU_ACCURATE and RAY_CAST "
+      << "compute in double.");
+  }
 }

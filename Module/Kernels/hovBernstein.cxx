@@ -363,6 +363,8 @@ Polynomial ApproximateBernstein(const BernsteinPolynomial& b, int maxDegree, dou
       c[k] = ((k == 0 || k == m) ? 1.0 : 2.0) * s / m;
     }
     // sum c_k T_k(x) in monomials of x (T_{k+1} = 2x T_k - T_{k-1}), then x = 2y - 1.
+    // T_k has degree k <= m <= 8: nine coefficients. T_{k+1} is built only
+    // while k < m (it would need a tenth at k = 8).
     double tPrev[9] = { 1.0 }, tCur[9] = { 0.0, 1.0 }, px[9] = {};
     px[0] = c[0];
     for (int k = 1; k <= m; ++k)
@@ -370,6 +372,10 @@ Polynomial ApproximateBernstein(const BernsteinPolynomial& b, int maxDegree, dou
       for (int j = 0; j <= k; ++j)
       {
         px[j] += c[k] * tCur[j];
+      }
+      if (k == m)
+      {
+        break;
       }
       double tNext[9] = {};
       for (int j = 0; j <= k; ++j)

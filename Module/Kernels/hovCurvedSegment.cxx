@@ -43,16 +43,17 @@ bool MayBeEmpty(const TransferFunction& tf, double lo, double hi, EmissionModel 
   {
     return true;
   }
-  for (double x : tf.GetNodes())
+  // Only the nodes in [lo, hi] (binary search: the cost does not grow with
+  // the nodes outside the segment's range).
+  const std::vector<double>& x = tf.GetNodes();
+  const auto last = std::upper_bound(x.begin(), x.end(), hi);
+  for (auto it = std::lower_bound(x.begin(), x.end(), lo); it < last; ++it)
   {
-    if (x >= lo && x <= hi)
+    SegmentEnd down;
+    tf.Evaluate(tf.FindIntervalDownward(*it), *it, wvg, down);
+    if (zero(ValueAt(tf, *it, wvg)) || zero(down))
     {
-      SegmentEnd down;
-      tf.Evaluate(tf.FindIntervalDownward(x), x, wvg, down);
-      if (zero(ValueAt(tf, x, wvg)) || zero(down))
-      {
-        return true;
-      }
+      return true;
     }
   }
   return false;
@@ -71,14 +72,15 @@ TableSensitivity Sensitivity(const TransferFunction& tf, double lo, double hi, b
 {
   TableSensitivity s;
   const std::vector<double>& x = tf.GetNodes();
-  std::vector<double> points{ lo, hi };
-  for (double xk : x)
+  // lo, the nodes strictly inside (lo, hi) found by binary search, hi: sorted.
+  std::vector<double> points{ lo };
+  if (lo < hi)
   {
-    if (xk > lo && xk < hi)
-    {
-      points.push_back(xk);
-    }
+    const auto first = std::upper_bound(x.begin(), x.end(), lo);
+    const auto last = std::lower_bound(first, x.end(), hi);
+    points.insert(points.end(), first, last);
   }
+  points.push_back(hi);
   std::sort(points.begin(), points.end());
   for (size_t i = 0; i < points.size(); ++i)
   {

@@ -1,6 +1,6 @@
 #include "hovSplat.h"
 
-#include <cmath> // floor, expm1, isfinite
+#include <cmath> // abs, floor, expm1, isfinite
 
 namespace hov
 {
@@ -9,6 +9,10 @@ namespace
 // Below this optical depth (1 - e^-D)/D is taken from its series
 // 1 - D/2 + D^2/6 (error < D^3/24 < 1e-19 relative), avoiding 0/0 at D = 0.
 constexpr double SeriesDepth = 1e-6;
+
+// Pixel coordinates beyond this are off every image (VTK windows are < 2^16
+// pixels wide) and would overflow an int; they get zero weights.
+constexpr double FarPixel = 1e9;
 
 /// (1 - e^-D) / D for 0 <= D < SeriesDepth.
 double SlabFactor(double depth)
@@ -23,6 +27,12 @@ int QuadraticBSplineWeights(double x, double w[3])
   {
     w[0] = w[1] = w[2] = 0.0;
     return 0;
+  }
+  if (std::abs(x) > FarPixel)
+  {
+    // Far off any image: no weight, and c stays a valid int (c +- 2 too).
+    w[0] = w[1] = w[2] = 0.0;
+    return x > 0.0 ? static_cast<int>(FarPixel) : -static_cast<int>(FarPixel);
   }
   // c = floor(x + 1/2) without rounding x + 1/2 (which sends x just below a
   // half-integer up): x - floor(x) is exact, and so is f - 1.

@@ -80,7 +80,8 @@ namespace hov
 /**
  * Quadratic B-spline weights of the three pixels nearest to @p x (pixel-centre
  * coordinates): @p w[0..2] for pixels c-1, c, c+1; returns c = floor(x + 1/2).
- * Non-finite x: c = 0 and weights 0.
+ * Non-finite x: c = 0 and weights 0; |x| > 1e9 (off any image): c = +-1e9
+ * and weights 0.
  */
 HOV_EXPORT int QuadraticBSplineWeights(double x, double w[3]);
 

@@ -9,7 +9,9 @@
 //    (x = r + a s^2, y = s, z = t, so pc(t) and the field along any ray are
 //    polynomials in t): the curved path (Chebyshev pieces, polished
 //    breakpoints) against the same reference;
-//  - empty segments are exactly transparent.
+//  - empty segments are exactly transparent;
+//  - table nodes outside a segment's range change neither its colour nor
+//    (beyond noise) its cost.
 #include "hovCurvedSegment.h"
 
 #include "hovCurvedRayCell.h"
@@ -19,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -231,5 +234,58 @@ TEST(CurvedSegment, EmptySegmentsAreExactlyTransparent)
   EXPECT_EQ(res.Color.A, 0.0);
   EXPECT_EQ(res.Color.R, 0.0);
   EXPECT_EQ(res.Pieces, 0);
+}
+
+/// Seconds (best of @p repeats) to integrate @p segments fixed rays through @p cell with @p tf.
+double SegmentSeconds(const hovtest::LagrangeTestCell& cell, const hov::TransferFunction& tf,
+  int segments, int repeats, std::vector<hov::RGBA>& colors)
+{
+  const hov::LagrangeCellView v = cell.View();
+  hov::CellDerivativeBounds bounds;
+  hov::ComputeCellDerivativeBounds(v, bounds);
+  double best = 1e300;
+  for (int rep = 0; rep < repeats; ++rep)
+  {
+    colors.clear();
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < segments; ++k)
+    {
+      const double y = (k + 0.5) / segments;
+      const double o[3] = { -1.0, y, 0.5 * y + 0.2 }, d[3] = { 1.0, 0.0, 0.0 };
+      colors.push_back(hov::IntegrateCurvedSegment(v, bounds, tf, o, d, 1.0, 2.0, nullptr).Color);
+    }
+    best = std::min(best,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return best;
+}
+
+// Issue 21 finding 3: RAY_CAST's cost grew linearly with the table's node
+// count even for nodes outside every segment's range (two loops over all
+// nodes per segment). 100000 far nodes made each segment ~1000x slower; the
+// bound below (5x, best of 5) leaves two orders of magnitude for noise.
+TEST(CurvedSegment, FarTableNodesCostNothing)
+{
+  hovtest::LagrangeTestCell cell;
+  MakeHex(cell, 2, 1.0, 0.1, [](const double* x) { return 0.2 + 0.5 * x[0] + 0.3 * x[1] * x[2]; });
+  hov::TransferFunction few, many;
+  hov::TransferFunctionSpec spec = BreakpointSpec();
+  ASSERT_TRUE(few.Build(spec));
+  for (int i = 0; i < 100000; ++i)
+  {
+    spec.Opacity.push_back({ 10.0 + i, 0.5 + 0.25 * (i % 3) });
+  }
+  ASSERT_TRUE(many.Build(spec));
+  std::vector<hov::RGBA> colorsFew, colorsMany;
+  const double tFew = SegmentSeconds(cell, few, 200, 5, colorsFew);
+  const double tMany = SegmentSeconds(cell, many, 200, 5, colorsMany);
+  hovtest::ReportMeasured("CurvedSegment.FarNodesCostRatio", tMany / tFew);
+  ASSERT_EQ(colorsFew.size(), colorsMany.size());
+  for (size_t k = 0; k < colorsFew.size(); ++k)
+  {
+    EXPECT_EQ(colorsFew[k].R, colorsMany[k].R) << "segment " << k;
+    EXPECT_EQ(colorsFew[k].A, colorsMany[k].A) << "segment " << k;
+  }
+  EXPECT_LT(tMany, 5.0 * tFew + 1e-3) << "few nodes " << tFew << " s, 100000 far nodes " << tMany;
 }
 }
