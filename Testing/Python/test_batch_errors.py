@@ -7,7 +7,8 @@ array, an out-of-range component, invalid JSON, ...). Both entry points
 code 2, print a message containing the expected "<field>: <text>", and write
 no output. The valid base spec must render (exit 0), so the cases fail for
 their defect only. Unknown fields are errors (documented in README
-"Batch rendering"); keys starting with "_" are comments.
+"Batch rendering"); keys starting with "_" are comments. Render and output
+failures (an unwritable output, a camera that defines no view) exit with 1.
 """
 import argparse
 import copy
@@ -166,10 +167,18 @@ def main():
         ("overflowing integer", text.replace('"width": 24', '"width": -1e999'),
          "'-1e999' is not a number"),
     ]
+    # Issue 21 finding 7: nesting beyond the parsers' limits and bytes that are
+    # not UTF-8 are refused the same way (the C++ tool aborted on the first,
+    # the Python one printed a traceback for both).
+    bodies += [
+        ("deeply nested JSON", "[" * 100000, "(file): not valid JSON"),
+        ("not UTF-8", text.replace('"von_mises"', '"von_mis\xff"'), "(file): not valid JSON"),
+    ]
     path = os.path.join(folder, "case.json")
     for name, body, expected in bodies:
-        with open(path, "w") as f:
-            f.write(body)
+        with open(path, "wb") as f:
+            f.write(body.encode("utf-8", "surrogateescape") if "\xff" not in body
+                    else body.encode("latin-1"))
         for tool, command in tools:
             if os.path.exists(out):
                 os.remove(out)
@@ -177,6 +186,34 @@ def main():
             ok = proc.returncode == 2 and expected in proc.stderr and not os.path.exists(out)
             check(ok, "%s (%s): exit %d, message %r" % (name, tool, proc.returncode,
                                                          proc.stderr.strip()[:300]))
+    # Render and output failures: exit 1 with a message, never 0 (finding 7).
+    # A folder that does not exist; a camera that defines no view (its up
+    # vector along the view direction), in every mode.
+    failures = [("vti in a missing folder",
+                 [("output", {"vti": os.path.join(folder, "no_such_dir", "a.vti")})],
+                 "output.vti: cannot write"),
+                ("png in a missing folder",
+                 [("output", {"png": os.path.join(folder, "no_such_dir", "a.png")})],
+                 "output.png: cannot write")]
+    for mode in ("cpu_accurate", "opengl_projection", "ray_cast"):
+        failures.append(("up vector along the view direction, " + mode,
+                         [("render_mode", mode),
+                          ("camera", {"position": [0, 0, 500], "focal_point": [0, 0, 0],
+                                      "view_up": [0, 0, 1]})],
+                         "render failed"))
+    for name, edits, expected in failures:
+        spec = copy.deepcopy(base_spec(data))
+        for key, value in edits:
+            set_path(spec, key, value)
+        with open(path, "w") as f:
+            json.dump(spec, f)
+        for tool, command in tools:
+            if os.path.exists(out):
+                os.remove(out)
+            proc = run(command, path, env)
+            ok = proc.returncode == 1 and expected in proc.stderr and not os.path.exists(out)
+            check(ok, "%s (%s): exit %d, message %r" % (name, tool, proc.returncode,
+                                                         proc.stderr.strip()[-300:]))
     print("%d failure(s)" % len(FAILURES))
     return 1 if FAILURES else 0
 

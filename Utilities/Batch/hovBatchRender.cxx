@@ -12,6 +12,11 @@
  * premultiplied RGBA image (.vti, array "RGBA") and/or a PNG (the image over
  * the background colour, 8-bit RGB). Progress is printed on stderr. The
  * Python twin (highordervolume.batch) makes the same calls in the same order.
+ *
+ * Exit codes: 0 only when the render reported no error and every requested
+ * output was written (checked on disk); 2 for a spec that is not valid (the
+ * messages name the field); 1 for a render error or an output that could not
+ * be written.
  */
 #include "hovBatchSpec.h"
 
@@ -42,11 +47,20 @@
 
 #include <algorithm> // std::min
 #include <cmath>     // std::lround
+#include <cstdio>    // std::remove
 #include <fstream>   // data file check
 #include <iostream>  // messages
 
 namespace
 {
+/// True if @p path exists and is not empty (the writers report some failures
+/// only in their messages: vtkXMLWriter::Write() returns 1 for a missing folder).
+bool Written(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  return in && in.tellg() > 0;
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> ReadData(const std::string& path)
 {
   const bool legacy = path.size() > 4 && path.compare(path.size() - 4, 4, ".vtk") == 0;
@@ -205,8 +219,9 @@ bool WritePNG(const hov::BatchSpec& spec, vtkImageData* image)
   vtkNew<vtkPNGWriter> writer;
   writer->SetFileName(spec.OutputPNG.c_str());
   writer->SetInputData(png);
+  std::remove(spec.OutputPNG.c_str()); // an old file must not pass for the new one
   writer->Write();
-  return writer->GetErrorCode() == 0;
+  return writer->GetErrorCode() == 0 && Written(spec.OutputPNG);
 }
 
 void PrintProgress(vtkObject*, unsigned long, void*, void* callData)
@@ -216,11 +231,24 @@ void PrintProgress(vtkObject*, unsigned long, void*, void* callData)
             << std::flush;
 }
 
-/// Render and write; returns the exit code.
+/// Prints the mapper's errors (an observer stops VTK from printing them) and counts them.
+void CountError(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  ++*static_cast<int*>(clientData);
+  std::cerr << "error: " << (callData ? static_cast<const char*>(callData) : "") << "\n";
+}
+
+/// Render and write; returns the exit code (0 only when every requested
+/// output was written from a render without errors).
 int Render(const hov::BatchSpec& spec, vtkUnstructuredGrid* grid)
 {
   vtkNew<vtkHighOrderVolumeMapper> mapper;
   mapper->SetInputData(grid);
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> errorCount;
+  errorCount->SetCallback(CountError);
+  errorCount->SetClientData(&errors);
+  mapper->AddObserver(vtkCommand::ErrorEvent, errorCount);
   SetupMapper(spec, mapper);
   vtkNew<vtkCallbackCommand> progress;
   progress->SetCallback(PrintProgress);
@@ -248,13 +276,19 @@ int Render(const hov::BatchSpec& spec, vtkUnstructuredGrid* grid)
     renderer->AddVolume(volume);
     window->Render();
   }
+  if (errors > 0)
+  {
+    std::cerr << "render failed (see the messages above)\n";
+    return 1;
+  }
   vtkImageData* image = mapper->GetFloatImage();
   if (!spec.OutputVTI.empty())
   {
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetFileName(spec.OutputVTI.c_str());
     writer->SetInputData(image);
-    if (!writer->Write())
+    std::remove(spec.OutputVTI.c_str()); // an old file must not pass for the new one
+    if (!writer->Write() || writer->GetErrorCode() != 0 || !Written(spec.OutputVTI))
     {
       std::cerr << "output.vti: cannot write '" << spec.OutputVTI << "'\n";
       return 1;

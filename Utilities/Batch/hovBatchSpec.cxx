@@ -2,6 +2,8 @@
 
 #include <vtk_jsoncpp.h> // VTK's JSON parser (jsoncpp)
 
+#include <exception> // jsoncpp's nesting-limit exception
+
 #include <cmath>   // std::isfinite
 #include <fstream> // the spec file
 #include <memory>  // the reader
@@ -408,16 +410,88 @@ void ParseInputOutput(Checker& c, const Json::Value& root, const std::string& ba
 }
 }
 
+namespace
+{
+/// Offset of the first byte of @p text that is not part of well-formed UTF-8
+/// (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF), or npos.
+size_t InvalidUTF8(const std::string& text)
+{
+  const auto* p = reinterpret_cast<const unsigned char*>(text.data());
+  const size_t n = text.size();
+  for (size_t i = 0; i < n;)
+  {
+    const unsigned char b = p[i];
+    int extra = 0;
+    unsigned lo = 0x80, hi = 0xBF; // range of the first continuation byte
+    if (b < 0x80)
+    {
+      ++i;
+      continue;
+    }
+    else if (b >= 0xC2 && b <= 0xDF)
+    {
+      extra = 1;
+    }
+    else if (b >= 0xE0 && b <= 0xEF)
+    {
+      extra = 2;
+      lo = b == 0xE0 ? 0xA0 : 0x80;
+      hi = b == 0xED ? 0x9F : 0xBF;
+    }
+    else if (b >= 0xF0 && b <= 0xF4)
+    {
+      extra = 3;
+      lo = b == 0xF0 ? 0x90 : 0x80;
+      hi = b == 0xF4 ? 0x8F : 0xBF;
+    }
+    else
+    {
+      return i;
+    }
+    if (i + extra >= n) // truncated sequence
+    {
+      return i;
+    }
+    for (int k = 1; k <= extra; ++k)
+    {
+      const unsigned c = p[i + k];
+      if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xBF))
+      {
+        return i;
+      }
+    }
+    i += extra + 1;
+  }
+  return std::string::npos;
+}
+}
+
 bool ParseBatchSpec(const std::string& text, const std::string& baseDir, BatchSpec& spec,
   std::vector<std::string>& errors, std::vector<std::string>& warnings)
 {
   Checker c{ errors, warnings };
+  const size_t bad = InvalidUTF8(text);
+  if (bad != std::string::npos)
+  {
+    c.Error("(file)", "not valid JSON: not UTF-8 text (byte " + std::to_string(bad) + ")");
+    return false;
+  }
   Json::Value root;
   std::string parseErrors;
   Json::CharReaderBuilder builder;
   builder["collectComments"] = false;
   std::unique_ptr<Json::CharReader> reader(builder.newCharReader());
-  if (!reader->parse(text.data(), text.data() + text.size(), &root, &parseErrors))
+  bool parsed = false;
+  try
+  {
+    parsed = reader->parse(text.data(), text.data() + text.size(), &root, &parseErrors);
+  }
+  catch (const std::exception& e)
+  {
+    // jsoncpp throws past its nesting limit (stackLimit, 1000 levels).
+    parseErrors = e.what();
+  }
+  if (!parsed)
   {
     c.Error("(file)", "not valid JSON: " + parseErrors);
     return false;

@@ -21,6 +21,8 @@ import math
 import os
 import sys
 
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkPlane
 from vtkmodules.vtkIOImage import vtkPNGWriter
@@ -334,14 +336,18 @@ def _finite_float(token):
 def load_spec(path):
     """Read and check a spec file; a relative data path is resolved against its folder."""
     try:
-        with open(path) as f:
+        with open(path, encoding="utf-8") as f:
             text = f.read()
     except OSError as e:
         raise SpecError(["(file): cannot read '%s' (%s)" % (path, e.strerror)])
+    except UnicodeDecodeError as e:
+        raise SpecError(["(file): not valid JSON: not UTF-8 text (%s)" % e])
     try:
         root = json.loads(text, parse_constant=_reject_constant, parse_float=_finite_float)
     except ValueError as e:
         raise SpecError(["(file): not valid JSON: %s" % e])
+    except RecursionError:
+        raise SpecError(["(file): not valid JSON: nested too deeply"])
     return parse_spec(root, os.path.dirname(path) or ".")
 
 
@@ -457,6 +463,13 @@ def render(spec, grid=None, progress=None):
     grid = grid if grid is not None else read_data(spec)
     mapper = vtkHighOrderVolumeMapper()
     mapper.SetInputData(grid)
+    errors = []
+
+    @calldata_type(VTK_STRING)  # VTK passes the message text
+    def on_error(obj, event, message):
+        errors.append(message)
+        sys.stderr.write("error: %s\n" % message)
+    mapper.AddObserver(vtkCommand.ErrorEvent, on_error)
     setup_mapper(spec, mapper)
     if progress is not None:
         mapper.AddObserver(vtkCommand.ProgressEvent,
@@ -478,6 +491,8 @@ def render(spec, grid=None, progress=None):
         window.AddRenderer(renderer)
         renderer.AddVolume(volume)
         window.Render()
+    if errors:
+        raise RuntimeError("render failed (see the messages above)")
     image = vtkImageData()
     image.DeepCopy(mapper.GetFloatImage())
     return image
@@ -497,8 +512,9 @@ def write_png(path, image, background=(0.0, 0.0, 0.0)):
     writer = vtkPNGWriter()
     writer.SetFileName(path)
     writer.SetInputData(png)
+    _remove_old(path)
     writer.Write()
-    if writer.GetErrorCode():
+    if writer.GetErrorCode() or not _written(path):
         raise OSError("output.png: cannot write '%s'" % path)
 
 
@@ -506,8 +522,26 @@ def write_vti(path, image):
     writer = vtkXMLImageDataWriter()
     writer.SetFileName(path)
     writer.SetInputData(image)
-    if not writer.Write():
+    _remove_old(path)
+    if not writer.Write() or writer.GetErrorCode() or not _written(path):
         raise OSError("output.vti: cannot write '%s'" % path)
+
+
+def _remove_old(path):
+    """An old output file must not pass for the new one."""
+    try:
+        os.remove(path)
+    except OSError:
+        pass
+
+
+def _written(path):
+    """True if ``path`` exists and is not empty (vtkXMLWriter.Write() returns 1
+    for a missing folder; the failure is only in its messages)."""
+    try:
+        return os.path.getsize(path) > 0
+    except OSError:
+        return False
 
 
 def write_outputs(spec, image):
