@@ -146,7 +146,9 @@ public:
 
   ///@{
   /// Relative tolerance of the linearised GPU-compatible extinction (default 1e-4).
-  /// Clamped to [1e-12, 0.1] (with a warning); NaN/Inf is refused with an error (the value stays).
+  /// Clamped to [1e-8, 0.1] (with a warning: below 1e-8 the image error bound is
+  /// beyond float's resolution); NaN/Inf is refused with an error (the value stays).
+  /// RAY_CAST linearises with max(GPUOpacityTolerance, RayCastTolerance / 10).
   virtual void SetGPUOpacityTolerance(double value);
   vtkGetMacro(GPUOpacityTolerance, double);
   ///@}

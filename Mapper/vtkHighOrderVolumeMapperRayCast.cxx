@@ -135,7 +135,9 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
 
   vtkHighOrderTransferFunction* tf = st.TransferFunction;
   tf->SetOpacitySemantics(this->OpacitySemantics);
-  tf->SetGPUTolerance(this->GPUOpacityTolerance);
+  // The table's linearisation error (<= 2x its tolerance) within a fifth of the
+  // per-pixel tolerance: a finer table only adds breakpoints to locate.
+  tf->SetGPUTolerance(std::max(this->GPUOpacityTolerance, 0.1 * this->RayCastTolerance));
   tf->SetEmissionScale(this->EmissionScale);
   tf->SetComponent(component > 0 && property->GetIndependentComponents() ? std::min(component, 3) : 0);
   const int buildsBefore = tf->GetBuildCount();

@@ -47,7 +47,9 @@ bool SetFiniteClamped(
     }                                                                                            \
   }
 
-HOV_FINITE_SETTER(GPUOpacityTolerance, 1e-12, 0.1)
+// Below 1e-8 the image error bound (2x) is beyond float's resolution, and the
+// refined table only grows (1e-12: 10^6 nodes, every one a breakpoint).
+HOV_FINITE_SETTER(GPUOpacityTolerance, 1e-8, 0.1)
 HOV_FINITE_SETTER(TerminationTransmittance, 0.0, 0.1)
 HOV_FINITE_SETTER(SplatPixelThreshold, 0.0, 1e6)
 HOV_FINITE_SETTER(RayCastTolerance, 1e-12, 0.1)
