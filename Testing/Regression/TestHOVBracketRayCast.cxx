@@ -1,0 +1,17 @@
+// The bracket, RAY_CAST (tolerance 1e-3), VTK-unstructured opacity.
+// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVBracketRayCast.png.
+#include "hovRegression.h"
+
+#include "vtkHighOrderVolumeMapper.h"
+
+int TestHOVBracketRayCast(int argc, char* argv[])
+{
+  hovRegression::Scene scene;
+  scene.Name = "TestHOVBracketRayCast";
+  scene.Array = "von_mises";
+  scene.RenderMode = vtkHighOrderVolumeMapper::RAY_CAST;
+  scene.Semantics = vtkHighOrderVolumeMapper::VTK_UNSTRUCTURED;
+  scene.Width = 96;
+  scene.Height = 96;
+  return hovRegression::Run(argc, argv, scene);
+}

@@ -1,0 +1,17 @@
+// The zoo (mixed linear cells), RAY_CAST.
+// Data: zoo_mixed_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVZooRayCast.png.
+#include "hovRegression.h"
+
+#include "vtkHighOrderVolumeMapper.h"
+
+int TestHOVZooRayCast(int argc, char* argv[])
+{
+  hovRegression::Scene scene;
+  scene.Name = "TestHOVZooRayCast";
+  scene.Array = "temperature";
+  scene.RenderMode = vtkHighOrderVolumeMapper::RAY_CAST;
+  scene.Width = 96;
+  scene.Height = 64;
+  scene.UnitFraction = 0.15;
+  return hovRegression::Run(argc, argv, scene);
+}
