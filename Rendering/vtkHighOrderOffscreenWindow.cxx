@@ -3,7 +3,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkRenderWindow.h" // VTK's default window (the X11 backend)
 
-#include <cstdlib> // std::getenv
+#include <cstdlib> // std::getenv, std::atof
 #include <sstream> // messages
 
 #ifdef HOV_HAVE_EGL
@@ -40,6 +40,15 @@ bool DisplaySet()
 }
 
 //------------------------------------------------------------------------------
+vtkHighOrderOffscreenWindow::vtkHighOrderOffscreenWindow()
+{
+  const char* timeout = std::getenv("HOV_DISPLAY_TIMEOUT");
+  if (timeout && *timeout)
+  {
+    this->SetDisplayTimeout(std::atof(timeout)); // clamped to 0.1..600
+  }
+}
+
 int vtkHighOrderOffscreenWindow::ResolveBackend(int requested, std::string* error)
 {
   if (requested == X11 || requested == EGL)

@@ -67,7 +67,8 @@ public:
   ///@}
 
   ///@{
-  /// Seconds to wait for the X server named by DISPLAY to accept a connection (default 10).
+  /// Seconds to wait for the X server named by DISPLAY to accept a connection
+  /// (default 10, or the environment variable HOV_DISPLAY_TIMEOUT).
   vtkSetClampMacro(DisplayTimeout, double, 0.1, 600.0);
   vtkGetMacro(DisplayTimeout, double);
   ///@}
@@ -104,7 +105,7 @@ public:
   static bool CanOpenDisplay(const char* display, double timeoutSeconds, std::string* error);
 
 protected:
-  vtkHighOrderOffscreenWindow() = default;
+  vtkHighOrderOffscreenWindow();
   ~vtkHighOrderOffscreenWindow() override = default;
 
 private:
