@@ -46,7 +46,7 @@ endif ()
 run(missing-baseline fail "baseline '.*' not found" -data "${data}"
   -V "${WORK_DIR}/no-such-baseline.png")
 run(other-size fail "pixels, the rendered image 128 x 128" -data "${data}"
-  -V "${DATA}/Baseline/TestHOVTJunctionRayCast.png")
+  -V "${DATA}/Baseline/TestHOVZooRayCast.png")
 run(no-data fail "no dataset" -V "${baseline}")
 message(STATUS "the regression harness fails on a perturbed rendering, a missing baseline, a "
   "baseline of another size and a missing dataset")

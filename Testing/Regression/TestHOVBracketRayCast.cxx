@@ -11,7 +11,7 @@ int TestHOVBracketRayCast(int argc, char* argv[])
   scene.Array = "von_mises";
   scene.RenderMode = vtkHighOrderVolumeMapper::RAY_CAST;
   scene.Semantics = vtkHighOrderVolumeMapper::VTK_UNSTRUCTURED;
-  scene.Width = 96;
-  scene.Height = 96;
+  scene.Width = 64;
+  scene.Height = 64;
   return hovRegression::Run(argc, argv, scene);
 }

@@ -10,8 +10,8 @@ int TestHOVLagrangeTJunctionRayCast(int argc, char* argv[])
   scene.Name = "TestHOVLagrangeTJunctionRayCast";
   scene.Array = "speed";
   scene.RenderMode = vtkHighOrderVolumeMapper::RAY_CAST;
-  scene.Width = 96;
-  scene.Height = 64;
+  scene.Width = 64;
+  scene.Height = 40;
   scene.ClipPlanes = { 0.5, 0.5, 0.5, 0, 0, -1 };
   scene.UnitFraction = 0.1;
   scene.Zoom = 2.2;

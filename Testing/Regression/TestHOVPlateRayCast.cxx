@@ -12,7 +12,7 @@ int TestHOVPlateRayCast(int argc, char* argv[])
   scene.RenderMode = vtkHighOrderVolumeMapper::RAY_CAST;
   scene.Semantics = vtkHighOrderVolumeMapper::GPU_COMPATIBLE;
   scene.UnitFraction = 0.01;
-  scene.Width = 96;
-  scene.Height = 96;
+  scene.Width = 64;
+  scene.Height = 64;
   return hovRegression::Run(argc, argv, scene);
 }

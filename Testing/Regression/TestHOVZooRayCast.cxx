@@ -10,8 +10,8 @@ int TestHOVZooRayCast(int argc, char* argv[])
   scene.Name = "TestHOVZooRayCast";
   scene.Array = "temperature";
   scene.RenderMode = vtkHighOrderVolumeMapper::RAY_CAST;
-  scene.Width = 96;
-  scene.Height = 64;
+  scene.Width = 64;
+  scene.Height = 48;
   scene.UnitFraction = 0.15;
   return hovRegression::Run(argc, argv, scene);
 }
