@@ -1,6 +1,6 @@
 #include "vtkHighOrderEGLRenderWindow.h"
 
-#include "vtkObjectFactory.h"
+#include "vtkObjectFactory.h" // vtkStandardNewMacro
 #include "vtk_glew.h" // glewInit, GLEW_VERSION_3_2, glGet* of the limits
 
 #include <EGL/egl.h>    // the EGL 1.5 API

@@ -1,8 +1,8 @@
 #include "vtkHighOrderImageComparison.h"
 
-#include "vtkImageData.h"
+#include "vtkImageData.h" // the images compared and the difference image
 #include "vtkNew.h"           // the difference array
-#include "vtkObjectFactory.h"
+#include "vtkObjectFactory.h" // vtkStandardNewMacro
 #include "vtkPointData.h"         // the images' scalars
 #include "vtkUnsignedCharArray.h" // 8-bit pixels
 
@@ -94,7 +94,8 @@ bool vtkHighOrderImageComparison::Compare(vtkImageData* baseline, vtkImageData* 
     {
       d = std::max(d, std::abs(int(pb[nb * p + k]) - int(pc[nc * p + k])));
     }
-    const unsigned char shown = static_cast<unsigned char>(std::min(255, d * this->DifferenceScale));
+    const unsigned char shown =
+      static_cast<unsigned char>(std::min(255, d * this->DifferenceScale));
     pd[3 * p] = shown;
     pd[3 * p + 1] = d > this->Tolerance ? 0 : shown;
     pd[3 * p + 2] = d > this->Tolerance ? 0 : shown;

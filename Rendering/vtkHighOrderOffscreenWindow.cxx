@@ -1,6 +1,6 @@
 #include "vtkHighOrderOffscreenWindow.h"
 
-#include "vtkObjectFactory.h"
+#include "vtkObjectFactory.h" // vtkStandardNewMacro
 #include "vtkRenderWindow.h" // VTK's default window (the X11 backend)
 
 #include <cstdlib> // std::getenv, std::atof

@@ -1,4 +1,4 @@
-"""Regression image tests from Python (highordervolume.regression), against the C++ tests' baselines.
+"""Regression image tests from Python (highordervolume.regression) against the C++ baselines.
 
 Three scenes of Testing/Regression are rebuilt here from the same description (dataset, array,
 transfer function, unit distance, camera, size, render mode): TestHOVBracketCPU (CPU_ACCURATE),

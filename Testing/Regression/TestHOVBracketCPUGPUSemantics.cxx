@@ -1,8 +1,9 @@
 // The bracket, CPU_ACCURATE, GPU-compatible opacity (-ln(1-a)/u).
-// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVBracketCPUGPUSemantics.png.
+// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVBracketCPUGPUSemantics.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVBracketCPUGPUSemantics(int argc, char* argv[])
 {

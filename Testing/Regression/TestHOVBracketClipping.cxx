@@ -1,8 +1,9 @@
 // The bracket, CPU_ACCURATE, cut open by two clipping planes (x > 40% and a slanted plane).
-// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVBracketClipping.png.
+// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVBracketClipping.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVBracketClipping(int argc, char* argv[])
 {

@@ -1,8 +1,9 @@
 // The bracket, OPENGL_PROJECTION (colour method M3), VTK-unstructured opacity.
-// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVBracketProjection.png.
+// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVBracketProjection.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVBracketProjection(int argc, char* argv[])
 {

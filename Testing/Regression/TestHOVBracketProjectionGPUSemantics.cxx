@@ -1,8 +1,9 @@
 // The bracket, OPENGL_PROJECTION (M3), GPU-compatible opacity.
-// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVBracketProjectionGPUSemantics.png.
+// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVBracketProjectionGPUSemantics.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVBracketProjectionGPUSemantics(int argc, char* argv[])
 {

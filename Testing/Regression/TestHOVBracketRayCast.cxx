@@ -1,8 +1,9 @@
 // The bracket, RAY_CAST (tolerance 1e-3), VTK-unstructured opacity.
-// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVBracketRayCast.png.
+// Data: bracket_tet4_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVBracketRayCast.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVBracketRayCast(int argc, char* argv[])
 {

@@ -11,22 +11,22 @@
 //    must be below its 0.15 (the reason for the strict comparison);
 //  - images of different sizes, a float image, a missing image: refused with a message;
 //  - the difference image marks exactly the pixels beyond the tolerance in red.
-#include "hovRegression.h"
+#include "hovRegression.h" // the regression tests' tolerances
 
-#include "vtkHighOrderImageComparison.h"
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderImageComparison.h" // the class under test
+#include "vtkHighOrderVolumeMapper.h" // render-mode constants
 
 #include "vtkFloatArray.h" // a float image, refused
-#include "vtkImageData.h"
+#include "vtkImageData.h" // perturbed copies
 #include "vtkImageDifference.h" // VTK's comparison, for contrast
-#include "vtkNew.h"
-#include "vtkPNGReader.h"
-#include "vtkPointData.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkNew.h" // owned objects
+#include "vtkPNGReader.h" // the baseline
+#include "vtkPointData.h" // pixels
+#include "vtkUnsignedCharArray.h" // 8-bit pixels
 
 #include <algorithm> // std::min
 #include <iostream>  // verdicts
-#include <string>
+#include <string> // messages
 
 namespace
 {
@@ -113,14 +113,16 @@ int TestHOVImageComparison(int argc, char* argv[])
   cmp->SetAllowedPixels(1);
   Check(cmp->Compare(base, one), "one pixel +1, tolerance 1, one pixel allowed: passes");
 
-  const hovRegression::Allowance cpu = hovRegression::Tolerance(vtkHighOrderVolumeMapper::CPU_ACCURATE);
+  const hovRegression::Allowance cpu =
+    hovRegression::Tolerance(vtkHighOrderVolumeMapper::CPU_ACCURATE);
   cmp->SetTolerance(cpu.Levels);
   cmp->SetAllowedPixels(static_cast<vtkIdType>(cpu.PixelFraction * dims[0] * dims[1]));
   auto two = Perturbed(base, cx, cy, 1, 1, cpu.Levels + 1);
   Check(!cmp->Compare(base, two),
     "one pixel beyond the CPU allowance: fails: " + std::string(cmp->GetSummary()));
   const double vtkTwo = VTKError(base, two);
-  Check(vtkTwo <= 0.15, "... while VTK's comparison passes it (error " + std::to_string(vtkTwo) + ")");
+  Check(vtkTwo <= 0.15,
+    "... while VTK's comparison passes it (error " + std::to_string(vtkTwo) + ")");
 
   auto block = Perturbed(base, cx - 5, cy - 5, 10, 10, 23);
   Check(!cmp->Compare(base, block) && cmp->GetMaximumDifference() == 23 &&

@@ -1,8 +1,10 @@
-// The FEniCSx T-junction on 3,790 order-4 Lagrange tetrahedra (curved), RAY_CAST, clipped at z < 0.
-// Data: tjunction_lagrange_tet_p4.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVLagrangeTJunctionRayCast.png.
+// The FEniCSx T-junction on 3,790 order-4 Lagrange tetrahedra (curved), RAY_CAST,
+// clipped at z < 0.
+// Data: tjunction_lagrange_tet_p4.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVLagrangeTJunctionRayCast.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVLagrangeTJunctionRayCast(int argc, char* argv[])
 {

@@ -1,8 +1,10 @@
-// The FEniCSx plate with a hole (192 order-4 Lagrange hexahedra, curved), RAY_CAST, GPU-compatible opacity.
-// Data: platehole_lagrange_hex_q4.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVPlateRayCast.png.
+// The FEniCSx plate with a hole (192 order-4 Lagrange hexahedra, curved), RAY_CAST, GPU-compatible
+// opacity.
+// Data: platehole_lagrange_hex_q4.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVPlateRayCast.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVPlateRayCast(int argc, char* argv[])
 {

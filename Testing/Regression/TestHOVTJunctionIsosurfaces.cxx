@@ -1,8 +1,10 @@
-// The T-junction, CPU_ACCURATE, two shaded isosurfaces of the speed, cut open by a clipping plane (z < 0).
-// Data: tjunction_tet10_dolfinx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVTJunctionIsosurfaces.png.
+// The T-junction, CPU_ACCURATE, two shaded isosurfaces of the speed, cut open by a clipping plane
+// (z < 0).
+// Data: tjunction_tet10_dolfinx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVTJunctionIsosurfaces.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVTJunctionIsosurfaces(int argc, char* argv[])
 {

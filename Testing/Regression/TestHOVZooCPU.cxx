@@ -1,8 +1,9 @@
 // The CalculiX zoo (tetrahedra, hexahedra, wedges, pyramids), CPU_ACCURATE.
-// Data: zoo_mixed_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVZooCPU.png.
+// Data: zoo_mixed_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVZooCPU.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVZooCPU(int argc, char* argv[])
 {

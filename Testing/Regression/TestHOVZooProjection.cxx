@@ -1,8 +1,9 @@
 // The zoo (mixed linear cells), OPENGL_PROJECTION (M3).
-// Data: zoo_mixed_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVZooProjection.png.
+// Data: zoo_mixed_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVZooProjection.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVZooProjection(int argc, char* argv[])
 {

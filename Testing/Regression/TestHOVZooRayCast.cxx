@@ -1,8 +1,9 @@
 // The zoo (mixed linear cells), RAY_CAST.
-// Data: zoo_mixed_ccx.vtu (DATA{} in CMakeLists.txt); baseline ../Data/Baseline/TestHOVZooRayCast.png.
+// Data: zoo_mixed_ccx.vtu (DATA{} in CMakeLists.txt);
+// baseline ../Data/Baseline/TestHOVZooRayCast.png.
 #include "hovRegression.h"
 
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderVolumeMapper.h" // render-mode and semantics constants
 
 int TestHOVZooRayCast(int argc, char* argv[])
 {

@@ -1,29 +1,29 @@
 #include "hovRegression.h"
 
-#include "vtkHighOrderImageComparison.h"
-#include "vtkHighOrderOffscreenWindow.h"
-#include "vtkHighOrderVolumeMapper.h"
+#include "vtkHighOrderImageComparison.h" // the strict comparison
+#include "vtkHighOrderOffscreenWindow.h" // the window: X or Mesa EGL
+#include "vtkHighOrderVolumeMapper.h" // the mapper under test
 
 #include "vtkCallbackCommand.h" // the mapper's warnings, printed without VTK's "ERROR:" header
-#include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
-#include "vtkDataArray.h"
-#include "vtkImageData.h"
-#include "vtkNew.h"
+#include "vtkCamera.h" // the default fit
+#include "vtkColorTransferFunction.h" // the transfer function
+#include "vtkDataArray.h" // the array's range
+#include "vtkImageData.h" // the candidate image
+#include "vtkNew.h" // owned objects
 #include "vtkPNGReader.h" // the baseline, checked before VTK's comparison
 #include "vtkPNGWriter.h" // the candidate and the difference image on failure
-#include "vtkPiecewiseFunction.h"
-#include "vtkPlane.h"
-#include "vtkPointData.h"
+#include "vtkPiecewiseFunction.h" // the opacity function
+#include "vtkPlane.h" // clipping planes
+#include "vtkPointData.h" // the point array
 #include "vtkRegressionTestImage.h" // VTK's comparison (vtkTesting, threshold 0.15)
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkSmartPointer.h"
-#include "vtkUnstructuredGrid.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
-#include "vtkXMLUnstructuredGridReader.h"
+#include "vtkRenderWindow.h" // the rendered window
+#include "vtkRenderer.h" // the scene
+#include "vtkSmartPointer.h" // the window from the factory
+#include "vtkUnstructuredGrid.h" // the dataset
+#include "vtkVolume.h" // the volume prop
+#include "vtkVolumeProperty.h" // its property
+#include "vtkWindowToImageFilter.h" // the capture
+#include "vtkXMLUnstructuredGridReader.h" // reading the dataset
 #include "vtksys/SystemTools.hxx" // file checks
 
 #include <cmath>    // std::sqrt, std::ceil

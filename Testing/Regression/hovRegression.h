@@ -31,8 +31,8 @@
 #ifndef hovRegression_h
 #define hovRegression_h
 
-#include <string>
-#include <vector>
+#include <string> // names
+#include <vector> // isosurfaces and clipping planes
 
 namespace hovRegression
 {
