@@ -58,7 +58,6 @@ from vtkmodules.vtkRenderingCore import (
     vtkCellCenterDepthSort,
     vtkColorTransferFunction,
     vtkRenderer,
-    vtkRenderWindow,
     vtkVolume,
     vtkVolumeProperty,
 )
@@ -73,6 +72,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 try:
     from highordervolume import vtkHighOrderVolumeMapper, vtkSteinVisibilitySort
+    from highordervolume.offscreen import OffscreenError, offscreen_window
     # Shared with the comparison tools (hov-compare): error catcher, capture, image I/O, montage.
     from highordervolume.render_tools import (DEFAULT_NODES, ErrorCatcher, capture,
                                               label_actor, montage, write_png, write_vti)
@@ -150,10 +150,8 @@ def render_case(case, grid, prop, camera, size, frames, catcher):
     ren.SetActiveCamera(camera)
     label = label_actor(case["label"])
     ren.AddActor2D(label)
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
+    win = offscreen_window(size, size)  # X if DISPLAY is set, Mesa EGL if not
     win.SetMultiSamples(0)
-    win.SetSize(size, size)
     win.AddRenderer(ren)
     catcher.watch(win)
     catcher.watch(ren)
@@ -215,9 +213,7 @@ def legend_image(ctf, smin, smax, size, title, label_format="%.0f"):
     ren = vtkRenderer()
     ren.SetBackground(0.0, 0.0, 0.0)
     ren.AddActor2D(bar)
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetSize(size, size)
+    win = offscreen_window(size, size)
     win.AddRenderer(ren)
     win.Render()
     img, _ = capture(win)
@@ -451,4 +447,7 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except OffscreenError as exc:  # no X server that answers and no EGL, or a bad size
+        sys.exit("hov_demo: %s" % exc)

@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake git pkg-config
   libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
+  libegl-dev libx11-dev
   libcerf-dev libboost-dev libglm-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth

@@ -2,6 +2,7 @@
 
 #include "vtkHighOrderImageDisplayFS.h" // encoded fragment shader
 
+#include "vtkObject.h" // vtkOpenGLError.h uses vtkObject in builds without NDEBUG
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
@@ -71,7 +72,8 @@ bool vtkHighOrderImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int wid
   this->Quad->Program->SetUniformi("image", this->Texture->GetTextureUnit());
   this->Quad->Render();
   this->Texture->Deactivate();
-  vtkOpenGLCheckErrorMacro("failed after drawing the high-order volume image");
+  // Not a vtkObject: the static form (vtkErrorMacro needs one in builds without NDEBUG).
+  vtkOpenGLStaticCheckErrorMacro("failed after drawing the high-order volume image");
   return true;
 }
 

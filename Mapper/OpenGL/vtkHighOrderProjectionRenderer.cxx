@@ -319,7 +319,8 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const Producer& pr
     ostate->PopFramebufferBindings();
   }
   ok = ok && this->Composite(ren);
-  vtkOpenGLCheckErrorMacro("failed after the high-order cell projection");
+  // Not a vtkObject: the static form (vtkErrorMacro needs one in builds without NDEBUG).
+  vtkOpenGLStaticCheckErrorMacro("failed after the high-order cell projection");
   return ok;
 }
 

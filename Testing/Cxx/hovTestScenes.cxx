@@ -4,6 +4,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkHighOrderOffscreenWindow.h" // windows with X (Xvfb) or without (Mesa EGL)
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -188,8 +189,13 @@ vtkSmartPointer<vtkRenderer> BlackRenderer(vtkCamera* cam)
 
 vtkSmartPointer<vtkRenderWindow> OffscreenWindow(vtkRenderer* ren, int w, int h, int multiSamples)
 {
-  auto win = vtkSmartPointer<vtkRenderWindow>::New();
-  win->SetOffScreenRendering(1);
+  vtkNew<vtkHighOrderOffscreenWindow> factory;
+  auto win = vtkSmartPointer<vtkRenderWindow>::Take(factory->NewRenderWindow(w, h));
+  if (!win)
+  {
+    std::cout << "no render window: " << factory->GetErrorMessage() << "\n";
+    std::exit(EXIT_FAILURE);
+  }
   if (multiSamples >= 0)
   {
     win->SetMultiSamples(multiSamples);

@@ -128,7 +128,9 @@ double OrthoPixelCoord(int i, int n, double scale = 1.0, double aspect = 1.0, do
 vtkSmartPointer<vtkRenderer> BlackRenderer(vtkCamera* cam);
 
 /// An offscreen window of @p w x @p h holding @p ren (if not null); @p multiSamples >= 0
-/// sets the number of multisamples (-1: VTK's default).
+/// sets the number of multisamples (-1: VTK's default). From vtkHighOrderOffscreenWindow:
+/// X if DISPLAY is set (Xvfb), Mesa EGL if not (the headless twins hov.Headless.Cxx.*);
+/// the test exits with a failure if there is none.
 vtkSmartPointer<vtkRenderWindow> OffscreenWindow(
   vtkRenderer* ren, int w, int h, int multiSamples = -1);
 

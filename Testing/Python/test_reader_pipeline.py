@@ -20,11 +20,11 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkProbeFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume,
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkVolume,
                                          vtkVolumeProperty, vtkWindowToImageFilter)
 
 import highordervolume
+from highordervolume.offscreen import offscreen_window
 
 FAILURES = []
 
@@ -112,10 +112,8 @@ def main():
     width, height = 160, 120
     ren = vtkRenderer()
     ren.AddVolume(volume)
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
+    win = offscreen_window(width, height)  # X if DISPLAY is set, Mesa EGL if not
     win.AddRenderer(ren)
-    win.SetSize(width, height)
     cam = ren.GetActiveCamera()
     cam.ParallelProjectionOn()
     cam.SetFocalPoint(50, 30, 40)

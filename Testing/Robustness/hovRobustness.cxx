@@ -24,6 +24,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
+#include "vtkHighOrderOffscreenWindow.h" // X or EGL windows
 #include "vtkImageData.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
@@ -171,9 +172,15 @@ int main(int argc, char* argv[])
     }
   });
 
+  // The window from the module's factory: X under Xvfb, Mesa EGL without DISPLAY.
   vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
+  vtkNew<vtkHighOrderOffscreenWindow> factory;
+  auto window = vtkSmartPointer<vtkRenderWindow>::Take(factory->NewRenderWindow(16, 16));
+  if (!window)
+  {
+    std::cerr << "hovRobustness: no render window: " << factory->GetErrorMessage() << "\n";
+    return 1;
+  }
   window->AddRenderer(renderer);
   const double begin = Now();
   long long cases = 0, empty = 0, failed = 0, windowCases = 0;

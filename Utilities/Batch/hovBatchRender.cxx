@@ -8,7 +8,8 @@
  * unless position and focal point are given; then view angle, azimuth,
  * elevation, roll, zoom, parallel scale; then ResetCameraClippingRange), and
  * renders: CPU_ACCURATE through RenderImage (no window at all),
- * OPENGL_PROJECTION in an off-screen render window. Writes the float
+ * OPENGL_PROJECTION in an off-screen render window from
+ * vtkHighOrderOffscreenWindow (X if DISPLAY is set, Mesa EGL if not). Writes the float
  * premultiplied RGBA image (.vti, array "RGBA") and/or a PNG (the image over
  * the background colour, 8-bit RGB). Progress is printed on stderr. The
  * Python twin (highordervolume.batch) makes the same calls in the same order.
@@ -20,6 +21,7 @@
  */
 #include "hovBatchSpec.h"
 
+#include "vtkHighOrderOffscreenWindow.h" // the window of OPENGL_PROJECTION, with or without X
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -269,9 +271,15 @@ int Render(const hov::BatchSpec& spec, vtkUnstructuredGrid* grid)
   }
   else
   {
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetSize(spec.Width, spec.Height);
+    // X if DISPLAY is set, Mesa EGL if not; a message instead of VTK's abort.
+    vtkNew<vtkHighOrderOffscreenWindow> factory;
+    vtkSmartPointer<vtkRenderWindow> window =
+      vtkSmartPointer<vtkRenderWindow>::Take(factory->NewRenderWindow(spec.Width, spec.Height));
+    if (!window)
+    {
+      std::cerr << "render window: " << factory->GetErrorMessage() << "\n";
+      return 1;
+    }
     window->AddRenderer(renderer);
     renderer->AddVolume(volume);
     window->Render();

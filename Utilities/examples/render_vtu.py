@@ -15,11 +15,12 @@ import os
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkVolume,
+                                         vtkVolumeProperty, vtkWindowToImageFilter)
 
 import highordervolume  # noqa: F401  (also loads the OpenGL2 overrides)
 from highordervolume import vtkHighOrderVolumeMapper
+from highordervolume.offscreen import offscreen_window
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BRACKET = os.path.join(HERE, "..", "..", "Testing", "Data", "bracket_tet4_ccx.vtu")
@@ -59,9 +60,8 @@ def make_view(grid, mapper, prop, size):
     renderer = vtkRenderer()
     renderer.SetBackground(0.0, 0.0, 0.0)
     renderer.AddVolume(volume)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(size[0], size[1])
+    # Offscreen, with an X server (DISPLAY set) or without one (Mesa EGL).
+    window = offscreen_window(size[0], size[1])
     window.AddRenderer(renderer)
     camera = renderer.GetActiveCamera()
     camera.SetPosition(0, -1, 0)  # front view, z up (like ParaView's "-Y" view)

@@ -28,10 +28,10 @@ from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vt
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridReader
 from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderWindow,
-                                         vtkRenderer, vtkVolume)
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkRenderer, vtkVolume
 
 from . import vtkHighOrderVolumeMapper
+from .offscreen import offscreen_window
 
 RENDER_MODES = ("cpu_accurate", "opengl_projection", "ray_cast")
 OPACITY_SEMANTICS = ("gpu_compatible", "vtk_unstructured", "raw_extinction")
@@ -485,9 +485,8 @@ def render(spec, grid=None, progress=None):
         if not mapper.RenderImage(renderer.GetActiveCamera(), volume, width, height):
             raise RuntimeError("render failed (see the messages above)")
     else:
-        window = vtkRenderWindow()
-        window.SetOffScreenRendering(1)
-        window.SetSize(width, height)
+        # X if DISPLAY is set, Mesa EGL if not; OffscreenError (a RuntimeError) if neither.
+        window = offscreen_window(width, height)
         window.AddRenderer(renderer)
         renderer.AddVolume(volume)
         window.Render()

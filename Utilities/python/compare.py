@@ -49,6 +49,7 @@ from vtkmodules.vtkRenderingVolume import (vtkGPUVolumeRayCastMapper,
 
 from . import compare_report as report
 from . import render_tools as rt
+from .offscreen import OffscreenError
 from .vtkRenderingHighOrderVolume import vtkHighOrderVolumeMapper
 
 SEMANTICS = {"vtk": "VTK-unstructured", "gpu": "GPU-compatible"}
@@ -411,7 +412,7 @@ def main(argv=None):
         return 0
     try:
         rows, entries, scene, refs = run(args)
-    except (ValueError, OSError) as exc:  # bad file, array, transfer function, ...
+    except (ValueError, OSError, OffscreenError) as exc:  # bad file, array, TF, no window ...
         print("hov-compare: %s" % exc, file=sys.stderr)
         return 1
     report.write_csv(rows, os.path.join(args.out, "compare_table.csv"))

@@ -34,6 +34,7 @@ from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 
 from . import compare as cmp
 from . import render_tools as rt
+from .offscreen import OffscreenError
 
 STUDIES = {
     # name: (semantics, default values, knob label)
@@ -195,7 +196,7 @@ def main(argv=None):
     args = parse_args(argv)
     try:
         rows, order_time, order_samples = run_study(args)
-    except (ValueError, OSError) as exc:  # bad file, array, transfer function, ...
+    except (ValueError, OSError, OffscreenError) as exc:  # bad file, array, TF, no window ...
         print("hov-convergence: %s" % exc, file=sys.stderr)
         return 1
     base = os.path.join(args.out, "convergence_%s" % args.study)

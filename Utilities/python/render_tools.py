@@ -25,8 +25,10 @@ from vtkmodules.vtkImagingCore import vtkImageConstantPad
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (vtkCamera, vtkColorTransferFunction, vtkRenderer,
-                                         vtkRenderWindow, vtkTextActor, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
+                                         vtkTextActor, vtkVolume, vtkVolumeProperty,
+                                         vtkWindowToImageFilter)
+
+from .offscreen import offscreen_window
 
 # Default transfer function (as Utilities/hov_demo.py): (fraction of the range, r, g, b, opacity).
 # Low values faint blue, mid cyan/green, high yellow to red; colour and opacity nodes at the
@@ -139,12 +141,11 @@ def make_property(smin, smax, tf_path=None, unit_distance=None, bounds=None):
 
 def fit_camera(bounds, width, height, azimuth=30.0, elevation=20.0, zoom=1.0):
     """Perspective camera looking at the bounds (VTK's ResetCamera), then azimuth/elevation
-    [degrees] about the focal point and zoom; fixed clipping range around the bounds."""
+    [degrees] about the focal point and zoom; fixed clipping range around the bounds. No window
+    needed: the renderer's aspect is the image's (the camera is the same as in a window of that
+    size, bit for bit)."""
     ren = vtkRenderer()
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetSize(width, height)
-    win.AddRenderer(ren)
+    ren.SetAspect(float(width) / height, 1.0)
     cam = ren.GetActiveCamera()
     cam.SetFocalPoint(0, 0, 0)
     cam.SetPosition(0, -1, 0)  # look along +y with z up: a natural start for FE models
@@ -238,10 +239,8 @@ def gpu_property(prop, smin, smax):
 
 def warm_up_gl():
     """Render an empty offscreen window once, so that loading the OpenGL libraries and the
-    first context does not count in the first method's time and memory."""
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetSize(16, 16)
+    first context does not count in the first method's time and memory. Raises OffscreenError if no window can be made."""
+    win = offscreen_window(16, 16)
     win.AddRenderer(vtkRenderer())
     win.Render()
     win.Finalize()
@@ -284,10 +283,8 @@ def render_mapper(mapper, data, prop, camera, width, height, frames, catcher, la
     ren.SetActiveCamera(camera)
     if label:
         ren.AddActor2D(label_actor(label))
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
+    win = offscreen_window(width, height)  # X if DISPLAY is set, Mesa EGL if not
     win.SetMultiSamples(0)
-    win.SetSize(width, height)
     win.AddRenderer(ren)
     catcher.watch(win)
     catcher.watch(ren)

@@ -36,6 +36,7 @@ from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 from . import compare as cmp
 from . import compare_report as report
 from . import render_tools as rt
+from .offscreen import OffscreenError
 
 VISIBLE = 1.0 / 255.0
 FIELDS = ["route", "resolution", "dims", "resample_s", "first_render_s", "frame_s",
@@ -220,7 +221,7 @@ def main(argv=None):
     args = parse_args(argv)
     try:
         rows, entries, scene = run(args)
-    except (ValueError, OSError) as exc:
+    except (ValueError, OSError, OffscreenError) as exc:  # ..., no render window
         print("hov-resample-study: %s" % exc, file=sys.stderr)
         return 1
     base = os.path.join(args.out, "resample_study")

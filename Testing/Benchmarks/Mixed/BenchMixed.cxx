@@ -25,6 +25,7 @@
 //     [--size S] [--turn DEG] [--data DIR] [--skip-rc]
 #include "hovTestReferenceDatasets.h"
 
+#include "vtkHighOrderOffscreenWindow.h" // windows with X (Xvfb) or without (Mesa EGL)
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -70,18 +71,23 @@ double Since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// One offscreen window (and X connection) shared by every measurement.
+/// One offscreen window (X if DISPLAY is set, Mesa EGL if not) shared by every measurement.
 struct Window
 {
   vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> RenderWindow;
+  vtkSmartPointer<vtkRenderWindow> RenderWindow;
   explicit Window(int size)
   {
+    vtkNew<vtkHighOrderOffscreenWindow> factory;
+    this->RenderWindow.TakeReference(factory->NewRenderWindow(size, size));
+    if (!this->RenderWindow)
+    {
+      std::cerr << "hovBenchMixed: " << factory->GetErrorMessage() << "\n";
+      std::exit(1);
+    }
     this->Renderer->SetBackground(0, 0, 0);
-    this->RenderWindow->SetOffScreenRendering(1);
     this->RenderWindow->SetMultiSamples(0);
     this->RenderWindow->AddRenderer(this->Renderer);
-    this->RenderWindow->SetSize(size, size);
   }
 };
 

@@ -17,6 +17,7 @@
 // (approximate|Stein), --lookup 0|1 (opacity texture|analytic), --no-vtk
 // (ours only, for profiling), --semantics vtk|gpu (ours in VTK-unstructured,
 // the default, or GPU-compatible semantics).
+#include "vtkHighOrderOffscreenWindow.h" // windows with X (Xvfb) or without (Mesa EGL)
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkCamera.h"
@@ -272,11 +273,16 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkRenderer> ren;
   ren->SetBackground(0, 0, 0);
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
+  vtkNew<vtkHighOrderOffscreenWindow> factory; // X if DISPLAY is set, Mesa EGL if not
+  vtkSmartPointer<vtkRenderWindow> win =
+    vtkSmartPointer<vtkRenderWindow>::Take(factory->NewRenderWindow(512, 512));
+  if (!win)
+  {
+    std::cerr << "hovBenchProjection: " << factory->GetErrorMessage() << "\n";
+    return 1;
+  }
   win->SetMultiSamples(0);
   win->AddRenderer(ren);
-  win->SetSize(512, 512);
   std::cout << "hovBenchProjection: 512x512, median of " << frames
             << " interleaved frames (rotating camera), seconds per frame\n";
   for (const Data& d : data)

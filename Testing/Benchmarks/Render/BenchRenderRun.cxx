@@ -1,6 +1,7 @@
 // hovBenchRender: one timed run of a mapper (see BenchRender.h).
 #include "BenchRender.h"
 
+#include "vtkHighOrderOffscreenWindow.h" // windows with X (Xvfb) or without (Mesa EGL)
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkAbstractVolumeMapper.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>  // std::exit without a window
 #include <iostream>
 
 namespace hovBench
@@ -131,11 +133,15 @@ std::unique_ptr<Run> Prepare(const Options& opt, const Mesh& mesh, const std::st
   run->Camera = vtkSmartPointer<vtkCamera>::New();
   SetupCamera(run->Camera, mesh.Grid->GetBounds());
   ren->SetActiveCamera(run->Camera);
-  run->Window = vtkSmartPointer<vtkRenderWindow>::New();
+  vtkNew<vtkHighOrderOffscreenWindow> factory; // X if DISPLAY is set, Mesa EGL if not
+  run->Window = vtkSmartPointer<vtkRenderWindow>::Take(factory->NewRenderWindow(opt.Size, opt.Size));
+  if (!run->Window)
+  {
+    std::cerr << "hovBenchRender: " << factory->GetErrorMessage() << "\n";
+    std::exit(1);
+  }
   vtkRenderWindow* win = run->Window;
-  win->SetOffScreenRendering(1);
   win->SetMultiSamples(0);
-  win->SetSize(opt.Size, opt.Size);
   win->AddRenderer(ren);
   errors.Watch(win);
   errors.Watch(ren);
