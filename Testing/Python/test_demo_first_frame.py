@@ -28,12 +28,13 @@ sys.path.insert(0, os.path.join(HERE, os.pardir, os.pardir, "Utilities"))
 
 import hov_demo  # noqa: E402
 from highordervolume import vtkHighOrderVolumeMapper, vtkSteinVisibilitySort  # noqa: E402
+from highordervolume.offscreen import offscreen_window  # noqa: E402
 from highordervolume.render_tools import ErrorCatcher, capture  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 from vtkmodules.vtkFiltersExtraction import vtkExtractCells  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader  # noqa: E402
 from vtkmodules.vtkRenderingCore import (vtkCellCenterDepthSort, vtkRenderer,  # noqa: E402
-                                         vtkRenderWindow, vtkVolume)
+                                         vtkVolume)
 from vtkmodules.vtkRenderingVolume import vtkProjectedTetrahedraMapper  # noqa: E402
 
 SIZE = 256
@@ -55,10 +56,8 @@ def frames(grid, prop, mapper, n):
     ren.SetBackground(0, 0, 0)
     ren.AddVolume(volume)
     ren.SetActiveCamera(hov_demo.make_camera())
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
+    win = offscreen_window(SIZE, SIZE)  # X if DISPLAY is set, Mesa EGL if not
     win.SetMultiSamples(0)
-    win.SetSize(SIZE, SIZE)
     win.AddRenderer(ren)
     out = []
     for _ in range(n):
