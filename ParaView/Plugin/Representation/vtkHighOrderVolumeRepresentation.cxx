@@ -8,10 +8,13 @@
 #include "vtkColorTransferFunction.h"    // the colour map's vector mode
 #include "vtkCompositeDataIterator.h"    // composite inputs
 #include "vtkCompositeDataSet.h"         // composite inputs
+#include "vtkDiscretizableColorTransferFunction.h" // ParaView's colour maps
+#include "vtkHighOrderTransferFunction.h" // colour sampling tolerance
 #include "vtkInformation.h"              // pipeline and view requests
 #include "vtkInformationVector.h"        // pipeline requests
 #include "vtkMath.h"                     // UninitializeBounds
 #include "vtkMatrix4x4.h"                // geometry bounds
+#include "vtkMultiProcessController.h"   // rank in messages
 #include "vtkObjectFactory.h"            // vtkStandardNewMacro
 #include "vtkPVGeometryFilter.h"         // LOD geometry
 #include "vtkPVLODVolume.h"              // the actor
@@ -32,6 +35,36 @@ vtkHighOrderVolumeRepresentation::vtkHighOrderVolumeRepresentation()
   // Projected tetrahedra stay the superclass's default; ours is used instead
   // in UpdateMapperParameters.
   this->Actor->SetMapper(this->Mapper);
+  this->SetColorSamplingTolerance(1e-4);
+}
+
+void vtkHighOrderVolumeRepresentation::SetColor(vtkColorTransferFunction* lut)
+{
+  this->ColorMap = lut;
+  this->UpdateColorFunction();
+}
+
+void vtkHighOrderVolumeRepresentation::SetColorSamplingTolerance(double tolerance)
+{
+  this->Mapper->GetTransferFunction()->SetSamplingTolerance(tolerance);
+}
+
+void vtkHighOrderVolumeRepresentation::UpdateColorFunction()
+{
+  auto* discretizable = vtkDiscretizableColorTransferFunction::SafeDownCast(this->ColorMap);
+  if (!discretizable || !discretizable->GetDiscretize())
+  {
+    this->Property->SetColor(this->ColorMap);
+    return;
+  }
+  // The same function without its 256-step table (the copy is a plain
+  // vtkColorTransferFunction: nodes, colour space, clamping, range colours).
+  if (this->ContinuousColorMapTime < discretizable->GetMTime())
+  {
+    this->ContinuousColorMap->DeepCopy(discretizable);
+    this->ContinuousColorMapTime = discretizable->GetMTime();
+  }
+  this->Property->SetColor(this->ContinuousColorMap);
 }
 
 vtkHighOrderVolumeRepresentation::~vtkHighOrderVolumeRepresentation() = default;
@@ -134,10 +167,13 @@ int vtkHighOrderVolumeRepresentation::ProcessViewRequest(
     this->Actor->SetEnableLOD(inInfo->Has(vtkPVRenderView::USE_LOD()) ? 1 : 0);
     vtkAlgorithmOutput* producerPort = vtkPVRenderView::GetPieceProducer(inInfo, this);
     vtkAlgorithmOutput* producerPortLOD = vtkPVRenderView::GetPieceProducerLOD(inInfo, this);
-    if (producerPort &&
-      vtkUnstructuredGridBase::SafeDownCast(producerPort->GetProducer()->GetOutputDataObject(0)))
+    auto* piece = producerPort
+      ? vtkUnstructuredGridBase::SafeDownCast(producerPort->GetProducer()->GetOutputDataObject(0))
+      : nullptr;
+    if (piece)
     {
       this->Mapper->SetInputConnection(producerPort);
+      this->ReportPiece(piece);
     }
     else
     {
@@ -146,6 +182,42 @@ int vtkHighOrderVolumeRepresentation::ProcessViewRequest(
     this->LODMapper->SetInputConnection(producerPortLOD);
   }
   return 1;
+}
+
+void vtkHighOrderVolumeRepresentation::ReportPiece(vtkDataSet* piece)
+{
+  // ParaView draws no volume for an empty piece or without a colouring
+  // array, so the mapper never sees either: say so here, once per piece.
+  if (piece->GetMTime() <= this->ReportedPieceTime && this->GetInputArrayInformation(0) &&
+    this->ReportedArray == this->CurrentArrayName())
+  {
+    return;
+  }
+  this->ReportedPieceTime = piece->GetMTime();
+  this->ReportedArray = this->CurrentArrayName();
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int rank = controller ? controller->GetLocalProcessId() : 0;
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  if (piece->GetNumberOfCells() == 0 && ranks > 1)
+  {
+    vtkWarningMacro("Accurate Volume: rank " << rank << " of " << ranks
+                                             << " received an empty piece (0 cells); it draws "
+                                                "nothing, the other ranks draw the rest.");
+  }
+  else if (this->ReportedArray.empty() && piece->GetNumberOfCells() > 0 && rank == 0)
+  {
+    vtkWarningMacro("Accurate Volume needs a point or cell array to colour by (\"Solid Color\" "
+                    "draws no volume): choose one in the Coloring menu or with ColorBy().");
+  }
+}
+
+std::string vtkHighOrderVolumeRepresentation::CurrentArrayName()
+{
+  vtkInformation* info = this->GetInputArrayInformation(0);
+  const char* name = info && info->Has(vtkDataObject::FIELD_NAME())
+    ? info->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  return name ? name : "";
 }
 
 void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
@@ -159,7 +231,8 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
     colorArrayName = info->Get(vtkDataObject::FIELD_NAME());
     association = info->Get(vtkDataObject::FIELD_ASSOCIATION());
   }
-  vtkColorTransferFunction* ctf = this->Property->GetRGBTransferFunction(0);
+  this->UpdateColorFunction(); // the colour map may have changed since SetColor
+  vtkColorTransferFunction* ctf = this->ColorMap;
   const bool component = ctf && ctf->GetVectorMode() == vtkScalarsToColors::COMPONENT;
   int extinctionComponent = component ? ctf->GetVectorComponent() : -1;
   const char* extinctionArray = colorArrayName;
