@@ -56,8 +56,11 @@ def render_case(case, view, readers, out, size):
     reader = readers[data]
     disp = Show(reader, view)
     disp.Representation = case.get("representation", "Accurate Volume")
-    ColorBy(disp, (case.get("association", "POINTS"), case["array"]))
-    setup_transfer_functions(case)
+    if case.get("association", "POINTS") == "NONE":
+        disp.ColorArrayName = ["POINTS", ""]  # solid colour: no scalars for the volume
+    else:
+        ColorBy(disp, (case.get("association", "POINTS"), case["array"]))
+        setup_transfer_functions(case)
     disp.ScalarOpacityUnitDistance = case["unit_distance"]
     for name, value in case.get("properties", {}).items():
         setattr(disp, name, value)
@@ -108,6 +111,7 @@ def main():
     view = CreateView("RenderView")
     view.ViewSize = size
     view.OrientationAxesVisibility = 0
+    view.UseFXAA = 0  # pvbatch enables FXAA; on several ranks it blurs edges after compositing
     view.UseColorPaletteForBackground = 0
     view.Background = [0.0, 0.0, 0.0]
     readers = {}
