@@ -1,0 +1,228 @@
+"""ParaView plugin benchmarks (not ctest cases): ./Utilities/paraview-benchmark.sh runs this.
+
+A. A >= 2M-tetrahedron mesh (ParaView's Wavelet [-e, e]^3, e = 37 by default, through its
+   Tetrahedralize filter: 2,026,120 tetrahedra) at 1024^2 in pvbatch, "Accurate Volume"
+   (CPU accurate, VTK-unstructured semantics) beside ParaView's own "Volume" (projected
+   tetrahedra) in the same run, frames interleaved, the camera turning 3 degrees per
+   frame: 1 rank x 2 threads, 1 rank x 1 thread, 2 ranks x 1 thread. Reports the median
+   frame time of each and the ratios.
+B. The native zoo (68,714 cells of 4 types) at the same size, camera, property and thread
+   count through the plugin (pvbatch) and through the VTK 9.1 module standalone (this
+   process, a render window), alternating runs; reports the median frame times and the
+   ratio plugin / standalone (acceptance: <= 1.3).
+
+    python3 run_benchmarks.py --plugin <HighOrderVolume.so> --pvpython <dist-packages>
+        --data Testing/Data --temp <folder> [--size 1024] [--frames 5] [--extent 37]
+        [--parts A,B] [--markdown out.md]
+"""
+import json
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, os.pardir, "Testing"))
+import hov_pv_testing as hpt  # noqa: E402
+
+PV_BENCH = os.path.join(HERE, "pv_bench_frames.py")
+
+
+def extra(parser):
+    parser.add_argument("--size", type=int, default=1024)
+    parser.add_argument("--frames", type=int, default=5)
+    parser.add_argument("--extent", type=int, default=37)
+    parser.add_argument("--rounds", type=int, default=2, help="part B: alternating rounds")
+    parser.add_argument("--parts", default="A,B")
+    parser.add_argument("--markdown", default=None)
+
+
+def run_pvbatch(args, spec, ranks, threads, name):
+    out = os.path.join(args.temp, "pv_bench_%s.json" % name)
+    spec = dict(spec, plugin=args.plugin, out=out)
+    spec_path = os.path.join(args.temp, "pv_bench_%s_spec.json" % name)
+    with open(spec_path, "w") as f:
+        json.dump(spec, f)
+    command = [args.pvbatch, PV_BENCH, spec_path]
+    if ranks > 1:
+        command = [args.mpiexec, "-np", str(ranks), "-x", "PYTHONPATH", "-x", "DISPLAY", "-x",
+                   "VTK_SMP_MAX_THREADS"] + (["--allow-run-as-root"] if os.geteuid() == 0 else []) \
+            + command
+    start = time.perf_counter()
+    proc = subprocess.run(command, env=hpt.pv_env(args, threads), capture_output=True, text=True)
+    if proc.returncode != 0 or not os.path.exists(out):
+        print(proc.stdout + proc.stderr)
+        raise RuntimeError("pvbatch benchmark %s failed" % name)
+    with open(out) as f:
+        result = json.load(f)
+    result["wall"] = time.perf_counter() - start
+    os.remove(out)
+    return result
+
+
+def part_a(args, lines):
+    lo, hi = 37.35, 276.83  # RTData's range on the Wavelet
+    color = [[lo + f * (hi - lo), r, g, b] for f, r, g, b in hpt.COLOR_NODES]
+    opacity = [[lo + f * (hi - lo), a] for f, a in hpt.OPACITY_NODES]
+    spec = {"size": [args.size, args.size], "frames": args.frames, "warmup": 1,
+            "source": {"kind": "wavelet", "extent": args.extent},
+            "representations": ["Accurate Volume", "Volume"], "mode": "CPU accurate",
+            "semantics": "VTK unstructured", "color": color, "opacity": opacity,
+            "unit_distance": 4.0, "azimuth_step": 3.0}
+    rows = {}
+    for name, ranks, threads in (("1x2", 1, 2), ("1x1", 1, 1), ("2x1", 2, 1)):
+        res = run_pvbatch(args, spec, ranks, threads, "A_" + name)
+        ours = statistics.median(res["times"]["Accurate Volume"])
+        pt = statistics.median(res["times"]["Volume"])
+        rows[name] = (ours, pt, res)
+        print("A %s: %d cells, ours %.3f s, PT %.3f s per frame (run %.0f s)" % (
+            name, res["cells"], ours, pt, res["wall"]), flush=True)
+    cells = rows["1x2"][2]["cells"]
+    lines += ["", "A. Wavelet [-%d, %d]^3 tetrahedralised: %s tetrahedra, %dx%d, CPU accurate in "
+              "VTK-unstructured semantics beside ParaView's Volume (projected tetrahedra), "
+              "median of %d frames (camera +3 degrees per frame), frames interleaved:" % (
+                  args.extent, args.extent, format(cells, ","), args.size, args.size, args.frames),
+              "",
+              "| ranks x threads | Accurate Volume (s) | ParaView Volume, PT (s) | PT / ours | "
+              "ours: 1 rank x 1 thread / this |",
+              "|---|---|---|---|---|"]
+    base = rows["1x1"][0]
+    for name in ("1x2", "1x1", "2x1"):
+        ours, pt, _ = rows[name]
+        lines.append("| %s | %.3f | %.3f | %.2f | %.2f |" % (
+            name.replace("x", " x "), ours, pt, pt / ours, base / ours))
+
+
+def standalone_frames(args, case, size, frames, threads):
+    """The VTK 9.1 module's frame times for the same case (render window, same camera steps)."""
+    os.environ["VTK_SMP_MAX_THREADS"] = str(threads)
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+    from vtkmodules.vtkCommonCore import vtkSMPTools
+    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderWindow,
+                                             vtkRenderer, vtkVolume, vtkVolumeProperty)
+    from highordervolume import vtkHighOrderVolumeMapper
+    vtkSMPTools.Initialize(threads)
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(case["data"])
+    reader.Update()
+    ctf = vtkColorTransferFunction()
+    for x, r, g, b in case["color"]:
+        ctf.AddRGBPoint(x, r, g, b)
+    pwf = vtkPiecewiseFunction()
+    for x, a in case["opacity"]:
+        pwf.AddPoint(x, a)
+    prop = vtkVolumeProperty()
+    prop.SetColor(ctf)
+    prop.SetScalarOpacity(pwf)
+    prop.SetScalarOpacityUnitDistance(case["unit_distance"])
+    prop.SetInterpolationTypeToLinear()
+    mapper = vtkHighOrderVolumeMapper()
+    mapper.SetInputConnection(reader.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectScalarArray(case["array"])
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    ren = vtkRenderer()
+    ren.AddVolume(volume)
+    cam = ren.GetActiveCamera()
+    c = case["camera"]
+    cam.SetPosition(*c["position"])
+    cam.SetFocalPoint(*c["focal_point"])
+    cam.SetViewUp(*c["view_up"])
+    cam.SetViewAngle(c["view_angle"])
+    win = vtkRenderWindow()
+    win.SetOffScreenRendering(1)
+    win.SetSize(size, size)
+    win.AddRenderer(ren)
+    ren.ResetCameraClippingRange()
+    win.Render()  # warm-up: set-up and sort structures
+    times = []
+    for _ in range(frames):
+        cam.Azimuth(3.0)
+        ren.ResetCameraClippingRange()
+        start = time.perf_counter()
+        win.Render()
+        times.append(time.perf_counter() - start)
+    image = mapper.GetLastImageTime()
+    win.Finalize()
+    return times, image, vtkSMPTools.GetBackend(), vtkSMPTools.GetEstimatedNumberOfThreads()
+
+
+def part_b(args, lines):
+    case = hpt.make_case(args, "zoo", 0)
+    threads = 2
+    spec = {"size": [args.size, args.size], "frames": args.frames, "warmup": 1,
+            "source": {"kind": "file", "path": case["data"], "array": case["array"]},
+            "representations": ["Accurate Volume"], "mode": "CPU accurate",
+            "semantics": "GPU compatible", "color": case["color"], "opacity": case["opacity"],
+            "unit_distance": case["unit_distance"], "camera": case["camera"], "azimuth_step": 3.0}
+    plugin, standalone, images = [], [], []
+    for round_ in range(args.rounds):
+        res = run_pvbatch(args, spec, 1, threads, "B")
+        plugin.append(statistics.median(res["times"]["Accurate Volume"]))
+        images.append(res["image_time_rank0"])
+        # The standalone run in a fresh process (VTK 9.1), same camera steps.
+        proc = subprocess.run([sys.executable, __file__, "--standalone-zoo"] + sys.argv[1:],
+                              capture_output=True, text=True,
+                              env=dict(os.environ, VTK_SMP_MAX_THREADS=str(threads)))
+        out = [line for line in proc.stdout.splitlines() if line.startswith("STANDALONE ")]
+        if not out:
+            print(proc.stdout + proc.stderr)
+            raise RuntimeError("standalone run failed")
+        sa = json.loads(out[0][len("STANDALONE "):])
+        standalone.append(statistics.median(sa["times"]))
+        print("B round %d: plugin %.3f s (image %.3f s, %d cells of %d types), standalone %.3f s "
+              "(image %.3f s, %s %d threads)" % (
+                  round_ + 1, plugin[-1], images[-1], res["piece_cells_rank0"],
+                  res["cell_types_rank0"], standalone[-1], sa["image"], sa["backend"],
+                  sa["threads"]), flush=True)
+    p, s = statistics.median(plugin), statistics.median(standalone)
+    lines += ["", "B. Zoo, native cells (%d of %d types), %dx%d, CPU accurate, 2 threads, same "
+              "camera and property, median of %d frames per run, %d alternating runs each:" % (
+                  res["piece_cells_rank0"], res["cell_types_rank0"], args.size, args.size,
+                  args.frames, args.rounds), "",
+              "| | plugin (pvbatch) | standalone (VTK 9.1 module) | plugin / standalone |",
+              "|---|---|---|---|",
+              "| frame (s), per run | %s | %s | %.2f |" % (
+                  ", ".join("%.3f" % v for v in plugin),
+                  ", ".join("%.3f" % v for v in standalone), p / s)]
+
+
+def standalone_zoo(args):
+    case = hpt.make_case(args, "zoo", 0)
+    times, image, backend, threads = standalone_frames(args, case, args.size, args.frames, 2)
+    print("STANDALONE " + json.dumps({"times": times, "image": image, "backend": backend,
+                                      "threads": threads}))
+
+
+def main():
+    standalone = "--standalone-zoo" in sys.argv
+    if standalone:
+        sys.argv.remove("--standalone-zoo")
+    args = hpt.parse_args(extra)
+    os.makedirs(args.temp, exist_ok=True)
+    if standalone:
+        standalone_zoo(args)
+        return
+    lines = ["ParaView plugin benchmark, %s, load average %.1f at the start" % (
+        time.strftime("%Y-%m-%d %H:%M"), os.getloadavg()[0])]
+    parts = args.parts.split(",")
+    if "A" in parts:
+        part_a(args, lines)
+    if "B" in parts:
+        part_b(args, lines)
+    lines.append("")
+    lines.append("load average %.1f at the end" % os.getloadavg()[0])
+    text = "\n".join(lines)
+    print(text)
+    if args.markdown:
+        with open(args.markdown, "w") as f:
+            f.write(text + "\n")
+
+
+if __name__ == "__main__":
+    main()
