@@ -18,7 +18,9 @@ try:
     result["available"] = list(display.Representation.Available)
     display.Representation = "Accurate Volume"
     ColorBy(display, ("POINTS", "temperature"))
-    GetColorTransferFunction("temperature").RescaleTransferFunction(15.0, 120.0)
+    lut = GetColorTransferFunction("temperature")
+    lut.RescaleTransferFunction(15.0, 120.0)
+    lut.ColorSpace = "RGB"  # 3 nodes: a quick frame in the GUI's large view
     display.OpacitySemantics = "VTK unstructured"  # few nodes: a quick frame in a large view
     view.ResetCamera()
     for mode in ("CPU accurate", "OpenGL projection"):

@@ -15,7 +15,7 @@ import numpy as np
 
 import hov_pv_testing as hpt
 
-SIZE = (200, 200)
+SIZE = (150, 150)
 
 
 def main():

@@ -386,6 +386,10 @@ vtkIdType vtkHighOrderVolumeRepresentation::GetNumberOfRenderCalls()
 {
   return this->Mapper->GetNumberOfRenderCalls();
 }
+int vtkHighOrderVolumeRepresentation::GetLastRayCastSubsampling()
+{
+  return this->Mapper->GetLastRayCastSubsampling();
+}
 vtkIdType vtkHighOrderVolumeRepresentation::GetNumberOfPieceCells()
 {
   vtkUnstructuredGridBase* piece = this->Mapper->GetInput();

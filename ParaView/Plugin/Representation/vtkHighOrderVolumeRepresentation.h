@@ -118,6 +118,8 @@ public:
   double GetLastFrameTime();
   double GetRayCastErrorEstimate();
   vtkIdType GetNumberOfRenderCalls();
+  /// RAY_CAST: pixels per ray in x and y of the last frame (1: a still frame at full accuracy).
+  int GetLastRayCastSubsampling();
   /// Cells in this rank's piece and their distinct VTK cell types (as delivered to the mapper).
   vtkIdType GetNumberOfPieceCells();
   int GetNumberOfPieceCellTypes();
