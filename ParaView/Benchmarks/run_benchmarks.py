@@ -76,8 +76,10 @@ def part_a(args, lines):
         ours = statistics.median(res["times"]["Accurate Volume"])
         pt = statistics.median(res["times"]["Volume"])
         rows[name] = (ours, pt, res)
-        print("A %s: %d cells, ours %.3f s, PT %.3f s per frame (run %.0f s)" % (
-            name, res["cells"], ours, pt, res["wall"]), flush=True)
+        print("A %s: %d cells, ours %.3f s (last image on rank 0 %.3f s, %d cells), PT %.3f s "
+              "per frame (run %.0f s, load %.1f)" % (
+                  name, res["cells"], ours, res["image_time_rank0"], res["piece_cells_rank0"], pt,
+                  res["wall"], os.getloadavg()[0]), flush=True)
     cells = rows["1x2"][2]["cells"]
     lines += ["", "A. Wavelet [-%d, %d]^3 tetrahedralised: %s tetrahedra, %dx%d, CPU accurate in "
               "VTK-unstructured semantics beside ParaView's Volume (projected tetrahedra), "
