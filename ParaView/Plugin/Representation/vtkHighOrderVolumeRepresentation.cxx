@@ -24,7 +24,8 @@
 #include "vtkUnstructuredGrid.h"         // the native piece
 #include "vtkVolumeProperty.h"           // independent components
 
-#include <cstring> // std::strcmp
+#include <algorithm> // std::max
+#include <cstring>   // std::strcmp
 
 vtkStandardNewMacro(vtkHighOrderVolumeRepresentation);
 
@@ -46,7 +47,20 @@ void vtkHighOrderVolumeRepresentation::SetColor(vtkColorTransferFunction* lut)
 
 void vtkHighOrderVolumeRepresentation::SetColorSamplingTolerance(double tolerance)
 {
-  this->Mapper->GetTransferFunction()->SetSamplingTolerance(tolerance);
+  this->ColorSamplingTolerance = tolerance;
+  this->ApplyColorSamplingTolerance();
+}
+
+void vtkHighOrderVolumeRepresentation::ApplyColorSamplingTolerance()
+{
+  // The OpenGL projection is accurate to about 1/255 (M3 within 0.7/255 of
+  // the CPU image); every colour node cuts every cell into one more slab, so
+  // it linearises to 1e-3 (0.26/255) at the finest: ParaView's default colour
+  // map then draws 2.7x faster (bracket, 300^2).
+  const bool projection =
+    this->Mapper->GetRenderMode() == vtkHighOrderVolumeMapper::OPENGL_PROJECTION;
+  this->Mapper->GetTransferFunction()->SetSamplingTolerance(
+    projection ? std::max(this->ColorSamplingTolerance, 1e-3) : this->ColorSamplingTolerance);
 }
 
 void vtkHighOrderVolumeRepresentation::UpdateColorFunction()
@@ -272,6 +286,7 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
 void vtkHighOrderVolumeRepresentation::SetRenderMode(int mode)
 {
   this->Mapper->SetRenderMode(mode);
+  this->ApplyColorSamplingTolerance();
 }
 void vtkHighOrderVolumeRepresentation::SetOpacitySemantics(int semantics)
 {

@@ -31,7 +31,8 @@
  * the volume uses the continuous colour function (Discretize is not applied
  * to the volume), and non-linear colour spaces are linearised to
  * ColorSamplingTolerance (default 1e-4 per channel, 0.03/255; the module's own
- * default is 1e-6). The 256 steps would be 256 jumps, and with 1e-6 the
+ * default is 1e-6; the OpenGL projection, accurate to about 1/255, uses at
+ * least 1e-3). The 256 steps would be 256 jumps, and with 1e-6 the
  * default map becomes 1262 nodes (3473 discretized) instead of 144: every
  * node splits every ray segment and, in the OpenGL projection, every cell.
  *
@@ -147,6 +148,8 @@ private:
 
   /// The volume property's colour function: @p lut, or its continuous copy.
   void UpdateColorFunction();
+  /// The mapper's colour sampling tolerance: ColorSamplingTolerance, at least 1e-3 in OPENGL_PROJECTION.
+  void ApplyColorSamplingTolerance();
   /// Warn once per piece about an empty piece (MPI) or a missing colouring array.
   void ReportPiece(vtkDataSet* piece);
   /// The colouring array's name ("" for none).
@@ -159,6 +162,7 @@ private:
   vtkSmartPointer<vtkUnstructuredGrid> NativePiece;
   std::string SeparateColorArray;
   int SeparateColorArrayComponent = -1;
+  double ColorSamplingTolerance = 1e-4;
   bool WarnedMapScalars = false;
   vtkMTimeType ReportedPieceTime = 0;
   std::string ReportedArray = "(none reported)";
