@@ -191,8 +191,16 @@ def standalone_render(case, camera, size, catcher=None):
     reader.SetFileName(case["data"])
     reader.Update()
     ctf = vtkColorTransferFunction()
-    for x, r, g, b in case["color"]:
-        ctf.AddRGBPoint(x, r, g, b)
+    colormap = case.get("colormap")
+    if colormap:
+        # ParaView's map as the plugin reported it, continuous (its steps are not applied).
+        getattr(ctf, "SetColorSpaceTo" + colormap["space"])()
+        points = colormap["points"]
+        for i in range(0, len(points), 4):
+            ctf.AddRGBPoint(*points[i:i + 4])
+    else:
+        for x, r, g, b in case["color"]:
+            ctf.AddRGBPoint(x, r, g, b)
     pwf = vtkPiecewiseFunction()
     for x, a in case["opacity"]:
         pwf.AddPoint(x, a)
@@ -210,6 +218,8 @@ def standalone_render(case, camera, size, catcher=None):
         mapper.SetScalarModeToUsePointFieldData()
     mapper.SelectScalarArray(case["array"])
     mapper.SetRenderMode(case["mode"])
+    if colormap:
+        mapper.GetTransferFunction().SetSamplingTolerance(1e-4)  # the plugin's default
     setters = {"OpacitySemantics": lambda v: mapper.SetOpacitySemantics(
         ["GPU compatible", "VTK unstructured", "Raw extinction"].index(v)),
         "RayCastTolerance": mapper.SetRayCastTolerance,

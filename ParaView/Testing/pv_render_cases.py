@@ -37,9 +37,16 @@ def info_value(disp, name):
 def setup_transfer_functions(case):
     lut = GetColorTransferFunction(case["array"])
     lut.AutomaticRescaleRangeMode = "Never"
-    lut.ColorSpace = "RGB"
-    lut.Discretize = 0  # the mapper keeps every node: no 256-step table
-    lut.RGBPoints = [v for node in case["color"] for v in node]
+    if case.get("paraview_colormap"):
+        # ParaView's default map as a user gets it: Cool to Warm, Diverging, 256 steps.
+        lut.ApplyPreset("Cool to Warm", True)
+        lut.Discretize = 1  # ParaView's defaults (an earlier case may have changed them)
+        lut.NumberOfTableValues = 256
+        lut.RescaleTransferFunction(case["color"][0][0], case["color"][-1][0])
+    else:
+        lut.ColorSpace = "RGB"
+        lut.Discretize = 0  # the mapper keeps every node: no 256-step table
+        lut.RGBPoints = [v for node in case["color"] for v in node]
     lut.ScalarRangeInitialized = 1
     pwf = GetOpacityTransferFunction(case["array"])
     pwf.Points = [v for x, a in case["opacity"] for v in (x, a, 0.5, 0.0)]
@@ -93,6 +100,10 @@ def render_case(case, view, readers, out, size):
             "clipping_range": list(camera.GetClippingRange()),
         },
     }
+    if case.get("paraview_colormap"):
+        lut = GetColorTransferFunction(case["array"])
+        result["colormap"] = {"points": list(lut.RGBPoints), "space": str(lut.ColorSpace).strip("'\""),
+                              "discretize": int(lut.Discretize)}
     if disp.Representation == "Accurate Volume":
         disp.UpdatePropertyInformation()
         result["info"] = {name: info_value(disp, name) for name in INFO}

@@ -2,6 +2,10 @@
 through ParaView's "Accurate Volume" (pvbatch, one rank), each compared with the VTK 9.1
 module's own float image of the same camera and property (this process).
 
+A tenth case renders the bracket with ParaView's default colour map (Cool to Warm: Diverging,
+discretized to 256 steps); its standalone reference uses the same map continuous, linearised
+to 1e-4 (what the plugin does with it).
+
 Checks per case: the 8-bit screenshot is within 2/255 of the standalone float image (over
 black, per channel, every pixel); the plugin's float image (.vti) within 1e-4 of it (2e-3 for
 the OpenGL projection: two OpenGL contexts); the native cells reached the mapper (the zoo:
@@ -23,6 +27,10 @@ def main():
     failures = []
     cases = [hpt.make_case(args, name, mode) for name in ("bracket", "zoo", "plate")
              for mode in (0, 1, 2)]
+    # ParaView's default colour map (Cool to Warm: Diverging, 256 steps): the volume must use
+    # the continuous map linearised to 1e-4, as the standalone mapper does with that setting.
+    cases.append(hpt.make_case(args, "bracket", 0, tag="bracket_cpu_default_colormap",
+                               paraview_colormap=True))
     out = os.path.join(args.temp, "paraview_modes")
     results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
     messages = hpt.messages_by_case(stderr)
@@ -32,6 +40,12 @@ def main():
     rows = []
     for case, res in zip(cases, results["cases"]):
         name = case["name"]
+        if "colormap" in res:
+            case["colormap"] = res["colormap"]
+            hpt.check(failures, res["colormap"]["discretize"] == 1 and
+                      "Diverging" in res["colormap"]["space"],
+                      "%s: ParaView's map is %s with Discretize %d" % (
+                          name, res["colormap"]["space"], res["colormap"]["discretize"]))
         ref, ref_info, ref_msg = hpt.standalone_render(case, res["camera"], SIZE, catcher)
         png = hpt.read_png_rgb(res["png"])
         pv_float = hpt.read_vti_rgba(res["vti"])
