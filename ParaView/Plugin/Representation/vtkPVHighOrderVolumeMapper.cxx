@@ -36,17 +36,9 @@ void vtkPVHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkUnstructuredGridBase* input = this->GetInput();
   if (input && input->GetNumberOfCells() == 0)
   {
-    // ParaView's redistribution may leave a rank without cells: its layer
-    // stays transparent and the others composite over it as usual.
-    if (this->EmptyPieceWarningTime < input->GetMTime())
-    {
-      this->EmptyPieceWarningTime = input->GetMTime();
-      int rank = 0, size = 1;
-      RankAndSize(rank, size);
-      vtkWarningMacro("Accurate Volume: rank " << rank << " of " << size
-                                               << " received an empty piece (0 cells); it draws "
-                                                  "nothing, the other ranks draw the rest.");
-    }
+    // An empty piece (ParaView's redistribution may leave a rank without
+    // cells; the representation says so once per piece): the layer stays
+    // transparent and the other ranks composite over it as usual.
     timer->StopTimer();
     this->LastFrameTime = timer->GetElapsedTime();
     return;

@@ -7,8 +7,8 @@
  * vtkHighOrderVolumeMapper (every render mode, the same images) and adds what
  * a ParaView rank needs around a frame:
  *  - a rank whose piece is empty (ParaView's redistribution gave it no cells)
- *    draws nothing and says so once per input, naming the rank, instead of the
- *    mapper's generic warning: the other ranks' layers composite as usual;
+ *    draws nothing, without the mapper's generic warning (the representation
+ *    names the rank once per piece): the other ranks' layers composite as usual;
  *  - after every frame the float image can be written to a file
  *    (SetFloatImageFileName; on rank r > 0 of an MPI run "_rank<r>" is added
  *    before the extension: each rank holds only its own piece's layer);
@@ -65,7 +65,6 @@ private:
   std::string FloatImageFileName;
   double LastFrameTime = 0.0;
   vtkIdType NumberOfRenderCalls = 0;
-  vtkMTimeType EmptyPieceWarningTime = 0;
 };
 
 #endif
