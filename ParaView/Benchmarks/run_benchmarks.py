@@ -7,13 +7,15 @@ A. A >= 2M-tetrahedron mesh (ParaView's Wavelet [-e, e]^3, e = 37 by default, th
    frame: 1 rank x 2 threads, 1 rank x 1 thread, 2 ranks x 1 thread. Reports the median
    frame time of each and the ratios.
 B. The native zoo (68,714 cells of 4 types) at the same size, camera, property and thread
-   count through the plugin (pvbatch) and through the VTK 9.1 module standalone (this
-   process, a render window), alternating runs; reports the median frame times and the
-   ratio plugin / standalone (acceptance: <= 1.3).
+   count through the plugin (pvbatch) and through the VTK 9.1 module standalone (a separate
+   python3 process, a render window), alternating runs; reports the median frame times and
+   the ratio plugin / standalone (acceptance: <= 1.3).
+C. The same for the order-4 T-junction in the ray-cast mode (one still frame per run at
+   --raycast-size, default 160^2), with the cost per ray.
 
     python3 run_benchmarks.py --plugin <HighOrderVolume.so> --pvpython <dist-packages>
         --data Testing/Data --temp <folder> [--size 1024] [--frames 5] [--extent 37]
-        [--parts A,B] [--markdown out.md]
+        [--parts A,B,C] [--raycast-size 160] [--markdown out.md]
 """
 import json
 import os
@@ -34,7 +36,8 @@ def extra(parser):
     parser.add_argument("--frames", type=int, default=5)
     parser.add_argument("--extent", type=int, default=37)
     parser.add_argument("--rounds", type=int, default=2, help="part B: alternating rounds")
-    parser.add_argument("--parts", default="A,B")
+    parser.add_argument("--parts", default="A,B,C")
+    parser.add_argument("--raycast-size", type=int, default=160)
     parser.add_argument("--markdown", default=None)
 
 
@@ -125,6 +128,7 @@ def standalone_frames(args, case, size, frames, threads):
     mapper.SetInputConnection(reader.GetOutputPort())
     mapper.SetScalarModeToUsePointFieldData()
     mapper.SelectScalarArray(case["array"])
+    mapper.SetRenderMode(case["mode"])
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -149,26 +153,37 @@ def standalone_frames(args, case, size, frames, threads):
         start = time.perf_counter()
         win.Render()
         times.append(time.perf_counter() - start)
-    image = mapper.GetLastImageTime()
+    result = {"times": times, "image": mapper.GetLastImageTime(), "rays": mapper.GetNumberOfRays(),
+              "backend": vtkSMPTools.GetBackend(),
+              "threads": vtkSMPTools.GetEstimatedNumberOfThreads()}
     win.Finalize()
-    return times, image, vtkSMPTools.GetBackend(), vtkSMPTools.GetEstimatedNumberOfThreads()
+    return result
 
 
-def part_b(args, lines):
-    case = hpt.make_case(args, "zoo", 0)
+SAME_FRAME = {  # part: (dataset, mode, semantics, label)
+    "B": ("zoo", 0, "GPU compatible", "native zoo (68,714 cells of 4 types), CPU accurate"),
+    "C": ("tjunction_p4", 2, "GPU compatible", "order-4 T-junction (3,790 Lagrange tetrahedra), "
+          "ray cast, tolerance 1e-3"),
+}
+
+
+def part_same_frame(args, lines, part):
+    """The same frames through the plugin (pvbatch) and standalone, alternating runs."""
+    dataset, mode, semantics, label = SAME_FRAME[part]
+    case = hpt.make_case(args, dataset, mode)
+    size = args.size if part == "B" else args.raycast_size
+    frames = args.frames if part == "B" else 1
     threads = 2
-    spec = {"size": [args.size, args.size], "frames": args.frames, "warmup": 1,
+    spec = {"size": [size, size], "frames": frames, "warmup": 1,
             "source": {"kind": "file", "path": case["data"], "array": case["array"]},
-            "representations": ["Accurate Volume"], "mode": "CPU accurate",
-            "semantics": "GPU compatible", "color": case["color"], "opacity": case["opacity"],
+            "representations": ["Accurate Volume"], "mode": hpt.MODE_NAMES[mode],
+            "semantics": semantics, "color": case["color"], "opacity": case["opacity"],
             "unit_distance": case["unit_distance"], "camera": case["camera"], "azimuth_step": 3.0}
-    plugin, standalone, images = [], [], []
+    plugin, standalone = [], []
     for round_ in range(args.rounds):
-        res = run_pvbatch(args, spec, 1, threads, "B")
+        res = run_pvbatch(args, spec, 1, threads, part)
         plugin.append(statistics.median(res["times"]["Accurate Volume"]))
-        images.append(res["image_time_rank0"])
-        # The standalone run in a fresh process (VTK 9.1), same camera steps.
-        proc = subprocess.run([sys.executable, __file__, "--standalone-zoo"] + sys.argv[1:],
+        proc = subprocess.run([sys.executable, __file__, "--standalone", part] + sys.argv[1:],
                               capture_output=True, text=True,
                               env=dict(os.environ, VTK_SMP_MAX_THREADS=str(threads)))
         out = [line for line in proc.stdout.splitlines() if line.startswith("STANDALONE ")]
@@ -177,16 +192,16 @@ def part_b(args, lines):
             raise RuntimeError("standalone run failed")
         sa = json.loads(out[0][len("STANDALONE "):])
         standalone.append(statistics.median(sa["times"]))
-        print("B round %d: plugin %.3f s (image %.3f s, %d cells of %d types), standalone %.3f s "
-              "(image %.3f s, %s %d threads)" % (
-                  round_ + 1, plugin[-1], images[-1], res["piece_cells_rank0"],
-                  res["cell_types_rank0"], standalone[-1], sa["image"], sa["backend"],
-                  sa["threads"]), flush=True)
+        print("%s round %d: plugin %.3f s (image %.3f s, %d cells of %d types), standalone %.3f s "
+              "(image %.3f s, %d rays, %s %d threads), load %.1f" % (
+                  part, round_ + 1, plugin[-1], res["image_time_rank0"], res["piece_cells_rank0"],
+                  res["cell_types_rank0"], standalone[-1], sa["image"], sa["rays"], sa["backend"],
+                  sa["threads"], os.getloadavg()[0]), flush=True)
     p, s = statistics.median(plugin), statistics.median(standalone)
-    lines += ["", "B. Zoo, native cells (%d of %d types), %dx%d, CPU accurate, 2 threads, same "
-              "camera and property, median of %d frames per run, %d alternating runs each:" % (
-                  res["piece_cells_rank0"], res["cell_types_rank0"], args.size, args.size,
-                  args.frames, args.rounds), "",
+    per_ray = ", %.2f ms per ray (%d rays)" % (1000 * s / sa["rays"], sa["rays"]) if mode == 2 else ""
+    lines += ["", "%s. The %s, %dx%d, 2 threads, same camera and property, median of %d frames "
+              "per run, %d alternating runs each%s:" % (part, label, size, size, frames,
+                                                        args.rounds, per_ray), "",
               "| | plugin (pvbatch) | standalone (VTK 9.1 module) | plugin / standalone |",
               "|---|---|---|---|",
               "| frame (s), per run | %s | %s | %.2f |" % (
@@ -194,29 +209,33 @@ def part_b(args, lines):
                   ", ".join("%.3f" % v for v in standalone), p / s)]
 
 
-def standalone_zoo(args):
-    case = hpt.make_case(args, "zoo", 0)
-    times, image, backend, threads = standalone_frames(args, case, args.size, args.frames, 2)
-    print("STANDALONE " + json.dumps({"times": times, "image": image, "backend": backend,
-                                      "threads": threads}))
+def standalone_part(args, part):
+    dataset, mode, _, _ = SAME_FRAME[part]
+    case = hpt.make_case(args, dataset, mode)
+    size = args.size if part == "B" else args.raycast_size
+    frames = args.frames if part == "B" else 1
+    print("STANDALONE " + json.dumps(standalone_frames(args, case, size, frames, 2)))
 
 
 def main():
-    standalone = "--standalone-zoo" in sys.argv
-    if standalone:
-        sys.argv.remove("--standalone-zoo")
+    standalone = None
+    if "--standalone" in sys.argv:
+        at = sys.argv.index("--standalone")
+        standalone = sys.argv[at + 1]
+        del sys.argv[at:at + 2]
     args = hpt.parse_args(extra)
     os.makedirs(args.temp, exist_ok=True)
     if standalone:
-        standalone_zoo(args)
+        standalone_part(args, standalone)
         return
     lines = ["ParaView plugin benchmark, %s, load average %.1f at the start" % (
         time.strftime("%Y-%m-%d %H:%M"), os.getloadavg()[0])]
     parts = args.parts.split(",")
     if "A" in parts:
         part_a(args, lines)
-    if "B" in parts:
-        part_b(args, lines)
+    for part in ("B", "C"):
+        if part in parts:
+            part_same_frame(args, lines, part)
     lines.append("")
     lines.append("load average %.1f at the end" % os.getloadavg()[0])
     text = "\n".join(lines)

@@ -32,9 +32,12 @@ DATASETS = {
     "plate": {"file": "platehole_lagrange_hex_q4.vtu", "array": "von_mises",
               "range": (1.81153, 360.913), "direction": (0.35, -0.55, 0.76),
               "view_up": (0, 0, 1), "unit": 0.05, "cells": 192, "types": 1},
+    "tjunction_p4": {"file": "tjunction_lagrange_tet_p4.vtu", "array": "speed",
+                     "range": (0.0461095, 2.62627), "direction": (0.35, 0.45, 0.82),
+                     "view_up": (0, 1, 0), "unit": 0.04, "cells": 3790, "types": 1},
 }
 BOUNDS = {"bracket": (0, 100, 0, 60, 0, 80), "zoo": (0, 4, 0, 2, 0, 1.8),
-          "plate": (0, 1, 0, 1, 0, 0.1)}
+          "plate": (0, 1, 0, 1, 0, 0.1), "tjunction_p4": (-2, 2, -0.5, 1.8, -0.5, 0.5)}
 COLOR_NODES = [(0.0, 0.05, 0.10, 0.90), (0.25, 0.10, 0.70, 0.90), (0.5, 0.20, 0.90, 0.30),
                (0.75, 1.00, 0.85, 0.10), (1.0, 0.95, 0.15, 0.10)]
 OPACITY_NODES = [(0.0, 0.02), (0.25, 0.08), (0.5, 0.25), (0.62, 0.05), (0.75, 0.5), (1.0, 0.85)]
