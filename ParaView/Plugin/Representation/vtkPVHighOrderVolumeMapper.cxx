@@ -2,14 +2,14 @@
 
 #include "vtkDataArray.h"               // the error estimate
 #include "vtkImageData.h"               // the float image
-#include "vtkMultiProcessController.h"  // rank in messages and file names
+#include "vtkMultiProcessController.h"  // the rank in file names
 #include "vtkObjectFactory.h"           // vtkStandardNewMacro
 #include "vtkPointData.h"               // the error estimate
 #include "vtkTimerLog.h"                // frame time
 #include "vtkUnstructuredGridBase.h"    // the piece
 #include "vtkXMLImageDataWriter.h"      // float image file
 
-#include <sstream> // messages
+#include <sstream> // file names
 
 vtkStandardNewMacro(vtkPVHighOrderVolumeMapper);
 
