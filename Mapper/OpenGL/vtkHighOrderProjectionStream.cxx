@@ -12,14 +12,20 @@ constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
 
 /**
  * Map @p bytes of the buffer bound to @p target after @p used bytes for
- * writing; when they do not fit in @p capacity, new storage (twice as large,
- * at least @p bytes plus 25%) and @p used restarts at 0.
+ * writing; when they do not fit after @p used, new storage and @p used
+ * restarts at 0. The new storage is larger (twice, at least @p bytes plus 25%)
+ * only if the group alone does not fit in @p capacity: growing at every refill
+ * made the storage converge to a whole frame's geometry, gigabytes for a
+ * transfer function with many nodes (GL_OUT_OF_MEMORY, or a crash in llvmpipe).
  */
 void* MapRange(GLenum target, size_t bytes, size_t& used, size_t& capacity, bool synchronized)
 {
   if (used + bytes > capacity)
   {
-    capacity = std::max(2 * capacity, bytes + bytes / 4);
+    if (bytes > capacity)
+    {
+      capacity = std::max(2 * capacity, bytes + bytes / 4);
+    }
     glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STREAM_DRAW);
     used = 0;
   }

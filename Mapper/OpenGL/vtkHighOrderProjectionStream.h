@@ -9,8 +9,10 @@
  * buffers (mapped for writing; ranges after the first of a frame unsynchronized:
  * nothing drawn earlier reads them) and returns where the group lies, for
  * glDrawElementsBaseVertex. The storage is kept across frames; when a group
- * does not fit, the buffer gets new, larger storage (the groups already drawn
- * keep the old one) and the group starts at its beginning.
+ * does not fit after the groups already written, the buffer gets new storage
+ * (the groups already drawn keep the old one) and the group starts at its
+ * beginning; the new storage is larger only if the group alone does not fit,
+ * so it stays within 2.5x the largest group (TestProjectionStream).
  *
  * Thread safety: rendering thread only (the copy itself runs in parallel).
  * @sa vtkHighOrderProjectionRenderer
@@ -48,6 +50,9 @@ public:
   void End();
 
   vtkOpenGLBufferObject* GetVertexBuffer() { return this->Vertices; }
+  /// Bytes of storage of the vertex and index buffers (kept across frames).
+  size_t GetVertexCapacity() const { return this->VertexCapacity; }
+  size_t GetIndexCapacity() const { return this->IndexCapacity; }
   void ReleaseGraphicsResources();
 
 private:

@@ -6,6 +6,7 @@
 
 #include "vtkHighOrderImageDisplay.h" // ReadDepth
 #include "vtkHighOrderProjection.h"   // mode state
+#include "vtkHighOrderProjectionVertex.h" // FloatsPerVertex (group budget)
 #include "vtkHighOrderTetraSetup.h"   // cells
 #include "vtkHighOrderTransferFunction.h"
 
@@ -32,6 +33,15 @@ namespace
 /// while the next is built; at most MaxGroups groups).
 constexpr vtkIdType CellsPerGroup = 8192;
 constexpr vtkIdType MaxGroups = 32;
+/// Vertex bytes per group at most, and the cells of the first group (before
+/// the cost per cell is known): a transfer function with many nodes cuts every
+/// cell into many slabs (ParaView's default colour map, 256 steps in a
+/// non-linear colour space, gives thousands of nodes), and a group of
+/// CellsPerGroup cells then needed gigabytes. Typical groups (a few hundred
+/// bytes per cell) stay at CellsPerGroup.
+constexpr double GroupVertexBudget = 64.0 * 1024 * 1024;
+constexpr vtkIdType FirstGroupCells = 1024;
+constexpr vtkIdType MinGroupCells = 64;
 
 /// VTK's row-major matrix as glm's column-major one.
 glm::dmat4 ToGlm(vtkMatrix4x4* m)
@@ -190,7 +200,9 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
   }
   // The cells in groups, built while the previous group is drawn.
   const vtkIdType total = static_cast<vtkIdType>(proj.BackToFront.size());
-  const vtkIdType group = std::max<vtkIdType>(CellsPerGroup, (total + MaxGroups - 1) / MaxGroups);
+  const vtkIdType largestGroup =
+    std::max<vtkIdType>(CellsPerGroup, (total + MaxGroups - 1) / MaxGroups);
+  vtkIdType group = std::min(largestGroup, FirstGroupCells);
   vtkIdType next = 0;
   proj.Statistics = vtkHighOrderProjectionRegions::Statistics();
   auto produce = [&](vtkHighOrderProjectionRegions::Geometry& geometry) {
@@ -198,9 +210,16 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     {
       return false;
     }
-    proj.Statistics.Add(proj.Regions.Build(*setup, proj.BackToFront, next, next + group,
+    const vtkIdType last = std::min(total, next + group);
+    proj.Statistics.Add(proj.Regions.Build(*setup, proj.BackToFront, next, last,
       settings.ExtinctionTf ? tf->GetLinearOpacityTable() : tf->GetTable(), settings, geometry));
-    next += group;
+    // The next group within the vertex budget at this group's cost per cell.
+    const double bytesPerCell = static_cast<double>(geometry.GetNumberOfVertices()) *
+      vtkHighOrderProjectionVertex::FloatsPerVertex * sizeof(float) / (last - next);
+    group = bytesPerCell * largestGroup <= GroupVertexBudget
+      ? largestGroup
+      : std::max(MinGroupCells, static_cast<vtkIdType>(GroupVertexBudget / bytesPerCell));
+    next = last;
     return true;
   };
   vtkHighOrderProjectionRenderer::Options options = RenderOptions(settings);

@@ -1,0 +1,136 @@
+"""pvbatch side of the ParaView tests: render cases with "Accurate Volume".
+
+    pvbatch pv_render_cases.py spec.json
+
+spec.json: {"plugin": path, "out": folder, "size": [w, h], "cases": [case, ...]}
+case: {"name", "data", "array", "association" ("POINTS"/"CELLS"), "color": [[x, r, g, b]],
+       "opacity": [[x, a]], "unit_distance", "camera": {"position", "focal_point",
+       "view_up", "view_angle"}, "properties": {representation property: value},
+       "frames": number of renders (timing; default 1)}
+
+For each case it writes <out>/<name>.png (the screenshot, 8-bit RGB over black),
+<out>/<name>.vti (the mapper's float image of the last frame) and one entry of
+<out>/results.json: the camera as rendered (with the clipping range ParaView chose),
+the diagnostics (information properties) and the frame times. Lines
+"=== case <name>" on stderr separate the cases' messages. Runs on rank 0 of an
+MPI run (pvbatch's usual mode); the other ranks render their pieces.
+"""
+import json
+import os
+import sys
+import time
+
+from paraview import servermanager
+from paraview.simple import (ColorBy, GetColorTransferFunction, GetOpacityTransferFunction,
+                             Hide, LoadPlugin, Render, SaveScreenshot, Show,
+                             XMLUnstructuredGridReader, CreateView, Delete)
+
+INFO = ["WitnessViolations", "RenderedCells", "SkippedCells", "PieceCells", "PieceCellTypes",
+        "LastImageTime", "LastFrameTime", "RayCastErrorEstimate", "RenderCalls"]
+
+
+def info_value(disp, name):
+    prop = disp.GetProperty(name)
+    return prop.GetData() if prop is not None else None
+
+
+def setup_transfer_functions(case):
+    lut = GetColorTransferFunction(case["array"])
+    lut.AutomaticRescaleRangeMode = "Never"
+    if case.get("paraview_colormap"):
+        # ParaView's default map as a user gets it: Cool to Warm, Diverging, 256 steps.
+        lut.ApplyPreset("Cool to Warm", True)
+        lut.Discretize = 1  # ParaView's defaults (an earlier case may have changed them)
+        lut.NumberOfTableValues = 256
+        lut.RescaleTransferFunction(case["color"][0][0], case["color"][-1][0])
+    else:
+        lut.ColorSpace = "RGB"
+        lut.Discretize = 0  # the mapper keeps every node: no 256-step table
+        lut.RGBPoints = [v for node in case["color"] for v in node]
+    lut.ScalarRangeInitialized = 1
+    pwf = GetOpacityTransferFunction(case["array"])
+    pwf.Points = [v for x, a in case["opacity"] for v in (x, a, 0.5, 0.0)]
+    pwf.ScalarRangeInitialized = 1
+    return lut, pwf
+
+
+def render_case(case, view, readers, out, size):
+    sys.stderr.write("=== case %s\n" % case["name"])
+    sys.stderr.flush()
+    data = case["data"]
+    if data not in readers:
+        readers[data] = XMLUnstructuredGridReader(FileName=[data])
+    reader = readers[data]
+    disp = Show(reader, view)
+    disp.Representation = case.get("representation", "Accurate Volume")
+    if case.get("association", "POINTS") == "NONE":
+        disp.ColorArrayName = ["POINTS", ""]  # solid colour: no scalars for the volume
+    else:
+        ColorBy(disp, (case.get("association", "POINTS"), case["array"]))
+        setup_transfer_functions(case)
+    disp.ScalarOpacityUnitDistance = case["unit_distance"]
+    for name, value in case.get("properties", {}).items():
+        setattr(disp, name, value)
+    if disp.Representation == "Accurate Volume":
+        disp.FloatImageFileName = os.path.join(out, case["name"] + ".vti")
+    cam = case["camera"]
+    view.CameraPosition = cam["position"]
+    view.CameraFocalPoint = cam["focal_point"]
+    view.CameraViewUp = cam["view_up"]
+    view.CameraViewAngle = cam.get("view_angle", 30.0)
+    view.CameraParallelProjection = 0
+    times = []
+    for _ in range(case.get("frames", 1)):
+        start = time.perf_counter()
+        Render(view)
+        times.append(time.perf_counter() - start)
+    png = os.path.join(out, case["name"] + ".png")
+    SaveScreenshot(png, view, ImageResolution=size, TransparentBackground=0)
+    camera = view.GetActiveCamera()
+    result = {
+        "name": case["name"],
+        "png": png,
+        "vti": os.path.join(out, case["name"] + ".vti"),
+        "frame_seconds": times,
+        "camera": {
+            "position": list(camera.GetPosition()),
+            "focal_point": list(camera.GetFocalPoint()),
+            "view_up": list(camera.GetViewUp()),
+            "view_angle": camera.GetViewAngle(),
+            "clipping_range": list(camera.GetClippingRange()),
+        },
+    }
+    if case.get("paraview_colormap"):
+        lut = GetColorTransferFunction(case["array"])
+        result["colormap"] = {"points": list(lut.RGBPoints), "space": str(lut.ColorSpace).strip("'\""),
+                              "discretize": int(lut.Discretize)}
+    if disp.Representation == "Accurate Volume":
+        disp.UpdatePropertyInformation()
+        result["info"] = {name: info_value(disp, name) for name in INFO}
+        disp.FloatImageFileName = ""
+    Hide(reader, view)
+    return result
+
+
+def main():
+    with open(sys.argv[1]) as f:
+        spec = json.load(f)
+    out = spec["out"]
+    os.makedirs(out, exist_ok=True)
+    LoadPlugin(spec["plugin"], remote=False, ns=globals())
+    size = spec.get("size", [256, 256])
+    view = CreateView("RenderView")
+    view.ViewSize = size
+    view.OrientationAxesVisibility = 0
+    view.UseFXAA = 0  # pvbatch enables FXAA; on several ranks it blurs edges after compositing
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    readers = {}
+    results = [render_case(case, view, readers, out, size) for case in spec["cases"]]
+    with open(os.path.join(out, "results.json"), "w") as f:
+        json.dump({"ranks": servermanager.vtkProcessModule.GetProcessModule()
+                   .GetNumberOfLocalPartitions(), "cases": results}, f, indent=1)
+    Delete(view)
+
+
+main()
