@@ -264,6 +264,7 @@ bool vtkHighOrderTransferFunction::Update(vtkVolumeProperty* property)
   spec.Semantics = static_cast<hov::OpacitySemantics>(this->OpacitySemantics);
   spec.UnitDistance = property->GetScalarOpacityUnitDistance(comp);
   spec.GPUTolerance = this->GPUTolerance;
+  spec.RefinementBudget = this->RefinementBudget;
   spec.EmissionScale = this->EmissionScale;
   ReadColor(property, comp, this->SamplingTolerance, spec.Color);
   ReadOpacity(property->GetScalarOpacity(comp), this->SamplingTolerance, spec.Opacity);
@@ -325,6 +326,7 @@ void vtkHighOrderTransferFunction::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "GPUTolerance: " << this->GPUTolerance << "\n";
+  os << indent << "RefinementBudget: " << this->RefinementBudget << "\n";
   os << indent << "EmissionScale: " << this->EmissionScale << "\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "SamplingTolerance: " << this->SamplingTolerance << "\n";

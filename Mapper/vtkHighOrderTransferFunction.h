@@ -62,6 +62,10 @@ public:
   vtkGetMacro(GPUTolerance, double);
   vtkSetMacro(EmissionScale, double);
   vtkGetMacro(EmissionScale, double);
+  /// Most nodes the GPU-compatible refinement may add (a warning says when
+  /// the tolerance was not reached within them).
+  vtkSetClampMacro(RefinementBudget, int, 0, 1000000);
+  vtkGetMacro(RefinementBudget, int);
   vtkSetClampMacro(Component, int, 0, 3);
   vtkGetMacro(Component, int);
   vtkSetClampMacro(SamplingTolerance, double, 1e-12, 0.1);
@@ -119,6 +123,7 @@ protected:
 
   int OpacitySemantics = 0;
   double GPUTolerance = 1e-4;
+  int RefinementBudget = 1000000;
   double EmissionScale = 1.0;
   int Component = 0;
   double SamplingTolerance = 1e-6;

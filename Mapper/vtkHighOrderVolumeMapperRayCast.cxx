@@ -28,6 +28,9 @@
 
 namespace
 {
+/// Most nodes the ray caster's GPU-compatible table may add (see its use).
+constexpr int RayCastTableBudget = 16384;
+
 void PublishError(vtkImageData* image, const std::vector<float>& error, int width, int height)
 {
   image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
@@ -138,6 +141,12 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   // The table's linearisation error (<= 2x its tolerance) within a fifth of the
   // per-pixel tolerance: a finer table only adds breakpoints to locate.
   tf->SetGPUTolerance(std::max(this->GPUOpacityTolerance, 0.1 * this->RayCastTolerance));
+  // Every node in a segment's scalar range is a breakpoint to locate on that
+  // segment: a budget keeps a frame finite where the tolerance would need
+  // 10^5 nodes (opacity 1 at a node is a log singularity of the extinction;
+  // GPUOpacityTolerance 1e-8 there): the table then stops at its budget and
+  // says so, with its worst error (hovRobustness seed 7, case 7040481).
+  tf->SetRefinementBudget(RayCastTableBudget);
   tf->SetEmissionScale(this->EmissionScale);
   tf->SetComponent(component > 0 && property->GetIndependentComponents() ? std::min(component, 3) : 0);
   const int buildsBefore = tf->GetBuildCount();

@@ -81,6 +81,9 @@ struct TransferFunctionSpec
   double UnitDistance = 1.0;   ///< u of vtkVolumeProperty (> 0)
   double GPUTolerance = 1e-4;  ///< relative error bound of the linearised -ln(1-a)/u
   double EmissionScale = 1.0;  ///< Wilhelms-Van Gelder: g = EmissionScale c / u
+  /// Most nodes the GPU-compatible refinement may add (a ray-cast segment pays
+  /// for every node in its range; see vtkHighOrderVolumeMapper's RAY_CAST).
+  int RefinementBudget = 1000000;
 };
 
 class HOV_EXPORT TransferFunction
