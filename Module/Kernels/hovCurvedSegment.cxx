@@ -408,9 +408,10 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   const double length = (t1 - t0) * speed;
   if (result.FieldError > 0.0)
   {
-    result.ErrorEstimate +=
+    result.FieldErrorEstimate =
       (length * (s.ColorSlope * s.TauMax + s.ColorMax * s.TauSlope) + (s.Opaque ? s.ColorSlope : 0.0)) *
       result.FieldError;
+    result.ErrorEstimate += result.FieldErrorEstimate;
   }
   return result;
 }

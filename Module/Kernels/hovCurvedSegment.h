@@ -149,6 +149,8 @@ struct CurvedSegmentResult
 {
   RGBA Color;                  ///< premultiplied, front to back
   double ErrorEstimate = 0.0;  ///< quadrature + field-error contribution (max channel)
+  /// The field-error part of ErrorEstimate (a tighter quadrature does not reduce it).
+  double FieldErrorEstimate = 0.0;
   SegmentClassification Class; ///< from the enclosure
   double Lo = 0.0, Hi = 0.0;   ///< the enclosure
   double FieldError = 0.0;     ///< largest e_i of the field pieces
