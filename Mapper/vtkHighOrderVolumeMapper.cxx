@@ -1,13 +1,13 @@
 #include "vtkHighOrderVolumeMapper.h"
 
-#include "vtkHighOrderCellProjector.h" // CPU path
-#include "vtkHighOrderFeatureSetup.h"  // isosurfaces, fields, splatting
-#include "vtkHighOrderImageDisplay.h"  // OpenGL blit of the float image
-#include "vtkHighOrderProjection.h"    // OPENGL_PROJECTION mode
-#include "vtkHighOrderRayCastState.h"  // RAY_CAST mode
-#include "vtkHighOrderTetraSetup.h"    // per-cell preparation
+#include "hovCellProjector.h" // CPU path
+#include "hovFeatureSetup.h"  // isosurfaces, fields, splatting
+#include "hovImageDisplay.h"  // OpenGL blit of the float image
+#include "hovProjection.h"    // OPENGL_PROJECTION mode
+#include "hovRayCastState.h"  // RAY_CAST mode
+#include "hovCellSetup.h"    // per-cell preparation
 #include "vtkHighOrderTransferFunction.h"
-#include "vtkHighOrderViewRays.h" // pixel rays
+#include "hovViewRays.h" // pixel rays
 
 #include "hovTransferFunction.h" // the kernel table
 

@@ -4,7 +4,7 @@
 // main file.
 #include "vtkHighOrderVolumeMapper.h"
 
-#include "vtkHighOrderFeatureSetup.h" // arrays, lights, the feature projector
+#include "hovFeatureSetup.h" // arrays, lights, the feature projector
 
 #include "vtkUnstructuredGridBase.h"
 

@@ -3,8 +3,8 @@
 // of detail, and the error image. See the RenderMode doc in the header.
 #include "vtkHighOrderVolumeMapper.h"
 
-#include "vtkHighOrderRayCastState.h" // caster, cache keys, error image
-#include "vtkHighOrderViewRays.h"     // pixel rays
+#include "hovRayCastState.h" // caster, cache keys, error image
+#include "hovViewRays.h"     // pixel rays
 
 #include "hovCurvedSegment.h"    // CurvedSegmentSettings
 #include "hovTransferFunction.h" // the kernel table

@@ -4,10 +4,10 @@
 // float image.
 #include "vtkHighOrderVolumeMapper.h"
 
-#include "vtkHighOrderImageDisplay.h" // ReadDepth
-#include "vtkHighOrderProjection.h"   // mode state
-#include "vtkHighOrderProjectionVertex.h" // FloatsPerVertex (group budget)
-#include "vtkHighOrderTetraSetup.h"   // cells
+#include "hovImageDisplay.h" // ReadDepth
+#include "hovProjection.h"   // mode state
+#include "hovProjectionVertex.h" // FloatsPerVertex (group budget)
+#include "hovCellSetup.h"   // cells
 #include "vtkHighOrderTransferFunction.h"
 
 #include "hovTransferFunction.h" // the table

@@ -9,8 +9,8 @@
 //  - an opaque depth of 0 everywhere hides everything;
 //  - a Lagrange pyramid (74) added to the grid is skipped with a message
 //    naming its type, and the image is unchanged.
-#include "vtkHighOrderRayCast.h"
-#include "vtkHighOrderViewRays.h"
+#include "hovRayCast.h"
+#include "hovViewRays.h"
 
 #include "hovTransferFunction.h"
 

@@ -4,7 +4,7 @@
 // frame's geometry; with a transfer function of thousands of nodes (ParaView's
 // default colour map) that was gigabytes: GL_OUT_OF_MEMORY, then
 // GL_INVALID_VALUE from the mapping and an empty image, or a crash in llvmpipe.
-#include "vtkHighOrderProjectionStream.h"
+#include "hovProjectionStream.h"
 
 #include "hovTestScenes.h" // OffscreenWindow
 
