@@ -177,6 +177,25 @@ def configure(mapper, grid, name, mode, semantics, opts, centre, r, camera):
     return lo, hi
 
 
+def watch_messages(mapper):
+    """The mapper's warnings and errors, as texts without file, line and address."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.util.vtkConstants import VTK_STRING
+    from vtkmodules.vtkCommonCore import vtkCommand
+    messages = []
+
+    def keep(kind):
+        @calldata_type(VTK_STRING)
+        def observer(obj, event, text):
+            body = text.split("): ", 1)[-1].strip()
+            messages.append(kind + ": " + body)
+        return observer
+
+    mapper.AddObserver(vtkCommand.WarningEvent, keep("warning"))
+    mapper.AddObserver(vtkCommand.ErrorEvent, keep("error"))
+    return messages
+
+
 def cases():
     """(case name, dataset, mode, semantics, variant options, in a window)."""
     out = []
@@ -216,6 +235,7 @@ def render_case(case, out_dir):
     size = RAYCAST_SIZE if mode == 2 else (WINDOW_SIZE if window else CPU_SIZE)
     camera, centre, r = camera_for(grid, opts.get("parallel", False), size[0] / size[1])
     mapper = highordervolume.vtkHighOrderVolumeMapper()
+    messages = watch_messages(mapper)
     lo, hi = configure(mapper, grid, name, mode, semantics, opts, centre, r, camera)
     volume = vtkVolume()
     volume.SetMapper(mapper)
@@ -250,7 +270,8 @@ def render_case(case, out_dir):
             "segments": mapper.GetNumberOfSegments(), "pieces": mapper.GetNumberOfPieces(),
             "rays": mapper.GetNumberOfRays(), "witness": mapper.GetWitnessViolations(),
             "splatted": mapper.GetNumberOfSplattedCells(),
-            "triangles": mapper.GetNumberOfProjectedTriangles()}
+            "triangles": mapper.GetNumberOfProjectedTriangles(),
+            "messages": messages}
     if mode == 2:
         err = mapper.GetRayCastErrorImage().GetPointData().GetScalars()
         if err is not None and err.GetNumberOfTuples() > 0:
