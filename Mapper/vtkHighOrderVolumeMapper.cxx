@@ -42,7 +42,7 @@ vtkCxxSetObjectMacro(vtkHighOrderVolumeMapper, VisibilitySort, vtkVisibilitySort
 
 struct vtkHighOrderVolumeMapper::Internals
 {
-  vtkHighOrderTetraSetup Setup;
+  hov::CellSetup Setup;
   vtkMTimeType SetupInputTime = 0;
   vtkDataArray* SetupArray = nullptr;
   vtkMTimeType SetupArrayTime = 0;
@@ -62,18 +62,18 @@ struct vtkHighOrderVolumeMapper::Internals
   unsigned long CycleWarningGeneration = ~0ul;
 
   vtkNew<vtkHighOrderTransferFunction> TransferFunction;
-  vtkHighOrderCellProjector Projector;
-  vtkHighOrderImageDisplay Display;
+  hov::CellProjector Projector;
+  hov::ImageDisplay Display;
   vtkNew<vtkImageData> FloatImage;
   std::vector<double> RGBA;
   std::vector<float> Depth;
 };
 
 vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
-  : ProjectionImpl(new vtkHighOrderProjection)
-  , RayCastImpl(new vtkHighOrderRayCastState)
+  : ProjectionImpl(new hov::ProjectionState)
+  , RayCastImpl(new hov::RayCastState)
   , Impl(new Internals)
-  , FeatureImpl(new vtkHighOrderFeatureSetup)
+  , FeatureImpl(new hov::FeatureSetup)
 {
   vtkSteinVisibilitySort* sort = vtkSteinVisibilitySort::New();
   this->SetVisibilitySort(sort);
@@ -160,7 +160,7 @@ bool vtkHighOrderVolumeMapper::PrepareCells(vtkVolume*)
     impl.SetupValid = false;
     return false;
   }
-  const vtkHighOrderTetraSetup::Statistics& st = impl.Setup.GetStatistics();
+  const hov::CellSetup::Statistics& st = impl.Setup.GetStatistics();
   if (st.Cells == 0)
   {
     vtkWarningMacro("The input grid has no cells: nothing to render.");
@@ -307,7 +307,7 @@ bool vtkHighOrderVolumeMapper::ValidateInputs(
   {
     return false; // the error was reported
   }
-  const vtkHighOrderTetraSetup::Statistics& st = this->Impl->Setup.GetStatistics();
+  const hov::CellSetup::Statistics& st = this->Impl->Setup.GetStatistics();
   this->NumberOfRenderedCells = st.Rendered;
   this->NumberOfSkippedCells = st.Cells - st.Rendered;
   return true;
@@ -400,7 +400,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
     }
     render = false;
   }
-  vtkHighOrderViewRays rays;
+  hov::ViewRays rays;
   if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
   {
     vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
@@ -419,7 +419,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
   else
   {
     // The projector sizes the image and writes every pixel: no clearing.
-    vtkHighOrderCellProjector::Settings settings;
+    hov::CellProjector::Settings settings;
     settings.Integration.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
     settings.Integration.Method = static_cast<hov::SegmentMethod>(this->IntegrationMethod);
     settings.TerminationTransmittance = this->TerminationTransmittance;
@@ -433,7 +433,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
       settings.Progress = [this](double done) { return this->ReportTileProgress(done); };
     }
     const int features = this->PrepareFeatures(camera, volume);
-    vtkHighOrderCellProjector::Statistics st;
+    hov::CellProjector::Statistics st;
     if (features > 0) // isosurfaces, separate fields or splatting: the feature path
     {
       st = this->FeatureImpl->GetProjector().Render(impl.Setup, impl.FrontToBack, rays,
@@ -467,7 +467,7 @@ int vtkHighOrderVolumeMapper::ComputeImage(
 
 bool vtkHighOrderVolumeMapper::ReportTileProgress(double done)
 {
-  // Called on the rendering thread between tile batches (vtkHighOrderTileBatches.h).
+  // Called on the rendering thread between tile batches (hovTileBatches.h).
   this->UpdateProgress(done);
   vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
   return this->AbortExecute || (window && window->CheckAbortStatus());
@@ -480,7 +480,7 @@ int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, 
 }
 
 bool vtkHighOrderVolumeMapper::PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume,
-  double aspect, bool exactOrder, const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
+  double aspect, bool exactOrder, const hov::CellSetup** setup, const std::vector<vtkIdType>** frontToBack,
   vtkHighOrderTransferFunction** tf)
 {
   Internals& impl = *this->Impl;
@@ -525,7 +525,7 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (this->UseDepthBuffer)
   {
     impl.Depth.resize(static_cast<size_t>(width) * height);
-    if (vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, impl.Depth.data()))
+    if (hov::ImageDisplay::ReadDepth(ren, width, height, x0, y0, impl.Depth.data()))
     {
       depth = impl.Depth.data();
     }

@@ -56,7 +56,7 @@
  * fields (SetColorArrayName, SetIsosurfaceArrayName: colour and isosurfaces
  * from other point arrays than the extinction), subpixel splatting of
  * cells smaller than a pixel (SetSplatting, SetSplatPixelThreshold).
- * When one is active every cell goes through vtkHighOrderFeatureProjector
+ * When one is active every cell goes through hov::FeatureProjector
  * (same cells, order, rays and clipping; always the EXACT integration);
  * otherwise the image and speed are those of the plain path, bit for bit.
  * Measured: TestIsoSphere (a sphere isosurface in quadratic cells: shaded
@@ -112,10 +112,13 @@
 class vtkCamera;
 class vtkDataArray;
 class vtkDoubleArray;
-class vtkHighOrderFeatureSetup;
-struct vtkHighOrderRayCastState;
-struct vtkHighOrderProjection;
-class vtkHighOrderTetraSetup;
+namespace hov
+{
+class CellSetup;
+class FeatureSetup;
+struct ProjectionState;
+struct RayCastState;
+}
 class vtkHighOrderTransferFunction;
 class vtkImageData;
 class vtkVisibilitySort;
@@ -380,7 +383,7 @@ public:
    * this mode: isosurfaces, separate colour/isosurface fields, splatting,
    * clipping planes, view-depth clipping (a warning names them once);
    * RenderImage() always uses the CPU path. See
-   * vtkHighOrderProjectionRegions for the exact construction and accuracy.
+   * hov::ProjectionRegions for the exact construction and accuracy.
    * RAY_CAST (issue 6; Mapper/vtkHighOrderVolumeMapperRayCast.cxx): one ray
    * per pixel through curved Lagrange cells (hov::CurvedRayCaster: BVH,
    * curved-face entry/exit, E/PS/S segment categorization with rigorous
@@ -389,7 +392,7 @@ public:
    * wedges (71-73, curved, HigherOrderDegrees or node counts) and linear and
    * quadratic tetrahedra, hexahedra, voxels, wedges, pyramids (10-14,
    * 24-27, 29, 32), and Bezier tetrahedra, hexahedra, wedges (78-80, not
-   * rational), converted exactly to Lagrange cells (vtkHighOrderRayCastCells);
+   * rational), converted exactly to Lagrange cells (hov::RayCastCells);
    * other types (Lagrange/Bezier pyramids 74/81, 2D cells), NaN/Inf nodes and inverted or
    * degenerate cells are skipped with one warning giving the counts. Point
    * scalars only. The float image is in GetFloatImage(), the per-pixel error
@@ -653,23 +656,23 @@ private:
   /// Cells, transfer function and (exact order) front-to-back order of a
   /// projection frame; false if nothing is to be drawn (errors reported).
   bool PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume, double aspect, bool exactOrder,
-    const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
+    const hov::CellSetup** setup, const std::vector<vtkIdType>** frontToBack,
     vtkHighOrderTransferFunction** tf);
   /// One warning when the table's colours exceed float's range (the GL path).
   void CheckProjectionColorRange(vtkHighOrderTransferFunction* tf);
-  std::unique_ptr<vtkHighOrderProjection> ProjectionImpl;
+  std::unique_ptr<hov::ProjectionState> ProjectionImpl;
 
   // RAY_CAST mode (Mapper/vtkHighOrderVolumeMapperRayCast.cxx): fills @p rgba
   // (4 doubles per pixel); returns 1 on success, 0 on error (reported);
   // @p drawn: whether visible cells were traced.
   int ComputeRayCastImage(vtkCamera* camera, vtkVolume* volume, int width, int height,
     double aspect, const float* depth, std::vector<double>& rgba, bool& drawn);
-  std::unique_ptr<vtkHighOrderRayCastState> RayCastImpl;
+  std::unique_ptr<hov::RayCastState> RayCastImpl;
 
   struct Internals;
   std::unique_ptr<Internals> Impl;
   // Isosurfaces, fields, splatting (vtkHighOrderVolumeMapperFeatures.cxx).
-  std::unique_ptr<vtkHighOrderFeatureSetup> FeatureImpl;
+  std::unique_ptr<hov::FeatureSetup> FeatureImpl;
   vtkRenderer* FrameRenderer = nullptr; ///< the renderer of the frame being drawn, if any
 };
 

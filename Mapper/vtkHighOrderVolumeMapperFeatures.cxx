@@ -1,6 +1,6 @@
 // vtkHighOrderVolumeMapper: isosurfaces, separate colour/isosurface fields
 // and subpixel splatting (the settings and their per-frame preparation; the
-// rendering is vtkHighOrderFeatureProjector). Kept apart from the mapper's
+// rendering is hov::FeatureProjector). Kept apart from the mapper's
 // main file.
 #include "vtkHighOrderVolumeMapper.h"
 
@@ -42,7 +42,7 @@ double vtkHighOrderVolumeMapper::GetIsosurfaceValue(int i)
 
 int vtkHighOrderVolumeMapper::PrepareFeatures(vtkCamera* camera, vtkVolume* volume)
 {
-  vtkHighOrderFeatureSetup::Options options;
+  hov::FeatureSetup::Options options;
   const int n = this->GetNumberOfIsosurfaces();
   int dropped = 0;
   for (int i = 0; i < n; ++i)

@@ -55,7 +55,7 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   int height, double aspect, const float* depth, std::vector<double>& rgba, bool& drawn)
 {
   drawn = false;
-  vtkHighOrderRayCastState& st = *this->RayCastImpl;
+  hov::RayCastState& st = *this->RayCastImpl;
   const size_t pixels = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
   rgba.assign(4 * pixels, 0.0);
   st.Error.assign(pixels, 0.0f);
@@ -180,7 +180,7 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
   }
   this->LastRayCastSubsampling = f;
   const int rw = (width + f - 1) / f, rh = (height + f - 1) / f;
-  vtkHighOrderViewRays rays;
+  hov::ViewRays rays;
   if (!rays.Setup(camera, volume->GetMatrix(), rw, rh, aspect))
   {
     vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
@@ -209,8 +209,8 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
     interactive ? std::min(10.0 * this->RayCastTolerance, 0.05) : this->RayCastTolerance;
   st.RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
   std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
-  vtkHighOrderRayCast::Issues issues;
-  vtkHighOrderProgressFunction progress;
+  hov::RayCast::Issues issues;
+  hov::ProgressFunction progress;
   if (this->HasObserver(vtkCommand::ProgressEvent) ||
     (window && window->HasObserver(vtkCommand::AbortCheckEvent)))
   {

@@ -14,14 +14,14 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-vtkHighOrderImageDisplay::vtkHighOrderImageDisplay() = default;
+hov::ImageDisplay::ImageDisplay() = default;
 
-vtkHighOrderImageDisplay::~vtkHighOrderImageDisplay()
+hov::ImageDisplay::~ImageDisplay()
 {
   delete this->Quad;
 }
 
-bool vtkHighOrderImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int width, int height)
+bool hov::ImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int width, int height)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
   if (!renWin || !rgba || width <= 0 || height <= 0)
@@ -41,21 +41,6 @@ bool vtkHighOrderImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int wid
     return false;
   }
 
-  if (!this->Quad)
-  {
-    this->Quad = new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      hovImageDisplayFS, "");
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
-  {
-    return false;
-  }
-
   // Save every state touched; the savers restore it when leaving this scope.
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
@@ -68,16 +53,38 @@ bool vtkHighOrderImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int wid
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDepthMask(GL_FALSE);
 
-  this->Texture->Activate();
-  this->Quad->Program->SetUniformi("image", this->Texture->GetTextureUnit());
-  this->Quad->Render();
-  this->Texture->Deactivate();
+  if (!this->Blit(renWin, this->Texture))
+  {
+    return false;
+  }
   // Not a vtkObject: the static form (vtkErrorMacro needs one in builds without NDEBUG).
   vtkOpenGLStaticCheckErrorMacro("failed after drawing the high-order volume image");
   return true;
 }
 
-void vtkHighOrderImageDisplay::ReleaseGraphicsResources(vtkWindow* win)
+bool hov::ImageDisplay::Blit(vtkOpenGLRenderWindow* renWin, vtkTextureObject* texture)
+{
+  if (!this->Quad)
+  {
+    this->Quad = new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), hovImageDisplayFS, "");
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
+  {
+    return false;
+  }
+  texture->Activate();
+  this->Quad->Program->SetUniformi("image", texture->GetTextureUnit());
+  this->Quad->Render();
+  texture->Deactivate();
+  return true;
+}
+
+void hov::ImageDisplay::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Texture->ReleaseGraphicsResources(win);
   if (this->Quad)
@@ -88,7 +95,7 @@ void vtkHighOrderImageDisplay::ReleaseGraphicsResources(vtkWindow* win)
   }
 }
 
-bool vtkHighOrderImageDisplay::ReadDepth(
+bool hov::ImageDisplay::ReadDepth(
   vtkRenderer* ren, int width, int height, int x0, int y0, float* depth)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);

@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderImageDisplay
+ * @class   hov::ImageDisplay
  * @brief   Puts a float premultiplied RGBA image over the renderer's viewport.
  *
  * The CPU paths compute their image in double precision; this class uploads it
@@ -11,24 +11,32 @@
  * rays at the depth of opaque geometry). Every GL state it touches is saved
  * and restored by vtkOpenGLState's scoped savers.
  *
+ * Blit() is the full-viewport quad alone (fragment shader hovImageDisplayFS.glsl:
+ * one texel per viewport pixel), for a float texture already on the GPU with
+ * the caller's GL state: the OpenGL projection composites its target with it
+ * (hov::ProjectionRenderer). It is the module's one image blit.
+ *
  * Thread safety: call from the rendering thread only.
- * @sa vtkHighOrderVolumeMapper
+ * @sa vtkHighOrderVolumeMapper, hov::ProjectionRenderer
  */
-#ifndef vtkHighOrderImageDisplay_h
-#define vtkHighOrderImageDisplay_h
+#ifndef hovImageDisplay_h
+#define hovImageDisplay_h
 
 #include "vtkNew.h" // For vtkNew
 
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkTextureObject;
 class vtkWindow;
 
-class vtkHighOrderImageDisplay
+namespace hov
+{
+class ImageDisplay
 {
 public:
-  vtkHighOrderImageDisplay();
-  ~vtkHighOrderImageDisplay();
+  ImageDisplay();
+  ~ImageDisplay();
 
   /**
    * Draw @p rgba (width*height*4 floats, premultiplied, row 0 at the bottom)
@@ -36,6 +44,13 @@ public:
    * Returns false if the OpenGL resources could not be made.
    */
   bool Draw(vtkRenderer* ren, const float* rgba, int width, int height);
+
+  /**
+   * Draw @p texture (a float RGBA texture of the viewport's size) over the
+   * current viewport of @p renWin, one texel per pixel, with the caller's
+   * blending and depth state. Returns false if the shader could not be made.
+   */
+  bool Blit(vtkOpenGLRenderWindow* renWin, vtkTextureObject* texture);
 
   /// Free the texture and the shader program.
   void ReleaseGraphicsResources(vtkWindow* win);
@@ -47,11 +62,12 @@ public:
   static bool ReadDepth(vtkRenderer* ren, int width, int height, int x0, int y0, float* depth);
 
 private:
-  vtkHighOrderImageDisplay(const vtkHighOrderImageDisplay&) = delete;
-  void operator=(const vtkHighOrderImageDisplay&) = delete;
+  ImageDisplay(const hov::ImageDisplay&) = delete;
+  void operator=(const ImageDisplay&) = delete;
 
   vtkNew<vtkTextureObject> Texture;
   vtkOpenGLQuadHelper* Quad = nullptr;
 };
+}
 
 #endif

@@ -1,6 +1,6 @@
 //VTK::System::Dec
 //VTK::Output::Dec
-// Fragment shader of vtkHighOrderImageDisplay: outputs the CPU path's float
+// Fragment shader of hov::ImageDisplay: outputs the CPU path's float
 // image, premultiplied RGBA, one texel per viewport pixel (texelFetch, no
 // filtering). Blending glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA) puts it
 // over what is already drawn.

@@ -1,26 +1,28 @@
 /**
- * @class   vtkHighOrderProjection
+ * @class   hov::ProjectionState
  * @brief   State of vtkHighOrderVolumeMapper's OpenGL projection mode
  *          (HIAC section 7): the region builder, the OpenGL renderer and the
  *          per-frame buffers (reused across frames).
  *
  * Thread safety: rendering thread only.
- * @sa vtkHighOrderProjectionRegions, vtkHighOrderProjectionRenderer
+ * @sa hov::ProjectionRegions, hov::ProjectionRenderer
  */
-#ifndef vtkHighOrderProjection_h
-#define vtkHighOrderProjection_h
+#ifndef hovProjection_h
+#define hovProjection_h
 
 #include "hovProjectionRegions.h"  // CPU regions
 #include "hovProjectionRenderer.h" // OpenGL
 
 #include <vector> // buffers
 
-struct vtkHighOrderProjection
+namespace hov
 {
-  vtkHighOrderProjectionRegions Regions;
-  vtkHighOrderProjectionRenderer Renderer;
-  vtkHighOrderProjectionRegions::Statistics Statistics;
-  vtkHighOrderProjectionRegions::Geometry Geometry;
+struct ProjectionState
+{
+  hov::ProjectionRegions Regions;
+  hov::ProjectionRenderer Renderer;
+  hov::ProjectionRegions::Statistics Statistics;
+  hov::ProjectionRegions::Geometry Geometry;
   std::vector<float> Depth;
   std::vector<vtkIdType> BackToFront;
   bool WarnedFeatures = false;
@@ -28,5 +30,6 @@ struct vtkHighOrderProjection
   int ColorRangeCheckedBuild = -1;
   int ColorRangeCheckedModel = -1;
 };
+}
 
 #endif

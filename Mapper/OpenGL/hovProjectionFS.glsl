@@ -1,7 +1,7 @@
 //VTK::System::Dec
 //VTK::Output::Dec
 //HOV::Variant::Dec
-// Fragment shader of vtkHighOrderProjectionRenderer (HIAC section 7), one
+// Fragment shader of hov::ProjectionRenderer (HIAC section 7), one
 // variant per combination of the HOV_* switches (no run-time branches): the
 // opacity of the fragment's ray segment from the 2D texture
 // M(u, v) = 1 - exp(-u v) (methods M1-M3, hovOpacityFromTexture), or
@@ -9,7 +9,7 @@
 // output premultiplied (k alpha, alpha) (Williams-Max),
 // or (g L phi, alpha) for the effective glow g of Wilhelms-Van Gelder
 // emission (HOV_GLOW, hovProjectionColor.h). Fragments behind the opaque
-// geometry already drawn fail the depth test (vtkHighOrderProjectionRenderer).
+// geometry already drawn fail the depth test (hov::ProjectionRenderer).
 in vec3 segmentVS;
 in vec3 colorVS;
 #if !HOV_TEXTURE_OPACITY && !HOV_ANALYTIC_OPACITY
@@ -44,7 +44,7 @@ uniform float inverseUnit; // 1 / unit distance
 // M(x) = sum x^n / (n (n+1)) (series below x = 0.1) = 1 + (1-x) ln(1-x) / x,
 // x = (max a - min a) / (1 - min a); 1 - a clamped at 1e-12. An opaque
 // medium (a = 1 over the whole transfer-function interval) arrives as the
-// marker a = 2 (vtkHighOrderProjectionVertex): a huge extinction.
+// marker a = 2 (hov::ProjectionVertex): a huge extinction.
 float hovGPUAverageExtinction(float aF, float aB)
 {
   if (min(aF, aB) >= 1.5)
@@ -77,7 +77,7 @@ float hovGPUAverageExtinction(float aF, float aB)
 
 void main()
 {
-  // Segment length and average extinction (vtkHighOrderProjectionVertex).
+  // Segment length and average extinction (hov::ProjectionVertex).
 #if HOV_PERSPECTIVE
   float inverseMu = 1.0 / max(segmentVS.x, 1e-30);
   float len = length(frontVS) * max(inverseMu - 1.0, 0.0);
@@ -87,7 +87,7 @@ void main()
   float backValue = segmentVS.z;
 #endif
 #if HOV_GPU_OPACITY
-  // The ends carry opacities (GPU-compatible semantics; vtkHighOrderProjectionVertex).
+  // The ends carry opacities (GPU-compatible semantics; hov::ProjectionVertex).
   float tauAvg = hovGPUAverageExtinction(segmentVS.y, backValue) * inverseUnit;
 #else
   float tauAvg = 0.5 * (segmentVS.y + backValue);

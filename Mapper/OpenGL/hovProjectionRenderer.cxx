@@ -1,6 +1,5 @@
 #include "hovProjectionRenderer.h"
 
-#include "hovImageDisplayFS.h"    // composite: one texel per pixel
 #include "hovProjectionFS.h"      // encoded fragment shader
 #include "hovProjectionVS.h"      // encoded vertex shader
 
@@ -9,8 +8,6 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
@@ -22,14 +19,11 @@
 
 #include <algorithm> // std::copy
 
-vtkHighOrderProjectionRenderer::vtkHighOrderProjectionRenderer() = default;
+hov::ProjectionRenderer::ProjectionRenderer() = default;
 
-vtkHighOrderProjectionRenderer::~vtkHighOrderProjectionRenderer()
-{
-  delete this->Quad;
-}
+hov::ProjectionRenderer::~ProjectionRenderer() = default;
 
-bool vtkHighOrderProjectionRenderer::PrepareTarget(
+bool hov::ProjectionRenderer::PrepareTarget(
   vtkRenderer* ren, int width, int height, const float* sceneDepth)
 {
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
@@ -83,7 +77,7 @@ bool vtkHighOrderProjectionRenderer::PrepareTarget(
   return this->Framebuffer->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
 }
 
-bool vtkHighOrderProjectionRenderer::PrepareDepth(
+bool hov::ProjectionRenderer::PrepareDepth(
   vtkOpenGLRenderWindow* renWin, int width, int height, const float* sceneDepth)
 {
   this->DepthTexture->SetContext(renWin);
@@ -118,10 +112,10 @@ bool vtkHighOrderProjectionRenderer::PrepareDepth(
 
 namespace
 {
-constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
+constexpr int Floats = hov::ProjectionVertex::FloatsPerVertex;
 
 /// @p source with the HOV_* switches of the variant for @p options.
-std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Options& options)
+std::string Variant(const char* source, const hov::ProjectionRenderer::Options& options)
 {
   std::string defines = "#define HOV_PERSPECTIVE " + std::string(options.Parallel ? "0" : "1") +
     "\n#define HOV_TEXTURE_OPACITY " + (options.TextureOpacity && !options.AnalyticOpacity ? "1" : "0") +
@@ -140,7 +134,7 @@ std::string Variant(const char* source, const vtkHighOrderProjectionRenderer::Op
 
 }
 
-bool vtkHighOrderProjectionRenderer::BindAttributes()
+bool hov::ProjectionRenderer::BindAttributes()
 {
   struct Attribute
   {
@@ -161,7 +155,7 @@ bool vtkHighOrderProjectionRenderer::BindAttributes()
   return ok;
 }
 
-void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
+void hov::ProjectionRenderer::SetUniforms(const Options& options)
 {
   if (options.TextureOpacity && !options.AnalyticOpacity)
   {
@@ -194,8 +188,8 @@ void vtkHighOrderProjectionRenderer::SetUniforms(const Options& options)
   }
 }
 
-bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren, const Producer& produce,
-  vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options)
+bool hov::ProjectionRenderer::DrawRegions(vtkRenderer* ren, const Producer& produce,
+  hov::ProjectionRegions::Geometry& geometry, const Options& options)
 {
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   const std::string vs = Variant(hovProjectionVS, options);
@@ -215,7 +209,7 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren, const Produce
     // rasterizes a group while the next one is built and its vertices processed.
     while (ok && produce(geometry))
     {
-      vtkHighOrderProjectionStream::Range range;
+      hov::ProjectionStream::Range range;
       ok = this->Stream.Append(geometry, range);
       if (ok && range.Count > 0)
       {
@@ -235,32 +229,8 @@ bool vtkHighOrderProjectionRenderer::DrawRegions(vtkRenderer* ren, const Produce
   return ok;
 }
 
-bool vtkHighOrderProjectionRenderer::Composite(vtkRenderer* ren)
-{
-  auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  if (!this->Quad)
-  {
-    this->Quad = new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
-      hovImageDisplayFS, "");
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
-  {
-    return false;
-  }
-  this->ColorTexture->Activate();
-  this->Quad->Program->SetUniformi("image", this->ColorTexture->GetTextureUnit());
-  this->Quad->Render();
-  this->ColorTexture->Deactivate();
-  return true;
-}
-
-bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const Producer& produce,
-  vtkHighOrderProjectionRegions::Geometry& geometry, const Options& options,
+bool hov::ProjectionRenderer::Render(vtkRenderer* ren, const Producer& produce,
+  hov::ProjectionRegions::Geometry& geometry, const Options& options,
   const float* sceneDepth, int width, int height, float* image)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
@@ -318,13 +288,14 @@ bool vtkHighOrderProjectionRenderer::Render(vtkRenderer* ren, const Producer& pr
     this->Framebuffer->UnBind();
     ostate->PopFramebufferBindings();
   }
-  ok = ok && this->Composite(ren);
+  // The float image over the scene: the one image blit.
+  ok = ok && this->Display.Blit(renWin, this->ColorTexture);
   // Not a vtkObject: the static form (vtkErrorMacro needs one in builds without NDEBUG).
   vtkOpenGLStaticCheckErrorMacro("failed after the high-order cell projection");
   return ok;
 }
 
-void vtkHighOrderProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
+void hov::ProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Framebuffer->ReleaseGraphicsResources(win);
   this->ColorTexture->ReleaseGraphicsResources(win);
@@ -332,12 +303,7 @@ void vtkHighOrderProjectionRenderer::ReleaseGraphicsResources(vtkWindow* win)
   this->OpacityTable->ReleaseGraphicsResources(win);
   this->Stream.ReleaseGraphicsResources();
   this->VertexArray->ReleaseGraphicsResources();
-  if (this->Quad)
-  {
-    this->Quad->ReleaseGraphicsResources(win);
-    delete this->Quad;
-    this->Quad = nullptr;
-  }
+  this->Display.ReleaseGraphicsResources(win);
   if (this->Program)
   {
     this->Program->ReleaseGraphicsResources(win);

@@ -1,5 +1,7 @@
 #include "hovProjectionStream.h"
 
+#include "hovStreamPlacement.h" // where a group goes
+
 #include "vtkOpenGLBufferObject.h"
 #include "vtkSMPTools.h"
 #include "vtk_glew.h"
@@ -8,26 +10,18 @@
 
 namespace
 {
-constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
+constexpr int Floats = hov::ProjectionVertex::FloatsPerVertex;
 
 /**
- * Map @p bytes of the buffer bound to @p target after @p used bytes for
- * writing; when they do not fit after @p used, new storage and @p used
- * restarts at 0. The new storage is larger (twice, at least @p bytes plus 25%)
- * only if the group alone does not fit in @p capacity: growing at every refill
- * made the storage converge to a whole frame's geometry, gigabytes for a
- * transfer function with many nodes (GL_OUT_OF_MEMORY, or a crash in llvmpipe).
+ * Map @p bytes of the buffer bound to @p target for writing, where
+ * hov::PlaceInStream puts them (after the @p used bytes of this frame, or at
+ * the beginning of new storage: hovStreamPlacement.h).
  */
 void* MapRange(GLenum target, size_t bytes, size_t& used, size_t& capacity, bool synchronized)
 {
-  if (used + bytes > capacity)
+  if (hov::PlaceInStream(bytes, used, capacity))
   {
-    if (bytes > capacity)
-    {
-      capacity = std::max(2 * capacity, bytes + bytes / 4);
-    }
     glBufferData(target, static_cast<GLsizeiptr>(capacity), nullptr, GL_STREAM_DRAW);
-    used = 0;
   }
   const GLbitfield access = GL_MAP_WRITE_BIT | (synchronized ? 0 : GL_MAP_UNSYNCHRONIZED_BIT);
   return glMapBufferRange(
@@ -36,13 +30,13 @@ void* MapRange(GLenum target, size_t bytes, size_t& used, size_t& capacity, bool
 
 /// The chunks of @p geometry into @p vertices and @p indices (indices made group-relative).
 void CopyGroup(
-  const vtkHighOrderProjectionRegions::Geometry& geometry, float* vertices, unsigned int* indices)
+  const hov::ProjectionRegions::Geometry& geometry, float* vertices, unsigned int* indices)
 {
   const vtkIdType numChunks = static_cast<vtkIdType>(geometry.VertexOffsets.size()) - 1;
   vtkSMPTools::For(0, numChunks, [&](vtkIdType first, vtkIdType last) {
     for (vtkIdType c = first; c < last; ++c)
     {
-      const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
+      const hov::ProjectionChunk& chunk = geometry.Chunks[c];
       std::copy(chunk.Vertices.Data(), chunk.Vertices.Data() + chunk.Vertices.Size(),
         vertices + geometry.VertexOffsets[c] * Floats);
       const unsigned int base = static_cast<unsigned int>(geometry.VertexOffsets[c]);
@@ -57,11 +51,11 @@ void CopyGroup(
 }
 }
 
-vtkHighOrderProjectionStream::vtkHighOrderProjectionStream() = default;
+hov::ProjectionStream::ProjectionStream() = default;
 
-vtkHighOrderProjectionStream::~vtkHighOrderProjectionStream() = default;
+hov::ProjectionStream::~ProjectionStream() = default;
 
-bool vtkHighOrderProjectionStream::Begin()
+bool hov::ProjectionStream::Begin()
 {
   this->VertexUsed = this->IndexUsed = 0;
   this->FirstOfFrame = true;
@@ -70,8 +64,8 @@ bool vtkHighOrderProjectionStream::Begin()
     this->Vertices->Bind() && this->Indices->Bind();
 }
 
-bool vtkHighOrderProjectionStream::Append(
-  const vtkHighOrderProjectionRegions::Geometry& geometry, Range& range)
+bool hov::ProjectionStream::Append(
+  const hov::ProjectionRegions::Geometry& geometry, Range& range)
 {
   range = Range();
   const size_t vertexBytes = geometry.GetNumberOfVertices() * Floats * sizeof(float);
@@ -106,13 +100,13 @@ bool vtkHighOrderProjectionStream::Append(
   return true;
 }
 
-void vtkHighOrderProjectionStream::End()
+void hov::ProjectionStream::End()
 {
   this->Indices->Release();
   this->Vertices->Release();
 }
 
-void vtkHighOrderProjectionStream::ReleaseGraphicsResources()
+void hov::ProjectionStream::ReleaseGraphicsResources()
 {
   this->Vertices->ReleaseGraphicsResources();
   this->Indices->ReleaseGraphicsResources();

@@ -1,10 +1,10 @@
 /**
- * @class   vtkHighOrderProjectionStream
+ * @class   hov::ProjectionStream
  * @brief   Streams the region triangles of the OpenGL cell projection into
  *          one vertex and one index buffer, group after group, so that a
  *          group can be drawn while the next one is built.
  *
- * Each Append copies a group of chunks (vtkHighOrderProjectionRegions::
+ * Each Append copies a group of chunks (hov::ProjectionRegions::
  * Geometry) in parallel (vtkSMPTools) into the next free ranges of the two
  * buffers (mapped for writing; ranges after the first of a frame unsynchronized:
  * nothing drawn earlier reads them) and returns where the group lies, for
@@ -15,10 +15,10 @@
  * so it stays within 2.5x the largest group (TestProjectionStream).
  *
  * Thread safety: rendering thread only (the copy itself runs in parallel).
- * @sa vtkHighOrderProjectionRenderer
+ * @sa hov::ProjectionRenderer
  */
-#ifndef vtkHighOrderProjectionStream_h
-#define vtkHighOrderProjectionStream_h
+#ifndef hovProjectionStream_h
+#define hovProjectionStream_h
 
 #include "hovProjectionRegions.h" // Geometry
 #include "vtkNew.h"                        // For vtkNew
@@ -27,7 +27,9 @@
 
 class vtkOpenGLBufferObject;
 
-class vtkHighOrderProjectionStream
+namespace hov
+{
+class ProjectionStream
 {
 public:
   /// Where an appended group lies.
@@ -38,14 +40,14 @@ public:
     long long BaseVertex = 0;
   };
 
-  vtkHighOrderProjectionStream();
-  ~vtkHighOrderProjectionStream();
+  ProjectionStream();
+  ~ProjectionStream();
 
   /// Start a frame: both buffers exist and are bound (the index buffer to the
   /// bound vertex array). False if a buffer could not be made.
   bool Begin();
   /// Copy @p geometry after the groups of this frame; false on a GL failure.
-  bool Append(const vtkHighOrderProjectionRegions::Geometry& geometry, Range& range);
+  bool Append(const hov::ProjectionRegions::Geometry& geometry, Range& range);
   /// Unbind the buffers.
   void End();
 
@@ -56,8 +58,8 @@ public:
   void ReleaseGraphicsResources();
 
 private:
-  vtkHighOrderProjectionStream(const vtkHighOrderProjectionStream&) = delete;
-  void operator=(const vtkHighOrderProjectionStream&) = delete;
+  ProjectionStream(const hov::ProjectionStream&) = delete;
+  void operator=(const ProjectionStream&) = delete;
 
   vtkNew<vtkOpenGLBufferObject> Vertices;
   vtkNew<vtkOpenGLBufferObject> Indices;
@@ -65,5 +67,6 @@ private:
   size_t VertexUsed = 0, IndexUsed = 0;         ///< bytes written this frame
   bool FirstOfFrame = true;
 };
+}
 
 #endif

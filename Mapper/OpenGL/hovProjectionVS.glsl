@@ -1,7 +1,7 @@
 //VTK::System::Dec
 //HOV::Variant::Dec
-// Vertex shader of vtkHighOrderProjectionRenderer: region vertices of the
-// OpenGL cell projection (HIAC section 7; record of vtkHighOrderProjectionVertex)
+// Vertex shader of hov::ProjectionRenderer: region vertices of the
+// OpenGL cell projection (HIAC section 7; record of hov::ProjectionVertex)
 // arrive in clip coordinates (front point of the ray segment) with the
 // segment quantities (L | mu, tauFront, tauBack | tauBack mu), linear on the
 // front face (the default perspective-correct interpolation is exact for

@@ -1,6 +1,6 @@
 // vtkHighOrderVolumeMapper: the OPENGL_PROJECTION render mode (HIAC section 7).
-// Builds the region triangles on the CPU (vtkHighOrderProjectionRegions),
-// draws them with OpenGL (vtkHighOrderProjectionRenderer) and publishes the
+// Builds the region triangles on the CPU (hov::ProjectionRegions),
+// draws them with OpenGL (hov::ProjectionRenderer) and publishes the
 // float image.
 #include "vtkHighOrderVolumeMapper.h"
 
@@ -29,7 +29,7 @@
 
 namespace
 {
-/// Cells per group at least (vtkHighOrderProjectionRenderer draws a group
+/// Cells per group at least (hov::ProjectionRenderer draws a group
 /// while the next is built; at most MaxGroups groups).
 constexpr vtkIdType CellsPerGroup = 8192;
 constexpr vtkIdType MaxGroups = 32;
@@ -59,7 +59,7 @@ glm::dmat4 ToGlm(vtkMatrix4x4* m)
 
 /// The view in dataset coordinates: composite matrix, eye, direction of projection.
 void ViewSettings(vtkCamera* camera, vtkVolume* volume, double aspect,
-  vtkHighOrderProjectionRegions::Settings& settings)
+  hov::ProjectionRegions::Settings& settings)
 {
   const glm::dmat4 model = ToGlm(volume->GetMatrix());
   settings.Composite =
@@ -84,7 +84,7 @@ const float* SceneDepth(
   vtkRenderer* ren, int width, int height, int x0, int y0, std::vector<float>& depth)
 {
   depth.resize(static_cast<size_t>(width) * height);
-  if (!vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, depth.data()))
+  if (!hov::ImageDisplay::ReadDepth(ren, width, height, x0, y0, depth.data()))
   {
     return nullptr;
   }
@@ -94,8 +94,8 @@ const float* SceneDepth(
 }
 
 /// proj.BackToFront: @p frontToBack reversed (exact order) or, if null, the centroid order.
-void BackToFront(vtkHighOrderProjection& proj, const vtkHighOrderTetraSetup& setup,
-  const std::vector<vtkIdType>* frontToBack, const vtkHighOrderProjectionRegions::Settings& settings)
+void BackToFront(hov::ProjectionState& proj, const hov::CellSetup& setup,
+  const std::vector<vtkIdType>* frontToBack, const hov::ProjectionRegions::Settings& settings)
 {
   if (frontToBack)
   {
@@ -109,10 +109,10 @@ void BackToFront(vtkHighOrderProjection& proj, const vtkHighOrderTetraSetup& set
 }
 
 /// The renderer's options for the region @p settings.
-vtkHighOrderProjectionRenderer::Options RenderOptions(
-  const vtkHighOrderProjectionRegions::Settings& settings)
+hov::ProjectionRenderer::Options RenderOptions(
+  const hov::ProjectionRegions::Settings& settings)
 {
-  vtkHighOrderProjectionRenderer::Options options;
+  hov::ProjectionRenderer::Options options;
   options.TextureOpacity = settings.Method != hov::ProjectionColorMethod::InterpolatedOpacity;
   options.PremultipliedColor = settings.Emission == hov::EmissionModel::WilhelmsVanGelder;
   options.Parallel = settings.Parallel;
@@ -151,7 +151,7 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
 {
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  vtkHighOrderProjection& proj = *this->ProjectionImpl;
+  hov::ProjectionState& proj = *this->ProjectionImpl;
   int width = 0, height = 0, x0 = 0, y0 = 0;
   ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
   if (width <= 0 || height <= 0)
@@ -176,10 +176,10 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     this->UseDepthBuffer ? SceneDepth(ren, width, height, x0, y0, proj.Depth) : nullptr;
   vtkCamera* camera = ren->GetActiveCamera();
   const bool exactOrder = this->ProjectionOrder == EXACT_ORDER;
-  const vtkHighOrderTetraSetup* setup = nullptr;
+  const hov::CellSetup* setup = nullptr;
   const std::vector<vtkIdType>* frontToBack = nullptr;
   vtkHighOrderTransferFunction* tf = nullptr;
-  vtkHighOrderProjectionRegions::Settings settings;
+  hov::ProjectionRegions::Settings settings;
   ViewSettings(camera, vol, ren->GetTiledAspectRatio(), settings);
   settings.Method = static_cast<hov::ProjectionColorMethod>(this->ProjectionColorMethod);
   settings.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
@@ -204,8 +204,8 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
     std::max<vtkIdType>(CellsPerGroup, (total + MaxGroups - 1) / MaxGroups);
   vtkIdType group = std::min(largestGroup, FirstGroupCells);
   vtkIdType next = 0;
-  proj.Statistics = vtkHighOrderProjectionRegions::Statistics();
-  auto produce = [&](vtkHighOrderProjectionRegions::Geometry& geometry) {
+  proj.Statistics = hov::ProjectionRegions::Statistics();
+  auto produce = [&](hov::ProjectionRegions::Geometry& geometry) {
     if (next >= total)
     {
       return false;
@@ -215,14 +215,14 @@ void vtkHighOrderVolumeMapper::RenderProjection(vtkRenderer* ren, vtkVolume* vol
       settings.ExtinctionTf ? tf->GetLinearOpacityTable() : tf->GetTable(), settings, geometry));
     // The next group within the vertex budget at this group's cost per cell.
     const double bytesPerCell = static_cast<double>(geometry.GetNumberOfVertices()) *
-      vtkHighOrderProjectionVertex::FloatsPerVertex * sizeof(float) / (last - next);
+      hov::ProjectionVertex::FloatsPerVertex * sizeof(float) / (last - next);
     group = bytesPerCell * largestGroup <= GroupVertexBudget
       ? largestGroup
       : std::max(MinGroupCells, static_cast<vtkIdType>(GroupVertexBudget / bytesPerCell));
     next = last;
     return true;
   };
-  vtkHighOrderProjectionRenderer::Options options = RenderOptions(settings);
+  hov::ProjectionRenderer::Options options = RenderOptions(settings);
   options.AnalyticOpacity = this->ProjectionOpacityLookup == OPACITY_ANALYTIC;
   options.GPUOpacity = settings.ExtinctionTf != nullptr;
   options.InverseUnit = settings.InverseUnit;
@@ -244,7 +244,7 @@ void vtkHighOrderVolumeMapper::CheckProjectionColorRange(vtkHighOrderTransferFun
   // The vertex colours go to OpenGL as floats: a colour (times the
   // Wilhelms-Van Gelder emission factor) beyond float's range becomes Inf and
   // the fragments that carry it are lost. Warned once per table build.
-  vtkHighOrderProjection& proj = *this->ProjectionImpl;
+  hov::ProjectionState& proj = *this->ProjectionImpl;
   if (proj.ColorRangeCheckedBuild == tf->GetBuildCount() &&
     proj.ColorRangeCheckedModel == this->EmissionModel)
   {

@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderCellProjector
+ * @class   hov::CellProjector
  * @brief   HIAC cell projection on the CPU: exact per-pixel ray segments through
  *          linear tetrahedra and general cells, composited in visibility order.
  *
@@ -20,9 +20,10 @@
  * Threads: the image is split into tiles; each cell is binned, in order, into
  * the tiles its box overlaps; tiles run in parallel (vtkSMPTools) and each
  * pixel is composited by exactly one thread in exactly the visibility order,
- * so the image is bit-identical for any number of threads.
+ * so the image is bit-identical for any number of threads (the tile skeleton
+ * it shares with the feature path: hovTileSkeleton.h).
  *
- * Speed (what keeps a frame fast, see vtkHighOrderProjectorTile): one
+ * Speed (what keeps a frame fast, see hov::ProjectorTile): one
  * parallel pass per frame writes a record per cell in processing order (face
  * planes, field, projected vertices, pixel box, transfer-function interval,
  * or for a cell across nodes a hint where each segment's interval search
@@ -32,13 +33,13 @@
  * are kept across frames. None of this changes a bit of the image.
  *
  * General cells (hexahedra, wedges, pyramids, voxels, quadratic cells:
- * vtkHighOrderGeneralCells) take their place in the same order; their pixel
+ * hov::GeneralCells) take their place in the same order; their pixel
  * box comes from their projected corners and their per-pixel work (exact
  * intervals, polynomial restriction, accurate integral) is done by
- * vtkHighOrderGeneralCellTile. With none in the input, the tetrahedra's loop
+ * hov::GeneralCellTile. With none in the input, the tetrahedra's loop
  * is exactly what it was (Frame::General is null).
  *
- * Clipping (vtkHighOrderViewRays::SetClipPlanes): each pixel ray starts at its
+ * Clipping (hov::ViewRays::SetClipPlanes): each pixel ray starts at its
  * clipped entry (the ray origin moves there) and stops at its clipped exit;
  * without clip planes nothing changes.
  *
@@ -56,48 +57,30 @@
  * cells overlap (a mesh defect).
  *
  * Thread safety: Render() is not re-entrant.
- * @sa vtkHighOrderTetraSetup, vtkHighOrderViewRays, hovRayIntegrator.h
+ * @sa hov::CellSetup, hov::ViewRays, hovRayIntegrator.h
  */
-#ifndef vtkHighOrderCellProjector_h
-#define vtkHighOrderCellProjector_h
+#ifndef hovCellProjector_h
+#define hovCellProjector_h
 
-#include "hovRayIntegrator.h" // IntegrationSettings
+#include "hovGeneralCellTile.h" // FrameData
+#include "hovTileSkeleton.h"    // settings, statistics, the tile skeleton
 
 #include "vtkType.h" // vtkIdType
 
-#include <functional> // progress callback
 #include <memory> // scratch buffers
 #include <vector> // image, order
 
-class vtkHighOrderTetraSetup;
-class vtkHighOrderViewRays;
 namespace hov
 {
+class CellSetup;
 class TransferFunction;
-}
+class ViewRays;
 
-class vtkHighOrderCellProjector
+class CellProjector
 {
 public:
-  struct Settings
-  {
-    hov::IntegrationSettings Integration;
-    double TerminationTransmittance = 1e-9;
-    int TileSize = 16;
-    /// Order each pixel's segments by entry distance instead of trusting the
-    /// cell order (exact for any set of non-overlapping cells).
-    bool PerPixelSort = false;
-    /// If set: called between tile batches with the fraction done; true aborts (vtkHighOrderTileBatches.h).
-    std::function<bool(double)> Progress;
-  };
-
-  struct Statistics
-  {
-    vtkIdType WitnessViolations = 0; ///< pixels where the order was wrong
-    vtkIdType Segments = 0;          ///< ray-cell segments integrated
-    vtkIdType Pieces = 0;            ///< linear pieces integrated (>= Segments)
-    bool Aborted = false;            ///< Progress returned true: unrendered tiles are zero
-  };
+  using Settings = ProjectorSettings;
+  using Statistics = ProjectorStatistics;
 
   /**
    * Render the cells listed in @p frontToBack (rendered-cell indices of
@@ -106,13 +89,21 @@ public:
    * holds one OpenGL window depth per pixel of opaque geometry already drawn
    * (the segment is clipped there); 1 means nothing.
    */
-  Statistics Render(const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& frontToBack,
-    const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf, const Settings& settings,
+  Statistics Render(const hov::CellSetup& setup, const std::vector<vtkIdType>& frontToBack,
+    const hov::ViewRays& rays, const hov::TransferFunction& tf, const Settings& settings,
     const float* depth, std::vector<double>& rgba) const;
 
 private:
+  /// Per-pixel mode: @p frontToBack by centroid depth along the central ray.
+  const std::vector<vtkIdType>& DepthOrder(const CellSetup& setup,
+    const std::vector<vtkIdType>& frontToBack, const ViewRays& rays) const;
+  /// The cell records and pixel boxes of the ordered cells @p order.
+  void BuildRecords(const CellSetup& setup, const std::vector<vtkIdType>& order,
+    const TransferFunction& tf, int width, int height, GeneralCellTile::FrameData& general) const;
+
   struct Buffers; // per-frame arrays kept across frames (see the .cxx)
   mutable std::shared_ptr<Buffers> Scratch;
 };
+}
 
 #endif

@@ -1,10 +1,8 @@
 #include "hovFeatureProjector.h"
 
+#include "hovCellSetup.h"   // the cells
 #include "hovFeatureTile.h" // per-tile work
-#include "hovProjectorTile.h" // BoxMargin, MaxTileSize
-#include "hovTileBatches.h" // progress and abort between tile batches
 #include "hovFeatures.h"    // settings
-#include "hovCellSetup.h"  // the cells
 #include "hovViewRays.h"    // rays, projection
 
 #include "hovCellShapes.h"       // general cells' splat centre and scalars
@@ -12,38 +10,35 @@
 #include "hovRayCell.h"          // faces (general cells' volume)
 #include "hovTransferFunction.h" // centroid extinction/colour of splats
 
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
+#include "vtkSMPThreadLocal.h" // one tile per thread
+#include "vtkSMPTools.h"       // per-cell preparation in parallel
 
 #include <algorithm> // std::min, std::max
 #include <cmath>     // std::ceil, std::floor
 
-struct vtkHighOrderFeatureProjector::TileStore
+struct hov::FeatureProjector::TileStore
 {
-  vtkSMPThreadLocal<vtkHighOrderFeatureTile> Tiles;
+  vtkSMPThreadLocal<hov::FeatureTile> Tiles;
 };
 
 namespace
 {
-constexpr double BoxMargin = vtkHighOrderProjectorTile::BoxMargin;
-constexpr double WitnessRelativeTolerance = 1e-9; // as vtkHighOrderCellProjector
-
 /// Pixel centres of the window-coordinate box [x0, x1] x [y0, y1] (widened by BoxMargin).
-vtkHighOrderFeatureProjector::Box PixelBox(
+hov::FeatureProjector::Box PixelBox(
   double x0, double x1, double y0, double y1, int width, int height)
 {
-  return hov::PixelBoxOf(x0, x1, y0, y1, width, height, BoxMargin);
+  return hov::PixelBoxOf(x0, x1, y0, y1, width, height, hov::BoxMargin);
 }
 
 /// Cross-section (dataset units^2) of the ray bundle of pixel (i, j) on the
 /// plane through @p c perpendicular to its ray, from the neighbouring rays.
-double PixelCrossSection(const vtkHighOrderViewRays& rays, int i, int j, const glm::dvec3& c)
+double PixelCrossSection(const hov::ViewRays& rays, int i, int j, const glm::dvec3& c)
 {
-  const vtkHighOrderViewRays::Ray r0 = rays.PixelRay(i, j);
-  const vtkHighOrderViewRays::Ray rx = rays.PixelRay(i + 1, j);
-  const vtkHighOrderViewRays::Ray ry = rays.PixelRay(i, j + 1);
+  const hov::ViewRays::Ray r0 = rays.PixelRay(i, j);
+  const hov::ViewRays::Ray rx = rays.PixelRay(i + 1, j);
+  const hov::ViewRays::Ray ry = rays.PixelRay(i, j + 1);
   const glm::dvec3 n = r0.Direction;
-  auto onPlane = [&](const vtkHighOrderViewRays::Ray& r) {
+  auto onPlane = [&](const hov::ViewRays::Ray& r) {
     return r.Origin + (glm::dot(c - r.Origin, n) / glm::dot(r.Direction, n)) * r.Direction;
   };
   const glm::dvec3 p0 = onPlane(r0);
@@ -79,7 +74,7 @@ double GeneralCellVolume(hov::CellShape shape, const double* x)
 
 /// The splat data of general cell @p cell: volume, centre (the parametric
 /// centre's position) and the scalars there.
-void GeneralSplatCell(const vtkHighOrderGeneralCells& cells, const vtkHighOrderGeneralCells::Cell& cell,
+void GeneralSplatCell(const hov::GeneralCells& cells, const hov::GeneralCells::Cell& cell,
   const std::vector<double>* colorField, glm::dvec3& centre, double& s1, double& s2, double& volume)
 {
   const double* nodes = cells.GetNodes(cell);
@@ -103,16 +98,16 @@ void GeneralSplatCell(const vtkHighOrderGeneralCells& cells, const vtkHighOrderG
 }
 }
 
-vtkHighOrderFeatureProjector::vtkHighOrderFeatureProjector()
+hov::FeatureProjector::FeatureProjector()
   : Tiles(new TileStore)
 {
 }
 
-vtkHighOrderFeatureProjector::~vtkHighOrderFeatureProjector() = default;
+hov::FeatureProjector::~FeatureProjector() = default;
 
-void vtkHighOrderFeatureProjector::PrepareCells(const vtkHighOrderTetraSetup& setup,
-  const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
-  const vtkHighOrderFeatures& features, hov::EmissionModel emission)
+void hov::FeatureProjector::PrepareCells(const hov::CellSetup& setup,
+  const hov::ViewRays& rays, const hov::TransferFunction& tf,
+  const hov::Features& features, hov::EmissionModel emission)
 {
   Frame& f = this->F;
   const auto& tets = setup.GetTetras();
@@ -131,21 +126,21 @@ void vtkHighOrderFeatureProjector::PrepareCells(const vtkHighOrderTetraSetup& se
       {
         bool projectable = true;
         const int g = static_cast<int>(cell - numTets);
-        f.Boxes[k] = vtkHighOrderGeneralCellTile::PixelBox(f.General, g, width, height, projectable);
+        f.Boxes[k] = hov::GeneralCellTile::PixelBox(f.General, g, width, height, projectable);
         if (features.Splatting && projectable)
         {
           const auto& gc = setup.GetGeneralCells().GetCells()[g];
           double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
           for (int v = 0; v < hov::CellCornerCount(gc.Shape); ++v)
           {
-            const glm::dvec2& w = this->Window[gc.CornerIds[v]];
+            const glm::dvec2& w = this->Points.Window[gc.CornerIds[v]];
             x0 = std::min(x0, w.x);
             x1 = std::max(x1, w.x);
             y0 = std::min(y0, w.y);
             y1 = std::max(y1, w.y);
           }
           splat[k] = (x1 - x0) * (y1 - y0) < features.SplatPixelThreshold &&
-            std::max(x1 - x0, y1 - y0) <= vtkHighOrderFeatures::SplatMaxSide;
+            std::max(x1 - x0, y1 - y0) <= hov::Features::SplatMaxSide;
         }
         continue;
       }
@@ -154,17 +149,17 @@ void vtkHighOrderFeatureProjector::PrepareCells(const vtkHighOrderTetraSetup& se
       bool projectable = true;
       for (vtkIdType id : tet.Points)
       {
-        projectable = projectable && this->Projectable[id];
-        x0 = std::min(x0, this->Window[id].x);
-        x1 = std::max(x1, this->Window[id].x);
-        y0 = std::min(y0, this->Window[id].y);
-        y1 = std::max(y1, this->Window[id].y);
+        projectable = projectable && this->Points.Projectable[id];
+        x0 = std::min(x0, this->Points.Window[id].x);
+        x1 = std::max(x1, this->Points.Window[id].x);
+        y0 = std::min(y0, this->Points.Window[id].y);
+        y1 = std::max(y1, this->Points.Window[id].y);
       }
       f.Boxes[k] = projectable ? PixelBox(x0, x1, y0, y1, width, height)
                                : Box{ 0, width - 1, 0, height - 1 };
       splat[k] = features.Splatting && projectable &&
         (x1 - x0) * (y1 - y0) < features.SplatPixelThreshold &&
-        std::max(x1 - x0, y1 - y0) <= vtkHighOrderFeatures::SplatMaxSide;
+        std::max(x1 - x0, y1 - y0) <= hov::Features::SplatMaxSide;
     }
   });
   f.Splats.clear();
@@ -212,7 +207,7 @@ void vtkHighOrderFeatureProjector::PrepareCells(const vtkHighOrderTetraSetup& se
       }
       else
       {
-        const vtkHighOrderGeneralCells& cells = setup.GetGeneralCells();
+        const hov::GeneralCells& cells = setup.GetGeneralCells();
         GeneralSplatCell(cells, cells.GetCells()[cell - numTets], features.ColorField, c, s1, s2,
           sc.Volume);
       }
@@ -237,76 +232,27 @@ void vtkHighOrderFeatureProjector::PrepareCells(const vtkHighOrderTetraSetup& se
   });
 }
 
-void vtkHighOrderFeatureProjector::BinCells(int width, int height)
+hov::FeatureProjector::Statistics hov::FeatureProjector::Render(const CellSetup& setup,
+  const std::vector<vtkIdType>& frontToBack, const ViewRays& rays, const TransferFunction& tf,
+  const Settings& settings, const Features& features, const float* depth, std::vector<double>& rgba)
 {
-  Frame& f = this->F;
-  f.TilesX = (width + f.TileSize - 1) / f.TileSize;
-  f.TilesY = (height + f.TileSize - 1) / f.TileSize;
-  const int numTiles = f.TilesX * f.TilesY;
-  auto forTiles = [&](const Box& b, auto&& visit) {
-    if (b[0] > b[1] || b[2] > b[3])
-    {
-      return;
-    }
-    for (int ty = b[2] / f.TileSize; ty <= b[3] / f.TileSize; ++ty)
-    {
-      for (int tx = b[0] / f.TileSize; tx <= b[1] / f.TileSize; ++tx)
-      {
-        visit(ty * f.TilesX + tx);
-      }
-    }
-  };
-  std::vector<vtkIdType> count(numTiles + 1, 0);
-  for (const Box& b : f.Boxes)
-  {
-    forTiles(b, [&](int t) { ++count[t + 1]; });
-  }
-  for (int t = 0; t < numTiles; ++t)
-  {
-    count[t + 1] += count[t];
-  }
-  f.Start = count;
-  f.Cells.resize(count[numTiles]);
-  for (size_t k = 0; k < f.Boxes.size(); ++k)
-  {
-    forTiles(f.Boxes[k], [&](int t) { f.Cells[count[t]++] = static_cast<vtkIdType>(k); });
-  }
-}
-
-vtkHighOrderCellProjector::Statistics vtkHighOrderFeatureProjector::Render(
-  const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& frontToBack,
-  const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
-  const vtkHighOrderCellProjector::Settings& settings, const vtkHighOrderFeatures& features,
-  const float* depth, std::vector<double>& rgba)
-{
-  vtkHighOrderCellProjector::Statistics stats;
   const int width = rays.GetWidth(), height = rays.GetHeight();
   rgba.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
   if (width <= 0 || height <= 0 || frontToBack.empty() || tf.GetNumberOfNodes() == 0)
   {
-    return stats;
+    return Statistics();
   }
-  const auto& points = setup.GetPoints();
-  this->Window.resize(points.size());
-  this->Projectable.resize(points.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(points.size()), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType i = b; i < e; ++i)
-    {
-      double x = 0.0, y = 0.0;
-      this->Projectable[i] = rays.Project(points[i], x, y);
-      this->Window[i] = glm::dvec2(x, y);
-    }
-  });
+  this->Points.Project(rays, setup.GetPoints());
   // Separate fields over the tetrahedra (linear: one gradient per cell).
   this->TetColor.clear();
   this->TetIso.clear();
   if (features.ColorField)
   {
-    vtkHighOrderFeatureSegment::TetraFields(setup, *features.ColorField, this->TetColor);
+    FeatureSegment::TetraFields(setup, *features.ColorField, this->TetColor);
   }
   if (features.IsoField)
   {
-    vtkHighOrderFeatureSegment::TetraFields(setup, *features.IsoField, this->TetIso);
+    FeatureSegment::TetraFields(setup, *features.IsoField, this->TetIso);
   }
   Frame& f = this->F;
   f.Setup = &setup;
@@ -314,14 +260,13 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderFeatureProjector::Render(
   f.Rays = &rays;
   f.Depth = depth;
   f.Settings = &settings;
-  f.TileSize = std::min(std::max(4, settings.TileSize), vtkHighOrderProjectorTile::MaxTileSize);
-  f.General = vtkHighOrderGeneralCellTile::FrameData();
+  f.General = GeneralCellTile::FrameData();
   f.General.Cells = &setup.GetGeneralCells();
-  f.General.Window = this->Window.data();
-  f.General.Projectable = this->Projectable.data();
+  f.General.Window = this->Points.Window.data();
+  f.General.Projectable = this->Points.Projectable.data();
   f.General.TF = &tf;
-  f.General.Perturbation = vtkHighOrderGeneralCellTile::PerturbationOf(rays);
-  f.Segment = vtkHighOrderFeatureSegment::FrameData();
+  f.General.Perturbation = GeneralCellTile::PerturbationOf(rays);
+  f.Segment = FeatureSegment::FrameData();
   f.Segment.Setup = &setup;
   f.Segment.Features = &features;
   f.Segment.TF = &tf;
@@ -332,20 +277,6 @@ vtkHighOrderCellProjector::Statistics vtkHighOrderFeatureProjector::Render(
   f.PerturbX = rays.GetPerturbX();
   f.PerturbY = rays.GetPerturbY();
   this->PrepareCells(setup, rays, tf, features, settings.Integration.Emission);
-  this->BinCells(width, height);
-
-  const int numTiles = f.TilesX * f.TilesY;
-  std::vector<vtkHighOrderCellProjector::Statistics> tileStats(numTiles);
-  const int tilesDone = vtkHighOrderForTileBatches(numTiles, settings.Progress, [&](vtkIdType t) {
-    this->Tiles->Tiles.Local().Render(f, static_cast<int>(t), rgba, tileStats[t]);
-  });
-  stats.Aborted = tilesDone < numTiles;
-  vtkHighOrderClearTiles(tilesDone, numTiles, f.TilesX, f.TileSize, width, height, rgba);
-  for (const auto& st : tileStats)
-  {
-    stats.WitnessViolations += st.WitnessViolations;
-    stats.Segments += st.Segments;
-    stats.Pieces += st.Pieces;
-  }
-  return stats;
+  f.Bins.Build(f.Boxes, width, height, TileSizeOf(settings));
+  return RunTiles(f.Bins, width, height, settings.Progress, this->Tiles->Tiles, f, rgba);
 }

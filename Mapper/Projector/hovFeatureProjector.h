@@ -1,16 +1,16 @@
 /**
- * @class   vtkHighOrderFeatureProjector
- * @brief   The CPU projection path with the features of vtkHighOrderFeatures:
+ * @class   hov::FeatureProjector
+ * @brief   The CPU projection path with the features of hov::Features:
  *          embedded shaded isosurfaces, separate colour and isosurface
  *          fields, subpixel splatting (HIAC sections 5.1-5.3).
  *
- * Used by vtkHighOrderVolumeMapper instead of vtkHighOrderCellProjector when
+ * Used by vtkHighOrderVolumeMapper instead of hov::CellProjector when
  * a feature is active (the fast tetrahedra path stays untouched, so with the
  * features off nothing changes). Same cells, same visibility order, same
  * rays, clipping and depth-buffer limits; every ray interval of every cell
  * (linear tetrahedra: exact clip against the same canonical face planes;
- * general cells: vtkHighOrderGeneralCellTile::Collect) is integrated by
- * vtkHighOrderFeatureSegment.
+ * general cells: hov::GeneralCellTile::Collect) is integrated by
+ * hov::FeatureSegment.
  *
  * Isosurface ownership along a pixel (HIAC 5.1, hov::SurfaceCrossings): a
  * segment includes a surface at its front (t = its entry) only where no
@@ -36,7 +36,7 @@
  * range (clipping planes, view-depth slab, opaque geometry). Isosurfaces
  * inside a splatted cell are not drawn (the splat carries the volume only).
  *
- * Threads: as vtkHighOrderCellProjector, tiles run in parallel and each
+ * Threads: as hov::CellProjector, tiles run in parallel and each
  * pixel is composited by one thread in a fixed order; a cell is binned into
  * every tile its pixel box (or splat footprint) overlaps: the image is
  * bit-identical for any number of threads.
@@ -48,14 +48,14 @@
  * tetrahedra, already per pixel) 1.0 s either way, 1.55 s with a colour array.
  *
  * Thread safety: Render() is not re-entrant.
- * @sa vtkHighOrderFeatureTile, vtkHighOrderFeatureSegment, vtkHighOrderCellProjector
+ * @sa hov::FeatureTile, hov::FeatureSegment, hov::CellProjector
  */
-#ifndef vtkHighOrderFeatureProjector_h
-#define vtkHighOrderFeatureProjector_h
+#ifndef hovFeatureProjector_h
+#define hovFeatureProjector_h
 
-#include "hovCellProjector.h"   // Settings, Statistics
 #include "hovFeatureSegment.h"  // LinearField, FrameData
 #include "hovGeneralCellTile.h" // FrameData
+#include "hovTileSkeleton.h"    // the tile skeleton, settings, statistics
 
 #include "hovSplat.h" // SplatFootprint
 
@@ -63,15 +63,30 @@
 #include <memory> // per-thread tiles
 #include <vector> // per-frame arrays
 
-class vtkHighOrderTetraSetup;
-class vtkHighOrderViewRays;
-class vtkHighOrderFeatureTile;
-struct vtkHighOrderFeatures;
-
-class vtkHighOrderFeatureProjector
+namespace hov
+{
+class CellSetup;
+}
+namespace hov
+{
+class ViewRays;
+}
+namespace hov
+{
+class FeatureTile;
+}
+namespace hov
+{
+struct Features;
+}
+namespace hov
+{
+class FeatureProjector
 {
 public:
-  using Box = std::array<int, 4>; ///< i0, i1, j0, j1 inclusive
+  using Box = CellBox;
+  using Settings = ProjectorSettings;
+  using Statistics = ProjectorStatistics;
 
   /// A splatted cell.
   struct Splat
@@ -83,48 +98,46 @@ public:
   /// What every tile of a frame reads.
   struct Frame
   {
-    const vtkHighOrderTetraSetup* Setup = nullptr;
+    const hov::CellSetup* Setup = nullptr;
     const std::vector<vtkIdType>* Order = nullptr; ///< ordered cell -> rendered cell
-    const vtkHighOrderViewRays* Rays = nullptr;
+    const hov::ViewRays* Rays = nullptr;
     const float* Depth = nullptr;
-    const vtkHighOrderCellProjector::Settings* Settings = nullptr;
+    const ProjectorSettings* Settings = nullptr;
     std::vector<Box> Boxes;     ///< per ordered cell
     std::vector<int> SplatOf;   ///< per ordered cell: index into Splats, or -1
     std::vector<Splat> Splats;
-    int TileSize = 16, TilesX = 0, TilesY = 0;
-    std::vector<vtkIdType> Start, Cells; ///< per tile: ordered cells in order
-    vtkHighOrderGeneralCellTile::FrameData General;
-    vtkHighOrderFeatureSegment::FrameData Segment;
+    TileBins Bins; ///< the ordered cells per tile
+    hov::GeneralCellTile::FrameData General;
+    hov::FeatureSegment::FrameData Segment;
     double WitnessTol = 0.0;
     glm::dvec3 PerturbX{ 1.0, 0.0, 0.0 }, PerturbY{ 0.0, 1.0, 0.0 };
   };
 
-  vtkHighOrderFeatureProjector();
-  ~vtkHighOrderFeatureProjector();
+  FeatureProjector();
+  ~FeatureProjector();
 
   /**
-   * Render as vtkHighOrderCellProjector::Render with @p features (per-point
+   * Render as hov::CellProjector::Render with @p features (per-point
    * colour/isosurface fields indexed like the setup's points).
    */
-  vtkHighOrderCellProjector::Statistics Render(const vtkHighOrderTetraSetup& setup,
-    const std::vector<vtkIdType>& frontToBack, const vtkHighOrderViewRays& rays,
-    const hov::TransferFunction& tf, const vtkHighOrderCellProjector::Settings& settings,
-    const vtkHighOrderFeatures& features, const float* depth, std::vector<double>& rgba);
+  Statistics Render(const hov::CellSetup& setup,
+    const std::vector<vtkIdType>& frontToBack, const hov::ViewRays& rays,
+    const hov::TransferFunction& tf, const Settings& settings,
+    const hov::Features& features, const float* depth, std::vector<double>& rgba);
 
   /// Cells splatted in the last frame.
   vtkIdType GetNumberOfSplats() const { return static_cast<vtkIdType>(this->F.Splats.size()); }
 
 private:
-  void PrepareCells(const vtkHighOrderTetraSetup& setup, const vtkHighOrderViewRays& rays,
-    const hov::TransferFunction& tf, const vtkHighOrderFeatures& features, hov::EmissionModel emission);
-  void BinCells(int width, int height);
+  void PrepareCells(const hov::CellSetup& setup, const hov::ViewRays& rays,
+    const hov::TransferFunction& tf, const hov::Features& features, hov::EmissionModel emission);
 
   Frame F;
-  std::vector<glm::dvec2> Window;
-  std::vector<unsigned char> Projectable;
-  std::vector<vtkHighOrderFeatureSegment::LinearField> TetColor, TetIso;
+  ProjectedPoints Points;
+  std::vector<hov::FeatureSegment::LinearField> TetColor, TetIso;
   struct TileStore;
   std::unique_ptr<TileStore> Tiles;
 };
+}
 
 #endif

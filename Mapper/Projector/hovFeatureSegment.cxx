@@ -14,9 +14,9 @@
 
 namespace
 {
-using Ray = vtkHighOrderViewRays::Ray;
+using Ray = hov::ViewRays::Ray;
 
-/// As vtkHighOrderGeneralCellTile: terms below this times the cell's largest
+/// As hov::GeneralCellTile: terms below this times the cell's largest
 /// |scalar| on a piece are rounding noise (keeps affine linear fields exact-linear).
 constexpr double NegligibleRelative = 8.0 * 2.220446049250313e-16;
 
@@ -50,8 +50,8 @@ bool Invert3(const double* a, double* inv)
 }
 }
 
-void vtkHighOrderFeatureSegment::TetraFields(
-  const vtkHighOrderTetraSetup& setup, const std::vector<double>& values, std::vector<LinearField>& out)
+void hov::FeatureSegment::TetraFields(
+  const hov::CellSetup& setup, const std::vector<double>& values, std::vector<LinearField>& out)
 {
   const auto& tets = setup.GetTetras();
   const auto& points = setup.GetPoints();
@@ -74,7 +74,7 @@ void vtkHighOrderFeatureSegment::TetraFields(
   });
 }
 
-void vtkHighOrderFeatureSegment::RestrictTetra(
+void hov::FeatureSegment::RestrictTetra(
   const FrameData& frame, vtkIdType tet, const Ray& ray, double t0, double t1)
 {
   const auto& cell = frame.Setup->GetTetras()[tet];
@@ -97,11 +97,11 @@ void vtkHighOrderFeatureSegment::RestrictTetra(
     : piece.S[0];
 }
 
-void vtkHighOrderFeatureSegment::RestrictField(const FrameData& frame, int g, const double* scalars,
+void hov::FeatureSegment::RestrictField(const FrameData& frame, int g, const double* scalars,
   const Ray& ray, double t0, double t1, std::vector<hov::RestrictedPiece>& out)
 {
-  const vtkHighOrderGeneralCells& cells = frame.Setup->GetGeneralCells();
-  const vtkHighOrderGeneralCells::Cell& cell = cells.GetCells()[g];
+  const hov::GeneralCells& cells = frame.Setup->GetGeneralCells();
+  const hov::GeneralCells::Cell& cell = cells.GetCells()[g];
   double lo = scalars[0], hi = scalars[0];
   for (int i = 1; i < cell.NodeCount; ++i)
   {
@@ -128,12 +128,12 @@ void vtkHighOrderFeatureSegment::RestrictField(const FrameData& frame, int g, co
   }
 }
 
-void vtkHighOrderFeatureSegment::RestrictGeneral(
+void hov::FeatureSegment::RestrictGeneral(
   const FrameData& frame, int g, const Ray& ray, double t0, double t1)
 {
-  const vtkHighOrderGeneralCells& cells = frame.Setup->GetGeneralCells();
-  const vtkHighOrderGeneralCells::Cell& cell = cells.GetCells()[g];
-  const vtkHighOrderFeatures& features = *frame.Features;
+  const hov::GeneralCells& cells = frame.Setup->GetGeneralCells();
+  const hov::GeneralCells::Cell& cell = cells.GetCells()[g];
+  const hov::Features& features = *frame.Features;
   const std::vector<double>* fields[3] = { nullptr, features.ColorField, features.IsoField };
   int source[3] = { 0, 0, 0 }; // which restriction each field uses
   this->RestrictField(frame, g, cells.GetScalars(cell), ray, t0, t1, this->Restricted[0]);
@@ -196,10 +196,10 @@ void vtkHighOrderFeatureSegment::RestrictGeneral(
   }
 }
 
-void vtkHighOrderFeatureSegment::IsoGradient(
+void hov::FeatureSegment::IsoGradient(
   const FrameData& frame, vtkIdType cellIndex, const double x[3], double grad[3])
 {
-  const vtkHighOrderTetraSetup& setup = *frame.Setup;
+  const hov::CellSetup& setup = *frame.Setup;
   const vtkIdType numTets = static_cast<vtkIdType>(setup.GetTetras().size());
   if (cellIndex < numTets)
   {
@@ -211,8 +211,8 @@ void vtkHighOrderFeatureSegment::IsoGradient(
     grad[2] = g.z;
     return;
   }
-  const vtkHighOrderGeneralCells& cells = setup.GetGeneralCells();
-  const vtkHighOrderGeneralCells::Cell& cell = cells.GetCells()[cellIndex - numTets];
+  const hov::GeneralCells& cells = setup.GetGeneralCells();
+  const hov::GeneralCells::Cell& cell = cells.GetCells()[cellIndex - numTets];
   const double* nodes = cells.GetNodes(cell);
   const double* values =
     frame.Features->IsoField ? this->NodeValues[2].data() : cells.GetScalars(cell);
@@ -256,10 +256,10 @@ void vtkHighOrderFeatureSegment::IsoGradient(
   }
 }
 
-hov::RGBA vtkHighOrderFeatureSegment::Shade(
+hov::RGBA hov::FeatureSegment::Shade(
   const FrameData& frame, vtkIdType cell, const Ray& ray, double t, int surface)
 {
-  const vtkHighOrderFeatures& features = *frame.Features;
+  const hov::Features& features = *frame.Features;
   const glm::dvec3 x = ray.Origin + t * ray.Direction;
   const double xd[3] = { x.x, x.y, x.z };
   double g[3];
@@ -275,7 +275,7 @@ hov::RGBA vtkHighOrderFeatureSegment::Shade(
     features.EdgeOnMinCosine);
 }
 
-hov::RGBA vtkHighOrderFeatureSegment::Integrate(const FrameData& frame, vtkIdType cell,
+hov::RGBA hov::FeatureSegment::Integrate(const FrameData& frame, vtkIdType cell,
   const Ray& ray, double t0, double t1, bool includeFront, vtkIdType& pieces)
 {
   const vtkIdType numTets = static_cast<vtkIdType>(frame.Setup->GetTetras().size());
@@ -287,7 +287,7 @@ hov::RGBA vtkHighOrderFeatureSegment::Integrate(const FrameData& frame, vtkIdTyp
   {
     this->RestrictGeneral(frame, static_cast<int>(cell - numTets), ray, t0, t1);
   }
-  const vtkHighOrderFeatures& features = *frame.Features;
+  const hov::Features& features = *frame.Features;
   const hov::TransferFunction& tf = *frame.TF;
   const bool twoFields = features.ColorField != nullptr;
   const int numSurfaces = static_cast<int>(features.IsoValues.size());

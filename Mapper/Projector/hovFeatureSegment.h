@@ -1,7 +1,7 @@
 /**
- * @class   vtkHighOrderFeatureSegment
+ * @class   hov::FeatureSegment
  * @brief   One ray interval of one cell (linear tetrahedron or general cell)
- *          with the features of vtkHighOrderFeatures: up to three fields
+ *          with the features of hov::Features: up to three fields
  *          (extinction, colour, isosurfaces) and embedded shaded isosurfaces.
  *
  * Restriction: the fields along the ray as polynomial pieces in the local
@@ -28,10 +28,10 @@
  * composited front to back.
  *
  * Thread safety: one object per thread; the frame data is read-only.
- * @sa vtkHighOrderFeatureTile, hovIsosurface.h, hovTwoFieldSegment.h
+ * @sa hov::FeatureTile, hovIsosurface.h, hovTwoFieldSegment.h
  */
-#ifndef vtkHighOrderFeatureSegment_h
-#define vtkHighOrderFeatureSegment_h
+#ifndef hovFeatureSegment_h
+#define hovFeatureSegment_h
 
 #include "hovFeatures.h" // settings
 #include "hovViewRays.h" // Ray
@@ -44,13 +44,18 @@
 
 #include <vector> // scratch
 
-class vtkHighOrderTetraSetup;
+namespace hov
+{
+class CellSetup;
+}
 namespace hov
 {
 class TransferFunction;
 }
 
-class vtkHighOrderFeatureSegment
+namespace hov
+{
+class FeatureSegment
 {
 public:
   /// A linear field over a tetrahedron: s(x) = RefScalar + Gradient . (x - tet.RefPoint).
@@ -62,8 +67,8 @@ public:
 
   struct FrameData
   {
-    const vtkHighOrderTetraSetup* Setup = nullptr;
-    const vtkHighOrderFeatures* Features = nullptr;
+    const hov::CellSetup* Setup = nullptr;
+    const hov::Features* Features = nullptr;
     const hov::TransferFunction* TF = nullptr;
     hov::PolynomialSegmentSettings Segment;
     hov::CellRestrictionSettings Restriction;
@@ -77,12 +82,12 @@ public:
    * @p ray; @p includeFront: a surface exactly at t0 is drawn (the ray
    * enters the mesh there). @p pieces is incremented by the pieces integrated.
    */
-  hov::RGBA Integrate(const FrameData& frame, vtkIdType cell, const vtkHighOrderViewRays::Ray& ray,
+  hov::RGBA Integrate(const FrameData& frame, vtkIdType cell, const hov::ViewRays::Ray& ray,
     double t0, double t1, bool includeFront, vtkIdType& pieces);
 
   /// Linear fields of per-point @p values over every tetrahedron of @p setup.
   static void TetraFields(
-    const vtkHighOrderTetraSetup& setup, const std::vector<double>& values, std::vector<LinearField>& out);
+    const hov::CellSetup& setup, const std::vector<double>& values, std::vector<LinearField>& out);
 
 private:
   struct Piece
@@ -90,16 +95,16 @@ private:
     double T0, T1;
     hov::Polynomial S[3]; ///< extinction, colour, isosurface field (tau = t - T0)
   };
-  void RestrictTetra(const FrameData& frame, vtkIdType tet, const vtkHighOrderViewRays::Ray& ray,
+  void RestrictTetra(const FrameData& frame, vtkIdType tet, const hov::ViewRays::Ray& ray,
     double t0, double t1);
-  void RestrictGeneral(const FrameData& frame, int g, const vtkHighOrderViewRays::Ray& ray,
+  void RestrictGeneral(const FrameData& frame, int g, const hov::ViewRays::Ray& ray,
     double t0, double t1);
   void RestrictField(const FrameData& frame, int g, const double* scalars,
-    const vtkHighOrderViewRays::Ray& ray, double t0, double t1,
+    const hov::ViewRays::Ray& ray, double t0, double t1,
     std::vector<hov::RestrictedPiece>& out);
   /// Isosurface-field gradient (dataset coordinates) of cell at point x.
   void IsoGradient(const FrameData& frame, vtkIdType cell, const double x[3], double g[3]);
-  hov::RGBA Shade(const FrameData& frame, vtkIdType cell, const vtkHighOrderViewRays::Ray& ray,
+  hov::RGBA Shade(const FrameData& frame, vtkIdType cell, const hov::ViewRays::Ray& ray,
     double t, int surface);
 
   std::vector<Piece> Pieces;
@@ -108,5 +113,6 @@ private:
   std::vector<double> NodeValues[3];
   std::vector<hov::IsovalueCrossing> Crossings;
 };
+}
 
 #endif

@@ -13,7 +13,7 @@
 
 #include <cmath> // std::isfinite, std::sqrt
 
-bool vtkHighOrderFeatureSetup::PrepareField(const std::string& name, int component,
+bool hov::FeatureSetup::PrepareField(const std::string& name, int component,
   const char* what, vtkUnstructuredGridBase* input, FieldCache& cache, std::string& error,
   std::vector<std::string>& warnings)
 {
@@ -83,9 +83,9 @@ bool vtkHighOrderFeatureSetup::PrepareField(const std::string& name, int compone
   return true;
 }
 
-void vtkHighOrderFeatureSetup::PrepareLights(vtkRenderer* renderer, vtkCamera* camera, vtkVolume* volume)
+void hov::FeatureSetup::PrepareLights(vtkRenderer* renderer, vtkCamera* camera, vtkVolume* volume)
 {
-  vtkHighOrderFeatures& f = this->Features;
+  hov::Features& f = this->Features;
   f.Lights.clear();
   if (!renderer)
   {
@@ -160,11 +160,11 @@ void vtkHighOrderFeatureSetup::PrepareLights(vtkRenderer* renderer, vtkCamera* c
   f.NormalToWorld = glm::transpose(glm::inverse(glm::dmat3(toWorld)));
 }
 
-bool vtkHighOrderFeatureSetup::Prepare(const Options& options, vtkUnstructuredGridBase* input,
+bool hov::FeatureSetup::Prepare(const Options& options, vtkUnstructuredGridBase* input,
   vtkRenderer* renderer, vtkCamera* camera, vtkVolume* volume, std::string& error,
   std::vector<std::string>& warnings)
 {
-  vtkHighOrderFeatures& f = this->Features;
+  hov::Features& f = this->Features;
   f.Surfaces = options.Surfaces;
   f.IsoValues.clear();
   for (const hov::Isosurface& s : f.Surfaces)

@@ -1,8 +1,8 @@
 /**
- * @class   vtkHighOrderFeatureSetup
+ * @class   hov::FeatureSetup
  * @brief   The mapper's side of the feature path: turns the mapper settings,
  *          the input's arrays, the renderer's lights and the volume property
- *          into vtkHighOrderFeatures, and owns the feature projector.
+ *          into hov::Features, and owns the feature projector.
  *
  * Arrays: the colour and isosurface arrays are point arrays of the input,
  * selected by name; a component (>= 0) or the magnitude (-1) as for the main
@@ -24,10 +24,10 @@
  * (HIAC 5.2) applies in both cases.
  *
  * Thread safety: not thread safe (called once per frame by the mapper).
- * @sa vtkHighOrderFeatures, vtkHighOrderFeatureProjector
+ * @sa hov::Features, hov::FeatureProjector
  */
-#ifndef vtkHighOrderFeatureSetup_h
-#define vtkHighOrderFeatureSetup_h
+#ifndef hovFeatureSetup_h
+#define hovFeatureSetup_h
 
 #include "hovFeatureProjector.h" // the renderer
 #include "hovFeatures.h"         // the frame settings
@@ -43,7 +43,9 @@ class vtkRenderer;
 class vtkUnstructuredGridBase;
 class vtkVolume;
 
-class vtkHighOrderFeatureSetup
+namespace hov
+{
+class FeatureSetup
 {
 public:
   struct Options
@@ -64,8 +66,8 @@ public:
   bool Prepare(const Options& options, vtkUnstructuredGridBase* input, vtkRenderer* renderer,
     vtkCamera* camera, vtkVolume* volume, std::string& error, std::vector<std::string>& warnings);
 
-  const vtkHighOrderFeatures& GetFeatures() const { return this->Features; }
-  vtkHighOrderFeatureProjector& GetProjector() { return this->Projector; }
+  const hov::Features& GetFeatures() const { return this->Features; }
+  hov::FeatureProjector& GetProjector() { return this->Projector; }
 
 private:
   struct FieldCache
@@ -81,9 +83,10 @@ private:
     std::vector<std::string>& warnings);
   void PrepareLights(vtkRenderer* renderer, vtkCamera* camera, vtkVolume* volume);
 
-  vtkHighOrderFeatures Features;
+  hov::Features Features;
   FieldCache Color, Iso;
-  vtkHighOrderFeatureProjector Projector;
+  hov::FeatureProjector Projector;
 };
+}
 
 #endif

@@ -1,6 +1,5 @@
 #include "hovFeatureTile.h"
 
-#include "hovProjectorTile.h" // BoxMargin
 #include "hovCellSetup.h"    // tetrahedra face planes
 #include "hovTileGeometry.h"  // ClipRayFaces
 
@@ -13,19 +12,25 @@
 
 namespace
 {
-using Ray = vtkHighOrderViewRays::Ray;
-using Tetra = vtkHighOrderTetraSetup::Tetra;
-constexpr double BoxMargin = vtkHighOrderProjectorTile::BoxMargin;
+using Ray = hov::ViewRays::Ray;
+using Tetra = hov::CellSetup::Tetra;
+using hov::BoxMargin;
 
 /// Exact clip of a ray against a tetrahedron's four canonical face planes:
-/// the arithmetic of the fast path's ClipRay (vtkHighOrderTileGeometry.h),
+/// the arithmetic of the fast path's ClipRay (hovTileGeometry.h),
 /// so shared faces give bit-identical exit/entry times, and the same
 /// symbolic perturbation for rays lying in a face.
 bool ClipTetra(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& px,
   const glm::dvec3& py, double& tIn, double& tOut)
 {
-  return hovTileGeometry::ClipRayFaces(
-    [&](int k) { return tet.Normal[k]; }, tet.Offset, ray, tMax, px, py, tIn, tOut);
+  double nx[4], ny[4], nz[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    nx[k] = tet.Normal[k].x;
+    ny[k] = tet.Normal[k].y;
+    nz[k] = tet.Normal[k].z;
+  }
+  return hov::tile::ClipRayFaces(nx, ny, nz, tet.Offset, ray, tMax, px, py, tIn, tOut);
 }
 
 /// Window-x span of the convex hull of the 4 projected vertices on the row at
@@ -57,37 +62,16 @@ bool HullRowSpan(const glm::dvec2* p, double y, double& xMin, double& xMax)
 }
 }
 
-void vtkHighOrderFeatureTile::Init(const Frame& frame, int tileIndex)
+void hov::FeatureTile::Init(const Frame& frame, int tileIndex)
 {
-  const vtkHighOrderViewRays& rays = *frame.Rays;
-  const int width = rays.GetWidth();
-  this->X0 = (tileIndex % frame.TilesX) * frame.TileSize;
-  this->Y0 = (tileIndex / frame.TilesX) * frame.TileSize;
-  this->W = std::min(frame.TileSize, width - this->X0);
-  this->H = std::min(frame.TileSize, rays.GetHeight() - this->Y0);
-  const size_t n = static_cast<size_t>(this->W) * this->H;
-  this->Rays.resize(n);
-  this->TMax.resize(n);
-  this->Accum.assign(n, hov::RGBA());
-  this->LastExit.assign(n, std::numeric_limits<double>::quiet_NaN());
-  this->MaxExit.assign(n, -1e300);
-  this->Violated.assign(n, 0);
-  this->Done.assign(n, 0);
-  for (int j = 0; j < this->H; ++j)
-  {
-    for (int i = 0; i < this->W; ++i)
-    {
-      // As vtkHighOrderProjectorTile::Init: the same rays and ray ranges.
-      const int pi = this->X0 + i, pj = this->Y0 + j;
-      const size_t p = static_cast<size_t>(j) * this->W + i;
-      const double z = frame.Depth ? frame.Depth[static_cast<size_t>(pj) * width + pi] : 1.0;
-      this->Rays[p] = rays.TracedPixelRay(pi, pj, z, this->TMax[p]);
-    }
-  }
+  // As hov::ProjectorTile::Init: the same rays and ray ranges.
+  this->InitPixels(*frame.Rays, frame.Depth, frame.Bins, tileIndex);
+  this->LastExit.assign(
+    static_cast<size_t>(this->W) * this->H, std::numeric_limits<double>::quiet_NaN());
 }
 
 template <typename Visit>
-void vtkHighOrderFeatureTile::ForIntervals(
+void hov::FeatureTile::ForIntervals(
   const Frame& frame, vtkIdType k, bool skipDone, Visit&& visit)
 {
   const vtkIdType cell = (*frame.Order)[k];
@@ -95,7 +79,7 @@ void vtkHighOrderFeatureTile::ForIntervals(
   const auto& box = frame.Boxes[k];
   if (cell >= numTets)
   {
-    const vtkHighOrderGeneralCellTile::TileRows rows{ this->X0, this->Y0, this->W, 0, this->H,
+    const hov::GeneralCellTile::TileRows rows{ this->X0, this->Y0, this->W, 0, this->H,
       this->Rays.data(), this->TMax.data() };
     const auto& hits = this->General.Collect(frame.General, static_cast<int>(cell - numTets), box,
       rows, skipDone ? this->Done.data() : nullptr);
@@ -153,9 +137,9 @@ void vtkHighOrderFeatureTile::ForIntervals(
 }
 
 template <typename Visit>
-void vtkHighOrderFeatureTile::ForSplatPixels(const Frame& frame, vtkIdType k, Visit&& visit)
+void hov::FeatureTile::ForSplatPixels(const Frame& frame, vtkIdType k, Visit&& visit)
 {
-  const vtkHighOrderFeatureProjector::Splat& splat = frame.Splats[frame.SplatOf[k]];
+  const hov::FeatureProjector::Splat& splat = frame.Splats[frame.SplatOf[k]];
   for (int b = 0; b < 3; ++b)
   {
     for (int a = 0; a < 3; ++a)
@@ -176,7 +160,7 @@ void vtkHighOrderFeatureTile::ForSplatPixels(const Frame& frame, vtkIdType k, Vi
   }
 }
 
-void vtkHighOrderFeatureTile::Composite(const Frame& frame, size_t p, const hov::RGBA& c)
+void hov::FeatureTile::Composite(const Frame& frame, size_t p, const hov::RGBA& c)
 {
   hov::CompositeBehind(this->Accum[p], c);
   if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance)
@@ -185,7 +169,7 @@ void vtkHighOrderFeatureTile::Composite(const Frame& frame, size_t p, const hov:
   }
 }
 
-void vtkHighOrderFeatureTile::Segment(
+void hov::FeatureTile::Segment(
   const Frame& frame, size_t p, vtkIdType k, double tIn, double tOut, Stats& st)
 {
   if (this->Done[p])
@@ -197,17 +181,13 @@ void vtkHighOrderFeatureTile::Segment(
   const bool includeFront = !(std::abs(tIn - this->LastExit[p]) <= frame.WitnessTol);
   const hov::RGBA c = this->Integrator.Integrate(
     frame.Segment, (*frame.Order)[k], this->Rays[p], tIn, tOut, includeFront, st.Pieces);
-  if (tIn < this->MaxExit[p] - frame.WitnessTol)
-  {
-    this->Violated[p] = 1;
-  }
-  this->MaxExit[p] = std::max(this->MaxExit[p], tOut);
+  this->Witness(p, tIn, tOut, frame.WitnessTol);
   this->LastExit[p] = tOut;
   this->Composite(frame, p, c);
   ++st.Segments;
 }
 
-void vtkHighOrderFeatureTile::SplatPixel(
+void hov::FeatureTile::SplatPixel(
   const Frame& frame, size_t p, vtkIdType k, int weight, Stats& st)
 {
   if (this->Done[p])
@@ -219,12 +199,12 @@ void vtkHighOrderFeatureTile::SplatPixel(
   ++st.Segments;
 }
 
-void vtkHighOrderFeatureTile::Render(
+void hov::FeatureTile::Render(
   const Frame& frame, int tileIndex, std::vector<double>& rgba, Stats& st)
 {
   this->Init(frame, tileIndex);
-  const vtkIdType* cells = frame.Cells.data() + frame.Start[tileIndex];
-  const vtkIdType count = frame.Start[tileIndex + 1] - frame.Start[tileIndex];
+  const vtkIdType* cells = frame.Bins.Cells.data() + frame.Bins.Start[tileIndex];
+  const vtkIdType count = frame.Bins.Start[tileIndex + 1] - frame.Bins.Start[tileIndex];
   if (!frame.Settings->PerPixelSort)
   {
     for (vtkIdType c = 0; c < count; ++c)
@@ -273,6 +253,5 @@ void vtkHighOrderFeatureTile::Render(
       }
     }
   }
-  vtkHighOrderProjectorTile::WriteTile(this->Accum.data(), this->Violated.data(), this->X0,
-    this->Y0, this->W, this->H, frame.Rays->GetWidth(), rgba, st.WitnessViolations);
+  this->WritePixels(rgba, frame.Rays->GetWidth(), st);
 }

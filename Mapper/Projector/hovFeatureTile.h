@@ -1,22 +1,22 @@
 /**
- * @class   vtkHighOrderFeatureTile
- * @brief   One image tile of vtkHighOrderFeatureProjector: exact ray
- *          intervals of the tile's cells, vtkHighOrderFeatureSegment per
+ * @class   hov::FeatureTile
+ * @brief   One image tile of hov::FeatureProjector: exact ray
+ *          intervals of the tile's cells, hov::FeatureSegment per
  *          interval, splats, front-to-back compositing in cell order or per
  *          pixel.
  *
  * Linear tetrahedra are clipped against the same canonical face planes as
- * the fast path (vtkHighOrderTetraSetup; the arithmetic of its ClipRay, so
+ * the fast path (hov::CellSetup; the arithmetic of its ClipRay, so
  * exit and entry through a shared face are bit-identical); general cells
- * through vtkHighOrderGeneralCellTile::Collect. Per pixel the tile keeps the
+ * through hov::GeneralCellTile::Collect. Per pixel the tile keeps the
  * exit of the last composited segment: a segment starting exactly there
- * does not own a surface at its front (vtkHighOrderFeatureProjector).
+ * does not own a surface at its front (hov::FeatureProjector).
  *
  * Thread safety: one object per thread; the frame is read-only.
- * @sa vtkHighOrderFeatureProjector
+ * @sa hov::FeatureProjector
  */
-#ifndef vtkHighOrderFeatureTile_h
-#define vtkHighOrderFeatureTile_h
+#ifndef hovFeatureTile_h
+#define hovFeatureTile_h
 
 #include "hovFeatureProjector.h" // Frame
 #include "hovFeatureSegment.h"   // per-interval integral
@@ -24,11 +24,13 @@
 
 #include <vector> // buffers
 
-class vtkHighOrderFeatureTile
+namespace hov
+{
+class FeatureTile : public TilePixels
 {
 public:
-  using Frame = vtkHighOrderFeatureProjector::Frame;
-  using Stats = vtkHighOrderCellProjector::Statistics;
+  using Frame = hov::FeatureProjector::Frame;
+  using Stats = ProjectorStatistics;
 
   /// Render tile @p tileIndex of @p frame into @p rgba.
   void Render(const Frame& frame, int tileIndex, std::vector<double>& rgba, Stats& stats);
@@ -58,17 +60,11 @@ private:
   void SplatPixel(const Frame& frame, size_t p, vtkIdType k, int weight, Stats& st);
   void Composite(const Frame& frame, size_t p, const hov::RGBA& c);
 
-  int X0 = 0, Y0 = 0, W = 0, H = 0;
-  std::vector<vtkHighOrderViewRays::Ray> Rays;
-  std::vector<double> TMax;
-  std::vector<hov::RGBA> Accum;
   std::vector<double> LastExit; ///< exit of the last composited segment (NaN: none)
-  std::vector<double> MaxExit;
-  std::vector<unsigned char> Violated;
-  std::vector<unsigned char> Done;
   std::vector<Fragment> Fragments;
-  vtkHighOrderGeneralCellTile General;
-  vtkHighOrderFeatureSegment Integrator;
+  hov::GeneralCellTile General;
+  hov::FeatureSegment Integrator;
 };
+}
 
 #endif

@@ -1,21 +1,21 @@
 /**
- * @file    vtkHighOrderFeatures.h
+ * @file    hov::Features.h
  * @brief   What the feature path of the CPU projector reads per frame:
  *          embedded isosurfaces and their shading, the optional colour and
  *          isosurface fields, subpixel splatting (HIAC sections 5.1-5.3).
  *
  * Filled by vtkHighOrderVolumeMapper each frame; read-only during rendering.
  * With none of the features active (Active() false) the mapper uses the
- * tetrahedra's fast projector (vtkHighOrderCellProjector) unchanged, and the
+ * tetrahedra's fast projector (hov::CellProjector) unchanged, and the
  * image is bit for bit what it was without this file.
  *
  * Frames: rays, points and fields live in dataset coordinates; shading runs
  * in world coordinates (the frame of vtkLight positions): DataToWorld maps
  * points, NormalToWorld = (DataToWorld^-1)^T maps gradients.
- * @sa vtkHighOrderFeatureProjector, hovIsosurface.h, hovShading.h, hovSplat.h
+ * @sa hov::FeatureProjector, hovIsosurface.h, hovShading.h, hovSplat.h
  */
-#ifndef vtkHighOrderFeatures_h
-#define vtkHighOrderFeatures_h
+#ifndef hovFeatures_h
+#define hovFeatures_h
 
 #include "hovIsosurface.h" // Isosurface
 #include "hovShading.h"    // ShadingLight, ShadingMaterial
@@ -24,7 +24,9 @@
 
 #include <vector> // surfaces, lights, fields
 
-struct vtkHighOrderFeatures
+namespace hov
+{
+struct Features
 {
   /// Isosurfaces in compositing order of equal depth (isovalue index).
   std::vector<hov::Isosurface> Surfaces;
@@ -51,5 +53,6 @@ struct vtkHighOrderFeatures
     return !this->Surfaces.empty() || this->ColorField || this->IsoField || this->Splatting;
   }
 };
+}
 
 #endif

@@ -1,7 +1,7 @@
 #include "hovGeneralCellTile.h"
 
 #include "hovGeneralCells.h"  // the cells
-#include "hovProjectorTile.h" // BoxMargin, shared with the tetrahedra
+#include "hovTileSkeleton.h" // BoxMargin, shared with the tetrahedra
 
 #include "hovPixelRange.h"  // pixel boxes and row spans
 #include "hovPolynomial.h" // constant pieces
@@ -11,7 +11,7 @@
 
 namespace
 {
-constexpr double BoxMargin = vtkHighOrderProjectorTile::BoxMargin;
+constexpr double BoxMargin = hov::BoxMargin;
 
 /// Terms of a restricted field whose largest value on a piece is below this
 /// times the cell's largest |scalar| are rounding noise (the restriction's own
@@ -50,13 +50,13 @@ bool HullRowSpan(const glm::dvec2* corners, int n, double y, double& xMin, doubl
 
 /**
  * hov::RestrictCellScalar's exact affine path with the cell's inverse
- * Jacobian precomputed (vtkHighOrderGeneralCells): the parametric point moves
+ * Jacobian precomputed (hov::GeneralCells): the parametric point moves
  * linearly along the ray, pc(t0 + tau) = pc0 + J^-1 (o + t0 d - x0) + tau J^-1 d
  * (x0, pc0: corner 0), and the cell's field as a polynomial in pcoords
  * (hov::RestrictAffineField, set up per cell) gives s as one polynomial in
  * tau, exact to rounding.
  */
-void RestrictAffine(const vtkHighOrderGeneralCells::Cell& cell, const double* nodes,
+void RestrictAffine(const hov::GeneralCells::Cell& cell, const double* nodes,
   const double o[3], const double d[3], double t0, double t1,
   std::vector<hov::RestrictedPiece>& out)
 {
@@ -80,10 +80,10 @@ void RestrictAffine(const vtkHighOrderGeneralCells::Cell& cell, const double* no
 }
 }
 
-std::array<int, 4> vtkHighOrderGeneralCellTile::PixelBox(
+std::array<int, 4> hov::GeneralCellTile::PixelBox(
   const FrameData& frame, int g, int width, int height, bool& projectable)
 {
-  const vtkHighOrderGeneralCells::Cell& cell = frame.Cells->GetCells()[g];
+  const hov::GeneralCells::Cell& cell = frame.Cells->GetCells()[g];
   const int corners = hov::CellCornerCount(cell.Shape);
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   projectable = true;
@@ -103,7 +103,7 @@ std::array<int, 4> vtkHighOrderGeneralCellTile::PixelBox(
   return hov::PixelBoxOf(x0, x1, y0, y1, width, height, BoxMargin);
 }
 
-hov::RayPerturbation vtkHighOrderGeneralCellTile::PerturbationOf(const vtkHighOrderViewRays& rays)
+hov::RayPerturbation hov::GeneralCellTile::PerturbationOf(const hov::ViewRays& rays)
 {
   hov::RayPerturbation p;
   for (int k = 0; k < 3; ++k)
@@ -114,14 +114,14 @@ hov::RayPerturbation vtkHighOrderGeneralCellTile::PerturbationOf(const vtkHighOr
   return p;
 }
 
-const std::vector<vtkHighOrderGeneralCellTile::Hit>& vtkHighOrderGeneralCellTile::Collect(
+const std::vector<hov::GeneralCellTile::Hit>& hov::GeneralCellTile::Collect(
   const FrameData& frame, int g, const std::array<int, 4>& box, const TileRows& rows,
   const unsigned char* skip)
 {
   this->Hits.clear();
   this->IntervalList.clear();
-  const vtkHighOrderGeneralCells& cells = *frame.Cells;
-  const vtkHighOrderGeneralCells::Cell& cell = cells.GetCells()[g];
+  const hov::GeneralCells& cells = *frame.Cells;
+  const hov::GeneralCells::Cell& cell = cells.GetCells()[g];
   const double* nodes = cells.GetNodes(cell);
   const int corners = hov::CellCornerCount(cell.Shape);
   glm::dvec2 projected[8];
@@ -158,7 +158,7 @@ const std::vector<vtkHighOrderGeneralCellTile::Hit>& vtkHighOrderGeneralCellTile
       {
         continue; // finished, or nothing left of the ray after clipping
       }
-      const vtkHighOrderViewRays::Ray& ray = rows.Rays[p];
+      const hov::ViewRays::Ray& ray = rows.Rays[p];
       const double origin[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
       const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
       const int n = hov::RayCellIntervals(cell.Shape, nodes, cell.CornerIds, origin, direction, 0.0,
@@ -174,11 +174,11 @@ const std::vector<vtkHighOrderGeneralCellTile::Hit>& vtkHighOrderGeneralCellTile
   return this->Hits;
 }
 
-hov::RGBA vtkHighOrderGeneralCellTile::Integrate(const FrameData& frame, int g,
-  const vtkHighOrderViewRays::Ray& ray, double t0, double t1, vtkIdType& pieces)
+hov::RGBA hov::GeneralCellTile::Integrate(const FrameData& frame, int g,
+  const hov::ViewRays::Ray& ray, double t0, double t1, vtkIdType& pieces)
 {
-  const vtkHighOrderGeneralCells& cells = *frame.Cells;
-  const vtkHighOrderGeneralCells::Cell& cell = cells.GetCells()[g];
+  const hov::GeneralCells& cells = *frame.Cells;
+  const hov::GeneralCells::Cell& cell = cells.GetCells()[g];
   hov::RGBA sum;
   if (cell.ScalarMin == cell.ScalarMax)
   {

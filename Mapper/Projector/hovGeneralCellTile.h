@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderGeneralCellTile
+ * @class   hov::GeneralCellTile
  * @brief   Per-thread work of the CPU projector on one general cell (voxel,
  *          hexahedron, wedge, pyramid, quadratic cells) in one image tile:
  *          scan conversion, exact ray/cell intervals and the accurate
@@ -46,11 +46,11 @@
  *
  * Thread safety: one object per thread (the tile's); the frame data is shared
  * read-only. Scratch vectors keep their capacity: no allocation per pixel.
- * @sa vtkHighOrderProjectorTile, vtkHighOrderGeneralCells, hovRayCell.h,
+ * @sa hov::ProjectorTile, hov::GeneralCells, hovRayCell.h,
  * hovCellRestriction.h, hovPolynomialSegment.h
  */
-#ifndef vtkHighOrderGeneralCellTile_h
-#define vtkHighOrderGeneralCellTile_h
+#ifndef hovGeneralCellTile_h
+#define hovGeneralCellTile_h
 
 #include "hovViewRays.h" // Ray
 
@@ -64,19 +64,24 @@
 #include <array>  // pixel box
 #include <vector> // scratch
 
-class vtkHighOrderGeneralCells;
+namespace hov
+{
+class GeneralCells;
+}
 namespace hov
 {
 class TransferFunction;
 }
 
-class vtkHighOrderGeneralCellTile
+namespace hov
+{
+class GeneralCellTile
 {
 public:
   /// What every tile of a frame reads about the general cells.
   struct FrameData
   {
-    const vtkHighOrderGeneralCells* Cells = nullptr;
+    const hov::GeneralCells* Cells = nullptr;
     /// Per ordered cell: index into Cells->GetCells(), or -1 for a tetrahedron.
     const std::vector<int>* GeneralOf = nullptr;
     const glm::dvec2* Window = nullptr;          ///< projected points (window coordinates)
@@ -93,7 +98,7 @@ public:
   struct TileRows
   {
     int X0, Y0, W, RowBegin, RowEnd;
-    const vtkHighOrderViewRays::Ray* Rays; ///< per tile pixel
+    const hov::ViewRays::Ray* Rays; ///< per tile pixel
     const double* TMax;                    ///< per tile pixel
   };
 
@@ -121,11 +126,11 @@ public:
    * Premultiplied RGBA of general cell @p g over [@p t0, @p t1] of @p ray
    * (an inside interval); @p pieces is incremented by the integrated pieces.
    */
-  hov::RGBA Integrate(const FrameData& frame, int g, const vtkHighOrderViewRays::Ray& ray,
+  hov::RGBA Integrate(const FrameData& frame, int g, const hov::ViewRays::Ray& ray,
     double t0, double t1, vtkIdType& pieces);
 
   /// The rays' symbolic displacement (GetPerturbX, GetPerturbY) for FrameData.
-  static hov::RayPerturbation PerturbationOf(const vtkHighOrderViewRays& rays);
+  static hov::RayPerturbation PerturbationOf(const hov::ViewRays& rays);
 
   /// Pixel box of general cell @p g (pixel centres of its projected corners' box).
   static std::array<int, 4> PixelBox(
@@ -136,5 +141,6 @@ private:
   std::vector<hov::RayCellInterval> IntervalList;
   std::vector<hov::RestrictedPiece> Pieces;
 };
+}
 
 #endif

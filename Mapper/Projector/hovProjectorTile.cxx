@@ -3,110 +3,23 @@
 #include "hovProjectorTileLanes.h" // pixel lanes
 #include "hovTileGeometry.h"        // ray clipping, row spans
 
-#include "vtkSMPTools.h" // parallel binning
-
 #include <algorithm> // std::min, std::max
 #include <cmath>     // std::ceil, std::floor
 
 namespace
 {
-using Ray = vtkHighOrderViewRays::Ray;
-using CellRecord = vtkHighOrderProjectorTile::CellRecord;
-using namespace hovTileGeometry;
+using Ray = hov::ViewRays::Ray;
+using CellRecord = hov::ProjectorTile::CellRecord;
+using namespace hov::tile;
 }
 
-void vtkHighOrderProjectorTile::Bins::Build(
-  const std::vector<Box>& boxes, int width, int height, int tileSize)
+void hov::ProjectorTile::Init(const Frame& frame, int tileIndex)
 {
-  this->Size = tileSize;
-  this->TilesX = (width + tileSize - 1) / tileSize;
-  this->TilesY = (height + tileSize - 1) / tileSize;
-  const int numTiles = this->TilesX * this->TilesY;
-  auto forTiles = [&](const Box& b, auto&& f) {
-    if (b[0] > b[1] || b[2] > b[3])
-    {
-      return;
-    }
-    for (int ty = b[2] / tileSize; ty <= b[3] / tileSize; ++ty)
-    {
-      for (int tx = b[0] / tileSize; tx <= b[1] / tileSize; ++tx)
-      {
-        f(ty * this->TilesX + tx);
-      }
-    }
-  };
-  // In parallel over a fixed number of cell chunks (the result does not
-  // depend on the threads): count per chunk and tile, offsets per tile in
-  // chunk order, then each chunk fills its slots; every tile's list stays in
-  // cell order.
-  const vtkIdType numCells = static_cast<vtkIdType>(boxes.size());
-  const vtkIdType chunk = (numCells + Chunks - 1) / Chunks;
-  this->Fill.assign(static_cast<size_t>(Chunks) * numTiles, 0);
-  vtkSMPTools::For(0, Chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
-    for (vtkIdType c = c0; c < c1; ++c)
-    {
-      vtkIdType* count = this->Fill.data() + c * numTiles;
-      for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
-      {
-        forTiles(boxes[k], [&](int t) { ++count[t]; });
-      }
-    }
-  });
-  this->Start.assign(numTiles + 1, 0);
-  vtkIdType next = 0;
-  for (int t = 0; t < numTiles; ++t)
-  {
-    this->Start[t] = next;
-    for (int c = 0; c < Chunks; ++c)
-    {
-      const vtkIdType n = this->Fill[static_cast<size_t>(c) * numTiles + t];
-      this->Fill[static_cast<size_t>(c) * numTiles + t] = next; // becomes the write position
-      next += n;
-    }
-  }
-  this->Start[numTiles] = next;
-  this->Cells.resize(next);
-  vtkSMPTools::For(0, Chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
-    for (vtkIdType c = c0; c < c1; ++c)
-    {
-      vtkIdType* fill = this->Fill.data() + c * numTiles;
-      for (vtkIdType k = c * chunk; k < std::min(numCells, (c + 1) * chunk); ++k)
-      {
-        forTiles(boxes[k], [&](int t) { this->Cells[fill[t]++] = k; });
-      }
-    }
-  });
-}
-
-void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
-{
-  const vtkHighOrderViewRays& rays = *frame.Rays;
-  const Bins& bins = *frame.TileBins;
-  const int width = rays.GetWidth();
-  this->X0 = (tileIndex % bins.TilesX) * bins.Size;
-  this->Y0 = (tileIndex / bins.TilesX) * bins.Size;
-  this->W = std::min(bins.Size, width - this->X0);
-  this->H = std::min(bins.Size, rays.GetHeight() - this->Y0);
+  this->InitPixels(*frame.Rays, frame.Depth, *frame.Bins, tileIndex);
   const size_t n = static_cast<size_t>(this->W) * this->H;
-  this->Rays.resize(n);
-  this->TMax.resize(n);
-  this->Accum.assign(n, hov::RGBA());
-  this->MaxExit.assign(n, -1e300);
-  this->Violated.assign(n, 0);
-  this->Done.assign(n, 0);
   this->NumFragments = 0;
   this->RowBegin = 0;
   this->RowEnd = this->H;
-  for (int j = 0; j < this->H; ++j)
-  {
-    for (int i = 0; i < this->W; ++i)
-    {
-      const int pi = this->X0 + i, pj = this->Y0 + j;
-      const size_t p = static_cast<size_t>(j) * this->W + i;
-      const double z = frame.Depth ? frame.Depth[static_cast<size_t>(pj) * width + pi] : 1.0;
-      this->Rays[p] = rays.TracedPixelRay(pi, pj, z, this->TMax[p]);
-    }
-  }
   this->DoneInRow.assign(this->H, 0);
   // The rays again as padded arrays per coordinate, for the pixel lanes.
   const size_t padded = n + PixelLanes;
@@ -127,48 +40,7 @@ void vtkHighOrderProjectorTile::Init(const Frame& frame, int tileIndex)
     a + 5 * padded, this->TMax.data() };
 }
 
-void vtkHighOrderProjectorTile::WriteTile(const hov::RGBA* accum, const unsigned char* violated,
-  int x0, int y0, int w, int h, int width, std::vector<double>& rgba, vtkIdType& violations)
-{
-  for (int j = 0; j < h; ++j)
-  {
-    for (int i = 0; i < w; ++i)
-    {
-      const size_t p = static_cast<size_t>(j) * w + i;
-      double* out = &rgba[4 * (static_cast<size_t>(y0 + j) * width + x0 + i)];
-      out[0] = accum[p].R;
-      out[1] = accum[p].G;
-      out[2] = accum[p].B;
-      out[3] = accum[p].A;
-      violations += violated[p];
-    }
-  }
-}
-
-void vtkHighOrderProjectorTile::WriteEmptyTile(
-  const Frame& frame, int tileIndex, std::vector<double>& rgba)
-{
-  const Bins& bins = *frame.TileBins;
-  const int width = frame.Rays->GetWidth();
-  const int x0 = (tileIndex % bins.TilesX) * bins.Size;
-  const int y0 = (tileIndex / bins.TilesX) * bins.Size;
-  const int w = std::min(bins.Size, width - x0);
-  const int h = std::min(bins.Size, frame.Rays->GetHeight() - y0);
-  for (int j = 0; j < h; ++j)
-  {
-    double* row = &rgba[4 * (static_cast<size_t>(y0 + j) * width + x0)];
-    std::fill(row, row + 4 * static_cast<size_t>(w), 0.0);
-  }
-}
-
-void vtkHighOrderProjectorTile::Write(
-  std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const
-{
-  WriteTile(this->Accum.data(), this->Violated.data(), this->X0, this->Y0, this->W, this->H, width,
-    rgba, st.WitnessViolations);
-}
-
-void vtkHighOrderProjectorTile::ReserveQueue(int n)
+void hov::ProjectorTile::ReserveQueue(int n)
 {
   if (n + PixelLanes <= this->QueueCapacity)
   {
@@ -193,7 +65,7 @@ void vtkHighOrderProjectorTile::ReserveQueue(int n)
   this->QueueCapacity = capacity;
 }
 
-void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType k)
+void hov::ProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType k)
 {
   const CellRecord& cell = (*frame.Cells)[k];
   const Box& b = cell.PixelBox;
@@ -246,7 +118,7 @@ void vtkHighOrderProjectorTile::QueueCellSegments(const Frame& frame, vtkIdType 
   }
 }
 
-void vtkHighOrderProjectorTile::CompactRow(
+void hov::ProjectorTile::CompactRow(
   const Frame& frame, const CellRecord& cell, size_t p0, int count, int src)
 {
   int next = this->NumQueued; // <= src: rows are compacted in order
@@ -297,7 +169,7 @@ void vtkHighOrderProjectorTile::CompactRow(
   this->NumQueued = next; // QInterval: the cell's throughout
 }
 
-void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st)
+void hov::ProjectorTile::Flush(const Frame& frame, Statistics& st)
 {
   const int n = this->NumQueued;
   if (n == 0)
@@ -354,8 +226,8 @@ void vtkHighOrderProjectorTile::Flush(const Frame& frame, vtkHighOrderCellProjec
   this->NumQueued = 0;
 }
 
-void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkIdType* cells,
-  vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
+void hov::ProjectorTile::RenderInCellOrder(const Frame& frame, const vtkIdType* cells,
+  vtkIdType count, Statistics& st)
 {
   this->NumQueued = 0;
   for (vtkIdType c = 0; c < count; ++c)
@@ -380,16 +252,16 @@ void vtkHighOrderProjectorTile::RenderInCellOrder(const Frame& frame, const vtkI
   this->Flush(frame, st);
 }
 
-void vtkHighOrderProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
-  vtkHighOrderCellProjector::Statistics& stats)
+void hov::ProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
+  Statistics& stats)
 {
-  const Bins& bins = *frame.TileBins;
+  const TileBins& bins = *frame.Bins;
   const vtkIdType* cells = bins.Cells.data() + bins.Start[tileIndex];
   const vtkIdType count = bins.Start[tileIndex + 1] - bins.Start[tileIndex];
   if (count == 0)
   {
     // No cell: the tile stays transparent (most tiles around a model); no rays.
-    WriteEmptyTile(frame, tileIndex, rgba);
+    WriteEmptyTile(bins, frame.Rays->GetWidth(), frame.Rays->GetHeight(), tileIndex, rgba);
     return;
   }
   this->Init(frame, tileIndex);
@@ -401,5 +273,5 @@ void vtkHighOrderProjectorTile::Render(const Frame& frame, int tileIndex, std::v
   {
     this->RenderInCellOrder(frame, cells, count, stats);
   }
-  this->Write(rgba, frame.Rays->GetWidth(), stats);
+  this->WritePixels(rgba, frame.Rays->GetWidth(), stats);
 }

@@ -1,6 +1,6 @@
 /**
- * @class   vtkHighOrderProjectorTile
- * @brief   One image tile of vtkHighOrderCellProjector: scan conversion of the
+ * @class   hov::ProjectorTile
+ * @brief   One image tile of hov::CellProjector: scan conversion of the
  *          tile's cells, exact ray clipping, batched segment integrals and
  *          front-to-back compositing.
  *
@@ -16,7 +16,7 @@
  * Per cell (QueueCellSegments): the pixel range of each of its rows, four
  * rows per vector (RowRanges), then all its rows clipped in one call
  * (ClipRows: four or two pixels per vector, the results written straight
- * into the queue's arrays, vtkHighOrderProjectorTileLanes.h); a row is only
+ * into the queue's arrays, hovProjectorTileLanes.h); a row is only
  * revisited pixel by pixel if some pixel missed, was undecided (a ray in a
  * face's plane) or is already opaque. Tiles that no cell overlaps are
  * written transparent without tracing their rays.
@@ -28,7 +28,7 @@
  * stopping where the pixel becomes opaque.
  *
  * General cells (hexahedra, wedges, ..., quadratic cells: Frame::General,
- * vtkHighOrderGeneralCellTile, in vtkHighOrderProjectorTileGeneral.cxx) take
+ * hov::GeneralCellTile, in hovProjectorTileGeneral.cxx) take
  * their turn in the same order: in cell order the queued tetra segments are
  * flushed, then each covered pixel composites the cell's intervals (first
  * entry and last exit for the witness); per pixel, every interval is a
@@ -39,33 +39,30 @@
  * number of threads.
  *
  * Thread safety: one object per thread; Frame is shared read-only.
- * @sa vtkHighOrderCellProjector, hovSegmentBatch.h
+ * @sa hov::CellProjector, hovSegmentBatch.h
  */
-#ifndef vtkHighOrderProjectorTile_h
-#define vtkHighOrderProjectorTile_h
+#ifndef hovProjectorTile_h
+#define hovProjectorTile_h
 
-#include "hovCellProjector.h"   // Settings, Statistics
 #include "hovGeneralCellTile.h" // non-tetrahedral cells
-#include "hovViewRays.h"        // Ray
+#include "hovTileSkeleton.h"    // TilePixels, TileBins, settings, statistics
 
 #include "hovSegmentBatch.h" // batched integrals
 
-#include "hovCompositing.h" // CompositeBehind
-
-#include <algorithm> // std::max
-#include <array>  // pixel boxes
 #include <vector> // buffers
 
-namespace hovTileGeometry
+namespace hov::tile
 {
 struct ProjectedEdges;
 }
-using hovTileEdges = hovTileGeometry::ProjectedEdges;
 
-class vtkHighOrderProjectorTile
+namespace hov
+{
+class ProjectorTile : public TilePixels
 {
 public:
-  using Box = std::array<int, 4>; ///< i0, i1, j0, j1 inclusive; i0 > i1 means empty
+  using Box = CellBox;
+  using Statistics = ProjectorStatistics;
 
   /**
    * Everything the tile loop reads of a cell, stored per ordered cell (built
@@ -76,7 +73,7 @@ public:
   struct CellRecord
   {
     double NX[4], NY[4], NZ[4], Offset[4]; ///< face k: (NX,NY,NZ)[k] . x <= Offset[k]
-    glm::dvec3 Gradient;                   ///< as vtkHighOrderTetraSetup::Tetra
+    glm::dvec3 Gradient;                   ///< as hov::CellSetup::Tetra
     glm::dvec3 RefPoint;
     double RefScalar;
     glm::dvec2 Vertex[4]; ///< projected vertices (window coordinates)
@@ -86,68 +83,42 @@ public:
   };
 
   /// The rays of a tile as arrays per coordinate (padded: a block of pixel
-  /// lanes may read past any pixel), for the lanes of vtkHighOrderTileGeometry.h.
+  /// lanes may read past any pixel), for the lanes of hovTileGeometry.h.
   struct TileRays
   {
     const double *OX, *OY, *OZ, *DX, *DY, *DZ, *TMax;
   };
 
-  /// Cells binned into image tiles, each tile's list in visibility order.
-  struct Bins
-  {
-    int Size = 16, TilesX = 0, TilesY = 0;
-    std::vector<vtkIdType> Start; ///< per tile, into Cells
-    std::vector<vtkIdType> Cells; ///< ordered-cell indices
-    std::vector<vtkIdType> Fill;  ///< scratch: per chunk and tile
-    static constexpr int Chunks = 16; ///< cell chunks binned in parallel
-    /// Bin the cells whose pixel boxes are @p boxes (per ordered cell).
-    void Build(const std::vector<Box>& boxes, int width, int height, int tileSize);
-  };
-
   /// Everything the tiles of one frame read.
   struct Frame
   {
-    const Bins* TileBins;
+    const TileBins* Bins;
     const std::vector<CellRecord>* Cells; ///< per ordered cell
     const hov::TransferFunction* TF;
-    const vtkHighOrderCellProjector::Settings* Settings;
-    const vtkHighOrderViewRays* Rays;
+    const ProjectorSettings* Settings;
+    const hov::ViewRays* Rays;
     const float* Depth;
     double WitnessTol;
     glm::dvec3 PerturbX, PerturbY;
     /// The general cells, or null if there are none (tetrahedra only).
-    const vtkHighOrderGeneralCellTile::FrameData* General = nullptr;
+    const hov::GeneralCellTile::FrameData* General = nullptr;
   };
-
-  /// Pixel centres inside the projection are those within BoxMargin pixels
-  /// of it (slack against round-off; the per-pixel ray test is exact).
-  static constexpr double BoxMargin = 1e-6;
-  /// Largest tile side (vtkHighOrderVolumeMapper clamps TileSize to it).
-  static constexpr int MaxTileSize = 256;
-
-  /**
-   * Copy a tile's accumulated pixels (@p w x @p h, row-major, origin
-   * (@p x0, @p y0)) into the image @p rgba of width @p width and add its
-   * witness flags to @p violations. Shared by every tile renderer.
-   */
-  static void WriteTile(const hov::RGBA* accum, const unsigned char* violated, int x0, int y0,
-    int w, int h, int width, std::vector<double>& rgba, vtkIdType& violations);
 
   /// Render tile @p tileIndex of @p frame and write it into @p rgba.
   void Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
-    vtkHighOrderCellProjector::Statistics& stats);
+    Statistics& stats);
 
 private:
   void Init(const Frame& frame, int tileIndex);
   void RenderInCellOrder(const Frame& frame, const vtkIdType* cells, vtkIdType count,
-    vtkHighOrderCellProjector::Statistics& st);
+    Statistics& st);
   void RenderPerPixel(const Frame& frame, const vtkIdType* cells, vtkIdType count,
-    vtkHighOrderCellProjector::Statistics& st);
+    Statistics& st);
   void CollectFragments(const Frame& frame, const vtkIdType* cells, vtkIdType count);
-  void CompositeFragments(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
+  void CompositeFragments(const Frame& frame, Statistics& st);
   /// Rows [r0, r1] of the tile's pixels (tile coordinates) where ordered
   /// cell @p cell may cover pixel centres on tile row @p j; false if none.
-  bool RowRange(const CellRecord& cell, const hovTileEdges& edges, int j, int& r0, int& r1) const;
+  bool RowRange(const CellRecord& cell, const tile::ProjectedEdges& edges, int j, int& r0, int& r1) const;
   /// Visit the segments of ordered cell k in rows [RowBegin, RowEnd) of the tile.
   template <typename Visit>
   void ForCellSegments(const Frame& frame, vtkIdType k, Visit&& visit);
@@ -164,29 +135,23 @@ private:
   /// Queue a segment of pixel p for the next Flush() (per-pixel order).
   void Queue(size_t p, double tIn, double tOut, double sIn, double sOut, int interval);
   /// Integrate the queued segments together, then composite them in queue order.
-  void Flush(const Frame& frame, vtkHighOrderCellProjector::Statistics& st);
-  /// Witness update of pixel p for a segment [tIn, tOut] composited next
-  /// (general cells; Flush() does the same inline).
-  void Witness(const Frame& frame, size_t p, double tIn, double tOut);
+  void Flush(const Frame& frame, Statistics& st);
   /// Composite a segment's RGBA behind pixel p; marks it done when opaque.
   void Composite(const Frame& frame, size_t p, const hov::RGBA& seg);
-  void Write(std::vector<double>& rgba, int width, vtkHighOrderCellProjector::Statistics& st) const;
-  /// Write a tile that no cell overlaps: transparent black.
-  static void WriteEmptyTile(const Frame& frame, int tileIndex, std::vector<double>& rgba);
   /// True if ordered cell k is a general cell.
   static bool IsGeneral(const Frame& frame, vtkIdType k)
   {
     return frame.General && (*frame.General->GeneralOf)[k] >= 0;
   }
   /// Cell order: composite general cell k into every covered, unfinished pixel.
-  void RenderGeneralCell(const Frame& frame, vtkIdType k, vtkHighOrderCellProjector::Statistics& st);
+  void RenderGeneralCell(const Frame& frame, vtkIdType k, Statistics& st);
   /// Per-pixel order: one fragment per ray interval of general cell k.
   void CollectGeneralFragments(const Frame& frame, vtkIdType k);
   /// Per-pixel order: integrate and composite a general cell's interval at pixel p.
   void CompositeGeneralInterval(const Frame& frame, size_t p, double tIn, double tOut,
-    vtkIdType k, vtkHighOrderCellProjector::Statistics& st);
+    vtkIdType k, Statistics& st);
   /// The tile's rows [RowBegin, RowEnd) for the general-cell scan conversion.
-  vtkHighOrderGeneralCellTile::TileRows Rows() const
+  hov::GeneralCellTile::TileRows Rows() const
   {
     return { this->X0, this->Y0, this->W, this->RowBegin, this->RowEnd, this->Rays.data(),
       this->TMax.data() };
@@ -204,19 +169,12 @@ private:
     }
   };
 
-  int X0 = 0, Y0 = 0, W = 0, H = 0;
   int RowBegin = 0, RowEnd = 0; ///< rows ForCellSegments visits
   /// Per-pixel mode: pixels per band of rows (a band's fragments, some
   /// thousands, stay in the L1/L2 cache while they are bucketed and sorted).
   static constexpr int BandPixels = 64;
-  std::vector<vtkHighOrderViewRays::Ray> Rays;
-  std::vector<double> TMax;
-  std::vector<double> LaneStore;   ///< the rays per coordinate (vtkHighOrderProjectorTileLanes.h)
+  std::vector<double> LaneStore;   ///< the rays per coordinate (hovProjectorTileLanes.h)
   TileRays LaneRays{};
-  std::vector<hov::RGBA> Accum;
-  std::vector<double> MaxExit;
-  std::vector<unsigned char> Violated;
-  std::vector<unsigned char> Done;
   std::vector<Fragment> Fragments; ///< in cell order (NumFragments used)
   int NumFragments = 0;
   std::vector<Fragment> ByPixel;   ///< bucketed by pixel, then sorted by entry
@@ -236,7 +194,8 @@ private:
   std::vector<hov::RGBA> Results;
   std::vector<int> Pieces;
   hov::SegmentBatch Batch;
-  vtkHighOrderGeneralCellTile General; ///< scratch of the general-cell path
+  hov::GeneralCellTile General; ///< scratch of the general-cell path
 };
+}
 
 #endif

@@ -1,26 +1,26 @@
-// The general-cell (non-tetrahedral) part of vtkHighOrderProjectorTile: how a
+// The general-cell (non-tetrahedral) part of hov::ProjectorTile: how a
 // tile composites hexahedra, wedges, pyramids and quadratic cells in cell
 // order and per pixel. Kept apart from the tetrahedra's hot loop
-// (vtkHighOrderProjectorTile.cxx); the per-cell numerics are in
-// vtkHighOrderGeneralCellTile.
+// (hov::ProjectorTile.cxx); the per-cell numerics are in
+// hov::GeneralCellTile.
 #include "hovProjectorTile.h"
 
 #include "hovCompositing.h" // CompositeBehind
 
 #include <algorithm> // std::max
 
-void vtkHighOrderProjectorTile::RenderGeneralCell(
-  const Frame& frame, vtkIdType k, vtkHighOrderCellProjector::Statistics& st)
+void hov::ProjectorTile::RenderGeneralCell(
+  const Frame& frame, vtkIdType k, Statistics& st)
 {
-  const vtkHighOrderGeneralCellTile::FrameData& general = *frame.General;
+  const hov::GeneralCellTile::FrameData& general = *frame.General;
   const int g = (*general.GeneralOf)[k];
   const auto& hits =
     this->General.Collect(general, g, (*frame.Cells)[k].PixelBox, this->Rows(), this->Done.data());
   const auto& intervals = this->General.Intervals();
-  for (const vtkHighOrderGeneralCellTile::Hit& hit : hits)
+  for (const hov::GeneralCellTile::Hit& hit : hits)
   {
     const size_t p = static_cast<size_t>(hit.Pixel);
-    const vtkHighOrderViewRays::Ray& ray = this->Rays[p];
+    const hov::ViewRays::Ray& ray = this->Rays[p];
     // The cell's intervals front to back, then the cell behind the pixel.
     hov::RGBA cell;
     for (int m = hit.First; m < hit.First + hit.Count; ++m)
@@ -28,19 +28,19 @@ void vtkHighOrderProjectorTile::RenderGeneralCell(
       hov::CompositeBehind(
         cell, this->General.Integrate(general, g, ray, intervals[m].T0, intervals[m].T1, st.Pieces));
     }
-    this->Witness(frame, p, intervals[hit.First].T0, intervals[hit.First + hit.Count - 1].T1);
+    this->Witness(p, intervals[hit.First].T0, intervals[hit.First + hit.Count - 1].T1, frame.WitnessTol);
     this->Composite(frame, p, cell);
     st.Segments += hit.Count;
   }
 }
 
-void vtkHighOrderProjectorTile::CollectGeneralFragments(const Frame& frame, vtkIdType k)
+void hov::ProjectorTile::CollectGeneralFragments(const Frame& frame, vtkIdType k)
 {
-  const vtkHighOrderGeneralCellTile::FrameData& general = *frame.General;
+  const hov::GeneralCellTile::FrameData& general = *frame.General;
   const auto& hits = this->General.Collect(
     general, (*general.GeneralOf)[k], (*frame.Cells)[k].PixelBox, this->Rows(), nullptr);
   const auto& intervals = this->General.Intervals();
-  for (const vtkHighOrderGeneralCellTile::Hit& hit : hits)
+  for (const hov::GeneralCellTile::Hit& hit : hits)
   {
     for (int m = hit.First; m < hit.First + hit.Count; ++m)
     {
@@ -58,31 +58,22 @@ void vtkHighOrderProjectorTile::CollectGeneralFragments(const Frame& frame, vtkI
   }
 }
 
-void vtkHighOrderProjectorTile::CompositeGeneralInterval(const Frame& frame, size_t p,
-  double tIn, double tOut, vtkIdType k, vtkHighOrderCellProjector::Statistics& st)
+void hov::ProjectorTile::CompositeGeneralInterval(const Frame& frame, size_t p,
+  double tIn, double tOut, vtkIdType k, Statistics& st)
 {
   if (this->Done[p])
   {
     return;
   }
-  const vtkHighOrderGeneralCellTile::FrameData& general = *frame.General;
+  const hov::GeneralCellTile::FrameData& general = *frame.General;
   const hov::RGBA seg =
     this->General.Integrate(general, (*general.GeneralOf)[k], this->Rays[p], tIn, tOut, st.Pieces);
-  this->Witness(frame, p, tIn, tOut);
+  this->Witness(p, tIn, tOut, frame.WitnessTol);
   this->Composite(frame, p, seg);
   ++st.Segments;
 }
 
-void vtkHighOrderProjectorTile::Witness(const Frame& frame, size_t p, double tIn, double tOut)
-{
-  if (tIn < this->MaxExit[p] - frame.WitnessTol)
-  {
-    this->Violated[p] = 1;
-  }
-  this->MaxExit[p] = std::max(this->MaxExit[p], tOut);
-}
-
-void vtkHighOrderProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
+void hov::ProjectorTile::Composite(const Frame& frame, size_t p, const hov::RGBA& seg)
 {
   hov::CompositeBehind(this->Accum[p], seg);
   if (1.0 - this->Accum[p].A <= frame.Settings->TerminationTransmittance && !this->Done[p])

@@ -1,13 +1,15 @@
-// The pixel lanes of vtkHighOrderProjectorTile (declared in
-// vtkHighOrderProjectorTileLanes.h): ray clipping of rows of pixels and row
+// The pixel lanes of hov::ProjectorTile (declared in
+// hovProjectorTileLanes.h): ray clipping of rows of pixels and row
 // ranges of projected cells, several pixels or rows per vector instruction
 // with exactly the scalar code's operations, compiled for baseline x86-64
 // and for AVX2 (chosen at load time; the same IEEE operations, no FMA).
 #include "hovProjectorTileLanes.h"
 
+#include "hovRayClip.h" // ClipFourPlanes, the lanes' clip
+
 #include <cstring> // memcpy into vector registers
 
-namespace hovTileGeometry
+namespace hov::tile
 {
 namespace
 {
@@ -37,29 +39,10 @@ __attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell
   std::memcpy(&dy, r.DY + p, sizeof(V));
   std::memcpy(&dz, r.DZ + p, sizeof(V));
   std::memcpy(&tMax, r.TMax + p, sizeof(V));
-  const V zero = {};
-  const V big = zero + 1e300 * 1e300; // +inf: no constraint
-  V enter[4], leave[4];
-  auto parallel = zero < zero; // no lane yet
-  for (int k = 0; k < 4; ++k)
-  {
-    const double nx = cell.NX[k], ny = cell.NY[k], nz = cell.NZ[k];
-    const V denom = (nx * dx + ny * dy) + nz * dz;
-    const V num = cell.Offset[k] - ((nx * ox + ny * oy) + nz * oz);
-    parallel |= denom == zero;
-    const V t = num / denom;
-    enter[k] = denom < zero ? t : -big;
-    leave[k] = denom > zero ? t : big;
-  }
-  // std::max(a, b) is a < b ? b : a, std::min(a, b) is b < a ? b : a, per lane.
-  const V in0 = zero < enter[0] ? enter[0] : zero;
-  const V in12 = enter[1] < enter[2] ? enter[2] : enter[1];
-  const V in012 = in0 < in12 ? in12 : in0;
-  const V vIn = in012 < enter[3] ? enter[3] : in012;
-  const V out0 = leave[0] < tMax ? leave[0] : tMax;
-  const V out12 = leave[2] < leave[1] ? leave[2] : leave[1];
-  const V out012 = out12 < out0 ? out12 : out0;
-  const V vOut = leave[3] < out012 ? leave[3] : out012;
+  auto parallel = V{} < V{}; // no lane yet
+  V vIn, vOut;
+  ClipFourPlanes(cell.NX, cell.NY, cell.NZ, cell.Offset, ox, oy, oz, dx, dy, dz, tMax, vIn,
+    vOut, parallel);
   const glm::dvec3& g = cell.Gradient;
   const glm::dvec3& c = cell.RefPoint;
   const V sAtOrigin = cell.RefScalar + ((g.x * (ox - c.x) + g.y * (oy - c.y)) + g.z * (oz - c.z));
@@ -156,7 +139,7 @@ __attribute__((always_inline)) inline int RowRangesLanes(const ProjectedEdges& e
   int y0, int w, int i0, int i1, int j0, int j1, int* start, int* count)
 {
   typedef int I4 __attribute__((vector_size(4 * sizeof(int))));
-  constexpr double margin = vtkHighOrderProjectorTile::BoxMargin;
+  constexpr double margin = hov::BoxMargin;
   const V4 limit = V4{} + 1073741824.0; // CeilToInt's clamp
   int rows = 0;
   for (int j = j0; j <= j1; j += 4)
@@ -229,7 +212,7 @@ inline int RowRangesLanes(const ProjectedEdges& edges, int x0, int y0, int w, in
 }
 }
 
-using namespace hovTileGeometry;
+using namespace hov::tile;
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__APPLE__)
 #define HOV_SPAN_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
@@ -240,21 +223,21 @@ using namespace hovTileGeometry;
 /// operation), chosen at load time; the operations, hence the results, are
 /// the same on every CPU.
 HOV_SPAN_TARGET_CLONES
-bool hovTileGeometry::ClipSpan(
+bool hov::tile::ClipSpan(
   const CellRecord& cell, const TileRays& rays, size_t p, int count, const LaneOut& out, size_t q)
 {
   return ClipSpanLanes(cell, rays, p, count, out, q);
 }
 
 HOV_SPAN_TARGET_CLONES
-int hovTileGeometry::RowRanges(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1,
+int hov::tile::RowRanges(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1,
   int j0, int j1, int* start, int* count)
 {
   return RowRangesLanes(edges, x0, y0, w, i0, i1, j0, j1, start, count);
 }
 
 HOV_SPAN_TARGET_CLONES
-bool hovTileGeometry::ClipRows(const CellRecord& cell, const TileRays& rays, const int* start,
+bool hov::tile::ClipRows(const CellRecord& cell, const TileRays& rays, const int* start,
   const int* count, int rows, const LaneOut& out, size_t q)
 {
   bool all = true;

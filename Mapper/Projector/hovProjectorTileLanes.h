@@ -1,21 +1,21 @@
 /**
- * @file    vtkHighOrderProjectorTileLanes.h
- * @brief   Private to vtkHighOrderProjectorTile: exact ray clipping of a row
+ * @file    hovProjectorTileLanes.h
+ * @brief   Private to hov::ProjectorTile: exact ray clipping of a row
  *          of pixels against a cell, several pixels per vector instruction,
  *          written straight into the tile's segment queue.
  *
- * Declarations and small inline helpers, in namespace hovTileGeometry; the
- * vector code is in vtkHighOrderProjectorTileLanes.cxx.
- * @sa vtkHighOrderProjectorTile, vtkHighOrderTileGeometry.h
+ * Declarations and small inline helpers, in namespace hov::tile; the
+ * vector code is in hovProjectorTileLanes.cxx.
+ * @sa hov::ProjectorTile, hovTileGeometry.h
  */
-#ifndef vtkHighOrderProjectorTileLanes_h
-#define vtkHighOrderProjectorTileLanes_h
+#ifndef hovProjectorTileLanes_h
+#define hovProjectorTileLanes_h
 
 #include "hovTileGeometry.h" // ClipRay, IsUndecided, RowSpan
 
-namespace hovTileGeometry
+namespace hov::tile
 {
-using TileRays = vtkHighOrderProjectorTile::TileRays;
+using TileRays = hov::ProjectorTile::TileRays;
 constexpr int PixelLanes = 4; ///< pixels per full block of lanes (the rays' padding)
 
 /// Where clipped pixel lanes are written: the segment's ends, the scalar at
@@ -34,7 +34,7 @@ struct LaneOut
  * @p out (up to PixelLanes - 1 lanes more are written: the arrays are padded,
  * as are the tile's rays). Returns true if every pixel of the span simply
  * hits (else LaneHit() tells each pixel's case). In
- * vtkHighOrderProjectorTileLanes.cxx (also compiled for AVX2); hidden:
+ * hovProjectorTileLanes.cxx (also compiled for AVX2); hidden:
  * called directly, not through the library's symbol table.
  */
 #if defined(__GNUC__)
@@ -66,7 +66,7 @@ inline int LaneHit(const CellRecord& cell, const Ray& ray, double tIn, double tO
 
 }
 
-namespace hovTileGeometry
+namespace hov::tile
 {
 /// The tile columns [r0, r1] (tile coordinates; box columns [i0, i1]) of
 /// the pixel centres of the row at height @p y inside a projectable cell
@@ -79,7 +79,7 @@ inline bool ProjectedRowRange(
   {
     return false;
   }
-  constexpr double margin = vtkHighOrderProjectorTile::BoxMargin;
+  constexpr double margin = hov::BoxMargin;
   r0 = std::max(i0, CeilToInt(xMin - 0.5 - margin) - x0);
   r1 = std::min(i1, FloorToInt(xMax - 0.5 + margin) - x0);
   return r0 <= r1;
@@ -90,7 +90,7 @@ inline bool ProjectedRowRange(
  * origin x0, y0, width w), several rows per vector instruction with the same
  * results. Appends the non-empty rows' first pixel (j w + r0) and count to
  * @p start and @p count; returns how many. In
- * vtkHighOrderProjectorTileLanes.cxx (also compiled for AVX2).
+ * hovProjectorTileLanes.cxx (also compiled for AVX2).
  */
 #if defined(__GNUC__)
 __attribute__((visibility("hidden")))
@@ -100,15 +100,15 @@ int RowRanges(const ProjectedEdges& edges, int x0, int y0, int w, int i0, int i1
 }
 
 /// (Inline: called per row of every cell.)
-inline bool vtkHighOrderProjectorTile::RowRange(
-  const CellRecord& cell, const hovTileGeometry::ProjectedEdges& edges, int j, int& r0, int& r1) const
+inline bool hov::ProjectorTile::RowRange(
+  const CellRecord& cell, const hov::tile::ProjectedEdges& edges, int j, int& r0, int& r1) const
 {
   const Box& b = cell.PixelBox;
   r0 = std::max(b[0], this->X0) - this->X0;
   r1 = std::min(b[1], this->X0 + this->W - 1) - this->X0;
   if (cell.Projectable)
   {
-    return hovTileGeometry::ProjectedRowRange(edges, this->Y0 + j + 0.5, this->X0, r0, r1, r0, r1);
+    return hov::tile::ProjectedRowRange(edges, this->Y0 + j + 0.5, this->X0, r0, r1, r0, r1);
   }
   return r0 <= r1;
 }

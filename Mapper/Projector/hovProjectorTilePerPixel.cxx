@@ -1,7 +1,7 @@
-// The per-pixel ordering of vtkHighOrderProjectorTile (Settings::PerPixelSort):
+// The per-pixel ordering of hov::ProjectorTile (Settings::PerPixelSort):
 // every segment of a band of the tile's rows becomes a fragment; fragments are
 // bucketed by pixel, sorted by entry and composited pixel by pixel. Kept apart
-// from the cell-order loop (vtkHighOrderProjectorTile.cxx).
+// from the cell-order loop (hov::ProjectorTile.cxx).
 #include "hovProjectorTile.h"
 
 #include "hovProjectorTileLanes.h" // pixel lanes
@@ -11,9 +11,9 @@
 
 namespace
 {
-using Ray = vtkHighOrderViewRays::Ray;
-using CellRecord = vtkHighOrderProjectorTile::CellRecord;
-using namespace hovTileGeometry;
+using Ray = hov::ViewRays::Ray;
+using CellRecord = hov::ProjectorTile::CellRecord;
+using namespace hov::tile;
 
 /// Insertion sort: linear on the nearly sorted per-pixel lists.
 template <typename T>
@@ -37,7 +37,7 @@ void InsertionSort(T* first, T* last)
 }
 }
 
-void vtkHighOrderProjectorTile::Queue(
+void hov::ProjectorTile::Queue(
   size_t p, double tIn, double tOut, double sIn, double sOut, int interval)
 {
   if (this->NumQueued + 1 > this->QueueCapacity)
@@ -56,7 +56,7 @@ void vtkHighOrderProjectorTile::Queue(
 
 /// Visit every (pixel, segment) of ordered cell k in this tile.
 template <typename Visit>
-void vtkHighOrderProjectorTile::ForCellSegments(const Frame& frame, vtkIdType k, Visit&& visit)
+void hov::ProjectorTile::ForCellSegments(const Frame& frame, vtkIdType k, Visit&& visit)
 {
   const CellRecord& cell = (*frame.Cells)[k];
   const Box& b = cell.PixelBox;
@@ -98,8 +98,8 @@ void vtkHighOrderProjectorTile::ForCellSegments(const Frame& frame, vtkIdType k,
   }
 }
 
-void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdType* cells,
-  vtkIdType count, vtkHighOrderCellProjector::Statistics& st)
+void hov::ProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdType* cells,
+  vtkIdType count, Statistics& st)
 {
   // Band by band (about BandPixels pixels: whole rows of the tile), so that a band's fragments stay
   // in the cache while they are bucketed and sorted.
@@ -117,7 +117,7 @@ void vtkHighOrderProjectorTile::RenderPerPixel(const Frame& frame, const vtkIdTy
   this->RowEnd = this->H;
 }
 
-void vtkHighOrderProjectorTile::CollectFragments(
+void hov::ProjectorTile::CollectFragments(
   const Frame& frame, const vtkIdType* cells, vtkIdType count)
 {
   // The projector ordered the cells by depth: fragments arrive nearly sorted.
@@ -157,8 +157,8 @@ void vtkHighOrderProjectorTile::CollectFragments(
   }
 }
 
-void vtkHighOrderProjectorTile::CompositeFragments(
-  const Frame& frame, vtkHighOrderCellProjector::Statistics& st)
+void hov::ProjectorTile::CompositeFragments(
+  const Frame& frame, Statistics& st)
 {
   // Counting sort of the band's fragments by pixel (stable).
   const int first = this->RowBegin * this->W;

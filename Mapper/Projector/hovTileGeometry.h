@@ -1,43 +1,54 @@
 /**
- * @file    vtkHighOrderTileGeometry.h
- * @brief   Private to vtkHighOrderProjectorTile: exact ray clipping against a
+ * @file    hovTileGeometry.h
+ * @brief   Private to hov::ProjectorTile: exact ray clipping against a
  *          cell's four face planes and the window-x span of a projected cell
- *          on a pixel row (the pixel lanes: vtkHighOrderProjectorTileLanes.h).
+ *          on a pixel row (the pixel lanes: hovProjectorTileLanes.h).
  *
  * Header only (inline helpers of one translation unit), in namespace
  * hovTileGeometry.
- * @sa vtkHighOrderProjectorTile
+ * @sa hov::ProjectorTile
  */
-#ifndef vtkHighOrderTileGeometry_h
-#define vtkHighOrderTileGeometry_h
+#ifndef hovTileGeometry_h
+#define hovTileGeometry_h
 
 #include "hovProjectorTile.h" // CellRecord
 #include "hovViewRays.h"      // Ray
 
+#include "hovRayClip.h" // ClipFourPlanes
+
 #include <algorithm> // std::min, std::max
 
-namespace hovTileGeometry
+namespace hov::tile
 {
-using Ray = vtkHighOrderViewRays::Ray;
-using CellRecord = vtkHighOrderProjectorTile::CellRecord;
+using Ray = hov::ViewRays::Ray;
+using CellRecord = hov::ProjectorTile::CellRecord;
 
-/// Exact clip of a ray against four face planes, normalOf(k) . x <= offset[k];
-/// false if it misses. A ray parallel to a face and exactly in its plane
-/// (num == 0) is resolved by the symbolic displacement e px + e^2 py of
-/// vtkHighOrderViewRays: inside iff n.px < 0, or n.px == 0 and n.py < 0. The
-/// two cells sharing a face hold opposite canonical normals, so exactly one of
-/// them takes such a ray.
-template <typename NormalOf>
-inline bool ClipRayFaces(NormalOf&& normalOf, const double* offset, const Ray& ray, double tMax,
-  const glm::dvec3& px, const glm::dvec3& py, double& tIn, double& tOut)
+/// Exact clip of a ray against four face planes, (nx, ny, nz)[k] . x <= offset[k];
+/// false if it misses: hov::ClipFourPlanes (the pixel lanes' code, one ray).
+/// A ray parallel to a face is decided plane by plane: outside the plane, a
+/// miss; exactly in its plane (num == 0), by the symbolic displacement
+/// e px + e^2 py of hov::ViewRays: inside iff n.px < 0, or n.px == 0 and
+/// n.py < 0. The two cells sharing a face hold opposite canonical normals, so
+/// exactly one of them takes such a ray.
+inline bool ClipRayFaces(const double* nx, const double* ny, const double* nz,
+  const double* offset, const Ray& ray, double tMax, const glm::dvec3& px, const glm::dvec3& py,
+  double& tIn, double& tOut)
 {
+  const glm::dvec3& o = ray.Origin;
+  const glm::dvec3& d = ray.Direction;
+  bool parallel = false;
+  ClipFourPlanes(nx, ny, nz, offset, o.x, o.y, o.z, d.x, d.y, d.z, tMax, tIn, tOut, parallel);
+  if (!parallel)
+  {
+    return tIn < tOut;
+  }
   tIn = 0.0;
   tOut = tMax;
   for (int k = 0; k < 4; ++k)
   {
-    const glm::dvec3 normal = normalOf(k);
-    const double denom = glm::dot(normal, ray.Direction);
-    const double num = offset[k] - glm::dot(normal, ray.Origin);
+    const glm::dvec3 normal(nx[k], ny[k], nz[k]);
+    const double denom = glm::dot(normal, d);
+    const double num = offset[k] - glm::dot(normal, o);
     if (denom > 0.0)
     {
       tOut = std::min(tOut, num / denom);
@@ -52,8 +63,8 @@ inline bool ClipRayFaces(NormalOf&& normalOf, const double* offset, const Ray& r
     }
     else if (num == 0.0)
     {
-      const double nx = glm::dot(normal, px);
-      if (nx > 0.0 || (nx == 0.0 && glm::dot(normal, py) >= 0.0))
+      const double nPx = glm::dot(normal, px);
+      if (nPx > 0.0 || (nPx == 0.0 && glm::dot(normal, py) >= 0.0))
       {
         return false;
       }
@@ -66,9 +77,7 @@ inline bool ClipRayFaces(NormalOf&& normalOf, const double* offset, const Ray& r
 inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const glm::dvec3& px,
   const glm::dvec3& py, double& tIn, double& tOut)
 {
-  return ClipRayFaces(
-    [&](int k) { return glm::dvec3(cell.NX[k], cell.NY[k], cell.NZ[k]); }, cell.Offset, ray,
-    tMax, px, py, tIn, tOut);
+  return ClipRayFaces(cell.NX, cell.NY, cell.NZ, cell.Offset, ray, tMax, px, py, tIn, tOut);
 }
 
 /// True if the ray is parallel to a face (a zero denominator, as the lanes
@@ -164,7 +173,7 @@ struct ProjectedEdges
 constexpr vtkIdType PrefetchDistance = 4;
 
 /// Prefetch what the tile loop reads of ordered cell k.
-inline void PrefetchCell(const vtkHighOrderProjectorTile::Frame& frame, vtkIdType k)
+inline void PrefetchCell(const hov::ProjectorTile::Frame& frame, vtkIdType k)
 {
   const char* cell = reinterpret_cast<const char*>(&(*frame.Cells)[k]);
   for (size_t offset = 0; offset < sizeof(CellRecord); offset += 64)

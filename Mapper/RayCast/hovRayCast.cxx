@@ -1,4 +1,4 @@
-// CPU ray-cast render path for curved Lagrange cells: see vtkHighOrderRayCast.h.
+// CPU ray-cast render path for curved Lagrange cells: see hov::RayCast.h.
 #include "hovRayCast.h"
 
 #include "hovViewRays.h" // pixel rays
@@ -11,7 +11,7 @@
 #include <cmath>   // std::isfinite
 #include <cstdint> // 64-bit connectivity
 
-bool vtkHighOrderRayCast::SetInput(
+bool hov::RayCast::SetInput(
   vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, std::string* message)
 {
   this->Ready = false;
@@ -24,7 +24,7 @@ bool vtkHighOrderRayCast::SetInput(
     }
     return false;
   }
-  vtkHighOrderRayCastCells& mesh = this->Mesh;
+  hov::RayCastCells& mesh = this->Mesh;
   mesh.Convert(grid, scalars, component);
   hov::CurvedMeshInput input;
   input.Points = mesh.Points.data();
@@ -52,9 +52,9 @@ bool vtkHighOrderRayCast::SetInput(
   return this->Ready;
 }
 
-bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
+bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
   const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
-  Issues* issues, const vtkHighOrderProgressFunction& progress) const
+  Issues* issues, const hov::ProgressFunction& progress) const
 {
   std::atomic<long long> notConverged(0), notFinite(0), traced(0), segments(0), breakpoints(0);
   if (!this->Ready || !rgba)
@@ -63,14 +63,14 @@ bool vtkHighOrderRayCast::Render(const vtkHighOrderViewRays& rays, const hov::Tr
   }
   const int width = rays.GetWidth(), height = rays.GetHeight();
   // One row is one "tile" of the batch loop; rows not traced stay zero.
-  const int rowsDone = vtkHighOrderForTileBatches(height, progress, [&](vtkIdType j) {
+  const int rowsDone = hov::ForTileBatches(height, progress, [&](vtkIdType j) {
     {
       long long rowRays = 0, rowSegments = 0, rowBreakpoints = 0;
       for (int i = 0; i < width; ++i)
       {
         const size_t p = static_cast<size_t>(j) * width + i;
         double tMax = 0.0;
-        const vtkHighOrderViewRays::Ray ray = rays.TracedPixelRay(
+        const hov::ViewRays::Ray ray = rays.TracedPixelRay(
           i, static_cast<int>(j), depth ? static_cast<double>(depth[p]) : 1.0, tMax);
         hov::RGBA c;
         double e = 0.0;

@@ -1,16 +1,16 @@
 /**
- * @class   vtkHighOrderRayCast
+ * @class   hov::RayCast
  * @brief   CPU ray-cast render path for curved Lagrange cells (issue 6): the
  *          VTK adapter of hov::CurvedRayCaster (Module/Kernels).
  *
  * SetInput() converts a vtkUnstructuredGrid (points, its cells' types,
  * connectivity and the cell-data HigherOrderDegrees array, a point scalar
- * array) into a hov::CurvedMeshInput (vtkHighOrderRayCastCells: Lagrange
+ * array) into a hov::CurvedMeshInput (hov::RayCastCells: Lagrange
  * cells as they are, linear and quadratic cells converted to Lagrange
  * cells) and builds the caster: per cell its boundary patches and bounding
  * box, one BVH over the cells. Other cells, bad nodes and inverted cells are
  * skipped with one summary message.
- * Render() traces one ray per pixel (vtkHighOrderViewRays::TracedPixelRay:
+ * Render() traces one ray per pixel (hov::ViewRays::TracedPixelRay:
  * OpenGL pixel centres, clipping, an optional opaque depth) with
  * vtkSMPTools::For over rows; each ray's segments are categorized
  * (E / PS / S), split at their located breakpoints and integrated exactly in
@@ -22,10 +22,10 @@
  *
  * Thread safety: SetInput() is not thread safe; Render() runs its own
  * parallel loop and must not be called concurrently with SetInput().
- * @sa hovCurvedRayCaster.h, vtkHighOrderViewRays
+ * @sa hovCurvedRayCaster.h, hov::ViewRays
  */
-#ifndef vtkHighOrderRayCast_h
-#define vtkHighOrderRayCast_h
+#ifndef hovRayCast_h
+#define hovRayCast_h
 
 #include "hovCurvedRayCaster.h" // the caster
 #include "hovCurvedSegment.h"   // CurvedSegmentSettings
@@ -37,7 +37,10 @@
 #include <string> // messages
 
 class vtkDataArray;
-class vtkHighOrderViewRays;
+namespace hov
+{
+class ViewRays;
+}
 class vtkUnstructuredGrid;
 
 namespace hov
@@ -45,20 +48,22 @@ namespace hov
 class TransferFunction;
 }
 
-class vtkHighOrderRayCast
+namespace hov
+{
+class RayCast
 {
 public:
   /**
    * Prepare @p grid with the point scalars @p scalars (component
-   * @p component, -1: magnitude; cells converted by vtkHighOrderRayCastCells). Returns
+   * @p component, -1: magnitude; cells converted by hov::RayCastCells). Returns
    * false if no cell is usable; @p message receives a summary of skipped
    * cells or the reason for failure (empty if everything was usable).
    */
   bool SetInput(
     vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, std::string* message);
 
-  /// Conversion counts of the last SetInput() (vtkHighOrderRayCastCells).
-  const vtkHighOrderRayCastCells& GetConversion() const { return this->Mesh; }
+  /// Conversion counts of the last SetInput() (hov::RayCastCells).
+  const hov::RayCastCells& GetConversion() const { return this->Mesh; }
 
   /// Cells prepared / skipped by the last SetInput().
   long long GetNumberOfCells() const { return this->Caster.GetNumberOfCells(); }
@@ -83,16 +88,17 @@ public:
     bool Aborted = false; ///< @p progress returned true: the rows not traced are zero
   };
   /// @p progress (may be empty): called on the calling thread after each of
-  /// about vtkHighOrderProgressBatches batches of rows with the fraction done;
-  /// returning true stops the render (vtkHighOrderTileBatches.h).
-  bool Render(const vtkHighOrderViewRays& rays, const hov::TransferFunction& tf,
+  /// about hov::ProgressBatches batches of rows with the fraction done;
+  /// returning true stops the render (hovTileBatches.h).
+  bool Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
     const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
-    Issues* issues = nullptr, const vtkHighOrderProgressFunction& progress = {}) const;
+    Issues* issues = nullptr, const hov::ProgressFunction& progress = {}) const;
 
 private:
   hov::CurvedRayCaster Caster;
-  vtkHighOrderRayCastCells Mesh;
+  hov::RayCastCells Mesh;
   bool Ready = false;
 };
+}
 
 #endif

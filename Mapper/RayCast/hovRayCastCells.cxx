@@ -1,4 +1,4 @@
-// Grid -> Lagrange mesh of the ray caster: see vtkHighOrderRayCastCells.h.
+// Grid -> Lagrange mesh of the ray caster: see hov::RayCastCells.h.
 #include "hovRayCastCells.h"
 
 #include "hovLagrangeBasis.h" // node parametric coordinates, Jacobians
@@ -133,10 +133,10 @@ double PointValue(vtkDataArray* scalars, vtkIdType i, int component)
 }
 }
 
-vtkIdType vtkHighOrderRayCastCells::Convert(
+vtkIdType hov::RayCastCells::Convert(
   vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component)
 {
-  *this = vtkHighOrderRayCastCells();
+  *this = hov::RayCastCells();
   this->Offsets.push_back(0);
   const vtkIdType np = grid->GetNumberOfPoints();
   this->Cells = grid->GetNumberOfCells();
@@ -279,7 +279,7 @@ vtkIdType vtkHighOrderRayCastCells::Convert(
   return this->Native + this->Converted;
 }
 
-std::string vtkHighOrderRayCastCells::Summary() const
+std::string hov::RayCastCells::Summary() const
 {
   std::string out;
   if (this->Unsupported)

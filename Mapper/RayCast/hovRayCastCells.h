@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderRayCastCells
+ * @class   hov::RayCastCells
  * @brief   Converts a vtkUnstructuredGrid into the Lagrange mesh the ray
  *          caster (hov::CurvedRayCaster) takes: native Lagrange cells are
  *          copied, linear and quadratic cells are re-expressed as Lagrange
@@ -40,10 +40,10 @@
  * detected here).
  *
  * Thread safety: Convert() is re-entrant (no shared state).
- * @sa vtkHighOrderRayCast, hovLagrangeBasis.h
+ * @sa hov::RayCast, hovLagrangeBasis.h
  */
-#ifndef vtkHighOrderRayCastCells_h
-#define vtkHighOrderRayCastCells_h
+#ifndef hovRayCastCells_h
+#define hovRayCastCells_h
 
 #include "vtkType.h" // vtkIdType
 
@@ -54,7 +54,9 @@
 class vtkDataArray;
 class vtkUnstructuredGrid;
 
-class vtkHighOrderRayCastCells
+namespace hov
+{
+class RayCastCells
 {
 public:
   std::vector<double> Points, Scalars;
@@ -80,5 +82,6 @@ public:
   /// One line naming the skipped counts (empty if nothing was skipped).
   std::string Summary() const;
 };
+}
 
 #endif

@@ -1,15 +1,15 @@
 /**
- * @struct  vtkHighOrderRayCastState
+ * @struct  hov::RayCastState
  * @brief   Internal: what vtkHighOrderVolumeMapper keeps between RAY_CAST
  *          frames (Mapper/vtkHighOrderVolumeMapperRayCast.cxx): the prepared
  *          caster, the cache keys that decide when to rebuild it, its own
  *          transfer-function table and the error image.
  *
  * Thread safety: used by one mapper on the rendering thread.
- * @sa vtkHighOrderRayCast, vtkHighOrderVolumeMapper
+ * @sa hov::RayCast, vtkHighOrderVolumeMapper
  */
-#ifndef vtkHighOrderRayCastState_h
-#define vtkHighOrderRayCastState_h
+#ifndef hovRayCastState_h
+#define hovRayCastState_h
 
 #include "hovRayCast.h"          // the caster adapter
 #include "vtkHighOrderTransferFunction.h" // its table
@@ -21,9 +21,11 @@
 
 class vtkDataArray;
 
-struct vtkHighOrderRayCastState
+namespace hov
 {
-  vtkHighOrderRayCast Caster;
+struct RayCastState
+{
+  hov::RayCast Caster;
   bool Valid = false;
   vtkMTimeType InputTime = 0;
   vtkDataArray* Array = nullptr;
@@ -38,5 +40,6 @@ struct vtkHighOrderRayCastState
   /// interactive frame's time budget.
   double SecondsPerRay = 0.0;
 };
+}
 
 #endif

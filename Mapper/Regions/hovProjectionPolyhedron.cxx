@@ -10,8 +10,8 @@
 
 namespace
 {
-constexpr int MaxClip = 2 * vtkHighOrderProjectionPolyhedron::MaxFacePoints + 12;
-constexpr int Floats = vtkHighOrderProjectionVertex::FloatsPerVertex;
+constexpr int MaxClip = 2 * hov::ProjectionPolyhedron::MaxFacePoints + 12;
+constexpr int Floats = hov::ProjectionVertex::FloatsPerVertex;
 
 /// A number in [0, 4) increasing with the angle of (dx, dy) from the +x axis
 /// (counter-clockwise), like atan2 but without transcendental functions.
@@ -91,8 +91,8 @@ int ClipConvex(const glm::dvec2* subject, int n, const glm::dvec2* clipper, int 
 }
 }
 
-bool vtkHighOrderProjectionPolyhedron::SetTetra(
-  const vtkHighOrderTetraSetup::Tetra& t, const std::vector<glm::dvec3>& points, const Frame& f)
+bool hov::ProjectionPolyhedron::SetTetra(
+  const hov::CellSetup::Tetra& t, const std::vector<glm::dvec3>& points, const Frame& f)
 {
   this->NumCorners = 4;
   for (int i = 0; i < 4; ++i)
@@ -116,7 +116,7 @@ bool vtkHighOrderProjectionPolyhedron::SetTetra(
   return true;
 }
 
-void vtkHighOrderProjectionPolyhedron::SetTopology(hov::CellShape shape)
+void hov::ProjectionPolyhedron::SetTopology(hov::CellShape shape)
 {
   this->NumCellFaces = std::min(hov::CellFaceCount(shape), MaxFaces - 2);
   this->NumEdges = 0;
@@ -143,8 +143,8 @@ void vtkHighOrderProjectionPolyhedron::SetTopology(hov::CellShape shape)
   }
 }
 
-bool vtkHighOrderProjectionPolyhedron::SetGeneral(
-  const vtkHighOrderGeneralCells& cells, const vtkHighOrderGeneralCells::Cell& c, const Frame& f)
+bool hov::ProjectionPolyhedron::SetGeneral(
+  const hov::GeneralCells& cells, const hov::GeneralCells::Cell& c, const Frame& f)
 {
   const hov::CellShape geometry = hov::GeometryShape(c.Shape);
   this->NumCorners = std::min(hov::CellCornerCount(geometry), MaxCorners);
@@ -190,7 +190,7 @@ bool vtkHighOrderProjectionPolyhedron::SetGeneral(
   return true;
 }
 
-double vtkHighOrderProjectionPolyhedron::Field(const glm::dvec3& x) const
+double hov::ProjectionPolyhedron::Field(const glm::dvec3& x) const
 {
   if (!this->General)
   {
@@ -203,7 +203,7 @@ double vtkHighOrderProjectionPolyhedron::Field(const glm::dvec3& x) const
   return hov::InterpolateCellScalar(this->General->Shape, this->NodeScalars, pc);
 }
 
-void vtkHighOrderProjectionPolyhedron::AddPoint(int face, const glm::dvec4& clip)
+void hov::ProjectionPolyhedron::AddPoint(int face, const glm::dvec4& clip)
 {
   int& n = this->FaceSize[face];
   if (n < MaxFacePoints)
@@ -212,7 +212,7 @@ void vtkHighOrderProjectionPolyhedron::AddPoint(int face, const glm::dvec4& clip
   }
 }
 
-void vtkHighOrderProjectionPolyhedron::AddEdgeLevelPoints(
+void hov::ProjectionPolyhedron::AddEdgeLevelPoints(
   int face, int i, int j, double lo, double hi, bool once)
 {
   if (this->Gid[j] < this->Gid[i])
@@ -234,7 +234,7 @@ void vtkHighOrderProjectionPolyhedron::AddEdgeLevelPoints(
   }
 }
 
-int vtkHighOrderProjectionPolyhedron::EmitSlab(int k, const Frame& f, vtkHighOrderProjectionChunk& out)
+int hov::ProjectionPolyhedron::EmitSlab(int k, const Frame& f, hov::ProjectionChunk& out)
 {
   const std::vector<double>& x = f.Tf->GetNodes();
   const int n = static_cast<int>(x.size());
@@ -286,7 +286,7 @@ int vtkHighOrderProjectionPolyhedron::EmitSlab(int k, const Frame& f, vtkHighOrd
   return this->Overlay(k, std::max(lo, this->SMin), std::min(hi, this->SMax), f, out);
 }
 
-bool vtkHighOrderProjectionPolyhedron::Classify()
+bool hov::ProjectionPolyhedron::Classify()
 {
   glm::dvec3 centroid(0.0);
   int count = 0;
@@ -378,8 +378,8 @@ bool vtkHighOrderProjectionPolyhedron::Classify()
   return this->NumFront > 0 && this->NumBack > 0;
 }
 
-int vtkHighOrderProjectionPolyhedron::Overlay(
-  int k, double lo, double hi, const Frame& f, vtkHighOrderProjectionChunk& out)
+int hov::ProjectionPolyhedron::Overlay(
+  int k, double lo, double hi, const Frame& f, hov::ProjectionChunk& out)
 {
   int triangles = 0;
   glm::dvec2 region[MaxClip];
@@ -419,14 +419,14 @@ int vtkHighOrderProjectionPolyhedron::Overlay(
   return triangles;
 }
 
-bool vtkHighOrderProjectionPolyhedron::EmitVertex(const glm::dvec2& p, const Face2D& front,
+bool hov::ProjectionPolyhedron::EmitVertex(const glm::dvec2& p, const Face2D& front,
   const Face2D& back, int k, double lo, double hi, const Frame& f, float* out) const
 {
   const double zFront = front.A * p.x + front.B * p.y + front.C;
   const double zBack = std::max(zFront, back.A * p.x + back.B * p.y + back.C);
   glm::dvec3 pf, pb;
-  const double w = vtkHighOrderProjectionVertex::Unproject(f, p.x, p.y, zFront, zBack, pf, pb);
+  const double w = hov::ProjectionVertex::Unproject(f, p.x, p.y, zFront, zBack, pf, pb);
   const double sFront = std::min(std::max(this->Field(pf), lo), hi);
   const double sBack = std::min(std::max(this->Field(pb), lo), hi);
-  return vtkHighOrderProjectionVertex::Write(f, k, p.x, p.y, zFront, w, pf, pb, sFront, sBack, out);
+  return hov::ProjectionVertex::Write(f, k, p.x, p.y, zFront, w, pf, pb, sFront, sBack, out);
 }

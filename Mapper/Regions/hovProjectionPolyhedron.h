@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderProjectionPolyhedron
+ * @class   hov::ProjectionPolyhedron
  * @brief   One convex cell of the OpenGL projection: its transfer-function
  *          slabs as convex polyhedra, their homogeneous projected regions and
  *          the triangles with per-vertex attributes (HIAC section 7).
@@ -25,14 +25,14 @@
  * edge-on are dropped. Every front face is clipped against every back face
  * (Sutherland-Hodgman on convex polygons): the pieces are the regions of
  * the subdivision by all projected edges; they are fan-triangulated and each
- * vertex gets its attributes (vtkHighOrderProjectionVertex). Tetrahedra in
- * one slab take the faster vtkHighOrderProjectionTetra instead.
+ * vertex gets its attributes (hov::ProjectionVertex). Tetrahedra in
+ * one slab take the faster hov::ProjectionTetra instead.
  *
  * Thread safety: one object per thread.
- * @sa vtkHighOrderProjectionRegions
+ * @sa hov::ProjectionRegions
  */
-#ifndef vtkHighOrderProjectionPolyhedron_h
-#define vtkHighOrderProjectionPolyhedron_h
+#ifndef hovProjectionPolyhedron_h
+#define hovProjectionPolyhedron_h
 
 #include "hovProjectionVertex.h" // frame, chunk, vertex record
 #include "hovCellSetup.h"       // Tetra, general cells
@@ -41,21 +41,23 @@
 
 #include <vector> // points
 
-class vtkHighOrderProjectionPolyhedron
+namespace hov
+{
+class ProjectionPolyhedron
 {
 public:
   static constexpr int MaxFaces = 8;
   static constexpr int MaxFacePoints = 10;
   static constexpr int MaxCorners = 8;
 
-  using Frame = vtkHighOrderProjectionFrame;
+  using Frame = hov::ProjectionFrame;
 
   /// A linear tetrahedron; false if a corner is on or behind the eye plane.
   bool SetTetra(
-    const vtkHighOrderTetraSetup::Tetra& t, const std::vector<glm::dvec3>& points, const Frame& f);
+    const hov::CellSetup::Tetra& t, const std::vector<glm::dvec3>& points, const Frame& f);
 
   /// A non-tetrahedral cell (its corners); false if a corner is on or behind the eye plane.
-  bool SetGeneral(const vtkHighOrderGeneralCells& cells, const vtkHighOrderGeneralCells::Cell& c,
+  bool SetGeneral(const hov::GeneralCells& cells, const hov::GeneralCells::Cell& c,
     const Frame& f);
 
   /// Range of the corner scalars (the slabs that can be non-empty).
@@ -75,7 +77,7 @@ public:
    * hov::TransferFunction::FindIntervalUpward) appended to @p out (each
    * region's vertices once, fan-triangulated by indices); returns their number.
    */
-  int EmitSlab(int k, const Frame& f, vtkHighOrderProjectionChunk& out);
+  int EmitSlab(int k, const Frame& f, hov::ProjectionChunk& out);
 
 private:
   struct Face2D
@@ -89,7 +91,7 @@ private:
   void AddEdgeLevelPoints(int face, int i, int j, double lo, double hi, bool once = false);
   /// Faces -> front/back Face2D lists; false if nothing is visible.
   bool Classify();
-  int Overlay(int k, double lo, double hi, const Frame& f, vtkHighOrderProjectionChunk& out);
+  int Overlay(int k, double lo, double hi, const Frame& f, hov::ProjectionChunk& out);
   /// False if a value is not finite.
   bool EmitVertex(const glm::dvec2& p, const Face2D& front, const Face2D& back, int k, double lo,
     double hi, const Frame& f, float* out) const;
@@ -114,7 +116,7 @@ private:
   int NumEdges = 0;
   int Edges[12][2];
   // General cells: the cell's own field.
-  const vtkHighOrderGeneralCells::Cell* General = nullptr;
+  const hov::GeneralCells::Cell* General = nullptr;
   const double* Nodes = nullptr;
   const double* NodeScalars = nullptr;
 
@@ -126,5 +128,6 @@ private:
   int NumFront = 0, NumBack = 0;
   Face2D Front[MaxFaces], Back[MaxFaces];
 };
+}
 
 #endif

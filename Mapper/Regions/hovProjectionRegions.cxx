@@ -15,8 +15,8 @@
 
 namespace
 {
-using Poly = vtkHighOrderProjectionPolyhedron;
-using Statistics = vtkHighOrderProjectionRegions::Statistics;
+using Poly = hov::ProjectionPolyhedron;
+using Statistics = hov::ProjectionRegions::Statistics;
 
 /// Ask for the cache line of @p p (a hint; GCC 12 drops __builtin_prefetch here).
 inline void Prefetch(const void* p)
@@ -27,7 +27,7 @@ inline void Prefetch(const void* p)
   (void)p;
 #endif
 }
-constexpr vtkIdType CellsPerChunk = vtkHighOrderProjectionRegions::CellsPerChunk;
+constexpr vtkIdType CellsPerChunk = hov::ProjectionRegions::CellsPerChunk;
 
 /// The slabs of one cell in back-to-front order.
 struct SlabOrder
@@ -106,9 +106,9 @@ namespace
 /// Per-thread state of Build: the general path's polyhedron and the slab order.
 struct CellEmitter
 {
-  const vtkHighOrderTetraSetup* Setup;
+  const hov::CellSetup* Setup;
   const hov::TransferFunction* Tf;
-  const vtkHighOrderProjectionRegions::Settings* Settings;
+  const hov::ProjectionRegions::Settings* Settings;
   const Poly::Frame* Frame;
   SlabOrder Order;
   Poly Polyhedron;
@@ -131,7 +131,7 @@ struct CellEmitter
     }
     if (i + near < n && order[i + near] >= 0 && order[i + near] < numTetras)
     {
-      const vtkHighOrderTetraSetup::Tetra& t = tetras[order[i + near]];
+      const hov::CellSetup::Tetra& t = tetras[order[i + near]];
       for (int k = 0; k < 4; ++k)
       {
         ::Prefetch(&this->Setup->GetPoints()[t.Points[k]]);
@@ -140,10 +140,10 @@ struct CellEmitter
   }
 
   /// The triangles of rendered cell @p cell into @p out.
-  void Emit(vtkIdType cell, vtkHighOrderProjectionChunk& out, Statistics& st)
+  void Emit(vtkIdType cell, hov::ProjectionChunk& out, Statistics& st)
   {
     const auto& tetras = this->Setup->GetTetras();
-    const vtkHighOrderGeneralCells& general = this->Setup->GetGeneralCells();
+    const hov::GeneralCells& general = this->Setup->GetGeneralCells();
     const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
     ++st.Cells;
     if (cell < 0 || cell >= numTetras + static_cast<vtkIdType>(general.GetCells().size()))
@@ -179,10 +179,10 @@ struct CellEmitter
     }
   }
 
-  /// A tetrahedron in at most one visible slab by vtkHighOrderProjectionTetra;
+  /// A tetrahedron in at most one visible slab by hov::ProjectionTetra;
   /// false if it needs the general path.
-  bool EmitFastTetra(const vtkHighOrderTetraSetup::Tetra& t, bool wvg,
-    vtkHighOrderProjectionChunk& out, Statistics& st)
+  bool EmitFastTetra(const hov::CellSetup::Tetra& t, bool wvg,
+    hov::ProjectionChunk& out, Statistics& st)
   {
     const double smin = t.ScalarMin, smax = t.ScalarMax;
     this->Order.Build(*this->Tf, smin, smax, wvg, 0.0, 1); // no sorting needed for one slab
@@ -198,13 +198,13 @@ struct CellEmitter
     const std::vector<double>& x = this->Tf->GetNodes();
     const double lo = k < 0 ? smin : std::max(x[k], smin);
     const double hi = k + 1 < static_cast<int>(x.size()) ? std::min(x[k + 1], smax) : smax;
-    const int n = vtkHighOrderProjectionTetra::Emit(
+    const int n = hov::ProjectionTetra::Emit(
       t, this->Setup->GetPoints(), *this->Frame, k, lo, hi, out);
-    if (n == vtkHighOrderProjectionTetra::Degenerate)
+    if (n == hov::ProjectionTetra::Degenerate)
     {
       return false;
     }
-    if (n == vtkHighOrderProjectionTetra::BehindEye)
+    if (n == hov::ProjectionTetra::BehindEye)
     {
       ++st.BehindEye;
       return true;
@@ -217,8 +217,8 @@ struct CellEmitter
 };
 }
 
-vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
-  const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront, vtkIdType begin,
+hov::ProjectionRegions::Statistics hov::ProjectionRegions::Build(
+  const hov::CellSetup& setup, const std::vector<vtkIdType>& backToFront, vtkIdType begin,
   vtkIdType end, const hov::TransferFunction& tf, const Settings& settings,
   Geometry& geometry) const
 {
@@ -263,7 +263,7 @@ vtkHighOrderProjectionRegions::Statistics vtkHighOrderProjectionRegions::Build(
   geometry.IndexOffsets.resize(numChunks + 1);
   for (vtkIdType c = 0; c < numChunks; ++c)
   {
-    const vtkHighOrderProjectionChunk& chunk = geometry.Chunks[c];
+    const hov::ProjectionChunk& chunk = geometry.Chunks[c];
     geometry.VertexOffsets[c + 1] = geometry.VertexOffsets[c] + chunk.NumberOfVertices();
     geometry.IndexOffsets[c + 1] = geometry.IndexOffsets[c] + chunk.Indices.Size();
     total.Add(stats[c]);
@@ -358,10 +358,10 @@ void RadixSortByKey(std::vector<uint64_t>& items, std::vector<uint64_t>& scratch
 }
 }
 
-void vtkHighOrderProjectionRegions::CentroidOrder(
-  const vtkHighOrderTetraSetup& setup, const Settings& settings, std::vector<vtkIdType>& backToFront)
+void hov::ProjectionRegions::CentroidOrder(
+  const hov::CellSetup& setup, const Settings& settings, std::vector<vtkIdType>& backToFront)
 {
-  const std::vector<vtkHighOrderTetraSetup::Tetra>& tetras = setup.GetTetras();
+  const std::vector<hov::CellSetup::Tetra>& tetras = setup.GetTetras();
   const auto& general = setup.GetGeneralCells();
   const vtkIdType numTetras = static_cast<vtkIdType>(tetras.size());
   const vtkIdType n = setup.GetNumberOfRenderedCells();

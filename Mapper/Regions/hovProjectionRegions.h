@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderProjectionRegions
+ * @class   hov::ProjectionRegions
  * @brief   CPU side of the OpenGL cell projection (HIAC section 7): the
  *          homogeneous regions of every projected convex cell and transfer-
  *          function slab, as triangles with per-vertex (L, tau_avg, colour).
@@ -34,30 +34,30 @@
  * their corner scalar range, with the scalar at the front and back points
  * from the cell's own field; a node inside cuts them into slabs whose caps
  * pass through the edge crossings (approximate: counted in CutGeneral; see
- * vtkHighOrderProjectionPolyhedron). Slabs of a general cell are ordered by
+ * hov::ProjectionPolyhedron). Slabs of a general cell are ordered by
  * the least-squares affine fit of its corner scalars.
  *
  * A linear tetrahedron with no transfer-function node strictly inside its
  * scalar range (one slab: most cells of a smooth field) takes the fast path
- * vtkHighOrderProjectionTetra (Shirley-Tuchman classification: the same
+ * hov::ProjectionTetra (Shirley-Tuchman classification: the same
  * regions, 3 or 4 triangles, 4 or 5 vertices) and falls back to the general
  * path only if its projection is degenerate.
  *
  * Cells with a corner on or behind the eye plane (clip w <= 0) are skipped
- * and counted. Output: indexed triangles (vtkHighOrderProjectionVertex
+ * and counted. Output: indexed triangles (hov::ProjectionVertex
  * records) in chunks of consecutive cells, each chunk's indices local to it;
  * Geometry::VertexOffsets / IndexOffsets place the chunks in one buffer.
  * Build() takes a range of the order, so that a caller can build and draw
- * the cells group by group (vtkHighOrderProjectionRenderer).
+ * the cells group by group (hov::ProjectionRenderer).
  *
  * Thread safety: Build() runs the cells in parallel (vtkSMPTools, one chunk
  * per CellsPerChunk cells, concatenated in order: the output does not depend
  * on the thread count); it reads the tetrahedra a few cells ahead into the
  * cache (the order is random in memory).
- * @sa vtkHighOrderProjectionRenderer, hovProjectionColor.h, vtkHighOrderVolumeMapper
+ * @sa hov::ProjectionRenderer, hovProjectionColor.h, vtkHighOrderVolumeMapper
  */
-#ifndef vtkHighOrderProjectionRegions_h
-#define vtkHighOrderProjectionRegions_h
+#ifndef hovProjectionRegions_h
+#define hovProjectionRegions_h
 
 #include "hovProjectionColor.h"           // ProjectionColorMethod, SegmentColorTable
 #include "hovProjectionVertex.h" // chunks
@@ -69,22 +69,27 @@
 #include <cstdint> // uint64_t
 #include <vector>  // buffers
 
-class vtkHighOrderTetraSetup;
+namespace hov
+{
+class CellSetup;
+}
 namespace hov
 {
 class TransferFunction;
 }
 
-class vtkHighOrderProjectionRegions
+namespace hov
+{
+class ProjectionRegions
 {
 public:
-  static constexpr int FloatsPerVertex = vtkHighOrderProjectionVertex::FloatsPerVertex;
+  static constexpr int FloatsPerVertex = hov::ProjectionVertex::FloatsPerVertex;
   static constexpr long long CellsPerChunk = 512;
 
   /// The triangles of a frame; the chunks keep their storage across frames.
   struct Geometry
   {
-    std::vector<vtkHighOrderProjectionChunk> Chunks;
+    std::vector<hov::ProjectionChunk> Chunks;
     std::vector<size_t> VertexOffsets; ///< first vertex of each chunk, then the total
     std::vector<size_t> IndexOffsets;  ///< first index of each chunk, then the total
     size_t GetNumberOfVertices() const { return this->VertexOffsets.empty() ? 0 : this->VertexOffsets.back(); }
@@ -109,7 +114,7 @@ public:
     glm::dvec3 Eye{ 0.0 };       ///< perspective: camera position (dataset coordinates)
     glm::dvec3 Direction{ 0.0 }; ///< parallel: direction of projection (dataset coordinates)
     /// GPU-compatible semantics: the refined extinction table (Build()'s table
-    /// is then the linear-opacity one; vtkHighOrderProjectionFrame).
+    /// is then the linear-opacity one; hov::ProjectionFrame).
     const hov::TransferFunction* ExtinctionTf = nullptr;
     double InverseUnit = 1.0;
   };
@@ -121,7 +126,7 @@ public:
     vtkIdType Triangles = 0;
     vtkIdType BehindEye = 0;  ///< cells skipped: a corner on or behind the eye plane
     vtkIdType CutGeneral = 0; ///< non-tetrahedral cells cut by transfer-function nodes (approximate)
-    vtkIdType FastTetras = 0; ///< tetrahedra drawn by vtkHighOrderProjectionTetra
+    vtkIdType FastTetras = 0; ///< tetrahedra drawn by hov::ProjectionTetra
 
     void Add(const Statistics& other)
     {
@@ -138,7 +143,7 @@ public:
    * Triangles of the rendered cells backToFront[begin .. end) of @p setup
    * (rendered-cell indices, back to front) into @p geometry (cleared first).
    */
-  Statistics Build(const vtkHighOrderTetraSetup& setup, const std::vector<vtkIdType>& backToFront,
+  Statistics Build(const hov::CellSetup& setup, const std::vector<vtkIdType>& backToFront,
     vtkIdType begin, vtkIdType end, const hov::TransferFunction& tf, const Settings& settings,
     Geometry& geometry) const;
 
@@ -150,12 +155,13 @@ public:
    * parallel, then a radix sort (linear time); storage kept across frames.
    * At most 2^32 cells.
    */
-  void CentroidOrder(const vtkHighOrderTetraSetup& setup, const Settings& settings,
+  void CentroidOrder(const hov::CellSetup& setup, const Settings& settings,
     std::vector<vtkIdType>& backToFront);
 
 private:
   hov::SegmentColorTable ColorTable;
   std::vector<uint64_t> OrderItems, OrderScratch; ///< (key bits << 32 | cell)
 };
+}
 
 #endif

@@ -4,7 +4,7 @@
 
 namespace
 {
-using Vertex = vtkHighOrderProjectionVertex;
+using Vertex = hov::ProjectionVertex;
 
 /// The tetrahedron in clip and NDC coordinates, its corner scalars clamped to the slab.
 struct Projected
@@ -12,8 +12,8 @@ struct Projected
   glm::dvec4 Clip[4];
   glm::dvec3 Ndc[4];
   double S[4];
-  const vtkHighOrderTetraSetup::Tetra* T;
-  const vtkHighOrderProjectionFrame* F;
+  const hov::CellSetup::Tetra* T;
+  const hov::ProjectionFrame* F;
   int K;
   double Lo, Hi;
 
@@ -43,7 +43,7 @@ bool Opposite(double a, double b)
  * (cyclically). False if the thick vertex is not finite (@p out unchanged).
  */
 bool EmitFan(const Projected& p, double x, double y, double zFront, double zBack,
-  const int* corners, int n, vtkHighOrderProjectionChunk& out)
+  const int* corners, int n, hov::ProjectionChunk& out)
 {
   unsigned int first = 0;
   float* v = out.AddVertices(n + 1, first);
@@ -71,7 +71,7 @@ bool EmitFan(const Projected& p, double x, double y, double zFront, double zBack
 
 /// Class 2: the projected edges a-b and c-d cross (orientations o1..o4).
 int EmitCrossing(const Projected& p, int a, int b, int c, int d, double o1, double o2, double o3,
-  double o4, vtkHighOrderProjectionChunk& out)
+  double o4, hov::ProjectionChunk& out)
 {
   const double alpha = o3 / (o3 - o4); // along a -> b
   const double beta = o1 / (o1 - o2);  // along c -> d
@@ -80,11 +80,11 @@ int EmitCrossing(const Projected& p, int a, int b, int c, int d, double o1, doub
   const int corners[4] = { a, c, b, d };
   return EmitFan(p, onAB.x, onAB.y, std::min(onAB.z, zCD), std::max(onAB.z, zCD), corners, 4, out)
     ? 4
-    : vtkHighOrderProjectionTetra::Degenerate;
+    : hov::ProjectionTetra::Degenerate;
 }
 
 /// Class 1: corner i projects strictly inside the triangle (j, k, l).
-int EmitInside(const Projected& p, int i, int j, int k, int l, vtkHighOrderProjectionChunk& out)
+int EmitInside(const Projected& p, int i, int j, int k, int l, hov::ProjectionChunk& out)
 {
   const double total = p.Orient(j, k, l);
   const double zFace = (p.Orient(i, k, l) * p.Ndc[j].z + p.Orient(j, i, l) * p.Ndc[k].z +
@@ -95,13 +95,13 @@ int EmitInside(const Projected& p, int i, int j, int k, int l, vtkHighOrderProje
   return EmitFan(p, p.Ndc[i].x, p.Ndc[i].y, std::min(zCorner, zFace), std::max(zCorner, zFace),
            corners, 3, out)
     ? 3
-    : vtkHighOrderProjectionTetra::Degenerate;
+    : hov::ProjectionTetra::Degenerate;
 }
 }
 
-int vtkHighOrderProjectionTetra::Emit(const vtkHighOrderTetraSetup::Tetra& t,
-  const std::vector<glm::dvec3>& points, const vtkHighOrderProjectionFrame& f, int k, double lo,
-  double hi, vtkHighOrderProjectionChunk& out)
+int hov::ProjectionTetra::Emit(const hov::CellSetup::Tetra& t,
+  const std::vector<glm::dvec3>& points, const hov::ProjectionFrame& f, int k, double lo,
+  double hi, hov::ProjectionChunk& out)
 {
   Projected p{};
   p.T = &t;

@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderProjectionTetra
+ * @class   hov::ProjectionTetra
  * @brief   Fast path of the OpenGL cell projection for a linear tetrahedron
  *          that lies in one transfer-function slab (HIAC section 7 with
  *          Shirley-Tuchman's classification instead of polygon clipping).
@@ -11,11 +11,11 @@
  * triangles around that "thick" point, the corner in front of or behind the
  * opposite face) or two projected edges cross (class 2: four triangles
  * around the crossing). These are exactly the regions of the front/back face
- * overlay of vtkHighOrderProjectionPolyhedron, found with four orientation
+ * overlay of hov::ProjectionPolyhedron, found with four orientation
  * tests instead of clipping. The thick vertex gets the full segment
  * (front and back points unprojected in double, L in dataset units, the
  * cell's affine field at both ends clamped to the slab, colour by M0-M3);
- * the outer corners have L = 0 (vtkHighOrderProjectionVertex::WriteCorner).
+ * the outer corners have L = 0 (hov::ProjectionVertex::WriteCorner).
  * Each triangle lies in one front face, so the perspective-correct
  * interpolation of the vertex quantities is the same as on the regions of
  * the general path.
@@ -25,17 +25,19 @@
  * seen edge-on: no strict class) are left to the general path.
  *
  * Thread safety: re-entrant.
- * @sa vtkHighOrderProjectionPolyhedron, vtkHighOrderProjectionRegions
+ * @sa hov::ProjectionPolyhedron, hov::ProjectionRegions
  */
-#ifndef vtkHighOrderProjectionTetra_h
-#define vtkHighOrderProjectionTetra_h
+#ifndef hovProjectionTetra_h
+#define hovProjectionTetra_h
 
 #include "hovProjectionVertex.h" // frame, chunk
 #include "hovCellSetup.h"       // Tetra
 
 #include <vector> // points
 
-class vtkHighOrderProjectionTetra
+namespace hov
+{
+class ProjectionTetra
 {
 public:
   /// Result of Emit: a number of triangles (3 or 4), or one of these.
@@ -50,9 +52,10 @@ public:
    * clamped to [@p lo, @p hi], into @p out. Returns the number of triangles
    * or BehindEye / Degenerate (then @p out is unchanged).
    */
-  static int Emit(const vtkHighOrderTetraSetup::Tetra& t, const std::vector<glm::dvec3>& points,
-    const vtkHighOrderProjectionFrame& f, int k, double lo, double hi,
-    vtkHighOrderProjectionChunk& out);
+  static int Emit(const hov::CellSetup::Tetra& t, const std::vector<glm::dvec3>& points,
+    const hov::ProjectionFrame& f, int k, double lo, double hi,
+    hov::ProjectionChunk& out);
 };
+}
 
 #endif

@@ -5,19 +5,19 @@
 #include <algorithm> // std::min
 #include <cmath>     // std::isfinite
 
-unsigned int vtkHighOrderProjectionChunk::NumberOfVertices() const
+unsigned int hov::ProjectionChunk::NumberOfVertices() const
 {
   return static_cast<unsigned int>(
-    this->Vertices.Size() / vtkHighOrderProjectionVertex::FloatsPerVertex);
+    this->Vertices.Size() / hov::ProjectionVertex::FloatsPerVertex);
 }
 
-float* vtkHighOrderProjectionChunk::AddVertices(int n, unsigned int& first)
+float* hov::ProjectionChunk::AddVertices(int n, unsigned int& first)
 {
   first = this->NumberOfVertices();
-  return this->Vertices.Append(static_cast<size_t>(n) * vtkHighOrderProjectionVertex::FloatsPerVertex);
+  return this->Vertices.Append(static_cast<size_t>(n) * hov::ProjectionVertex::FloatsPerVertex);
 }
 
-double vtkHighOrderProjectionVertex::Unproject(const vtkHighOrderProjectionFrame& f, double x,
+double hov::ProjectionVertex::Unproject(const hov::ProjectionFrame& f, double x,
   double y, double zFront, double zBack, glm::dvec3& front, glm::dvec3& back)
 {
   const glm::dvec4 hf = f.Inverse * glm::dvec4(x, y, zFront, 1.0);
@@ -53,7 +53,7 @@ bool OpaqueInterval(const hov::TransferFunction& tf, int k)
 }
 }
 
-bool vtkHighOrderProjectionVertex::Write(const vtkHighOrderProjectionFrame& f, int k, double x,
+bool hov::ProjectionVertex::Write(const hov::ProjectionFrame& f, int k, double x,
   double y, double zFront, double w, const glm::dvec3& front, const glm::dvec3& back,
   double sFront, double sBack, float* out)
 {
@@ -106,8 +106,8 @@ bool vtkHighOrderProjectionVertex::Write(const vtkHighOrderProjectionFrame& f, i
   return finite;
 }
 
-void vtkHighOrderProjectionVertex::WriteCorner(
-  const vtkHighOrderProjectionFrame& f, int k, const glm::dvec4& clip, double s, float* out)
+void hov::ProjectionVertex::WriteCorner(
+  const hov::ProjectionFrame& f, int k, const glm::dvec4& clip, double s, float* out)
 {
   hov::SegmentEnd e;
   f.Tf->Evaluate(k, s, f.Emission == hov::EmissionModel::WilhelmsVanGelder, e);

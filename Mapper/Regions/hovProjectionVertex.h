@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderProjectionVertex
+ * @class   hov::ProjectionVertex
  * @brief   The region vertex record of the OpenGL cell projection (HIAC
  *          section 7), the per-frame constants it is computed from and the
  *          indexed triangle chunks the CPU side fills in parallel.
@@ -14,7 +14,7 @@
  *    front face, so perspective-correct interpolation is exact for them; the
  *    vertex shader recovers P from the clip position (clip -> dataset matrix)
  *    and the fragment shader L = |P| (1/mu - 1), tau_avg = (tauFront +
- *    (tauBack mu)/mu)/2 (vtkHighOrderProjectionFS.glsl);
+ *    (tauBack mu)/mu)/2 (hovProjectionFS.glsl);
  *  - 7-9: colour by method M0-M3 (hov::ComputeProjectionVertex);
  *  - 10: the vertex opacity 1 - exp(-L tau_avg) (method M0 only).
  * GPU-compatible semantics (Frame::ExtinctionTf set): tau = -ln(1 - a)/u is
@@ -28,10 +28,10 @@
  * colour there (the L -> 0 limit of every method), its opacity 0.
  *
  * Thread safety: the functions are re-entrant; a Chunk belongs to one thread.
- * @sa vtkHighOrderProjectionRegions, vtkHighOrderProjectionTetra, hovProjectionColor.h
+ * @sa hov::ProjectionRegions, hov::ProjectionTetra, hovProjectionColor.h
  */
-#ifndef vtkHighOrderProjectionVertex_h
-#define vtkHighOrderProjectionVertex_h
+#ifndef hovProjectionVertex_h
+#define hovProjectionVertex_h
 
 #include "hovProjectionColor.h" // methods, colour table
 
@@ -47,7 +47,9 @@ class TransferFunction;
 }
 
 /// Per-frame constants of the region vertices.
-struct vtkHighOrderProjectionFrame
+namespace hov
+{
+struct ProjectionFrame
 {
   glm::dmat4 Composite{ 1.0 }; ///< dataset -> clip
   glm::dmat4 Inverse{ 1.0 };   ///< clip -> dataset (homogeneous)
@@ -63,11 +65,14 @@ struct vtkHighOrderProjectionFrame
   const hov::TransferFunction* ExtinctionTf = nullptr;
   double InverseUnit = 1.0; ///< 1 / unit distance (GPU-compatible semantics)
 };
+}
 
 /// A growable array of plain values that never zero-fills and keeps its
 /// storage across frames (Clear() only resets the size).
+namespace hov
+{
 template <typename T>
-class vtkHighOrderProjectionArray
+class ProjectionArray
 {
 public:
   size_t Size() const { return this->Count; }
@@ -95,12 +100,15 @@ private:
   std::unique_ptr<T[]> Storage;
   size_t Count = 0, Capacity = 0;
 };
+}
 
 /// Indexed triangles of a run of consecutive cells (indices local to the chunk).
-struct vtkHighOrderProjectionChunk
+namespace hov
 {
-  vtkHighOrderProjectionArray<float> Vertices;
-  vtkHighOrderProjectionArray<unsigned int> Indices;
+struct ProjectionChunk
+{
+  hov::ProjectionArray<float> Vertices;
+  hov::ProjectionArray<unsigned int> Indices;
 
   unsigned int NumberOfVertices() const;
   /// Room for @p n vertices; @p first receives the local index of the first.
@@ -111,8 +119,11 @@ struct vtkHighOrderProjectionChunk
     this->Indices.Clear();
   }
 };
+}
 
-class vtkHighOrderProjectionVertex
+namespace hov
+{
+class ProjectionVertex
 {
 public:
   static constexpr int FloatsPerVertex = 11;
@@ -121,7 +132,7 @@ public:
    * Unproject the NDC points (x, y, zFront) and (x, y, zBack) to dataset
    * coordinates @p front and @p back; returns the clip w of the front point.
    */
-  static double Unproject(const vtkHighOrderProjectionFrame& f, double x, double y, double zFront,
+  static double Unproject(const hov::ProjectionFrame& f, double x, double y, double zFront,
     double zBack, glm::dvec3& front, glm::dvec3& back);
 
   /**
@@ -130,13 +141,14 @@ public:
    * @p sFront, @p sBack on transfer-function interval @p k. False if a value
    * is not finite (nothing useful to draw).
    */
-  static bool Write(const vtkHighOrderProjectionFrame& f, int k, double x, double y, double zFront,
+  static bool Write(const hov::ProjectionFrame& f, int k, double x, double y, double zFront,
     double w, const glm::dvec3& front, const glm::dvec3& back, double sFront, double sBack,
     float* out);
 
   /// A zero-length vertex at clip position @p clip with scalar @p s (interval @p k).
   static void WriteCorner(
-    const vtkHighOrderProjectionFrame& f, int k, const glm::dvec4& clip, double s, float* out);
+    const hov::ProjectionFrame& f, int k, const glm::dvec4& clip, double s, float* out);
 };
+}
 
 #endif

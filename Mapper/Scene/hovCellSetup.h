@@ -1,8 +1,8 @@
 /**
- * @class   vtkHighOrderTetraSetup
+ * @class   hov::CellSetup
  * @brief   View-independent preparation of the cells of the accurate CPU
  *          path: linear tetrahedra for exact ray clipping (the fast path),
- *          the other supported types in vtkHighOrderGeneralCells.
+ *          the other supported types in hov::GeneralCells.
  *
  * For every valid tetrahedron of the input: its four face planes n.x <= h
  * (outward normals) and its linear scalar field s(x) = s0 + g.(x - x0). Built
@@ -29,10 +29,10 @@
  *
  * Thread safety: Build() runs in parallel internally (vtkSMPTools) and is not
  * re-entrant; the built arrays are read-only afterwards.
- * @sa vtkHighOrderCellProjector
+ * @sa hov::CellProjector
  */
-#ifndef vtkHighOrderTetraSetup_h
-#define vtkHighOrderTetraSetup_h
+#ifndef hovCellSetup_h
+#define hovCellSetup_h
 
 #include "hovGeneralCells.h" // the non-tetrahedral cells
 
@@ -46,9 +46,12 @@
 #include <vector> // storage
 
 class vtkDataArray;
+class vtkPoints;
 class vtkUnstructuredGridBase;
 
-class vtkHighOrderTetraSetup
+namespace hov
+{
+class CellSetup
 {
 public:
   struct Tetra
@@ -99,7 +102,7 @@ public:
 
   const std::vector<Tetra>& GetTetras() const { return this->Tetras; }
   /// The rendered non-tetrahedral cells (rendered cell GetTetras().size() + g is cell g).
-  const vtkHighOrderGeneralCells& GetGeneralCells() const { return this->General; }
+  const hov::GeneralCells& GetGeneralCells() const { return this->General; }
   /// Rendered cells: tetrahedra plus general cells.
   vtkIdType GetNumberOfRenderedCells() const
   {
@@ -107,28 +110,22 @@ public:
   }
   /// All input points (dataset coordinates), indexed by point id.
   const std::vector<glm::dvec3>& GetPoints() const { return this->Points; }
-  /// Index into GetTetras() of input cell @p cellId, or -1 if it was skipped.
-  vtkIdType GetTetraOfCell(vtkIdType cellId) const
-  {
-    return cellId >= 0 && cellId < static_cast<vtkIdType>(this->CellToTetra.size())
-      ? this->CellToTetra[cellId]
-      : -1;
-  }
   const Statistics& GetStatistics() const { return this->Stats; }
-  /// Range of the scalar over the rendered cells.
-  const double* GetScalarRange() const { return this->ScalarRange; }
-  /// Diagonal of the rendered cells' bounding box (a length scale).
-  double GetDiagonal() const { return this->Diagonal; }
 
 private:
+  /// The scalar per point (or cell) into @p values and the points; false (and
+  /// @p error) if the array is too short.
+  bool ReadInput(vtkUnstructuredGridBase* grid, vtkDataArray* scalars, bool cellScalars,
+    int component, std::vector<double>& values, std::string* error);
+  /// The grid of the rendered cells given to visibility sorts.
+  void BuildSortGrid(vtkPoints* points);
+
   std::vector<Tetra> Tetras;
   std::vector<glm::dvec3> Points;
-  std::vector<vtkIdType> CellToTetra;
-  vtkHighOrderGeneralCells General;
+  hov::GeneralCells General;
   vtkSmartPointer<vtkUnstructuredGrid> SortGrid;
   Statistics Stats;
-  double ScalarRange[2] = { 0.0, 0.0 };
-  double Diagonal = 0.0;
 };
+}
 
 #endif

@@ -51,7 +51,7 @@ double Det3(const double j[9])
 }
 
 /// The per-pixel work's view-independent data of a valid cell (class doc).
-void PrepareRays(vtkHighOrderGeneralCells::Cell& cell, const double* nodes,
+void PrepareRays(hov::GeneralCells::Cell& cell, const double* nodes,
   const double* scalars, const std::vector<double>& basis)
 {
   cell.PlanarFaces = hov::PlanarFaceMask(cell.Shape, nodes);
@@ -113,7 +113,7 @@ GeometryCheck CheckGeometry(hov::CellShape shape, const double* nodes, double re
     }
   }
   const double size = std::sqrt(size2);
-  const double tol = vtkHighOrderGeneralCells::DegenerateRelativeVolume * size2 * size;
+  const double tol = hov::GeneralCells::DegenerateRelativeVolume * size2 * size;
   double pc[3], x[3], jac[9];
   hov::CellParametricCenter(shape, pc);
   hov::EvaluateGeometry(shape, nodes, pc, x, jac);
@@ -158,7 +158,7 @@ GeometryCheck CheckGeometry(hov::CellShape shape, const double* nodes, double re
 }
 }
 
-void vtkHighOrderGeneralCells::Build(vtkUnstructuredGridBase* grid,
+void hov::GeneralCells::Build(vtkUnstructuredGridBase* grid,
   const std::vector<glm::dvec3>& points, const std::vector<double>& values, bool cellScalars,
   const std::vector<vtkIdType>& cellIds)
 {

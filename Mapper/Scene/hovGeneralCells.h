@@ -1,10 +1,10 @@
 /**
- * @class   vtkHighOrderGeneralCells
+ * @class   hov::GeneralCells
  * @brief   View-independent preparation of the non-tetrahedral cells ("general
  *          cells") of the accurate CPU path: voxels, hexahedra, wedges,
  *          pyramids and the quadratic cells (types 11-14, 24-27, 29).
  *
- * Linear tetrahedra have their own fast path (vtkHighOrderTetraSetup); every
+ * Linear tetrahedra have their own fast path (hov::CellSetup); every
  * other cell type of hov::CellShape is kept here: its type, the coordinates
  * and scalars of ALL its nodes (copied into flat pools, VTK node order), the
  * global point ids of its corners (for the bit-identical shared-face crossing
@@ -37,14 +37,14 @@
  * each face (hov::PlanarFaceMask: the exact predicates are not repeated per
  * ray) and, for affine cells (hov::IsGeometryAffine), the inverse Jacobian of
  * the corner map, so that the parametric line of a ray comes without Newton
- * iterations (vtkHighOrderGeneralCellTile).
+ * iterations (hov::GeneralCellTile).
  *
  * Thread safety: Build() runs in parallel internally (vtkSMPTools) and is not
  * re-entrant; the built arrays are read-only afterwards.
- * @sa vtkHighOrderTetraSetup, vtkHighOrderGeneralCellTile, hovCellShapes.h
+ * @sa hov::CellSetup, hov::GeneralCellTile, hovCellShapes.h
  */
-#ifndef vtkHighOrderGeneralCells_h
-#define vtkHighOrderGeneralCells_h
+#ifndef hovGeneralCells_h
+#define hovGeneralCells_h
 
 #include "hovCellShapes.h" // CellShape
 
@@ -57,7 +57,9 @@
 
 class vtkUnstructuredGridBase;
 
-class vtkHighOrderGeneralCells
+namespace hov
+{
+class GeneralCells
 {
 public:
   /// |det J| at the centre below this times (cell size)^3: degenerate.
@@ -115,5 +117,6 @@ private:
   std::vector<vtkIdType> NodeIds;
   Statistics Stats;
 };
+}
 
 #endif

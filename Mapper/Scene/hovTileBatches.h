@@ -1,8 +1,8 @@
 /**
- * @file   vtkHighOrderTileBatches.h
+ * @file   hovTileBatches.h
  * @brief  Tile loop of the CPU projectors with progress reports and abort.
  *
- * vtkHighOrderForTileBatches runs the tiles [0, numTiles) through
+ * hov::ForTileBatches runs the tiles [0, numTiles) through
  * vtkSMPTools::For. Without a progress callback it is one parallel loop.
  * With one, the tiles run in about ProgressBatches consecutive batches (each
  * a parallel loop) and the callback is called on the calling thread after
@@ -10,13 +10,13 @@
  * returns true the remaining batches are skipped. Every pixel belongs to one
  * tile and a tile's result does not depend on when or where it runs, so the
  * image of a completed render is bit-identical with or without batches.
- * vtkHighOrderClearTiles zeroes the pixels of the tiles that did not run.
+ * hov::ClearTiles zeroes the pixels of the tiles that did not run.
  *
  * Thread safety: the callback is only called from the calling thread.
- * @sa vtkHighOrderCellProjector, vtkHighOrderFeatureProjector
+ * @sa hov::CellProjector, hov::FeatureProjector
  */
-#ifndef vtkHighOrderTileBatches_h
-#define vtkHighOrderTileBatches_h
+#ifndef hovTileBatches_h
+#define hovTileBatches_h
 
 #include "vtkSMPTools.h"
 
@@ -24,22 +24,24 @@
 #include <functional> // std::function
 #include <vector>     // the image
 
+namespace hov
+{
 /// Progress callback: fraction of tiles done in (0, 1]; return true to abort.
-using vtkHighOrderProgressFunction = std::function<bool(double)>;
+using ProgressFunction = std::function<bool(double)>;
 
 /// Number of batches the tiles are split into when progress is reported.
-constexpr int vtkHighOrderProgressBatches = 32;
+constexpr int ProgressBatches = 32;
 
 /**
  * Run @p tileFunction(t) for every tile t (in parallel, see the file doc).
  * Returns the number of tiles run: numTiles unless @p progress aborted.
  */
 template <typename TileFunction>
-int vtkHighOrderForTileBatches(
-  int numTiles, const vtkHighOrderProgressFunction& progress, TileFunction&& tileFunction)
+int ForTileBatches(
+  int numTiles, const ProgressFunction& progress, TileFunction&& tileFunction)
 {
   const int batch =
-    progress ? std::max(1, (numTiles + vtkHighOrderProgressBatches - 1) / vtkHighOrderProgressBatches)
+    progress ? std::max(1, (numTiles + ProgressBatches - 1) / ProgressBatches)
              : std::max(1, numTiles);
   int done = 0;
   while (done < numTiles)
@@ -61,7 +63,7 @@ int vtkHighOrderForTileBatches(
 }
 
 /// Zero the RGBA pixels of tiles [firstTile, numTiles) (tiles of @p tileSize, @p tilesX per row).
-inline void vtkHighOrderClearTiles(int firstTile, int numTiles, int tilesX, int tileSize,
+inline void ClearTiles(int firstTile, int numTiles, int tilesX, int tileSize,
   int width, int height, std::vector<double>& rgba)
 {
   for (int t = firstTile; t < numTiles; ++t)
@@ -74,6 +76,8 @@ inline void vtkHighOrderClearTiles(int firstTile, int numTiles, int tilesX, int 
         rgba.begin() + (static_cast<size_t>(y) * width + x1) * 4, 0.0);
     }
   }
+}
+
 }
 
 #endif

@@ -29,7 +29,7 @@ glm::dmat4 ToGlm(const vtkMatrix4x4* m)
 }
 }
 
-bool vtkHighOrderViewRays::Setup(
+bool hov::ViewRays::Setup(
   vtkCamera* camera, vtkMatrix4x4* volumeMatrix, int width, int height, double aspect)
 {
   if (!camera || width <= 0 || height <= 0 || !(aspect > 0.0))
@@ -56,13 +56,13 @@ bool vtkHighOrderViewRays::Setup(
   return std::isfinite(this->DepthScale) && this->DepthScale > 0.0;
 }
 
-glm::dvec3 vtkHighOrderViewRays::Unproject(double xNdc, double yNdc, double zNdc) const
+glm::dvec3 hov::ViewRays::Unproject(double xNdc, double yNdc, double zNdc) const
 {
   const glm::dvec4 h = this->ClipToData * glm::dvec4(xNdc, yNdc, zNdc, 1.0);
   return glm::dvec3(h) / h.w;
 }
 
-vtkHighOrderViewRays::Ray vtkHighOrderViewRays::PixelRay(int i, int j) const
+hov::ViewRays::Ray hov::ViewRays::PixelRay(int i, int j) const
 {
   const double x = 2.0 * (i + 0.5) / this->Width - 1.0;
   const double y = 2.0 * (j + 0.5) / this->Height - 1.0;
@@ -74,7 +74,7 @@ vtkHighOrderViewRays::Ray vtkHighOrderViewRays::PixelRay(int i, int j) const
   return ray;
 }
 
-double vtkHighOrderViewRays::DepthToT(int i, int j, const Ray& ray, double windowDepth) const
+double hov::ViewRays::DepthToT(int i, int j, const Ray& ray, double windowDepth) const
 {
   const double x = 2.0 * (i + 0.5) / this->Width - 1.0;
   const double y = 2.0 * (j + 0.5) / this->Height - 1.0;
@@ -82,7 +82,7 @@ double vtkHighOrderViewRays::DepthToT(int i, int j, const Ray& ray, double windo
   return glm::dot(p - ray.Origin, ray.Direction);
 }
 
-bool vtkHighOrderViewRays::Project(const glm::dvec3& p, double& xWindow, double& yWindow) const
+bool hov::ViewRays::Project(const glm::dvec3& p, double& xWindow, double& yWindow) const
 {
   const glm::dvec4 c = this->DataToClip * glm::dvec4(p, 1.0);
   if (!(c.w > 0.0))
@@ -94,7 +94,7 @@ bool vtkHighOrderViewRays::Project(const glm::dvec3& p, double& xWindow, double&
   return std::isfinite(xWindow) && std::isfinite(yWindow);
 }
 
-void vtkHighOrderViewRays::ClipRange(const Ray& ray, double& tMin, double& tMax) const
+void hov::ViewRays::ClipRange(const Ray& ray, double& tMin, double& tMax) const
 {
   for (const glm::dvec4& plane : this->ClipPlanes)
   {
@@ -117,7 +117,7 @@ void vtkHighOrderViewRays::ClipRange(const Ray& ray, double& tMin, double& tMax)
   }
 }
 
-void vtkHighOrderViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera,
+void hov::ViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera,
   vtkMatrix4x4* volumeMatrix, const double* viewDepthRange)
 {
   this->ClipPlanes.clear();
@@ -154,7 +154,7 @@ void vtkHighOrderViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera*
   }
 }
 
-vtkHighOrderViewRays::Ray vtkHighOrderViewRays::TracedPixelRay(
+hov::ViewRays::Ray hov::ViewRays::TracedPixelRay(
   int i, int j, double windowDepth, double& tMax) const
 {
   Ray ray = this->PixelRay(i, j);

@@ -1,5 +1,5 @@
 /**
- * @class   vtkHighOrderViewRays
+ * @class   hov::ViewRays
  * @brief   Primary rays through OpenGL pixel centres, in dataset coordinates.
  *
  * For a viewport of W x H pixels, pixel (i, j) (j = 0 at the bottom, as in
@@ -20,10 +20,10 @@
  * one interval).
  *
  * Thread safety: after Setup(), every const method is thread safe.
- * @sa vtkHighOrderCellProjector
+ * @sa hov::CellProjector
  */
-#ifndef vtkHighOrderViewRays_h
-#define vtkHighOrderViewRays_h
+#ifndef hovViewRays_h
+#define hovViewRays_h
 
 #include <glm/glm.hpp> // dvec3, dvec4, dmat4
 
@@ -33,7 +33,9 @@ class vtkAbstractMapper3D;
 class vtkCamera;
 class vtkMatrix4x4;
 
-class vtkHighOrderViewRays
+namespace hov
+{
+class ViewRays
 {
 public:
   /// A ray: origin on the near plane, unit direction (dataset space), far limit.
@@ -129,5 +131,6 @@ private:
   glm::dvec3 PerturbX{ 1.0, 0.0, 0.0 };
   glm::dvec3 PerturbY{ 0.0, 1.0, 0.0 };
 };
+}
 
 #endif

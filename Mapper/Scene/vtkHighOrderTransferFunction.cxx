@@ -17,6 +17,18 @@ vtkStandardNewMacro(vtkHighOrderTransferFunction);
 
 namespace
 {
+/// The kernel's semantics of the OpacitySemantics setting (0, 1, 2; clamped by its setter).
+hov::OpacitySemantics SemanticsOf(int semantics)
+{
+  static_assert(static_cast<int>(hov::OpacitySemantics::GPUCompatible) == 0 &&
+      static_cast<int>(hov::OpacitySemantics::VTKUnstructured) == 1 &&
+      static_cast<int>(hov::OpacitySemantics::RawExtinction) == 2,
+    "OpacitySemantics: 0 GPU-compatible, 1 VTK-unstructured, 2 raw extinction");
+  constexpr hov::OpacitySemantics table[] = { hov::OpacitySemantics::GPUCompatible,
+    hov::OpacitySemantics::VTKUnstructured, hov::OpacitySemantics::RawExtinction };
+  return table[std::min(std::max(semantics, 0), 2)];
+}
+
 // Depth limit of the adaptive sampling of non-linear segments: 2^-20 of a
 // segment, enough to resolve VTK's sharpness-1 steps to 1e-6 of the segment.
 constexpr int MaxSamplingDepth = 20;
@@ -261,7 +273,7 @@ bool vtkHighOrderTransferFunction::Update(vtkVolumeProperty* property)
 
   const int comp = this->Component;
   hov::TransferFunctionSpec spec;
-  spec.Semantics = static_cast<hov::OpacitySemantics>(this->OpacitySemantics);
+  spec.Semantics = SemanticsOf(this->OpacitySemantics);
   spec.UnitDistance = property->GetScalarOpacityUnitDistance(comp);
   spec.GPUTolerance = this->GPUTolerance;
   spec.EmissionScale = this->EmissionScale;

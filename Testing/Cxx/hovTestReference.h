@@ -6,7 +6,7 @@
  * ray/box and ray/tetrahedron intersection, and small mesh builders.
  *
  * Nothing here uses the module's code (no hov:: kernel, no
- * vtkHighOrderTransferFunction, no vtkHighOrderViewRays): the transfer
+ * vtkHighOrderTransferFunction, no hov::ViewRays): the transfer
  * functions are read through vtkColorTransferFunction::GetColor and
  * vtkPiecewiseFunction::GetValue, rays are built from the camera's position,
  * focal point, view up, view angle / parallel scale and clipping range.
