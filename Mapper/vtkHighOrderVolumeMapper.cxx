@@ -3,8 +3,8 @@
 #include "hovCellProjector.h" // CPU path
 #include "hovFeatureSetup.h"  // isosurfaces, fields, splatting
 #include "hovImageDisplay.h"  // OpenGL blit of the float image
-#include "hovProjection.h"    // OPENGL_PROJECTION mode
-#include "hovRayCastState.h"  // RAY_CAST mode
+#include "hovProjectionBackend.h"    // OPENGL_PROJECTION mode
+#include "hovRayCastBackend.h"  // RAY_CAST mode
 #include "hovCellSetup.h"    // per-cell preparation
 #include "vtkHighOrderTransferFunction.h"
 #include "hovViewRays.h" // pixel rays

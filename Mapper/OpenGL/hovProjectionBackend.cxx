@@ -5,7 +5,7 @@
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "hovImageDisplay.h" // ReadDepth
-#include "hovProjection.h"   // mode state
+#include "hovProjectionBackend.h"   // mode state
 #include "hovProjectionVertex.h" // FloatsPerVertex (group budget)
 #include "hovCellSetup.h"   // cells
 #include "vtkHighOrderTransferFunction.h"

@@ -3,7 +3,7 @@
 // of detail, and the error image. See the RenderMode doc in the header.
 #include "vtkHighOrderVolumeMapper.h"
 
-#include "hovRayCastState.h" // caster, cache keys, error image
+#include "hovRayCastBackend.h" // caster, cache keys, error image
 #include "hovViewRays.h"     // pixel rays
 
 #include "hovCurvedSegment.h"    // CurvedSegmentSettings

@@ -1,5 +1,5 @@
 // The bundled-dataset comparisons of hovTestReferencePeers.h.
-#include "hovTestReferencePeers.h"
+#include "hovTestPeers.h"
 
 #include "hovTestScenes.h"
 

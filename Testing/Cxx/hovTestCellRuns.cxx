@@ -1,5 +1,5 @@
 // The single-cell acceptance loop of hovTestReferenceRun.h.
-#include "hovTestReferenceRun.h"
+#include "hovTestCellRuns.h"
 
 #include "hovTestAnalytic.h"
 #include "hovTestScenes.h"
