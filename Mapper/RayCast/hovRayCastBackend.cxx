@@ -1,44 +1,24 @@
-// vtkHighOrderVolumeMapper's RAY_CAST render mode (issue 6): input
-// conversion and caching, the transfer-function table, the interaction level
-// of detail, and the error image. See the RenderMode doc in the header.
-#include "vtkHighOrderVolumeMapper.h"
+#include "hovRayCastBackend.h"
 
-#include "hovRayCastBackend.h" // caster, cache keys, error image
-#include "hovViewRays.h"     // pixel rays
+#include "hovFloatImage.h" // the error image
+#include "hovViewRays.h"   // pixel rays
 
 #include "hovCurvedSegment.h"    // CurvedSegmentSettings
 #include "hovTransferFunction.h" // the kernel table
 
-#include "vtkAlgorithm.h"
-#include "vtkCamera.h"
-#include "vtkCommand.h" // ProgressEvent, AbortCheckEvent
-#include "vtkDataArray.h"
-#include "vtkFloatArray.h"
-#include "vtkPointData.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkUnstructuredGrid.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
+#include "vtkRenderWindow.h"     // interaction level of detail
+#include "vtkRenderer.h"         // its window
+#include "vtkUnstructuredGrid.h" // the input
+#include "vtkVolume.h"           // the property
 
 #include <algorithm> // std::min, std::max
 #include <chrono>    // the interactive frame's time budget
 #include <cmath>     // std::sqrt, std::ceil
+#include <sstream>   // messages
 #include <string>    // messages
 
 namespace
 {
-void PublishError(vtkImageData* image, const std::vector<float>& error, int width, int height)
-{
-  image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
-  vtkNew<vtkFloatArray> array;
-  array->SetName("Error");
-  array->SetNumberOfComponents(1);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(error.size()));
-  std::copy(error.begin(), error.end(), array->GetPointer(0));
-  image->GetPointData()->SetScalars(array);
-}
-
 /// Pixel (i of n) of the full image -> pixel of the reduced one (m <= n).
 inline int Reduced(int i, int n, int m)
 {
@@ -46,196 +26,163 @@ inline int Reduced(int i, int n, int m)
 }
 }
 
-vtkImageData* vtkHighOrderVolumeMapper::GetRayCastErrorImage()
+int hov::RayCastBackend::Render(RenderFrame& frame, vtkImageData*)
 {
-  return this->RayCastImpl->ErrorImage;
+  frame.ClearImage();
+  this->Error.assign(static_cast<size_t>(std::max(frame.Width, 0)) * std::max(frame.Height, 0), 0.0f);
+  frame.Stats.Interactive = 0;
+  const int status = this->Trace(frame);
+  PublishFloatImage(this->ErrorImage, "Error", 1, frame.Width, frame.Height, this->Error.data());
+  return status;
 }
 
-int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* volume, int width,
-  int height, double aspect, const float* depth, std::vector<double>& rgba, bool& drawn)
+void hov::RayCastBackend::PrepareCaster(const RenderFrame& frame, vtkUnstructuredGrid* grid)
 {
-  drawn = false;
-  hov::RayCastState& st = *this->RayCastImpl;
-  const size_t pixels = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
-  rgba.assign(4 * pixels, 0.0);
-  st.Error.assign(pixels, 0.0f);
-  this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
-  this->NumberOfRays = 0;
-  this->NumberOfSplattedCells = this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
-  this->LastRenderWasInteractive = false;
-  auto finish = [&](int status) {
-    PublishError(st.ErrorImage, st.Error, width, height);
-    return status;
-  };
-  if (!camera || !volume || width <= 0 || height <= 0)
+  const InputKey key = frame.Key();
+  if (this->Valid && key == this->Key)
   {
-    vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
-    return finish(0);
+    return;
   }
-  if (!this->CheckFrameView(camera, volume, aspect))
+  std::string message;
+  const bool ok =
+    this->Caster.SetInput(grid, frame.Scalars.Array, frame.Scalars.Component, &message);
+  if (!message.empty())
   {
-    return finish(0); // the error was reported
+    frame.Warning("RAY_CAST: skipped " + message + "; the rest is rendered.");
   }
-  if (this->GetNumberOfInputConnections(0) > 0)
+  if (!ok)
   {
-    this->GetInputAlgorithm()->Update();
+    std::ostringstream text;
+    text << "RAY_CAST: no usable cell in the input (" << grid->GetNumberOfCells()
+         << " cells): nothing rendered.";
+    frame.Warning(text.str());
   }
-  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(this->GetInput());
-  vtkVolumeProperty* property = volume->GetProperty();
-  if (!grid || !property)
-  {
-    vtkErrorMacro("RAY_CAST needs a vtkUnstructuredGrid input and a vtkVolumeProperty.");
-    return finish(0);
-  }
-  int cellFlag = 0;
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(
-    grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-  if (!scalars || cellFlag != 0)
-  {
-    vtkErrorMacro("RAY_CAST needs numeric point scalars (set point scalars on the input or "
-                  "select a numeric point array with SelectScalarArray()).");
-    st.Valid = false;
-    return finish(0);
-  }
-  const int nc = scalars->GetNumberOfComponents();
-  const int component = nc == 1
-    ? 0
-    : (this->VectorMode == COMPONENT ? std::min(std::max(this->VectorComponent, 0), nc - 1) : -1);
-  if (!st.Valid || st.InputTime != grid->GetMTime() || st.Array != scalars ||
-    st.ArrayTime != scalars->GetMTime() || st.Component != component)
-  {
-    std::string message;
-    const bool ok = st.Caster.SetInput(grid, scalars, component, &message);
-    if (!message.empty())
-    {
-      vtkWarningMacro("RAY_CAST: skipped " << message << "; the rest is rendered.");
-    }
-    if (!ok)
-    {
-      vtkWarningMacro("RAY_CAST: no usable cell in the input (" << grid->GetNumberOfCells()
-                                                                << " cells): nothing rendered.");
-    }
-    st.Valid = true; // cached also when nothing is usable: one warning per input
-    st.InputTime = grid->GetMTime();
-    st.Array = scalars;
-    st.ArrayTime = scalars->GetMTime();
-    st.Component = component;
-  }
-  const bool features = this->GetNumberOfIsosurfaces() > 0 || this->Splatting ||
-    (this->ColorArrayName && *this->ColorArrayName) ||
-    (this->IsosurfaceArrayName && *this->IsosurfaceArrayName);
-  if (features && !st.FeatureWarned)
-  {
-    st.FeatureWarned = true;
-    vtkWarningMacro("RAY_CAST does not apply isosurfaces, separate colour/isosurface fields or "
-                    "splatting; they are ignored in this mode.");
-  }
-  this->NumberOfRenderedCells = st.Caster.GetNumberOfCells();
-  this->NumberOfSkippedCells = grid->GetNumberOfCells() - this->NumberOfRenderedCells;
+  this->Valid = true; // cached also when nothing is usable: one warning per input
+  this->Key = key;
+}
 
-  vtkHighOrderTransferFunction* tf = st.TransferFunction;
-  tf->SetOpacitySemantics(this->OpacitySemantics);
-  // The table's linearisation error (<= 2x its tolerance) within a fifth of the
-  // per-pixel tolerance: a finer table only adds breakpoints to locate.
-  tf->SetGPUTolerance(std::max(this->GPUOpacityTolerance, 0.1 * this->RayCastTolerance));
-  tf->SetEmissionScale(this->EmissionScale);
-  tf->SetComponent(component > 0 && property->GetIndependentComponents() ? std::min(component, 3) : 0);
-  const int buildsBefore = tf->GetBuildCount();
-  tf->Update(property);
-  for (int i = 0; tf->GetBuildCount() != buildsBefore && i < tf->GetNumberOfMessages(); ++i)
+int hov::RayCastBackend::Subsampling(const RenderFrame& frame, double desiredUpdateRate) const
+{
+  int f = frame.Settings.RayCastInteractiveSubsampling;
+  if (f <= 0)
   {
-    vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
+    // The factor that fits the time budget at the last frame's cost per ray.
+    const double budget = 1.0 / desiredUpdateRate;
+    const double cost = this->SecondsPerRay * frame.Width * frame.Height;
+    f = this->SecondsPerRay > 0.0
+      ? std::min(std::max(static_cast<int>(std::ceil(std::sqrt(cost / budget))), 2), 16)
+      : 2;
   }
-  if (this->NumberOfRenderedCells == 0)
+  return f;
+}
+
+int hov::RayCastBackend::Trace(RenderFrame& frame)
+{
+  if (!frame.ValidateView())
   {
-    return finish(1); // nothing to render (warned above)
+    return 0;
   }
-  if (!tf->GetTable().HasExtinction() && this->EmissionModel != WILHELMS_VAN_GELDER)
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(frame.Input);
+  if (!grid || !frame.Volume->GetProperty())
   {
-    if (tf->GetBuildCount() != buildsBefore)
+    frame.Error("RAY_CAST needs a vtkUnstructuredGrid input and a vtkVolumeProperty.");
+    return 0;
+  }
+  if (!frame.Scalars.Array || frame.Scalars.Association != 0)
+  {
+    frame.Error("RAY_CAST needs numeric point scalars (set point scalars on the input or "
+                "select a numeric point array with SelectScalarArray()).");
+    this->Valid = false;
+    return 0;
+  }
+  this->PrepareCaster(frame, grid);
+  const FrameSettings& s = frame.Settings;
+  const bool features = s.NumberOfIsosurfaces() > 0 || s.Splatting || !s.ColorArray.empty() ||
+    !s.IsosurfaceArray.empty();
+  if (features && !this->FeatureWarned)
+  {
+    this->FeatureWarned = true;
+    frame.Warning("RAY_CAST does not apply isosurfaces, separate colour/isosurface fields or "
+                  "splatting; they are ignored in this mode.");
+  }
+  frame.Stats.RenderedCells = this->Caster.GetNumberOfCells();
+  frame.Stats.SkippedCells = grid->GetNumberOfCells() - frame.Stats.RenderedCells;
+  bool rebuilt = false;
+  const bool visible = frame.UpdateTransferFunction(this->TransferFunction,
+    std::max(s.GPUOpacityTolerance, 0.1 * s.RayCastTolerance), rebuilt);
+  if (frame.Stats.RenderedCells == 0)
+  {
+    return 1; // nothing to render (warned above)
+  }
+  if (!visible)
+  {
+    if (rebuilt)
     {
-      this->WarnTransparent();
+      frame.WarnTransparent();
     }
-    return finish(1); // nothing visible
+    return 1; // nothing visible
   }
 
   // Interaction level of detail (see the RenderMode doc).
-  vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
+  vtkRenderWindow* window = frame.Renderer ? frame.Renderer->GetRenderWindow() : nullptr;
   const bool interactive =
-    window && window->GetDesiredUpdateRate() >= this->RayCastInteractiveUpdateRate;
-  this->LastRenderWasInteractive = interactive;
-  int f = 1;
-  if (interactive)
-  {
-    f = this->RayCastInteractiveSubsampling;
-    if (f <= 0)
-    {
-      // The factor that fits the time budget at the last frame's cost per ray.
-      const double budget = 1.0 / window->GetDesiredUpdateRate();
-      const double cost = st.SecondsPerRay * width * height;
-      f = st.SecondsPerRay > 0.0
-        ? std::min(std::max(static_cast<int>(std::ceil(std::sqrt(cost / budget))), 2), 16)
-        : 2;
-    }
-  }
-  this->LastRayCastSubsampling = f;
+    window && window->GetDesiredUpdateRate() >= s.RayCastInteractiveUpdateRate;
+  frame.Stats.Interactive = interactive ? 1 : 0;
+  const int f = interactive ? this->Subsampling(frame, window->GetDesiredUpdateRate()) : 1;
+  frame.Stats.RayCastSubsampling = f;
+  const int width = frame.Width, height = frame.Height;
   const int rw = (width + f - 1) / f, rh = (height + f - 1) / f;
-  hov::ViewRays rays;
-  if (!rays.Setup(camera, volume->GetMatrix(), rw, rh, aspect))
+  ViewRays rays;
+  if (!frame.SetupRays(rays, rw, rh))
   {
-    vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
-    return finish(0);
+    return 0;
   }
-  rays.SetupClipping(
-    this, camera, volume->GetMatrix(), this->ViewDepthClipping ? this->ViewDepthRange : nullptr);
-  drawn = true;
-  const float* rayDepth = depth;
-  if (depth && interactive)
+  frame.Drawn = true;
+  const float* rayDepth = frame.Depth;
+  if (frame.Depth && interactive)
   {
-    st.Depth.assign(static_cast<size_t>(rw) * rh, 1.0f);
+    // Each ray stops at the nearest opaque depth of its block.
+    this->Depth.assign(static_cast<size_t>(rw) * rh, 1.0f);
     for (int j = 0; j < height; ++j)
     {
       for (int i = 0; i < width; ++i)
       {
-        float& d = st.Depth[static_cast<size_t>(Reduced(j, height, rh)) * rw + Reduced(i, width, rw)];
-        d = std::min(d, depth[static_cast<size_t>(j) * width + i]);
+        float& d = this->Depth[static_cast<size_t>(Reduced(j, height, rh)) * rw + Reduced(i, width, rw)];
+        d = std::min(d, frame.Depth[static_cast<size_t>(j) * width + i]);
       }
     }
-    rayDepth = st.Depth.data();
+    rayDepth = this->Depth.data();
   }
-  hov::CurvedSegmentSettings settings;
-  settings.Quadrature.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
+  CurvedSegmentSettings settings;
+  settings.Quadrature.Emission = s.Emission;
   settings.Quadrature.Tolerance =
-    interactive ? std::min(10.0 * this->RayCastTolerance, 0.05) : this->RayCastTolerance;
-  st.RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
+    interactive ? std::min(10.0 * s.RayCastTolerance, 0.05) : s.RayCastTolerance;
+  settings.TerminationTransmittance = s.TerminationTransmittance;
+  this->RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
   std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
-  hov::RayCast::Issues issues;
-  hov::ProgressFunction progress;
-  if (this->HasObserver(vtkCommand::ProgressEvent) ||
-    (window && window->HasObserver(vtkCommand::AbortCheckEvent)))
-  {
-    progress = [this](double done) { return this->ReportTileProgress(done); };
-  }
+  RayCast::Issues issues;
   const auto start = std::chrono::steady_clock::now();
-  st.Caster.Render(
-    rays, tf->GetTable(), settings, st.RGBA.data(), error.data(), rayDepth, &issues, progress);
+  this->Caster.Render(rays, this->TransferFunction->GetTable(), settings, this->RGBA.data(),
+    error.data(), rayDepth, &issues, frame.Progress);
   if (!issues.Aborted && rw * rh > 0)
   {
-    st.SecondsPerRay =
+    this->SecondsPerRay =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / (rw * rh);
   }
-  this->LastRenderAborted = issues.Aborted;
-  this->NumberOfRays = issues.Rays;
-  this->NumberOfSegments = issues.Segments;
-  this->NumberOfPieces = issues.Segments + issues.Breakpoints;
+  frame.Stats.Aborted = issues.Aborted;
+  frame.Stats.Rays = issues.Rays;
+  frame.Stats.Segments = issues.Segments;
+  frame.Stats.Pieces = issues.Segments + issues.Breakpoints;
   if (issues.NotConverged > 0 || issues.NotFinite > 0)
   {
-    vtkWarningMacro("RAY_CAST: " << issues.NotConverged << " of " << rw * rh
-                                 << " pixels did not converge to the tolerance (Newton inversion "
-                                    "or quadrature; see GetRayCastErrorImage() for how far), "
-                                 << issues.NotFinite
-                                 << " had a non-finite colour and are drawn transparent.");
+    std::ostringstream text;
+    text << "RAY_CAST: " << issues.NotConverged << " of " << rw * rh
+         << " pixels did not converge to the tolerance (Newton inversion or quadrature; see "
+            "GetRayCastErrorImage() for how far), "
+         << issues.NotFinite << " had a non-finite colour and are drawn transparent.";
+    frame.Warning(text.str());
   }
+  // The (reduced) image onto every pixel.
   for (int j = 0; j < height; ++j)
   {
     for (int i = 0; i < width; ++i)
@@ -246,10 +193,10 @@ int vtkHighOrderVolumeMapper::ComputeRayCastImage(vtkCamera* camera, vtkVolume* 
         : p;
       for (int c = 0; c < 4; ++c)
       {
-        rgba[4 * p + c] = st.RGBA[4 * q + c];
+        frame.RGBA[4 * p + c] = this->RGBA[4 * q + c];
       }
-      st.Error[p] = error[q];
+      this->Error[p] = error[q];
     }
   }
-  return finish(1);
+  return 1;
 }

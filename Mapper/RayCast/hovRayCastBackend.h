@@ -1,38 +1,59 @@
 /**
- * @struct  hov::RayCastState
- * @brief   Internal: what vtkHighOrderVolumeMapper keeps between RAY_CAST
- *          frames (Mapper/vtkHighOrderVolumeMapperRayCast.cxx): the prepared
- *          caster, the cache keys that decide when to rebuild it, its own
- *          transfer-function table and the error image.
+ * @class   hov::RayCastBackend
+ * @brief   The RAY_CAST render mode (issue 6): one ray per pixel through the
+ *          cells as they are stored, curved Lagrange cells included
+ *          (hov::RayCast, the adapter of hov::CurvedRayCaster).
  *
- * Thread safety: used by one mapper on the rendering thread.
- * @sa hov::RayCast, vtkHighOrderVolumeMapper
+ * Per frame: the input converted and the caster built when the input or the
+ * scalars change (hov::InputKey; skipped cells reported once per input); its
+ * own transfer-function table, linearised at max(GPUOpacityTolerance,
+ * RayCastTolerance / 10) (the table's error within a fifth of the per-pixel
+ * tolerance: a finer table only adds breakpoints to locate); the interaction
+ * level of detail (a window whose DesiredUpdateRate is at least
+ * RayCastInteractiveUpdateRate gets one ray per f x f block of pixels, f from
+ * RayCastInteractiveSubsampling or the time budget at the previous frame's
+ * cost per ray, tolerance x10); rays stop at TerminationTransmittance. Output:
+ * the frame's image and the per-pixel error estimate (GetErrorImage()).
+ *
+ * Thread safety: rendering thread only (the caster runs vtkSMPTools).
+ * @sa hov::RayCast, hov::Backend, vtkHighOrderVolumeMapper (RenderMode)
  */
-#ifndef hovRayCastState_h
-#define hovRayCastState_h
+#ifndef hovRayCastBackend_h
+#define hovRayCastBackend_h
 
-#include "hovRayCast.h"          // the caster adapter
+#include "hovBackend.h" // the interface
+
+#include "hovRayCast.h"                   // the caster adapter
+#include "hovRenderFrame.h"               // InputKey
 #include "vtkHighOrderTransferFunction.h" // its table
 
 #include "vtkImageData.h" // the error image
-#include "vtkNew.h"
+#include "vtkNew.h"       // owned objects
 
 #include <vector> // buffers
 
-class vtkDataArray;
-
 namespace hov
 {
-struct RayCastState
+class RayCastBackend : public Backend
 {
-  hov::RayCast Caster;
-  bool Valid = false;
-  vtkMTimeType InputTime = 0;
-  vtkDataArray* Array = nullptr;
-  vtkMTimeType ArrayTime = 0;
-  int Component = -2;
-  bool FeatureWarned = false;
+public:
+  int Render(RenderFrame& frame, vtkImageData* floatImage) override;
 
+  /// The per-pixel error estimate of the last frame (array "Error").
+  vtkImageData* GetErrorImage() { return this->ErrorImage; }
+
+private:
+  /// Everything but the error image's publication: 1 success, 0 error.
+  int Trace(RenderFrame& frame);
+  /// The caster for the frame's input (rebuilt when its key changes).
+  void PrepareCaster(const RenderFrame& frame, vtkUnstructuredGrid* grid);
+  /// The pixels per ray in x and y of an interactive frame in @p window.
+  int Subsampling(const RenderFrame& frame, double desiredUpdateRate) const;
+
+  RayCast Caster;
+  bool Valid = false;
+  InputKey Key;
+  bool FeatureWarned = false;
   vtkNew<vtkHighOrderTransferFunction> TransferFunction;
   vtkNew<vtkImageData> ErrorImage;
   std::vector<float> RGBA, Error, Depth;

@@ -1,27 +1,11 @@
-// vtkHighOrderVolumeMapper: the checks every render mode applies to a frame
-// (issue 21): the view, the float image's range, and the message for an empty
-// image. The rule they implement, for every entry point:
-//  - RenderImage returns 0 (and reports an error; the image is zero) when it
-//    cannot render: no input, no scalars, no property, an unusable camera
-//    (hov::CheckView) or size; otherwise 1, also for an image that is empty
-//    for a reason of the scene (the volume out of view, transparent, clipped
-//    away), which is then reported by a warning.
-//  - Render (a window) reports the same errors and warnings and draws nothing
-//    where RenderImage returns 0.
-//  - The float image never holds NaN or Inf: a pixel whose colour is not
-//    finite, or beyond float's range, is drawn transparent and counted in one
-//    warning per frame.
-#include "vtkHighOrderVolumeMapper.h"
+#include "hovImageCheck.h"
 
-#include "hovViewCheck.h" // the view check
+#include "hovRenderFrame.h" // settings, statistics, messages
 
-#include "vtkCamera.h"
-#include "vtkPlaneCollection.h"
-#include "vtkVolume.h"
-
-#include <cfloat> // FLT_MAX
-#include <cmath>  // std::isfinite, std::abs
-#include <string> // messages
+#include <cfloat>  // FLT_MAX
+#include <cmath>   // std::isfinite, std::abs
+#include <sstream> // messages
+#include <string>  // messages
 
 namespace
 {
@@ -60,70 +44,49 @@ bool AllZero(const T* rgba, size_t pixels)
   }
   return true;
 }
-}
 
-bool vtkHighOrderVolumeMapper::CheckFrameView(vtkCamera* camera, vtkVolume* volume, double aspect)
+/// Why an image of @p frame is empty.
+std::string WhyEmpty(const hov::FrameSettings& s)
 {
-  const std::string why = hov::CheckView(camera, volume ? volume->GetMatrix() : nullptr, aspect);
-  if (!why.empty())
+  std::string why = "it lies outside the view or behind opaque geometry, or is transparent "
+                    "there and crosses no isosurface";
+  if (s.ViewDepthClipping && !(s.ViewDepthRange[0] < s.ViewDepthRange[1]))
   {
-    vtkErrorMacro("Cannot render: " << why << ".");
-    return false;
+    why = "the view-depth range [" + std::to_string(s.ViewDepthRange[0]) + ", " +
+      std::to_string(s.ViewDepthRange[1]) + "] is empty";
   }
-  if (this->ViewDepthClipping &&
-    !(std::isfinite(this->ViewDepthRange[0]) && std::isfinite(this->ViewDepthRange[1])))
+  else if (s.ViewDepthClipping || s.HasClippingPlanes)
   {
-    vtkErrorMacro("Cannot render: the view-depth range [" << this->ViewDepthRange[0] << ", "
-                                                         << this->ViewDepthRange[1]
-                                                         << "] is not finite.");
-    return false;
+    why += ", or the clipping planes / view-depth range leave nothing of it";
   }
-  return true;
+  return why;
+}
 }
 
 template <typename T>
-void vtkHighOrderVolumeMapper::CheckFrameImage(T* rgba, size_t pixels, bool drawn)
+void hov::ImageCheck::Check(
+  T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime)
 {
   const size_t bad = ZeroOverflowingPixels(rgba, pixels);
   if (bad > 0)
   {
-    vtkWarningMacro(<< bad << " of " << pixels << " pixels had a colour that is not finite or "
-                    << "beyond float's range (EmissionScale " << this->EmissionScale
-                    << ", the colours and the unit distance set the glow); they are drawn "
-                    << "transparent.");
+    std::ostringstream text;
+    text << bad << " of " << pixels << " pixels had a colour that is not finite or beyond "
+         << "float's range (EmissionScale " << frame.Settings.EmissionScale
+         << ", the colours and the unit distance set the glow); they are drawn transparent.";
+    frame.Warning(text.str());
   }
-  // An empty image needs a message: once until an image is not empty again
-  // or a setting changes; an aborted frame or one with nothing to draw has had
-  // its own.
-  const bool empty = drawn && !this->LastRenderAborted && AllZero(rgba, pixels);
-  if (empty && (!this->WarnedEmptyImage || this->WarnedEmptyTime != this->GetMTime()))
+  const bool empty = frame.Drawn && !frame.Stats.Aborted && AllZero(rgba, pixels);
+  if (empty && (!this->WarnedEmptyImage || this->WarnedTime != settingsTime))
   {
-    std::string why = "it lies outside the view or behind opaque geometry, or is transparent "
-                      "there and crosses no isosurface";
-    if (this->ViewDepthClipping && !(this->ViewDepthRange[0] < this->ViewDepthRange[1]))
-    {
-      why = "the view-depth range [" + std::to_string(this->ViewDepthRange[0]) + ", " +
-        std::to_string(this->ViewDepthRange[1]) + "] is empty";
-    }
-    else if (this->ViewDepthClipping ||
-      (this->ClippingPlanes && this->ClippingPlanes->GetNumberOfItems() > 0))
-    {
-      why += ", or the clipping planes / view-depth range leave nothing of it";
-    }
-    vtkWarningMacro("The image is empty: nothing of the volume's " << this->NumberOfRenderedCells
-                                                                   << " rendered cells is "
-                                                                      "visible ("
-                                                                   << why << ").");
+    std::ostringstream text;
+    text << "The image is empty: nothing of the volume's " << frame.Stats.RenderedCells
+         << " rendered cells is visible (" << WhyEmpty(frame.Settings) << ").";
+    frame.Warning(text.str());
   }
   this->WarnedEmptyImage = empty;
-  this->WarnedEmptyTime = this->GetMTime();
+  this->WarnedTime = settingsTime;
 }
 
-template void vtkHighOrderVolumeMapper::CheckFrameImage<double>(double*, size_t, bool);
-template void vtkHighOrderVolumeMapper::CheckFrameImage<float>(float*, size_t, bool);
-
-void vtkHighOrderVolumeMapper::WarnTransparent()
-{
-  vtkWarningMacro("The transfer function has no opacity anywhere (and the emission model needs "
-                  "extinction to glow): the volume is invisible; nothing rendered.");
-}
+template void hov::ImageCheck::Check<double>(double*, size_t, const hov::RenderFrame&, vtkMTimeType);
+template void hov::ImageCheck::Check<float>(float*, size_t, const hov::RenderFrame&, vtkMTimeType);
