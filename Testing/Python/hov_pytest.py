@@ -11,7 +11,7 @@ FAILURES = []
 
 def check(ok, what):
     """Print the check's result; a failed one is recorded (the exit status of finish())."""
-    print(("ok   " if ok else "FAIL ") + what)
+    print(("ok   " if ok else "FAIL ") + what, flush=True)
     if not ok:
         FAILURES.append(what)
     return ok
