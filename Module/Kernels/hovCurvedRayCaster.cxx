@@ -499,7 +499,7 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     CurvedRayStats passStats = st;
     for (const Segment& s : segments)
     {
-      if (accum.A >= 1.0 - OpacityCutoff)
+      if (accum.A >= 1.0 - pass.TerminationTransmittance)
       {
         break;
       }

@@ -143,6 +143,9 @@ struct CurvedSegmentSettings
   /// Samples per segment of the fixed-sample rules (0: adaptive for
   /// LocatedBreakpoints, DefaultSegmentSamples for ElVis / Riemann).
   int Samples = 0;
+  /// A ray stops once its transmittance is at most this (CurvedRayCaster:
+  /// no segment is integrated once the opacity is >= 1 - this).
+  double TerminationTransmittance = 1e-12;
 };
 
 struct CurvedSegmentResult

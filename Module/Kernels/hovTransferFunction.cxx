@@ -288,6 +288,12 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
     }
     this->AnyExtinction = this->AnyExtinction || tl[0] > 0.0 || tr[0] > 0.0;
   }
+  this->BuildLookup();
+  return true;
+}
+
+void TransferFunction::BuildLookup()
+{
   // Interval lookup grid (4 buckets per node, at most 2^20).
   this->Buckets.clear();
   this->BucketScale = 0.0;
@@ -328,7 +334,6 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
       }
     }
   }
-  return true;
 }
 
 }

@@ -137,6 +137,8 @@ public:
   const Node& GetNode(int k) const { return this->Nodes[k]; }
 
 private:
+  /// The interval lookup grid and the slopes of every interval (end of Build()).
+  void BuildLookup();
   std::vector<double> X;
   std::vector<Node> Nodes;
   /// O(1) interval search: bucket b of a uniform grid over [X0, Xn-1] holds

@@ -10,7 +10,6 @@ reference rows have zero error, RAY_CAST on the bracket's linear tetrahedra too,
 do not; the progress display printed one line per method. Then runs the installed-
 style console script bin/hov-compare --list.
 """
-import argparse
 import csv
 import os
 import subprocess
@@ -21,24 +20,7 @@ import numpy as np
 import highordervolume
 from highordervolume import compare_report
 
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
-
-
-def find_script(name):
-    """bin/<name> of the build tree the package was imported from."""
-    d = os.path.dirname(os.path.abspath(highordervolume.__file__))
-    for _ in range(6):
-        d = os.path.dirname(d)
-        cand = os.path.join(d, "bin", name)
-        if os.path.isfile(cand):
-            return cand
-    return None
+from hov_pytest import arguments, check, FAILURES, find_script
 
 
 def recomputed(out, row, reference):
@@ -115,10 +97,7 @@ def run_case(args, data, array, size, extra, expected, tag):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     data = os.path.join(args.data, "bracket_tet4_ccx.vtu")
     run_case(args, data, "von_mises", 128,
              ["--resolutions", "32", "--methods", "hov_proj_m1_vtk,hov_ray_vtk,vtk_*"],
