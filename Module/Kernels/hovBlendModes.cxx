@@ -364,7 +364,6 @@ void AccumulatePolynomialSegment(RayBlendState& state, const BlendSettings& sett
   ++state.Segments;
   state.Length += length;
   state.ScalarIntegral += Kronrod15([&](double t) { return Evaluate(s, t); }, 0.0, length);
-  state.Found = true;
   if (WantsExtremum(settings.Mode))
   {
     const int sign = SignOf(settings.Mode);
@@ -372,6 +371,7 @@ void AccumulatePolynomialSegment(RayBlendState& state, const BlendSettings& sett
     PolynomialExtremum(s, length, sign, value, where, bound);
     UpdateExtremum(state, sign, value, tStart + where, bound + errorBound);
   }
+  state.Found = true;
   if (settings.Mode != BlendMode::AverageIntensity || table.GetNumberOfNodes() == 0)
   {
     return;
