@@ -84,17 +84,28 @@ bool GradientOpacityFunction::Build(const GradientOpacitySpec& spec, std::vector
     this->V.push_back(n.Opacity);
     this->Identity = this->Identity && n.Opacity == 1.0;
   }
-  // Kinks in world units: the nodes inside [0, MaxMagnitude], and the clamp.
-  for (double x : this->X)
-  {
+  // Kinks in world units: the nodes inside [0, MaxMagnitude], the zero
+  // crossings of F between nodes (gamma = max(0, F) has a kink there), and
+  // the clamp.
+  auto addKink = [this](double x) {
     if (x > 0.0 && x < this->MaxMagnitude && std::isfinite(x))
     {
       const double m = x / this->Scale;
-      if (this->Kinks.empty() || this->Kinks.back() != m)
+      if (this->Kinks.empty() || this->Kinks.back() < m)
       {
         this->Kinks.push_back(m);
       }
     }
+  };
+  for (size_t i = 0; i < this->X.size(); ++i)
+  {
+    if (i > 0 && this->X[i] > this->X[i - 1] &&
+      ((this->V[i - 1] < 0.0 && this->V[i] > 0.0) || (this->V[i - 1] > 0.0 && this->V[i] < 0.0)))
+    {
+      const double w = this->V[i - 1] / (this->V[i - 1] - this->V[i]);
+      addKink(this->X[i - 1] + (this->X[i] - this->X[i - 1]) * w);
+    }
+    addKink(this->X[i]);
   }
   if (!this->X.empty() && std::isfinite(this->MaxMagnitude) && this->MaxMagnitude > 0.0 &&
     this->MaxMagnitude < this->X.back())

@@ -36,7 +36,9 @@
  * and the exact segment integral is kept with tau scaled by it
  * (IntegrateLinearScalarShaded, hovVolumeShading.h). Elsewhere gamma varies
  * along the ray: hovShadedSegment.h. Kinks of gamma along a ray are where
- * |g| crosses GetKinks() (world units).
+ * |g| crosses GetKinks() (world units): the nodes, the zero crossings of F
+ * between nodes of opposite sign (max(0, F)) and the magnitude clamp; gamma
+ * is linear in |g| between consecutive kinks (TestGradientOpacity).
  *
  * Thread safety: Build() is not thread safe; the const methods are.
  * @sa hovVolumeShading.h, hovShadedSegment.h, hovFieldGradient.h

@@ -127,9 +127,12 @@ bool VolumeNormal(const double gradient[3], double floor, double normal[3])
     normal[0] = normal[1] = normal[2] = 0.0;
     return false;
   }
-  // Divide by the largest component first (VectorLength's scaling): no overflow.
+  // Divide by the largest component first (VectorLength's scaling): no
+  // overflow, and no precision lost when |g| itself is subnormal (the unit
+  // length is recomputed from the scaled components, not as |g| / m).
   const double m = std::max(std::fabs(gradient[0]), std::max(std::fabs(gradient[1]), std::fabs(gradient[2])));
-  const double unit = length / m;
+  const double a = gradient[0] / m, b = gradient[1] / m, c = gradient[2] / m;
+  const double unit = std::sqrt(a * a + b * b + c * c);
   for (int i = 0; i < 3; ++i)
   {
     normal[i] = (gradient[i] / m) / unit;

@@ -15,6 +15,7 @@
 #include "hovKernelTestTolerances.h"
 #include "hovKernelTestUtilities.h"
 
+#include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/tools/minima.hpp>
 
 #include <gtest/gtest.h>

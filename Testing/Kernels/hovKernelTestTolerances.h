@@ -201,6 +201,22 @@ struct ToleranceTable
   /// +-1e-12 across an end value, scaled by |ds|/L): the change is the
   /// perturbation itself. Measured 2.9e-14, 1.8e-12, 1.0e-12.
   double BlendContinuityAbs = 1e-11;
+
+  // --- issue 19: hovVolumeShading / hovGradientOpacity / hovShadedSegment ---
+  /// Shaded / gradient-opacity-scaled linear segment vs closed forms (slab
+  /// with known lights; constant table on tetrahedra). Measured 3.1e-16,
+  /// 1.6e-16 (issue 19 acceptance: 1e-6).
+  double ShadedClosedFormAbs = 1e-14;
+  /// Linear tetrahedra vs the long double Gauss-Kronrod reference (random
+  /// tables, lights, gamma; both emission models). Measured 9.6e-16 (shaded),
+  /// 1.4e-16 (gradient opacity); also the closed-form path of
+  /// IntegrateShadedPolynomial.
+  double ShadedReferenceAbs = 1e-13;
+  /// gamma as unit distance u / gamma. Measured 3.3e-16.
+  double ShadedRescaleAbs = 1e-14;
+  /// A clamp kink moved by +-1e-12 across the segment's end. Measured 2.0e-12
+  /// (the perturbation itself).
+  double ShadedContinuityAbs = 1e-11;
 };
 
 inline constexpr ToleranceTable Tolerances{};
