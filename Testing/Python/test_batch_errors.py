@@ -80,6 +80,9 @@ CASES = [
     ("ray cast unsupported feature",
      [("render_mode", "ray_cast"), ("isosurfaces", [{"value": 50}])],
      "render_mode: ray_cast does not support isosurfaces (use cpu_accurate)"),
+    ("ray cast cell scalars", [("render_mode", "ray_cast"), ("array.association", "cell")],
+     "render_mode: ray_cast needs a point array (array.association cell: use cpu_accurate "
+     "or opengl_projection)"),
     ("ray cast tolerance type", [("render_mode", "ray_cast"), ("ray_cast_tolerance", "fine")],
      "ray_cast_tolerance: expected a number, got a string"),
     ("ray cast tolerance range", [("ray_cast_tolerance", 0.5)],
