@@ -363,7 +363,10 @@ TEST(VolumeShading, IdentityZeroGradientAndGammaRescale)
     ASSERT_TRUE(hov::VolumeNormal(gg, 0.0, n)) << mag;
     EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 4e-16) << mag;
   }
-  for (const double* gg : { std::vector<double>{ nan, 0, 0 }.data(), std::vector<double>{ 1e308, 1e308, 1e308 }.data() })
+  // (The gradients outlive the loop: temporaries here were freed before use;
+  // the sanitizer run caught it.)
+  const double badGradients[2][3] = { { nan, 0, 0 }, { 1e308, 1e308, 1e308 } };
+  for (const double* gg : badGradients)
   {
     double n[3];
     hov::VolumeNormal(gg, 0.0, n);
