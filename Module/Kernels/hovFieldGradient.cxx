@@ -9,35 +9,6 @@ namespace hov
 {
 namespace
 {
-/// inv = J^-1 of a row-major 3x3 matrix; false if singular or not finite.
-bool Inverse3(const double j[9], double inv[9])
-{
-  const double c00 = j[4] * j[8] - j[5] * j[7], c01 = j[5] * j[6] - j[3] * j[8],
-               c02 = j[3] * j[7] - j[4] * j[6];
-  const double det = j[0] * c00 + j[1] * c01 + j[2] * c02;
-  if (!(std::fabs(det) > 0.0) || !std::isfinite(det))
-  {
-    return false;
-  }
-  const double r = 1.0 / det;
-  inv[0] = c00 * r;
-  inv[1] = (j[2] * j[7] - j[1] * j[8]) * r;
-  inv[2] = (j[1] * j[5] - j[2] * j[4]) * r;
-  inv[3] = c01 * r;
-  inv[4] = (j[0] * j[8] - j[2] * j[6]) * r;
-  inv[5] = (j[2] * j[3] - j[0] * j[5]) * r;
-  inv[6] = c02 * r;
-  inv[7] = (j[1] * j[6] - j[0] * j[7]) * r;
-  inv[8] = (j[0] * j[4] - j[1] * j[3]) * r;
-  for (int i = 0; i < 9; ++i)
-  {
-    if (!std::isfinite(inv[i]))
-    {
-      return false;
-    }
-  }
-  return true;
-}
 
 void MatVec(const double m[9], const double v[3], double r[3])
 {
@@ -130,7 +101,7 @@ bool AffineGradientAlongRay(CellShape shape, const double* points, const double*
   double pcCenter[3], xc[3], jac[9], inv[9];
   CellParametricCenter(shape, pcCenter);
   EvaluateGeometry(shape, points, pcCenter, xc, jac);
-  if (!Inverse3(jac, inv))
+  if (!hov::InvertMatrix3(jac, inv))
   {
     return false;
   }
@@ -200,7 +171,7 @@ bool CellFieldAndGradient(CellShape shape, const double* points, const double* s
   double xc[3], jac[9], inv[9];
   EvaluateGeometry(shape, points, pc, xc, jac);
   gradient[0] = gradient[1] = gradient[2] = 0.0;
-  if (!Inverse3(jac, inv))
+  if (!hov::InvertMatrix3(jac, inv))
   {
     return false;
   }
