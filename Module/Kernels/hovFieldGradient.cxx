@@ -122,8 +122,16 @@ bool AffineGradientAlongRay(CellShape shape, const double* points, const double*
       return false;
     }
   }
+  const int nodes = CellNodeCount(shape);
+  for (int i = 0; i < nodes; ++i)
+  {
+    if (!std::isfinite(scalars[i]))
+    {
+      return false; // the documented refusal: no NaN coefficient reaches the caller
+    }
+  }
   double c[AffineFieldTerms];
-  AffineFieldCoefficients(basis, CellNodeCount(shape), scalars, c);
+  AffineFieldCoefficients(basis, nodes, scalars, c);
   Polynomial dpc[3];
   for (int axis = 0; axis < 3; ++axis)
   {
@@ -178,6 +186,13 @@ bool CellFieldAndGradient(CellShape shape, const double* points, const double* s
   for (int a = 0; a < 3; ++a)
   {
     gradient[a] = inv[a] * dpc[0] + inv[3 + a] * dpc[1] + inv[6 + a] * dpc[2];
+  }
+  if (!std::isfinite(value) || !std::isfinite(gradient[0]) || !std::isfinite(gradient[1]) ||
+    !std::isfinite(gradient[2]))
+  {
+    value = 0.0; // non-finite scalars: refused, nothing non-finite returned
+    gradient[0] = gradient[1] = gradient[2] = 0.0;
+    return false;
   }
   return converged;
 }

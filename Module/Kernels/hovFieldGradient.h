@@ -22,7 +22,8 @@
  *    27-term parametric polynomial, restricted by RestrictAffineField, then
  *    J^-T. Same base point and inverse Jacobian as RestrictCellScalar's
  *    affine path (corner 0, J at the centre), so S'(tau) = d . grad s(tau) up
- *    to rounding (not yet tested alone: the kernel tests cover TetraGradient).
+ *    to rounding (TestFieldGradient: measured 2.4e-15 relative to the
+ *    gradient's scale against analytic gradients, 1.6e-15 for S').
  *  - CellFieldAndGradient: any supported straight-edged cell at a point x:
  *    pc by InvertGeometry (warm start from @p pc), then the shape-function
  *    derivatives (exact, dual numbers) and J^-T. The pointwise sampler for
@@ -57,7 +58,8 @@ HOV_EXPORT bool AffineGradientAlongRay(CellShape shape, const double* points,
  * The field value and world gradient at @p x inside the cell; @p pc is the
  * Newton start (in) and the parametric point found (out). False if the
  * inversion failed or the Jacobian is singular (value and gradient are then
- * taken at the best iterate, or 0 if singular).
+ * taken at the best iterate, or 0 if singular), and for non-finite scalars
+ * (value and gradient 0).
  */
 HOV_EXPORT bool CellFieldAndGradient(CellShape shape, const double* points, const double* scalars,
   const double x[3], double pc[3], double& value, double gradient[3]);

@@ -217,6 +217,20 @@ struct ToleranceTable
   /// A clamp kink moved by +-1e-12 across the segment's end. Measured 2.0e-12
   /// (the perturbation itself).
   double ShadedContinuityAbs = 1e-11;
+
+  // --- issue 19: hovFieldGradient (TestFieldGradient) ---
+  /// AffineGradientAlongRay and CellFieldAndGradient on affine cells vs the
+  /// analytic gradient of a reproduced field (long double), and S'(tau) of
+  /// the restriction vs d . grad s; relative to the gradient's scale.
+  /// Measured 2.4e-15 (triquadratic hexahedron), S' 1.6e-15. Margin ~40.
+  double FieldGradientRel = 1e-13;
+  /// Coordinate fields on distorted (non-affine) cells: gradient e_x.
+  /// Measured 1.5e-15 (20-node hexahedron). Margin ~70.
+  double FieldGradientCurvedAbs = 1e-13;
+  /// Non-affine cells vs central differences (h = 1e-5) of an independent
+  /// value path: truncation h^2 f''' / 6 plus rounding eps / h.
+  /// Measured 8.9e-10 (quadratic pyramid). Margin ~10.
+  double FieldGradientDifferenceRel = 1e-8;
 };
 
 inline constexpr ToleranceTable Tolerances{};
