@@ -53,7 +53,10 @@
  * Measured (TestShadedSegment, GCC 12 Release) against a composite
  * Gauss-Legendre reference on quadratic fields: requested 1e-6 -> error
  * 1.8e-8 (550 panels), 1e-9 -> 1.6e-13, 1e-12 -> 2.3e-16; the estimate was
- * never exceeded (worst error/estimate 0.83). See the test's [measured] lines.
+ * never exceeded (worst error/estimate 0.83). Positional lights with
+ * attenuation and spot cones (TestShadedSegmentLights, 30 cases, 1e-9
+ * requested): error 3.8e-14, error/estimate 0.52. See the tests' [measured]
+ * lines.
  *
  * Thread safety: re-entrant (table and GO function read only; the sampler
  * must be); IntegrateShadedSegment does not allocate, IntegrateShadedPolynomial

@@ -15,7 +15,9 @@
  *  - LevelCrossings: every t in [a, b] where f(t) crosses a level, by dense
  *    sampling and bisection in long double.
  *  - ReferenceBlinnPhong: the shading formula of hovVolumeShading.h
- *    transcribed for directional lights in long double.
+ *    transcribed in long double; directional lights, and positional lights
+ *    (attenuation 1/(a0 + a1 d + a2 d^2), spot cone and exponent, as
+ *    vtkLight defines them) at the shaded point @p p when it is given.
  */
 #ifndef hovFeatureTestReference_h
 #define hovFeatureTestReference_h
@@ -243,11 +245,54 @@ inline RefRGBA ReferenceMediumComposite(const RefMedium& m, int panels)
   return out;
 }
 
-/// Directional Blinn-Phong (hovVolumeShading.h's formula) in long double:
-/// returns M and K per channel (c_sh = clamp(M c + K)).
+/// Direction to the light l (unit) and its intensity factor at point @p p
+/// (nullptr: directional lights only); false if the point is outside a spot cone.
+inline bool ReferenceLightAt(const hov::ShadingLight& light, const LD* p, LD l[3], LD& factor)
+{
+  auto dot = [](const LD* a, const LD* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  factor = light.Intensity;
+  if (!light.Positional || !p)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      l[i] = -static_cast<LD>(light.Direction[i]);
+    }
+    const LD ll = std::sqrt(dot(l, l));
+    for (int i = 0; i < 3; ++i)
+    {
+      l[i] /= ll;
+    }
+    return true;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    l[i] = static_cast<LD>(light.Position[i]) - p[i];
+  }
+  const LD d = std::sqrt(dot(l, l));
+  for (int i = 0; i < 3; ++i)
+  {
+    l[i] /= d;
+  }
+  factor /= light.Attenuation[0] + light.Attenuation[1] * d + light.Attenuation[2] * d * d;
+  if (light.ConeAngle < 90.0)
+  {
+    LD axis[3] = { light.Direction[0], light.Direction[1], light.Direction[2] };
+    const LD al = std::sqrt(dot(axis, axis));
+    const LD cosAxis = -dot(l, axis) / al;
+    if (cosAxis < std::cos(static_cast<LD>(light.ConeAngle) * 3.14159265358979323846264L / 180.0L))
+    {
+      return false;
+    }
+    factor *= std::pow(cosAxis, static_cast<LD>(light.Exponent));
+  }
+  return true;
+}
+
+/// Blinn-Phong (hovVolumeShading.h's formula) in long double: returns M and
+/// K per channel (c_sh = clamp(M c + K)); positional lights at @p p.
 inline void ReferenceBlinnPhong(const LD n[3], const LD v[3],
   const std::vector<hov::ShadingLight>& lights, const hov::ShadingMaterial& m, bool lightAmbient,
-  const LD ambientLight[3], LD M[3], LD K[3])
+  const LD ambientLight[3], LD M[3], LD K[3], const LD* p = nullptr)
 {
   auto dot = [](const LD* a, const LD* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
   for (int c = 0; c < 3; ++c)
@@ -257,11 +302,10 @@ inline void ReferenceBlinnPhong(const LD n[3], const LD v[3],
   }
   for (const auto& light : lights)
   {
-    LD l[3] = { -light.Direction[0], -light.Direction[1], -light.Direction[2] };
-    const LD ll = std::sqrt(dot(l, l));
-    for (LD& x : l)
+    LD l[3], intensity;
+    if (!ReferenceLightAt(light, p, l, intensity))
     {
-      x /= ll;
+      continue;
     }
     LD h[3] = { l[0] + v[0], l[1] + v[1], l[2] + v[2] };
     const LD hl = std::sqrt(dot(h, h));
@@ -280,8 +324,8 @@ inline void ReferenceBlinnPhong(const LD n[3], const LD v[3],
       nl = std::fabs(nl);
       nh = std::fabs(nh);
     }
-    const LD df = light.Intensity * std::max(nl, 0.0L);
-    const LD sf = nh > 0 ? light.Intensity * std::pow(nh, static_cast<LD>(m.SpecularPower)) : 0.0L;
+    const LD df = intensity * std::max(nl, 0.0L);
+    const LD sf = nh > 0 ? intensity * std::pow(nh, static_cast<LD>(m.SpecularPower)) : 0.0L;
     for (int c = 0; c < 3; ++c)
     {
       M[c] += m.Diffuse * df * light.Color[c];
