@@ -129,15 +129,15 @@ bool RepresentFieldOnSegment(const LagrangeCellView& cell, const CellDerivativeB
     out.push_back(p);
     return true;
   }
-  return detail::RepresentCurvedField(cell, bounds, origin, direction, t0, t1, pcGuess, settings, out);
+  return detail::RepresentCurvedField(cell, bounds.FieldScale, tol, origin, direction, t0, t1,
+    pcGuess, settings.MaxPieces, out);
 }
 
-bool detail::RepresentCurvedField(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
+bool detail::RepresentCurvedField(const LagrangeCellView& cell, double scale, double tol,
   const double origin[3], const double direction[3], double t0, double t1, const double* pcGuess,
-  const CurvedSegmentSettings& settings, std::vector<FieldPiece>& out)
+  int maxPieces, std::vector<FieldPiece>& out)
 {
   out.clear();
-  const double tol = settings.FieldTolerance * bounds.FieldScale;
   // Curved: Chebyshev pieces, bisected (left first) until the estimate meets the tolerance.
   double pc[3];
   cell.Basis->ParametricCenter(pc);
@@ -155,12 +155,12 @@ bool detail::RepresentCurvedField(const LagrangeCellView& cell, const CellDeriva
     const Span s = stack.back();
     stack.pop_back();
     FieldPiece p;
-    if (!SamplePiece(cell, origin, direction, s.A, s.B, pc, bounds.FieldScale, p))
+    if (!SamplePiece(cell, origin, direction, s.A, s.B, pc, scale, p))
     {
       return false;
     }
     const bool canSplit =
-      static_cast<int>(out.size() + stack.size()) + 2 <= settings.MaxPieces && s.B - s.A > 1e-9 * (t1 - t0);
+      static_cast<int>(out.size() + stack.size()) + 2 <= maxPieces && s.B - s.A > 1e-9 * (t1 - t0);
     if (p.Error > tol && canSplit)
     {
       const double mid = 0.5 * (s.A + s.B);
