@@ -477,7 +477,9 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
       }
       continue;
     }
-    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+    // Finite points and their extent known (Build): inversions skip both checks.
+    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data(),
+      cell.Faces.Extent };
     CurvedRayInterval iv[MaxIntervalsPerCell];
     const int n = RayCurvedCellIntervals(
       view, cell.Faces, origin, direction, t0, t1, iv, MaxIntervalsPerCell, {}, nullptr, &scratch);
@@ -542,7 +544,7 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
       }
       const Cell& cell = this->Cells[s.Cell];
       const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
-        cell.Scalars.data() };
+        cell.Scalars.data(), cell.Faces.Extent };
       CurvedCellInfo info;
       info.FieldLo = cell.FieldLo;
       info.FieldHi = cell.FieldHi;

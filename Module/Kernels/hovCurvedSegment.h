@@ -220,6 +220,9 @@ struct FieldPiece
   BernsteinPolynomial G;
   double Error = 0.0;
   bool Exact = false; ///< G is the exact polynomial (affine geometry)
+  /// Parametric coordinates at T0 and T1 (sampled pieces): warm starts.
+  bool HasPC = false;
+  double PC0[3] = { 0.0, 0.0, 0.0 }, PC1[3] = { 0.0, 0.0, 0.0 };
 };
 
 /**
