@@ -27,7 +27,8 @@
 //    per frame, --frames frames after a still frame: median wall time, fps and
 //    the subsampling the mapper chose.
 // Image checks between code versions: --save-images DIR writes ours' float
-// RGBA (raw float32, S x S x 4, row 0 at the bottom) per dataset, and
+// RGBA (raw float32, S x S x 4, row 0 at the bottom) per dataset (and the
+// tessellation route's per level, NAME_tessL_...), and
 // --compare-images DIR prints the max |difference| per channel against such
 // a file (and the pixels off by more than the tolerance). --semantics vtk
 // renders in VTK_UNSTRUCTURED opacity semantics instead of the default.
@@ -357,6 +358,13 @@ void Run(const Dataset& d, const Options& o)
         RenderStill(tets, d.Array.c_str(), property, vtkHighOrderVolumeMapper::CPU_ACCURATE, o);
       double maxDiff, meanDiff;
       Difference(ours.RGBA, cpu.RGBA, maxDiff, meanDiff);
+      if (!o.Save.empty())
+      {
+        // The route's image per level (to locate where it and ours differ).
+        std::ofstream out(
+          ImageFile(o.Save, d.Name + " tess" + std::to_string(level), o), std::ios::binary);
+        out.write(reinterpret_cast<const char*>(cpu.RGBA.data()), cpu.RGBA.size() * sizeof(float));
+      }
       reached = maxDiff <= 1.0 / 255.0;
       std::printf("  | %d%s | %lld | %.3f | %.4f | %.4f | %.3f | %.4f | %.1f | %.1f |\n", level,
         reached ? " (reference)" : "", static_cast<long long>(tets->GetNumberOfCells()),
