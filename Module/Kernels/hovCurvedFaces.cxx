@@ -90,47 +90,7 @@ double Dot(const double a[3], const double b[3])
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/// Bernstein basis of degree @p n at @p y: b[i] = B_i^n(y) and, if given,
-/// db[i] = d/dy B_i^n(y) (= n (B_{i-1}^{n-1} - B_i^{n-1})).
-void BernsteinBasis(int n, double y, double* b, double* db)
-{
-  // Degree-(n-1) basis first (for the derivatives), by the triangle scheme.
-  const double z = 1.0 - y;
-  b[0] = 1.0;
-  for (int k = 1; k < n; ++k)
-  {
-    double prev = 0.0;
-    for (int i = 0; i < k; ++i)
-    {
-      const double t = b[i];
-      b[i] = prev + z * t;
-      prev = y * t;
-    }
-    b[k] = prev;
-  }
-  if (db)
-  {
-    for (int i = 0; i <= n; ++i)
-    {
-      db[i] = n * ((i > 0 ? b[i - 1] : 0.0) - (i < n ? b[i] : 0.0));
-    }
-  }
-  if (n > 0)
-  {
-    double prev = 0.0;
-    for (int i = 0; i < n; ++i)
-    {
-      const double t = b[i];
-      b[i] = prev + z * t;
-      prev = y * t;
-    }
-    b[n] = prev;
-  }
-}
-
-/// The ray problem on one face: its map (the patch's control net: the
-/// cell's map restricted to the face, to the conversion's rounding) and the
-/// projection frame.
+/// The ray problem on one face: its exact map and the projection frame.
 struct FaceProblem
 {
   const LagrangeCellView* Cell;
@@ -144,38 +104,14 @@ struct FaceProblem
   void Evaluate(double u, double v, double h[2], double jac[4], double x[3], double pc[3],
     double* normal = nullptr) const
   {
-    const CurvedFacePatch& f = *this->Face;
-    FaceParametricPoint(f, u, v, pc);
-    const int du = f.DegreeU, dv = f.DegreeV, nv = dv + 1;
-    double bu[MaxFaceDegree + 1], dbu[MaxFaceDegree + 1], bv[MaxFaceDegree + 1],
-      dbv[MaxFaceDegree + 1];
-    BernsteinBasis(du, u, bu, dbu);
-    BernsteinBasis(dv, v, bv, dbv);
-    double xu[3] = { 0.0, 0.0, 0.0 }, xv[3] = { 0.0, 0.0, 0.0 }, rel[3];
-    x[0] = x[1] = x[2] = 0.0;
-    const double* net = f.Net.data();
-    for (int a = 0; a <= du; ++a)
-    {
-      // Row a contracted along v: its value and v-derivative.
-      double r[3] = { 0.0, 0.0, 0.0 }, rv[3] = { 0.0, 0.0, 0.0 };
-      const double* row = net + 3 * nv * a;
-      for (int b = 0; b < nv; ++b)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          r[c] += bv[b] * row[3 * b + c];
-          rv[c] += dbv[b] * row[3 * b + c];
-        }
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        x[c] += bu[a] * r[c];
-        xu[c] += dbu[a] * r[c];
-        xv[c] += bu[a] * rv[c];
-      }
-    }
+    double pu[3], pv[3], J[9];
+    FaceParametricPoint(*this->Face, u, v, pc, pu, pv);
+    EvaluateLagrangePosition(*this->Cell, pc, x, J);
+    double xu[3], xv[3], rel[3];
     for (int i = 0; i < 3; ++i)
     {
+      xu[i] = J[3 * i] * pu[0] + J[3 * i + 1] * pu[1] + J[3 * i + 2] * pu[2];
+      xv[i] = J[3 * i] * pv[0] + J[3 * i + 1] * pv[1] + J[3 * i + 2] * pv[2];
       rel[i] = x[i] - this->O[i];
     }
     h[0] = Dot(this->E1, rel);
@@ -208,10 +144,10 @@ struct FaceProblem
   bool Newton(double& u, double& v, const double box[4], FaceCrossing& out) const
   {
     const double wu = 0.5 * (box[1] - box[0]), wv = 0.5 * (box[3] - box[2]);
-    double h[2], jac[4], x[3], pc[3], normal[3];
+    double h[2], jac[4], x[3], pc[3];
     for (int iter = 0; iter < 40; ++iter)
     {
-      this->Evaluate(u, v, h, jac, x, pc, normal);
+      this->Evaluate(u, v, h, jac, x, pc);
       const double det = jac[0] * jac[3] - jac[1] * jac[2];
       if (!(std::abs(det) > 0.0))
       {
@@ -229,12 +165,8 @@ struct FaceProblem
       const bool floor = std::max(std::abs(h[0]), std::abs(h[1])) <= 16.0 * Eps * this->Extent;
       if (step <= 1e-15 || (floor && step <= 1e-9))
       {
-        // The point moved by the last step only: a step at the rounding level
-        // keeps the evaluation just made (x, pc, normal), else re-evaluate.
-        if (step > 1e-15)
-        {
-          this->Evaluate(u, v, h, jac, x, pc, normal);
-        }
+        double normal[3];
+        this->Evaluate(u, v, h, jac, x, pc, normal);
         out.Side = this->Side(normal);
         out.U = u;
         out.V = v;
