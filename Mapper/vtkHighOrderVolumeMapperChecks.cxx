@@ -48,12 +48,14 @@ size_t ZeroOverflowingPixels(T* rgba, size_t pixels)
   return bad;
 }
 
+/// True if the float image of these values is zero: a double value below
+/// float's smallest denormal (e.g. a unit distance of 1e300) is published as 0.
 template <typename T>
 bool AllZero(const T* rgba, size_t pixels)
 {
   for (size_t i = 0; i < 4 * pixels; ++i)
   {
-    if (rgba[i] != T(0))
+    if (static_cast<float>(rgba[i]) != 0.0f)
     {
       return false;
     }

@@ -375,6 +375,28 @@ int TestBadInputTF(int, char*[])
       },
       sem == 2 ? 1e-6 : alpha * 1e-5, nullptr, 0);
   }
+  // 1e300: alpha ~ 1e-300 in double, 0 in the float image: the image is empty
+  // and must say so (the empty-image check once looked at the double values;
+  // hovRobustness case 7004413). In every mode.
+  for (int mode : { vtkHighOrderVolumeMapper::CPU_ACCURATE,
+         vtkHighOrderVolumeMapper::OPENGL_PROJECTION, vtkHighOrderVolumeMapper::RAY_CAST })
+  {
+    scene.Mapper->SetRenderMode(mode);
+    for (int sem = 0; sem < 2; ++sem)
+    {
+      runCase(std::string("unit distance 1e300 (below float: empty, warned), mode ") +
+          std::to_string(mode),
+        sem,
+        [&](TF& tf) {
+          constantColor(tf);
+          tf.Opacity->AddPoint(0.0, 0.5);
+          tf.Opacity->AddPoint(1.75, 0.5);
+          tf.Property->SetScalarOpacityUnitDistance(1e300);
+        },
+        1, [](double, double, double e[4]) { e[0] = e[1] = e[2] = e[3] = 0.0; }, 0.0, nullptr, 0);
+    }
+  }
+  scene.Mapper->SetRenderMode(vtkHighOrderVolumeMapper::CPU_ACCURATE);
   // Invalid unit distances: a warning, rendered as u = 1.
   {
     Image unitOne[2];

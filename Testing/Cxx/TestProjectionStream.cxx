@@ -6,6 +6,8 @@
 // GL_INVALID_VALUE from the mapping and an empty image, or a crash in llvmpipe.
 #include "vtkHighOrderProjectionStream.h"
 
+#include "hovTestScenes.h" // OffscreenWindow
+
 #include "vtkNew.h"
 #include "vtkOpenGLVertexArrayObject.h" // the element buffer binds to a vertex array
 #include "vtkRenderWindow.h"
@@ -14,9 +16,7 @@
 
 int TestProjectionStream(int, char*[])
 {
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(8, 8);
+  auto window = hovTest::OffscreenWindow(nullptr, 8, 8); // X, or EGL headless
   window->Render(); // a current OpenGL context
   window->MakeCurrent();
   vtkNew<vtkOpenGLVertexArrayObject> vertexArray;

@@ -93,7 +93,9 @@ MODES = [("cpu_accurate", "vtk_unstructured"), ("ray_cast", "vtk_unstructured"),
 
 
 def batch_commands(temp):
-    return {"hovBatchRender": [os.path.join(build_dir(temp), "bin", "hovBatchRender")],
+    exe = os.environ.get("HOV_BATCH_RENDER") or os.path.join(build_dir(temp), "bin",
+                                                             "hovBatchRender")
+    return {"hovBatchRender": [exe],
             "python batch": [PYTHON, "-m", "highordervolume.batch"]}
 
 
