@@ -1,79 +1,125 @@
 #include "vtkHighOrderVolumeMapper.h"
 
-#include "vtkHighOrderCellProjector.h" // CPU path
-#include "vtkHighOrderFeatureSetup.h"  // isosurfaces, fields, splatting
-#include "vtkHighOrderImageDisplay.h"  // OpenGL blit of the float image
-#include "vtkHighOrderProjection.h"    // OPENGL_PROJECTION mode
-#include "vtkHighOrderRayCastState.h"  // RAY_CAST mode
-#include "vtkHighOrderTetraSetup.h"    // per-cell preparation
-#include "vtkHighOrderTransferFunction.h"
-#include "vtkHighOrderViewRays.h" // pixel rays
+#include "hovCellScene.h"                 // the cells the projection modes share
+#include "hovFloatImage.h"                // the published image
+#include "hovImageCheck.h"                // NaN/Inf pixels and empty images
+#include "hovImageDisplay.h"              // the CPU image over the scene, depth read-back
+#include "hovProjectionBackend.h"         // OPENGL_PROJECTION
+#include "hovProjectorBackend.h"          // CPU_ACCURATE
+#include "hovRayCastBackend.h"            // RAY_CAST
+#include "hovRenderFrame.h"               // the frame
+#include "vtkHighOrderTransferFunction.h" // GetTransferFunction
+#include "vtkSteinVisibilitySort.h"       // the default (exact) visibility sort
 
-#include "hovTransferFunction.h" // the kernel table
+#include "vtkCamera.h"        // the active camera
+#include "vtkCommand.h"       // ProgressEvent, AbortCheckEvent
+#include "vtkDoubleArray.h"   // GetDoubleImage
+#include "vtkFloatArray.h"    // the float image
+#include "vtkImageData.h"     // the float image
+#include "vtkObjectFactory.h" // vtkStandardNewMacro
+#include "vtkPlaneCollection.h" // clipping planes
+#include "vtkPointData.h"     // the float image
+#include "vtkRenderWindow.h"  // CheckAbortStatus
+#include "vtkRenderer.h"      // viewport, depth
+#include "vtkTimerLog.h"      // frame times
+#include "vtkVolume.h"        // the volume
 
-#include "vtkSteinVisibilitySort.h" // the default (exact) visibility sort
-
-#include "vtkCamera.h"
-#include "vtkCommand.h" // ProgressEvent
-#include "vtkCellData.h"
-#include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
-#include "vtkImageData.h"
-#include "vtkMatrix4x4.h"
-#include "vtkObjectFactory.h"
-#include "vtkPointData.h"
-#include "vtkRenderWindow.h" // CheckAbortStatus
-#include "vtkRenderer.h"
-#include "vtkTimerLog.h"
-#include "vtkUnstructuredGridBase.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
-
-#include <algorithm> // std::reverse
-#include <string>    // setup errors
-#include <vector>    // buffers
+#include <algorithm> // std::copy
+#include <cmath>     // std::isfinite
+#include <sstream>   // messages
+#include <string>    // messages
 
 vtkStandardNewMacro(vtkHighOrderVolumeMapper);
-
-
 vtkCxxSetObjectMacro(vtkHighOrderVolumeMapper, VisibilitySort, vtkVisibilitySort);
+
+namespace
+{
+/// The frame's messages as this mapper's warnings and errors.
+class MapperMessages : public hov::FrameMessages
+{
+public:
+  explicit MapperMessages(vtkHighOrderVolumeMapper* mapper)
+    : Mapper(mapper)
+  {
+  }
+  void Warning(const std::string& text) override
+  {
+    vtkWarningWithObjectMacro(this->Mapper, << text);
+  }
+  void Error(const std::string& text) override { vtkErrorWithObjectMacro(this->Mapper, << text); }
+
+private:
+  vtkHighOrderVolumeMapper* Mapper;
+};
+
+/// Entry @p value of @p table (the public enum's value: the static_asserts
+/// below pin the order), clamped as the public setters clamp.
+template <typename Enum, size_t N>
+Enum Convert(const Enum (&table)[N], int value)
+{
+  return table[std::min(std::max(value, 0), static_cast<int>(N) - 1)];
+}
+
+using Mapper = vtkHighOrderVolumeMapper;
+// The public enums, converted once (FrameSettingsOf) into the hov enums the
+// render modes read; each table is indexed by the public value.
+constexpr hov::RenderMode RenderModes[] = { hov::RenderMode::CPUAccurate,
+  hov::RenderMode::OpenGLProjection, hov::RenderMode::RayCast };
+static_assert(Mapper::CPU_ACCURATE == 0 && Mapper::OPENGL_PROJECTION == 1 && Mapper::RAY_CAST == 2,
+  "RenderModes");
+constexpr hov::OpacitySemantics Semantics[] = { hov::OpacitySemantics::GPUCompatible,
+  hov::OpacitySemantics::VTKUnstructured, hov::OpacitySemantics::RawExtinction };
+static_assert(Mapper::GPU_COMPATIBLE == 0 && Mapper::VTK_UNSTRUCTURED == 1 &&
+    Mapper::RAW_EXTINCTION == 2,
+  "Semantics");
+constexpr hov::EmissionModel Emissions[] = { hov::EmissionModel::WilliamsMax,
+  hov::EmissionModel::WilhelmsVanGelder };
+static_assert(Mapper::WILLIAMS_MAX == 0 && Mapper::WILHELMS_VAN_GELDER == 1, "Emissions");
+constexpr hov::SegmentMethod Methods[] = { hov::SegmentMethod::Exact,
+  hov::SegmentMethod::Approximate };
+static_assert(Mapper::EXACT == 0 && Mapper::APPROXIMATE == 1, "Methods");
+constexpr hov::CellOrdering Orderings[] = { hov::CellOrdering::VisibilitySort,
+  hov::CellOrdering::PerPixelSort };
+static_assert(Mapper::VISIBILITY_SORT == 0 && Mapper::PER_PIXEL_SORT == 1, "Orderings");
+constexpr hov::VectorMode VectorModes[] = { hov::VectorMode::Magnitude, hov::VectorMode::Component };
+static_assert(Mapper::MAGNITUDE == 0 && Mapper::COMPONENT == 1, "VectorModes");
+constexpr hov::ProjectionColorMethod ColorMethods[] = {
+  hov::ProjectionColorMethod::InterpolatedOpacity, hov::ProjectionColorMethod::AverageColor,
+  hov::ProjectionColorMethod::TableColor, hov::ProjectionColorMethod::ExactColor
+};
+static_assert(Mapper::INTERPOLATED_OPACITY == 0 && Mapper::AVERAGE_COLOR == 1 &&
+    Mapper::TABLE_COLOR == 2 && Mapper::EXACT_COLOR == 3,
+  "ColorMethods");
+constexpr hov::ProjectionOrder Orders[] = { hov::ProjectionOrder::Exact,
+  hov::ProjectionOrder::Approximate };
+static_assert(Mapper::EXACT_ORDER == 0 && Mapper::APPROXIMATE_ORDER == 1, "Orders");
+constexpr hov::OpacityLookup Lookups[] = { hov::OpacityLookup::Texture,
+  hov::OpacityLookup::Analytic };
+static_assert(Mapper::OPACITY_TEXTURE == 0 && Mapper::OPACITY_ANALYTIC == 1, "Lookups");
+}
 
 struct vtkHighOrderVolumeMapper::Internals
 {
-  vtkHighOrderTetraSetup Setup;
-  vtkMTimeType SetupInputTime = 0;
-  vtkDataArray* SetupArray = nullptr;
-  vtkMTimeType SetupArrayTime = 0;
-  int SetupComponent = -2;
-  bool SetupCellScalars = false;
-  bool SetupValid = false;
-  unsigned long SetupGeneration = 0;
-
-  std::vector<vtkIdType> FrontToBack;
-  vtkCamera* OrderCamera = nullptr;
-  vtkMTimeType OrderCameraTime = 0;
-  vtkMTimeType OrderMatrixTime = 0;
-  vtkMTimeType OrderSortTime = 0;
-  unsigned long OrderGeneration = ~0ul;
-  // The Stein sort found a cycle in the current order: composite per pixel.
-  bool OrderHasCycles = false;
-  unsigned long CycleWarningGeneration = ~0ul;
-
-  vtkNew<vtkHighOrderTransferFunction> TransferFunction;
-  vtkHighOrderCellProjector Projector;
-  vtkHighOrderImageDisplay Display;
+  explicit Internals(vtkHighOrderVolumeMapper* self)
+    : Messages(self)
+    , Projector(Scene)
+    , Projection(Scene)
+  {
+  }
+  MapperMessages Messages;
+  hov::CellScene Scene; ///< cells, order and table of CPU_ACCURATE and OPENGL_PROJECTION
+  hov::ProjectorBackend Projector;
+  hov::ProjectionBackend Projection;
+  hov::RayCastBackend RayCast;
+  hov::ImageCheck Check;
+  hov::ImageDisplay Display;
   vtkNew<vtkImageData> FloatImage;
-  std::vector<double> RGBA;
+  std::vector<double> RGBA; ///< the last CPU image (GetDoubleImage)
   std::vector<float> Depth;
 };
 
 vtkHighOrderVolumeMapper::vtkHighOrderVolumeMapper()
-  : ProjectionImpl(new vtkHighOrderProjection)
-  , RayCastImpl(new vtkHighOrderRayCastState)
-  , Impl(new Internals)
-  , FeatureImpl(new vtkHighOrderFeatureSetup)
+  : Impl(new Internals(this))
 {
   vtkSteinVisibilitySort* sort = vtkSteinVisibilitySort::New();
   this->SetVisibilitySort(sort);
@@ -86,6 +132,90 @@ vtkHighOrderVolumeMapper::~vtkHighOrderVolumeMapper()
   this->SetColorArrayName(nullptr);
   this->SetIsosurfaceArrayName(nullptr);
 }
+
+// ---- Settings -------------------------------------------------------------
+
+namespace
+{
+/// Clamps @p value into [lo, hi] into @p field; false (nothing set) if not
+/// finite; @p clamped if it was outside.
+bool SetFiniteClamped(
+  double& field, double value, double lo, double hi, bool& modified, bool& clamped)
+{
+  modified = clamped = false;
+  if (!std::isfinite(value))
+  {
+    return false;
+  }
+  const double v = value < lo ? lo : (value > hi ? hi : value);
+  clamped = v != value;
+  modified = field != v;
+  field = v;
+  return true;
+}
+}
+
+// The real-valued setters: like vtkSetClampMacro they clamp to the documented
+// range (with a warning naming the setter, the value and the range), but a NaN
+// (which vtkSetClampMacro lets through) or an infinity is refused with an error
+// naming the setter, and the value stays.
+#define HOV_FINITE_SETTER(name, lo, hi)                                                          \
+  void vtkHighOrderVolumeMapper::Set##name(double value)                                         \
+  {                                                                                              \
+    bool modified = false, clamped = false;                                                      \
+    if (!SetFiniteClamped(this->name, value, lo, hi, modified, clamped))                         \
+    {                                                                                            \
+      vtkErrorMacro(<< "Set" #name "(" << value << "): not a finite number; keeping "            \
+                    << this->name);                                                              \
+    }                                                                                            \
+    else if (clamped)                                                                            \
+    {                                                                                            \
+      vtkWarningMacro(<< "Set" #name "(" << value << "): outside [" << lo << ", " << hi          \
+                      << "]; clamped to " << this->name);                                        \
+    }                                                                                            \
+    if (modified)                                                                                \
+    {                                                                                            \
+      this->Modified();                                                                          \
+    }                                                                                            \
+  }
+
+// Below 1e-8 the image error bound (2x) is beyond float's resolution, and the
+// refined table only grows (1e-12: 10^6 nodes, every one a breakpoint).
+HOV_FINITE_SETTER(GPUOpacityTolerance, 1e-8, 0.1)
+HOV_FINITE_SETTER(TerminationTransmittance, 0.0, 0.1)
+HOV_FINITE_SETTER(SplatPixelThreshold, 0.0, 1e6)
+HOV_FINITE_SETTER(RayCastTolerance, 1e-12, 0.1)
+HOV_FINITE_SETTER(RayCastInteractiveUpdateRate, 0.0, 1e6)
+HOV_FINITE_SETTER(EmissionScale, 0.0, 1e6)
+
+int vtkHighOrderVolumeMapper::AddIsosurface(
+  double value, double r, double g, double b, double opacity)
+{
+  this->Isosurfaces.insert(this->Isosurfaces.end(), { value, r, g, b, opacity });
+  this->Modified();
+  return static_cast<int>(this->Isosurfaces.size() / 5) - 1;
+}
+
+void vtkHighOrderVolumeMapper::RemoveAllIsosurfaces()
+{
+  if (!this->Isosurfaces.empty())
+  {
+    this->Isosurfaces.clear();
+    this->Modified();
+  }
+}
+
+int vtkHighOrderVolumeMapper::GetNumberOfIsosurfaces()
+{
+  return static_cast<int>(this->Isosurfaces.size() / 5);
+}
+
+double vtkHighOrderVolumeMapper::GetIsosurfaceValue(int i)
+{
+  return i >= 0 && i < this->GetNumberOfIsosurfaces() ? this->Isosurfaces[5 * i] : 0.0;
+}
+
+// ---- Outputs --------------------------------------------------------------
 
 vtkImageData* vtkHighOrderVolumeMapper::GetFloatImage()
 {
@@ -104,414 +234,162 @@ void vtkHighOrderVolumeMapper::GetDoubleImage(vtkDoubleArray* rgba)
   std::copy(values.begin(), values.end(), rgba->GetPointer(0));
 }
 
+vtkImageData* vtkHighOrderVolumeMapper::GetRayCastErrorImage()
+{
+  return this->Impl->RayCast.GetErrorImage();
+}
+
 vtkHighOrderTransferFunction* vtkHighOrderVolumeMapper::GetTransferFunction()
 {
-  return this->Impl->TransferFunction;
+  return this->Impl->Scene.GetTransferFunction();
 }
 
-bool vtkHighOrderVolumeMapper::PrepareCells(vtkVolume*)
-{
-  Internals& impl = *this->Impl;
-  vtkUnstructuredGridBase* input = this->GetInput();
-  int cellFlag = 0;
-  vtkDataArray* scalars = vtkAbstractMapper::GetScalars(input, this->ScalarMode,
-    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-  if (!scalars)
-  {
-    vtkErrorMacro("No numeric scalars to render: set point scalars on the input or select a "
-                  "numeric point/cell array with SelectScalarArray().");
-    impl.SetupValid = false;
-    return false;
-  }
-  const bool cellScalars = cellFlag == 1;
-  const int nc = scalars->GetNumberOfComponents();
-  int component = -1;
-  if (nc > 1 && this->VectorMode == COMPONENT)
-  {
-    component = std::min(std::max(this->VectorComponent, 0), nc - 1);
-    if (component != this->VectorComponent)
-    {
-      vtkWarningMacro("VectorComponent " << this->VectorComponent << " out of range for array '"
-                                         << (scalars->GetName() ? scalars->GetName() : "")
-                                         << "' with " << nc << " components; using " << component);
-    }
-  }
-  if (nc == 1)
-  {
-    component = 0;
-  }
-  if (impl.SetupValid && impl.SetupInputTime == input->GetMTime() && impl.SetupArray == scalars &&
-    impl.SetupArrayTime == scalars->GetMTime() && impl.SetupComponent == component &&
-    impl.SetupCellScalars == cellScalars)
-  {
-    return true;
-  }
-  impl.SetupInputTime = input->GetMTime();
-  impl.SetupArray = scalars;
-  impl.SetupArrayTime = scalars->GetMTime();
-  impl.SetupComponent = component;
-  impl.SetupCellScalars = cellScalars;
-  impl.SetupValid = true;
-  ++impl.SetupGeneration;
-  std::string error;
-  if (!impl.Setup.Build(input, scalars, cellScalars, component, &error) && !error.empty())
-  {
-    vtkErrorMacro("Cannot render: " << error << ".");
-    impl.SetupValid = false;
-    return false;
-  }
-  const vtkHighOrderTetraSetup::Statistics& st = impl.Setup.GetStatistics();
-  if (st.Cells == 0)
-  {
-    vtkWarningMacro("The input grid has no cells: nothing to render.");
-  }
-  if (st.Unsupported)
-  {
-    vtkWarningMacro(<< st.Unsupported << " of " << st.Cells << " cells are of types not yet "
-                    << "supported by the CPU projection path (first type: "
-                    << st.FirstUnsupportedType << "; supported: 10-14, 24-27, 29); they are "
-                    << "skipped.");
-  }
-  if (st.NonFinitePoints || st.NonFiniteScalars || st.Degenerate)
-  {
-    vtkWarningMacro(<< "Skipped cells: " << st.NonFinitePoints << " with NaN/Inf points or bad "
-                    << "connectivity, " << st.NonFiniteScalars << " with NaN/Inf scalars, "
-                    << st.Degenerate << " degenerate (zero-volume or tangled) cells.");
-  }
-  if (st.Inverted)
-  {
-    vtkWarningMacro(<< st.Inverted << " tetrahedra are inverted (negative orientation); they are "
-                    << "rendered as the convex hull of their vertices.");
-  }
-  if (st.InvertedGeneral)
-  {
-    vtkWarningMacro(<< st.InvertedGeneral << " non-tetrahedral cells are inverted (mirrored node "
-                    << "order); they are rendered as the region their corners bound.");
-  }
-  if (st.Curved)
-  {
-    vtkWarningMacro(<< st.Curved << " quadratic cells have curved geometry (max node deviation "
-                    << st.MaxCurvature << " of the cell size); they are rendered with straight "
-                    << "edges and their quadratic field (curved geometry needs the ray caster).");
-  }
-  return true;
-}
+// ---- Rendering ------------------------------------------------------------
 
-bool vtkHighOrderVolumeMapper::PrepareOrder(
-  vtkCamera* camera, vtkVolume* volume, bool needVisibilitySort)
+hov::Backend& vtkHighOrderVolumeMapper::SelectBackend(bool window)
 {
-  Internals& impl = *this->Impl;
-  if (this->CellOrdering == PER_PIXEL_SORT && !needVisibilitySort)
+  switch (this->RenderMode)
   {
-    // Any order will do: each pixel sorts its own segments.
-    const vtkIdType n = impl.Setup.GetNumberOfRenderedCells();
-    if (impl.OrderGeneration != impl.SetupGeneration || impl.OrderCamera != nullptr ||
-      static_cast<vtkIdType>(impl.FrontToBack.size()) != n)
-    {
-      impl.FrontToBack.resize(n);
-      for (vtkIdType i = 0; i < n; ++i)
+    case RAY_CAST:
+      return this->Impl->RayCast;
+    case OPENGL_PROJECTION:
+      if (window)
       {
-        impl.FrontToBack[i] = i;
+        return this->Impl->Projection;
       }
-      impl.OrderGeneration = impl.SetupGeneration;
-      impl.OrderCamera = nullptr;
-    }
-    impl.OrderHasCycles = false;
-    return true;
+      return this->Impl->Projector; // RenderImage has no window: the CPU image
+    default:
+      return this->Impl->Projector;
   }
-  vtkMatrix4x4* matrix = volume->GetMatrix();
-  if (!this->VisibilitySort)
-  {
-    vtkErrorMacro("No visibility sort set.");
-    return false;
-  }
-  if (impl.OrderGeneration == impl.SetupGeneration && impl.OrderCamera == camera &&
-    impl.OrderCameraTime == camera->GetMTime() && impl.OrderMatrixTime == matrix->GetMTime() &&
-    impl.OrderSortTime == this->VisibilitySort->GetMTime())
-  {
-    return true; // same view: reuse the order (also keeps ties deterministic)
-  }
-  // The sort sees only the valid cells (never a cell with broken
-  // connectivity or NaN points), and its ids are rendered-cell indices.
-  vtkVisibilitySort* sort = this->VisibilitySort;
-  sort->SetInput(impl.Setup.GetSortGrid());
-  sort->SetCamera(camera);
-  sort->SetModelTransform(matrix);
-  sort->SetDirectionToBackToFront();
-  sort->InitTraversal();
-  impl.FrontToBack.clear();
-  const vtkIdType numRendered = impl.Setup.GetNumberOfRenderedCells();
-  impl.FrontToBack.reserve(numRendered);
-  while (vtkIdTypeArray* cells = sort->GetNextCells())
-  {
-    const vtkIdType n = cells->GetNumberOfTuples();
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      const vtkIdType cell = cells->GetValue(i);
-      if (cell >= 0 && cell < numRendered)
-      {
-        impl.FrontToBack.push_back(cell);
-      }
-    }
-  }
-  std::reverse(impl.FrontToBack.begin(), impl.FrontToBack.end());
-  vtkSteinVisibilitySort* stein = vtkSteinVisibilitySort::SafeDownCast(sort);
-  impl.OrderHasCycles = stein && stein->GetNumberOfCycles() > 0;
-  if (impl.OrderHasCycles && impl.CycleWarningGeneration != impl.SetupGeneration)
-  {
-    impl.CycleWarningGeneration = impl.SetupGeneration; // once per input
-    vtkWarningMacro("The visibility order of this view has " << stein->GetNumberOfCycles()
-                                                          << " cycle(s); frames with cycles are "
-                                                             "composited with PER_PIXEL_SORT.");
-  }
-  if (static_cast<vtkIdType>(impl.FrontToBack.size()) != numRendered)
-  {
-    vtkWarningMacro("The visibility sort returned " << impl.FrontToBack.size() << " of "
-                                                    << numRendered << " cells.");
-  }
-  impl.OrderGeneration = impl.SetupGeneration;
-  impl.OrderCamera = camera;
-  impl.OrderCameraTime = camera->GetMTime();
-  impl.OrderMatrixTime = matrix->GetMTime();
-  impl.OrderSortTime = this->VisibilitySort->GetMTime();
-  return true;
 }
 
-bool vtkHighOrderVolumeMapper::ValidateInputs(
-  vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect)
+void vtkHighOrderVolumeMapper::InitFrame(hov::RenderFrame& frame, vtkCamera* camera,
+  vtkVolume* volume, int width, int height, double aspect, vtkRenderer* renderer)
 {
-  if (!camera || !volume || width <= 0 || height <= 0)
+  frame.Camera = camera;
+  frame.Volume = volume;
+  frame.Renderer = renderer;
+  frame.Mapper = this;
+  frame.VisibilitySort = this->VisibilitySort;
+  frame.Width = width;
+  frame.Height = height;
+  frame.Aspect = aspect;
+  frame.Messages = &this->Impl->Messages;
+  hov::FrameSettings& s = frame.Settings;
+  s.Mode = Convert(RenderModes, this->RenderMode);
+  s.Semantics = Convert(Semantics, this->OpacitySemantics);
+  s.GPUOpacityTolerance = this->GPUOpacityTolerance;
+  s.Emission = Convert(Emissions, this->EmissionModel);
+  s.EmissionScale = this->EmissionScale;
+  s.Integration = Convert(Methods, this->IntegrationMethod);
+  s.Ordering = Convert(Orderings, this->CellOrdering);
+  s.Vectors = Convert(VectorModes, this->VectorMode);
+  s.VectorComponent = this->VectorComponent;
+  s.TerminationTransmittance = this->TerminationTransmittance;
+  s.TileSize = this->TileSize;
+  s.UseDepthBuffer = this->UseDepthBuffer;
+  s.ViewDepthClipping = this->ViewDepthClipping;
+  s.ViewDepthRange[0] = this->ViewDepthRange[0];
+  s.ViewDepthRange[1] = this->ViewDepthRange[1];
+  s.HasClippingPlanes = this->ClippingPlanes && this->ClippingPlanes->GetNumberOfItems() > 0;
+  s.RayCastTolerance = this->RayCastTolerance;
+  s.RayCastInteractiveUpdateRate = this->RayCastInteractiveUpdateRate;
+  s.RayCastInteractiveSubsampling = this->RayCastInteractiveSubsampling;
+  s.ColorMethod = Convert(ColorMethods, this->ProjectionColorMethod);
+  s.Order = Convert(Orders, this->ProjectionOrder);
+  s.Lookup = Convert(Lookups, this->ProjectionOpacityLookup);
+  s.Isosurfaces = this->Isosurfaces;
+  s.ColorArray = this->ColorArrayName ? this->ColorArrayName : "";
+  s.ColorComponent = this->ColorArrayComponent;
+  s.IsosurfaceArray = this->IsosurfaceArrayName ? this->IsosurfaceArrayName : "";
+  s.IsosurfaceComponent = this->IsosurfaceArrayComponent;
+  s.Splatting = this->Splatting;
+  s.SplatPixelThreshold = this->SplatPixelThreshold;
+  // Progress and abort between tile batches only with observers (the image is
+  // the same either way).
+  vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
+  if (this->HasObserver(vtkCommand::ProgressEvent) ||
+    (window && window->HasObserver(vtkCommand::AbortCheckEvent)))
   {
-    vtkErrorMacro("RenderImage needs a camera, a volume and a positive size.");
-    return false;
+    frame.Progress = [this, renderer](double done) {
+      return this->ReportTileProgress(renderer, done);
+    };
   }
-  if (!this->CheckFrameView(camera, volume, aspect))
-  {
-    return false; // the error was reported
-  }
-  if (this->GetNumberOfInputConnections(0) > 0)
-  {
-    this->GetInputAlgorithm()->Update(); // RenderImage may run before any render
-  }
-  if (!this->GetInput())
-  {
-    vtkErrorMacro("No input.");
-    return false;
-  }
-  if (!volume->GetProperty())
-  {
-    vtkErrorMacro("The volume has no vtkVolumeProperty.");
-    return false;
-  }
-  if (!this->PrepareCells(volume))
-  {
-    return false; // the error was reported
-  }
-  const vtkHighOrderTetraSetup::Statistics& st = this->Impl->Setup.GetStatistics();
-  this->NumberOfRenderedCells = st.Rendered;
-  this->NumberOfSkippedCells = st.Cells - st.Rendered;
-  return true;
 }
 
-bool vtkHighOrderVolumeMapper::PrepareTransferFunction(vtkVolumeProperty* property, bool* rebuilt)
+bool vtkHighOrderVolumeMapper::ReportTileProgress(vtkRenderer* renderer, double done)
 {
-  Internals& impl = *this->Impl;
-  vtkHighOrderTransferFunction* tf = impl.TransferFunction;
-  tf->SetOpacitySemantics(this->OpacitySemantics);
-  tf->SetGPUTolerance(this->GPUOpacityTolerance);
-  tf->SetEmissionScale(this->EmissionScale);
-  // One component of a multi-component array with independent components
-  // uses that component's functions; everything else uses component 0's.
-  const bool independent = impl.SetupComponent > 0 && property->GetIndependentComponents();
-  tf->SetComponent(independent ? std::min(impl.SetupComponent, 3) : 0);
-  const int buildsBefore = tf->GetBuildCount();
-  tf->Update(property);
-  if (tf->GetBuildCount() != buildsBefore)
-  {
-    for (int i = 0; i < tf->GetNumberOfMessages(); ++i)
-    {
-      vtkWarningMacro("Transfer function: " << tf->GetMessage(i));
-    }
-  }
-  if (rebuilt)
-  {
-    *rebuilt = tf->GetBuildCount() != buildsBefore;
-  }
-  // Nothing absorbs: nothing to see, unless the glow does not need extinction.
-  return tf->GetTable().HasExtinction() || this->EmissionModel == WILHELMS_VAN_GELDER;
+  // Called on the rendering thread between tile batches (hovTileBatches.h).
+  this->UpdateProgress(done);
+  vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
+  return this->AbortExecute || (window && window->CheckAbortStatus());
 }
 
-void vtkHighOrderVolumeMapper::PublishImage(int width, int height, bool drawn)
+void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPixels)
 {
-  Internals& impl = *this->Impl;
-  this->CheckFrameImage(impl.RGBA.data(), impl.RGBA.size() / 4, drawn);
-  vtkImageData* image = impl.FloatImage;
-  image->SetDimensions(std::max(width, 0), std::max(height, 0), 1);
-  vtkNew<vtkFloatArray> array;
-  array->SetName("RGBA");
-  array->SetNumberOfComponents(4);
-  array->SetNumberOfTuples(static_cast<vtkIdType>(impl.RGBA.size() / 4));
-  float* out = array->GetPointer(0);
-  for (size_t i = 0; i < impl.RGBA.size(); ++i)
+  const hov::FrameStatistics& st = frame.Stats;
+  this->WitnessViolations = st.WitnessViolations;
+  this->NumberOfRenderedCells = st.RenderedCells;
+  this->NumberOfSkippedCells = st.SkippedCells;
+  this->NumberOfSegments = st.Segments;
+  this->NumberOfPieces = st.Pieces;
+  this->NumberOfRays = st.Rays;
+  this->NumberOfSplattedCells = st.SplattedCells;
+  this->LastRenderAborted = st.Aborted;
+  if (st.ProjectedTriangles >= 0)
   {
-    out[i] = static_cast<float>(impl.RGBA[i]);
+    this->NumberOfProjectedTriangles = st.ProjectedTriangles;
+    this->NumberOfProjectedSlabs = st.ProjectedSlabs;
   }
-  image->GetPointData()->SetScalars(array);
+  if (st.Interactive >= 0)
+  {
+    this->LastRenderWasInteractive = st.Interactive != 0;
+  }
+  if (st.RayCastSubsampling > 0)
+  {
+    this->LastRayCastSubsampling = st.RayCastSubsampling;
+  }
+  const size_t pixels = static_cast<size_t>(std::max(frame.Width, 0)) * std::max(frame.Height, 0);
+  if (windowPixels)
+  {
+    this->Impl->Check.Check(windowPixels, pixels, frame, this->GetMTime());
+    return;
+  }
+  this->Impl->RGBA.swap(frame.RGBA);
+  this->Impl->Check.Check(this->Impl->RGBA.data(), this->Impl->RGBA.size() / 4, frame, this->GetMTime());
+  hov::PublishFloatImage(
+    this->Impl->FloatImage, "RGBA", 4, frame.Width, frame.Height, this->Impl->RGBA.data());
 }
 
-int vtkHighOrderVolumeMapper::ComputeImage(
-  vtkCamera* camera, vtkVolume* volume, int width, int height, double aspect, const float* depth)
+int vtkHighOrderVolumeMapper::ComputeImage(hov::RenderFrame& frame, hov::Backend& backend)
 {
-  Internals& impl = *this->Impl;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  this->LastRenderAborted = false;
   this->AbortExecute = 0; // a request to abort applies to one render
+  this->LastRenderAborted = false;
   this->UpdateProgress(0.0);
-  if (this->RenderMode == RAY_CAST)
-  {
-    bool drawn = false;
-    const int status =
-      this->ComputeRayCastImage(camera, volume, width, height, aspect, depth, impl.RGBA, drawn);
-    this->PublishImage(width, height, drawn);
-    if (!this->LastRenderAborted && this->GetProgress() < 1.0)
-    {
-      this->UpdateProgress(1.0); // nothing to trace
-    }
-    timer->StopTimer();
-    this->LastImageTime = timer->GetElapsedTime();
-    return status;
-  }
-  this->WitnessViolations = this->NumberOfSegments = this->NumberOfPieces = 0;
-  this->NumberOfRays = 0;
-  this->NumberOfSplattedCells = 0;
-  this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
-
-  bool ok = this->ValidateInputs(camera, volume, width, height, aspect);
-  // Isosurfaces are visible even where the volume does not absorb.
-  bool render = ok && impl.Setup.GetNumberOfRenderedCells() > 0;
-  bool rebuilt = false;
-  if (render && !this->PrepareTransferFunction(volume->GetProperty(), &rebuilt) &&
-    this->GetNumberOfIsosurfaces() == 0)
-  {
-    if (rebuilt)
-    {
-      this->WarnTransparent();
-    }
-    render = false;
-  }
-  vtkHighOrderViewRays rays;
-  if (render && !rays.Setup(camera, volume->GetMatrix(), width, height, aspect))
-  {
-    vtkErrorMacro("Singular camera or volume matrix: nothing rendered.");
-    render = ok = false;
-  }
-  if (render)
-  {
-    rays.SetupClipping(this, camera, volume->GetMatrix(),
-      this->ViewDepthClipping ? this->ViewDepthRange : nullptr);
-  }
-  render = render && this->PrepareOrder(camera, volume);
-  if (!render)
-  {
-    impl.RGBA.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
-  }
-  else
-  {
-    // The projector sizes the image and writes every pixel: no clearing.
-    vtkHighOrderCellProjector::Settings settings;
-    settings.Integration.Emission = static_cast<hov::EmissionModel>(this->EmissionModel);
-    settings.Integration.Method = static_cast<hov::SegmentMethod>(this->IntegrationMethod);
-    settings.TerminationTransmittance = this->TerminationTransmittance;
-    // A cyclic order cannot be exact: fall back to the per-pixel order.
-    settings.PerPixelSort = this->CellOrdering == PER_PIXEL_SORT || impl.OrderHasCycles;
-    settings.TileSize = this->TileSize;
-    vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
-    if (this->HasObserver(vtkCommand::ProgressEvent) ||
-      (window && window->HasObserver(vtkCommand::AbortCheckEvent)))
-    {
-      settings.Progress = [this](double done) { return this->ReportTileProgress(done); };
-    }
-    const int features = this->PrepareFeatures(camera, volume);
-    vtkHighOrderCellProjector::Statistics st;
-    if (features > 0) // isosurfaces, separate fields or splatting: the feature path
-    {
-      st = this->FeatureImpl->GetProjector().Render(impl.Setup, impl.FrontToBack, rays,
-        impl.TransferFunction->GetTable(), settings, this->FeatureImpl->GetFeatures(), depth,
-        impl.RGBA);
-      this->NumberOfSplattedCells = this->FeatureImpl->GetProjector().GetNumberOfSplats();
-    }
-    else if (features == 0)
-    {
-      st = impl.Projector.Render(impl.Setup, impl.FrontToBack, rays,
-        impl.TransferFunction->GetTable(), settings, depth, impl.RGBA);
-    }
-    else
-    {
-      impl.RGBA.assign(static_cast<size_t>(width) * height * 4, 0.0);
-    }
-    this->LastRenderAborted = st.Aborted;
-    this->WitnessViolations = st.WitnessViolations;
-    this->NumberOfSegments = st.Segments;
-    this->NumberOfPieces = st.Pieces;
-  }
-  this->PublishImage(width, height, render);
+  frame.RGBA.swap(this->Impl->RGBA); // reuse the last image's storage
+  const int status = backend.Render(frame, nullptr);
+  this->Publish(frame, nullptr);
   if (!this->LastRenderAborted && this->GetProgress() < 1.0)
   {
     this->UpdateProgress(1.0); // nothing to render, or no tile loop
   }
   timer->StopTimer();
   this->LastImageTime = timer->GetElapsedTime();
-  return ok ? 1 : 0;
-}
-
-bool vtkHighOrderVolumeMapper::ReportTileProgress(double done)
-{
-  // Called on the rendering thread between tile batches (vtkHighOrderTileBatches.h).
-  this->UpdateProgress(done);
-  vtkRenderWindow* window = this->FrameRenderer ? this->FrameRenderer->GetRenderWindow() : nullptr;
-  return this->AbortExecute || (window && window->CheckAbortStatus());
+  return status;
 }
 
 int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, int width, int height)
 {
-  return this->ComputeImage(
-    camera, volume, width, height, height > 0 ? static_cast<double>(width) / height : 1.0, nullptr);
-}
-
-bool vtkHighOrderVolumeMapper::PrepareProjectionFrame(vtkCamera* camera, vtkVolume* volume,
-  double aspect, bool exactOrder, const vtkHighOrderTetraSetup** setup, const std::vector<vtkIdType>** frontToBack,
-  vtkHighOrderTransferFunction** tf)
-{
-  Internals& impl = *this->Impl;
-  *setup = &impl.Setup;
-  *frontToBack = &impl.FrontToBack;
-  *tf = impl.TransferFunction;
-  this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
-  if (!this->ValidateInputs(camera, volume, 1, 1, aspect) ||
-    impl.Setup.GetNumberOfRenderedCells() == 0)
-  {
-    return false;
-  }
-  bool rebuilt = false;
-  if (!this->PrepareTransferFunction(volume->GetProperty(), &rebuilt))
-  {
-    if (rebuilt)
-    {
-      this->WarnTransparent();
-    }
-    return false;
-  }
-  return !exactOrder || this->PrepareOrder(camera, volume, true);
+  hov::RenderFrame frame;
+  this->InitFrame(frame, camera, volume, width, height,
+    height > 0 ? static_cast<double>(width) / height : 1.0, nullptr);
+  return this->ComputeImage(frame, this->SelectBackend(false));
 }
 
 void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
-  if (this->RenderMode == OPENGL_PROJECTION)
-  {
-    this->RenderProjection(ren, vol);
-    return;
-  }
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   int width = 0, height = 0, x0 = 0, y0 = 0;
@@ -520,25 +398,37 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
+  hov::Backend& backend = this->SelectBackend(true);
+  hov::RenderFrame frame;
+  // The same aspect VTK's own mappers and actors use for the projection.
+  this->InitFrame(frame, ren->GetActiveCamera(), vol, width, height, ren->GetTiledAspectRatio(), ren);
+  frame.X0 = x0;
+  frame.Y0 = y0;
   Internals& impl = *this->Impl;
-  const float* depth = nullptr;
+  if (backend.DrawsIntoWindow())
+  {
+    // It reads the scene depth, draws and reads the float image back itself.
+    this->LastRenderAborted = false; // a window backend's frame is never aborted
+    backend.Render(frame, impl.FloatImage);
+    auto* rgba = vtkFloatArray::SafeDownCast(impl.FloatImage->GetPointData()->GetScalars());
+    this->Publish(frame, rgba->GetPointer(0));
+    timer->StopTimer();
+    this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
+    return;
+  }
   if (this->UseDepthBuffer)
   {
     impl.Depth.resize(static_cast<size_t>(width) * height);
-    if (vtkHighOrderImageDisplay::ReadDepth(ren, width, height, x0, y0, impl.Depth.data()))
+    if (hov::ImageDisplay::ReadDepth(ren, width, height, x0, y0, impl.Depth.data()))
     {
-      depth = impl.Depth.data();
+      frame.Depth = impl.Depth.data();
     }
     else
     {
       vtkWarningMacro("Could not read the depth buffer; opaque geometry will not clip the volume.");
     }
   }
-  // The same aspect VTK's own mappers and actors use for the projection.
-  const double tiledAspect = ren->GetTiledAspectRatio();
-  this->FrameRenderer = ren; // its lights shade the isosurfaces
-  this->ComputeImage(ren->GetActiveCamera(), vol, width, height, tiledAspect, depth);
-  this->FrameRenderer = nullptr;
+  this->ComputeImage(frame, backend);
   vtkDataArray* rgba = impl.FloatImage->GetPointData()->GetScalars();
   if (rgba && rgba->GetNumberOfTuples() == static_cast<vtkIdType>(width) * height)
   {
@@ -554,7 +444,7 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 void vtkHighOrderVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Impl->Display.ReleaseGraphicsResources(win);
-  this->ProjectionImpl->Renderer.ReleaseGraphicsResources(win);
+  this->Impl->Projection.ReleaseGraphicsResources(win);
   this->Superclass::ReleaseGraphicsResources(win);
 }
 

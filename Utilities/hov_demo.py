@@ -266,9 +266,8 @@ def comparison_rows(ok_cases, reference, ref_alpha, failures, input_column=False
     return lines
 
 
-def main():
-    import hov_demo_datasets  # the quadratic / mixed-cell datasets (imports this module)
-
+def parse_arguments():
+    """The demo's command line."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--data", default=DEFAULT_DATA, help="a .vtu of linear tetrahedra")
     parser.add_argument("--array", default="von_mises", help="point array to render")
@@ -280,28 +279,11 @@ def main():
     parser.add_argument("--no-issue4", action="store_true",
                         help="skip the quadratic-tet and mixed-cell datasets (issue 4)")
     args = parser.parse_args()
-    frames = max(3, args.frames)
-    os.makedirs(args.out, exist_ok=True)
+    return args
 
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(args.data)
-    reader.Update()
-    grid = reader.GetOutput()
-    if grid.GetNumberOfCells() == 0:
-        sys.exit("no cells read from %s" % args.data)
-    array = grid.GetPointData().GetArray(args.array)
-    if array is None:
-        sys.exit("no point array '%s' in %s" % (args.array, args.data))
-    grid.GetPointData().SetActiveScalars(args.array)
-    smin, smax = array.GetRange(0)
-    prop, ctf = make_property(smin, smax, args.unit_distance)
-    camera = make_camera()
-    catcher = ErrorCatcher()
-    # Everything VTK prints (errors of objects we do not observe too) goes through here.
-    log = vtkStringOutputWindow()
-    vtkOutputWindow.SetInstance(log)
-    log.seen = 0  # characters of the log already shown
 
+def demo_cases():
+    """The mappers the demo compares on the bracket (the reference first, GPU-compatible last)."""
     def hov(semantics, ordering):
         m = vtkHighOrderVolumeMapper()
         if ordering == "cellcentre":
@@ -366,8 +348,11 @@ def main():
          "name": "vtkHighOrderVolumeMapper, per-pixel sort, GPU-compatible (extra)",
          "label": "HighOrderVolume, GPU-compatible semantics"},
     ]
+    return cases
 
-    failures = []
+
+def render_cases(cases, grid, prop, camera, args, frames, catcher, log, failures):
+    """Render every case (its result in case["result"]); failures appended."""
     for case in cases:
         try:
             case["result"] = render_case(case, grid, prop, camera, args.size, frames, catcher)
@@ -388,6 +373,38 @@ def main():
         if "float_rgb" in res and res["float_rgb"].max() <= 0.0:
             failures.append("%s: our float image is all black" % case["key"])
         write_png(res["png"], os.path.join(args.out, "hov_demo_%s.png" % case["key"]))
+
+
+def main():
+    import hov_demo_datasets  # the quadratic / mixed-cell datasets (imports this module)
+
+    args = parse_arguments()
+    frames = max(3, args.frames)
+    os.makedirs(args.out, exist_ok=True)
+
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(args.data)
+    reader.Update()
+    grid = reader.GetOutput()
+    if grid.GetNumberOfCells() == 0:
+        sys.exit("no cells read from %s" % args.data)
+    array = grid.GetPointData().GetArray(args.array)
+    if array is None:
+        sys.exit("no point array '%s' in %s" % (args.array, args.data))
+    grid.GetPointData().SetActiveScalars(args.array)
+    smin, smax = array.GetRange(0)
+    prop, ctf = make_property(smin, smax, args.unit_distance)
+    camera = make_camera()
+    catcher = ErrorCatcher()
+    # Everything VTK prints (errors of objects we do not observe too) goes through here.
+    log = vtkStringOutputWindow()
+    vtkOutputWindow.SetInstance(log)
+    log.seen = 0  # characters of the log already shown
+
+    cases = demo_cases()
+
+    failures = []
+    render_cases(cases, grid, prop, camera, args, frames, catcher, log, failures)
 
     ok_cases = [c for c in cases if "result" in c]
     ref_case = cases[0]

@@ -20,28 +20,6 @@ constexpr double NewtonFloor = 1e-13;
 constexpr int MaxDepth = 24;
 constexpr double Pi = 3.141592653589793238462643383279502884;
 
-bool Inverse3(const double j[9], double inv[9])
-{
-  const double c00 = j[4] * j[8] - j[5] * j[7], c01 = j[5] * j[6] - j[3] * j[8],
-               c02 = j[3] * j[7] - j[4] * j[6];
-  const double det = j[0] * c00 + j[1] * c01 + j[2] * c02;
-  if (!(std::fabs(det) > 0.0) || !std::isfinite(det))
-  {
-    return false;
-  }
-  const double r = 1.0 / det;
-  inv[0] = c00 * r;
-  inv[1] = (j[2] * j[7] - j[1] * j[8]) * r;
-  inv[2] = (j[1] * j[5] - j[2] * j[4]) * r;
-  inv[3] = c01 * r;
-  inv[4] = (j[0] * j[8] - j[2] * j[6]) * r;
-  inv[5] = (j[2] * j[3] - j[0] * j[5]) * r;
-  inv[6] = c02 * r;
-  inv[7] = (j[1] * j[6] - j[0] * j[7]) * r;
-  inv[8] = (j[0] * j[4] - j[1] * j[3]) * r;
-  return std::isfinite(inv[0] + inv[1] + inv[2] + inv[3] + inv[4] + inv[5] + inv[6] + inv[7] +
-    inv[8]);
-}
 
 void MatVec(const double m[9], const double v[3], double r[3])
 {
@@ -58,7 +36,7 @@ bool RestrictAffine(CellShape shape, const double* points, const double* scalars
   double pcCenter[3], xc[3], jac[9], inv[9];
   CellParametricCenter(shape, pcCenter);
   EvaluateGeometry(shape, points, pcCenter, xc, jac);
-  if (!Inverse3(jac, inv))
+  if (!InvertMatrix3(jac, inv))
   {
     return false;
   }
@@ -503,5 +481,28 @@ int RestrictCellScalar(CellShape shape, const double* points, const double* scal
     &out, &st };
   Fit(ctx, t0, t1, 0);
   return static_cast<int>(out.size());
+}
+
+bool InvertMatrix3(const double j[9], double inv[9])
+{
+  const double c00 = j[4] * j[8] - j[5] * j[7], c01 = j[5] * j[6] - j[3] * j[8],
+               c02 = j[3] * j[7] - j[4] * j[6];
+  const double det = j[0] * c00 + j[1] * c01 + j[2] * c02;
+  if (!(std::fabs(det) > 0.0) || !std::isfinite(det))
+  {
+    return false;
+  }
+  const double r = 1.0 / det;
+  inv[0] = c00 * r;
+  inv[1] = (j[2] * j[7] - j[1] * j[8]) * r;
+  inv[2] = (j[1] * j[5] - j[2] * j[4]) * r;
+  inv[3] = c01 * r;
+  inv[4] = (j[0] * j[8] - j[2] * j[6]) * r;
+  inv[5] = (j[2] * j[3] - j[0] * j[5]) * r;
+  inv[6] = c02 * r;
+  inv[7] = (j[1] * j[6] - j[0] * j[7]) * r;
+  inv[8] = (j[0] * j[4] - j[1] * j[3]) * r;
+  return std::isfinite(inv[0] + inv[1] + inv[2] + inv[3] + inv[4] + inv[5] + inv[6] + inv[7] +
+    inv[8]);
 }
 }

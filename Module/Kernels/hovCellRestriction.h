@@ -142,6 +142,9 @@ HOV_EXPORT int RestrictCellScalar(CellShape shape, const double* points, const d
   const double origin[3], const double direction[3], double t0, double t1,
   const CellRestrictionSettings& settings, std::vector<RestrictedPiece>& out,
   CellRestrictionStatus* status = nullptr);
+/// inv = J^-1 of a row-major 3x3 matrix (cofactors); false if singular or
+/// not finite. Shared by the restriction and hovFieldGradient.
+HOV_EXPORT bool InvertMatrix3(const double j[9], double inv[9]);
 }
 
 #endif

@@ -9,8 +9,8 @@
  * need nothing special.
  *
  * The pure C++ core of issue 6's ray-cast render mode (the VTK adapter,
- * Mapper/CPU/vtkHighOrderRayCast*, converts a vtkUnstructuredGrid into a
- * CurvedMeshInput, builds pixel rays with vtkHighOrderViewRays and calls
+ * Mapper/RayCast/hovRayCast*, converts a vtkUnstructuredGrid into a
+ * CurvedMeshInput, builds pixel rays with hov::ViewRays and calls
  * TraceRay from vtkSMPTools::For).
  *
  * Build(): per cell, its nodes gathered (coordinates, scalars), its
@@ -31,7 +31,8 @@
  * ray kept once (a ray in a face shared by two cells, or on an edge shared
  * by several, gets the same interval from each); segments are
  * integrated in that order and composited; the ray stops when its opacity
- * exceeds 1 - OpacityCutoff. The tolerance is per pixel: when the sum of
+ * reaches 1 - settings.TerminationTransmittance (default OpacityCutoff,
+ * 1e-12). The tolerance is per pixel: when the sum of
  * the segments' error estimates (each weighted by the transmittance in front
  * of it) exceeds Quadrature.Tolerance, the ray is integrated again with the
  * segment tolerance scaled by 0.5 x tolerance / sum (adaptive method only, at
@@ -113,7 +114,8 @@ struct CurvedRayStats
 class HOV_EXPORT CurvedRayCaster
 {
 public:
-  /// Opacity at which a ray stops (remaining contributions < this).
+  /// The default transmittance at which a ray stops
+  /// (CurvedSegmentSettings::TerminationTransmittance).
   static constexpr double OpacityCutoff = 1e-12;
 
   /**

@@ -154,12 +154,17 @@ struct CurvedSegmentSettings
   /// Samples per segment of the fixed-sample rules (0: adaptive for
   /// LocatedBreakpoints, DefaultSegmentSamples for ElVis / Riemann).
   int Samples = 0;
+  /// A ray stops once its transmittance is at most this (CurvedRayCaster:
+  /// no segment is integrated once the opacity is >= 1 - this).
+  double TerminationTransmittance = 1e-12;
 };
 
 struct CurvedSegmentResult
 {
   RGBA Color;                  ///< premultiplied, front to back
   double ErrorEstimate = 0.0;  ///< quadrature + field-error contribution (max channel)
+  /// The field-error part of ErrorEstimate (a tighter quadrature does not reduce it).
+  double FieldErrorEstimate = 0.0;
   SegmentClassification Class; ///< from the enclosure
   double Lo = 0.0, Hi = 0.0;   ///< the enclosure
   double FieldError = 0.0;     ///< largest e_i of the field pieces

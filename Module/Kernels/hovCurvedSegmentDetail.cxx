@@ -306,9 +306,10 @@ void IntegrateRepresentedField(const LagrangeCellView& cell, const TransferFunct
   const double length = (t1 - t0) * speed;
   if (result.FieldError > 0.0)
   {
-    result.ErrorEstimate +=
+    result.FieldErrorEstimate =
       (length * (s.ColorSlope * s.TauMax + s.ColorMax * s.TauSlope) + (s.Opaque ? s.ColorSlope : 0.0)) *
       result.FieldError;
+    result.ErrorEstimate += result.FieldErrorEstimate;
   }
 }
 }

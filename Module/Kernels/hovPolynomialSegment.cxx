@@ -1,8 +1,9 @@
 #include "hovPolynomialSegment.h"
 
+#include "hovBreakpointWalk.h"  // the intervals a monotone run crosses
 #include "hovPieceQuadrature.h" // IntegrateSmoothPiece (the quadrature of one piece)
 #include "hovRayIntegrator.h"    // IntegrateLinearScalar (degree <= 1)
-#include "hovTransferFunction.h" // the table walked here
+#include "hovTransferFunction.h" // the table
 
 #include <algorithm> // std::min, std::max, std::sort
 #include <cmath>     // exp, expm1, fabs, isfinite, abs
@@ -97,25 +98,23 @@ struct RunWalker
    */
   bool Walk(double t0, double t1, double sStart, double sEnd)
   {
-    const std::vector<double>& nodes = this->Table.GetNodes();
-    const int n = static_cast<int>(nodes.size());
-    const bool up = sEnd > sStart;
-    int k = up ? this->Table.FindIntervalUpward(sStart) : this->Table.FindIntervalDownward(sStart);
+    BreakpointWalk walk = BreakpointWalk::Of(this->Table, sStart, sEnd);
     double tPrev = t0, sPrev = sStart;
     while (true)
     {
       double sNext = sEnd, tNext = t1;
-      const bool last = !(up ? (k + 1 < n && nodes[k + 1] < sEnd) : (k >= 0 && nodes[k] > sEnd));
+      const bool last = !walk.CrossesNode();
       if (!last)
       {
-        sNext = up ? nodes[k + 1] : nodes[k];
+        sNext = walk.Node();
         tNext = std::min(std::max(SolveMonotone(this->Field, sNext, tPrev, t1), tPrev), t1);
       }
       if (tNext > tPrev)
       {
         const double transmit = 1.0 - this->Accum.A;
-        const PieceOutput piece = IntegratePiece(this->Table, k, this->Field, tPrev, tNext - tPrev,
-          sPrev, sNext, transmit, this->BudgetPerLength, this->Emission, this->PanelsLeft);
+        const PieceOutput piece = IntegratePiece(this->Table, walk.Interval(), this->Field, tPrev,
+          tNext - tPrev, sPrev, sNext, transmit, this->BudgetPerLength, this->Emission,
+          this->PanelsLeft);
         this->Result.ErrorEstimate += transmit * piece.Error;
         this->Result.Panels += piece.Panels;
         this->Result.Converged = this->Result.Converged && piece.Converged;
@@ -132,7 +131,7 @@ struct RunWalker
       }
       tPrev = tNext;
       sPrev = sNext;
-      k += up ? 1 : -1;
+      walk.Next();
     }
   }
 };

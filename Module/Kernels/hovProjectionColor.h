@@ -40,12 +40,12 @@
  * is bilinear) and within h^2 / (4e) = 1.3e-5 of the exact opacity in
  * general (h = UMax / (Size - 1); TestProjectionColor measures it).
  * OpacityFromTexture is the reference of the lookup the fragment shader
- * performs (vtkHighOrderProjectionFS.glsl, hovOpacityFromTexture: the same
+ * performs (hovProjectionFS.glsl, hovOpacityFromTexture: the same
  * point, the texture unit's GL_LINEAR filter).
  *
  * Thread safety: all functions are re-entrant; a SegmentColorTable is
  * read-only after construction.
- * @sa hovSegmentIntegral.h, vtkHighOrderProjectionRegions
+ * @sa hovSegmentIntegral.h, hov::ProjectionRegions
  */
 #ifndef hovProjectionColor_h
 #define hovProjectionColor_h
@@ -131,7 +131,7 @@ HOV_EXPORT ProjectionVertexColor ComputeProjectionVertexGPU(ProjectionColorMetho
  * OpaqueClamp as in hov::TransferFunction (a = 1 at one end: the integrable
  * log singularity); a >= 1 at both ends gives +infinity (an opaque medium).
  * The OpenGL projection's fragment shader computes the same formula in float
- * (vtkHighOrderProjectionFS.glsl, hovGPUAverageExtinction), from the
+ * (hovProjectionFS.glsl, hovGPUAverageExtinction), from the
  * opacities, which float keeps to 6e-8 relative (1 - a would lose small
  * opacities).
  */

@@ -22,7 +22,7 @@
  *  - Plane crossing (triangles, planar quads): n = (c1 - c0) x (c2 - c0)
  *    (triangle) or (c2 - c0) x (c3 - c1) (quad, diagonals),
  *    t = (n.c0 - n.o) / n.d (the formula, corner order and operation order of
- *    the linear-tetrahedron fast path, vtkHighOrderTetraSetup/TileGeometry:
+ *    the linear-tetrahedron fast path, hov::CellSetup / hovTileGeometry.h:
  *    a triangle shared by a tetrahedron of that path and a general cell gives
  *    bit-identical crossing times; for a triangle, ascending ids = the
  *    canonical order); n.d == 0: no crossing (parallel).
@@ -41,7 +41,7 @@
  *
  * Rays lying in a face plane (n.d == 0 and n.c0 - n.o == 0 exactly): the ray
  * is displaced symbolically by e X + e^2 Y (e -> 0+, RayPerturbation; the
- * renderer passes vtkHighOrderViewRays' PerturbX/PerturbY, the rule of the
+ * renderer passes hov::ViewRays' PerturbX/PerturbY, the rule of the
  * tetrahedron fast path): it lies on the side of sign(n.X), or sign(n.Y) if
  * n.X == 0 (neither: outside). Two cells sharing a planar face compute the
  * same canonical n and opposite sides, so exactly one of them takes the ray

@@ -1,6 +1,7 @@
 #include "hovRayIntegrator.h"
 
-#include "hovTransferFunction.h" // the table walked here
+#include "hovBreakpointWalk.h"   // ForEachLinearPiece
+#include "hovTransferFunction.h" // the table
 
 #include <cmath> // isfinite
 
@@ -19,74 +20,29 @@ RGBA IntegrateLinearScalar(const TransferFunction& tf, double sFront, double sBa
     }
     return accum;
   }
+  // Fast path (most segments): both ends in one interval, one piece.
+  const int k = OnePieceInterval(tf, sFront, sBack);
+  if (k >= -1)
+  {
+    if (pieces)
+    {
+      *pieces = 1;
+    }
+    return IntegrateLinearScalarInInterval(tf, k, sFront, sBack, length, settings);
+  }
+  // Across nodes: the pieces between them, front to back, until opaque.
   const bool emission = settings.Emission == EmissionModel::WilhelmsVanGelder;
-  const std::vector<double>& nodes = tf.GetNodes();
-  const int n = static_cast<int>(nodes.size());
-  const double ds = sBack - sFront;
-  SegmentEnd front, back;
-  {
-    // Fast path (most segments): both ends in one interval, one piece.
-    const int k = OnePieceInterval(tf, sFront, sBack);
-    if (k >= -1)
-    {
-      if (pieces)
-      {
-        *pieces = 1;
-      }
-      return IntegrateLinearScalarInInterval(tf, k, sFront, sBack, length, settings);
-    }
-  }
-  {
-    // Walk the intervals from the front value toward the back value. Interval k
-    // spans [nodes[k], nodes[k+1]]; -1 and n-1 are the clamped outer regions.
-    const bool up = ds > 0.0;
-    int k = up ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
-    // Fractions along the segment are (s - sFront)/ds; if ds overflows (s
-    // spanning more than the double range) they are taken on halved values.
-    const double scale = std::isfinite(ds) ? 1.0 : 0.5;
-    const double invDs = 1.0 / (scale * sBack - scale * sFront);
-    double xPrev = 0.0; // fraction of the segment already integrated
-    double sPrev = sFront;
-    while (true)
-    {
-      // Where this interval ends along the ray (the next node in walking direction).
-      double sNext = sBack, xNext = 1.0;
-      bool last = true;
-      if (up && k + 1 < n && nodes[k + 1] < sBack)
-      {
-        sNext = nodes[k + 1];
-        last = false;
-      }
-      else if (!up && k >= 0 && nodes[k] > sBack)
-      {
-        sNext = nodes[k];
-        last = false;
-      }
-      if (!last)
-      {
-        xNext = (scale * sNext - scale * sFront) * invDs;
-      }
-      const double pieceLength = length * (xNext - xPrev);
-      if (pieceLength > 0.0)
-      {
-        tf.Evaluate(k, sPrev, emission, front);
-        tf.Evaluate(k, sNext, emission, back);
-        CompositeBehind(accum, IntegrateSegment(pieceLength, front, back, settings.Emission, settings.Method));
-        ++count;
-        if (accum.A >= 1.0)
-        {
-          break; // opaque: nothing behind is visible
-        }
-      }
-      if (last)
-      {
-        break;
-      }
-      xPrev = xNext;
-      sPrev = sNext;
-      k += up ? 1 : -1;
-    }
-  }
+  const int start = sBack - sFront > 0.0 ? tf.FindIntervalUpward(sFront) : tf.FindIntervalDownward(sFront);
+  ForEachLinearPiece(tf, start, sFront, sBack, length,
+    [&](int interval, double s0, double s1, double pieceLength) {
+      SegmentEnd front, back;
+      tf.Evaluate(interval, s0, emission, front);
+      tf.Evaluate(interval, s1, emission, back);
+      CompositeBehind(
+        accum, IntegrateSegment(pieceLength, front, back, settings.Emission, settings.Method));
+      ++count;
+      return !(accum.A >= 1.0); // opaque: nothing behind is visible
+    });
   if (pieces)
   {
     *pieces = count;

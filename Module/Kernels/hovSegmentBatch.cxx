@@ -1,5 +1,6 @@
 #include "hovSegmentBatch.h"
 
+#include "hovBreakpointWalk.h"    // ForEachLinearPiece
 #include "hovSegmentBatchLanes.h" // lane kernels, EvaluatePiece
 #include "hovThinSeries.h"         // term counts
 #include "hovTransferFunction.h"   // interval search
@@ -166,52 +167,19 @@ long long SegmentBatch::ResolveIntervals(
   return total;
 }
 
-/// IntegrateLinearScalar()'s walk over the intervals from @p sFront toward
-/// @p sBack (starting in interval @p k): the same piece ends and lengths.
+/// IntegrateLinearScalar()'s pieces of a segment crossing nodes (starting in
+/// interval @p k): the same piece ends and lengths (ForEachLinearPiece).
 void SegmentBatch::SplitSegment(const TransferFunction& tf, int job, int k, double sFront,
   double sBack, double length)
 {
-  const std::vector<double>& nodes = tf.GetNodes();
-  const int n = static_cast<int>(nodes.size());
-  const double ds = sBack - sFront;
-  const bool up = ds > 0.0;
-  const double scale = std::isfinite(ds) ? 1.0 : 0.5;
-  const double invDs = 1.0 / (scale * sBack - scale * sFront);
   Split split{ job, static_cast<int>(this->SplitOut.size()), 0 };
-  double xPrev = 0.0, sPrev = sFront;
-  while (true)
-  {
-    double sNext = sBack, xNext = 1.0;
-    bool last = true;
-    if (up && k + 1 < n && nodes[k + 1] < sBack)
-    {
-      sNext = nodes[k + 1];
-      last = false;
-    }
-    else if (!up && k >= 0 && nodes[k] > sBack)
-    {
-      sNext = nodes[k];
-      last = false;
-    }
-    if (!last)
-    {
-      xNext = (scale * sNext - scale * sFront) * invDs;
-    }
-    const double pieceLength = length * (xNext - xPrev);
-    if (pieceLength > 0.0)
-    {
-      this->AddPiece(Piece{ sPrev, sNext, pieceLength, k }); // its result: SplitOut[piece]
+  ForEachLinearPiece(tf, k, sFront, sBack, length,
+    [&](int interval, double s0, double s1, double pieceLength) {
+      this->AddPiece(Piece{ s0, s1, pieceLength, interval }); // its result: SplitOut[piece]
       this->SplitOut.emplace_back();
       ++split.Count;
-    }
-    if (last)
-    {
-      break;
-    }
-    xPrev = xNext;
-    sPrev = sNext;
-    k += up ? 1 : -1;
-  }
+      return true;
+    });
   this->Splits.push_back(split);
 }
 

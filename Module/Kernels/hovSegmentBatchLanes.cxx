@@ -25,49 +25,17 @@ namespace
 typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
 static_assert(Lanes == 4, "one V4 per block");
 
-/**
- * The thin Williams-Max series of hovSegmentIntegral.cxx (ThinWilliamsMax<N>)
- * with N terms for Lanes segments: the same operations in the same order per
- * lane, so each lane's w = WFront (before clamping) and alpha equal the
- * scalar kernel's bit for bit. N is a compile-time constant, so that both
- * loops unroll completely (no loop overhead, independent chains interleaved).
- */
+/// The thin series (hovThinSeries.h: ThinWilliamsMaxSeries) of Lanes segments
+/// with N terms: each lane's w = WFront (before clamping) and alpha equal the
+/// scalar kernel's bit for bit.
 template <int N>
 inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
   const double* a, const double* d1, double* w, double* alpha)
 {
-  V4 va, vd1;
+  V4 va, vd1, vw, valpha;
   std::memcpy(&va, a, sizeof(V4));
   std::memcpy(&vd1, d1, sizeof(V4));
-  const V4 r = va / vd1;
-  const V4 d2 = vd1 * vd1;
-  V4 wOdd = {}, wEven = {}, aOdd = {}, aEven = {};
-#pragma GCC unroll 16
-  for (int n = N; n >= 1; --n)
-  {
-    // q_n(r) = sum_j P0[n][n-j] r^j by Horner's rule (the scalar kernel's q[n]).
-    const double* p = Thin.P0[n];
-    V4 h = V4{} + p[0];
-#pragma GCC unroll 16
-    for (int j = 1; j <= n; ++j)
-    {
-      h = h * r + p[j];
-    }
-    // Outer Horner chains in d1^2 on odd and even terms.
-    const double f = Thin.InvFactorial[n];
-    if (n % 2)
-    {
-      wOdd = wOdd * d2 + h;
-      aOdd = aOdd * d2 + f;
-    }
-    else
-    {
-      wEven = wEven * d2 + h;
-      aEven = aEven * d2 + f;
-    }
-  }
-  const V4 vw = vd1 * wOdd - d2 * wEven;
-  const V4 valpha = vd1 * aOdd - d2 * aEven;
+  ThinWilliamsMaxSeries<N>(va, vd1, vw, valpha);
   std::memcpy(w, &vw, sizeof(V4));
   std::memcpy(alpha, &valpha, sizeof(V4));
 }

@@ -52,48 +52,14 @@ inline double BernsteinSum(const double* coef, int n, const double* powA, const 
   return sum;
 }
 
-/// WFront = sum_{n=1}^{N} (-1)^(n+1) I_n/n! with I_n/n! = D1^n Q_n(r),
-/// Q_n(r) = sum_j P0[n][n-j] r^j, r = a/D1 in [0, 2] (positive coefficients:
-/// no cancellation), all by Horner's rule; WBack = A - WFront with
-/// A = sum (-1)^(n+1) D1^n/n! (WFront <= 2A/3: at most 2 bits lost).
-/// Unrolled for a fixed number of terms N (the hot path of the CPU renderer).
+/// The thin series with N terms (hovThinSeries.h: ThinWilliamsMaxSeries);
+/// WBack = A - WFront with A = sum (-1)^(n+1) D1^n/n! (WFront <= 2A/3: at most
+/// 2 bits lost). The hot path of the CPU renderer.
 template <int N>
 inline void ThinWilliamsMax(double a, double d1, double& wFront, double& wBack, double& alphaOut)
 {
-  const double r = a / d1;
-  double q[N + 1];
-#pragma GCC unroll 16
-  for (int n = 1; n <= N; ++n)
-  {
-    double h = Thin.P0[n][0];
-#pragma GCC unroll 16
-    for (int j = n - 1; j >= 0; --j)
-    {
-      h = h * r + Thin.P0[n][n - j];
-    }
-    q[n] = h;
-  }
-  // Outer sums by Horner's rule in d1^2 on odd and even terms separately:
-  // two independent chains of half the length (the chain latency dominates).
-  const double d2 = d1 * d1;
-  double wOdd = 0.0, wEven = 0.0, aOdd = 0.0, aEven = 0.0;
-#pragma GCC unroll 16
-  for (int n = N; n >= 1; --n)
-  {
-    if (n % 2)
-    {
-      wOdd = wOdd * d2 + q[n];
-      aOdd = aOdd * d2 + Thin.InvFactorial[n];
-    }
-    else
-    {
-      wEven = wEven * d2 + q[n];
-      aEven = aEven * d2 + Thin.InvFactorial[n];
-    }
-  }
-  // sum_n (-1)^(n+1) c_n d^n = d (odd part in d^2) - d^2 (even part in d^2).
-  const double w = d1 * wOdd - d2 * wEven;
-  const double alpha = d1 * aOdd - d2 * aEven;
+  double w, alpha;
+  detail::ThinWilliamsMaxSeries<N>(a, d1, w, alpha);
   wFront = w;
   wBack = alpha - w;
   alphaOut = alpha; // a function of D1 only: symmetric under reversal

@@ -2,9 +2,10 @@
  * @file hovThinSeries.h
  * @brief Internal to the segment kernels: the thin-segment Taylor series of
  * hovSegmentIntegral (coefficient tables, branch threshold, number of terms
- * per binary exponent of the depth), shared by the scalar kernel
- * (hovSegmentIntegral.cxx) and the batched one (hovSegmentBatch.cxx) so that
- * both evaluate exactly the same series with the same number of terms.
+ * per binary exponent of the depth) and the series itself, written once over
+ * the value type (ThinWilliamsMaxSeries), shared by the scalar kernel
+ * (hovSegmentIntegral.cxx) and the batched one (hovSegmentBatchLanes.cxx) so
+ * that both evaluate exactly the same series with the same number of terms.
  *
  * Not part of the public API (namespace hov::detail).
  */
@@ -15,6 +16,12 @@
 #include <cmath>     // std::ldexp, std::pow
 #include <cstdint>   // exponent bits
 #include <cstring>   // memcpy
+
+#if defined(__GNUC__)
+#define HOV_THIN_INLINE inline __attribute__((always_inline))
+#else
+#define HOV_THIN_INLINE inline
+#endif
 
 namespace hov
 {
@@ -71,6 +78,55 @@ constexpr ThinTables MakeThinTables()
 }
 
 inline constexpr ThinTables Thin = MakeThinTables();
+
+/**
+ * The thin Williams-Max series with @p N terms, written once over the value
+ * type T: one segment (double, hovSegmentIntegral.cxx) or Lanes segments side
+ * by side (a GCC/Clang vector of doubles, hovSegmentBatchLanes.cxx), with the
+ * same IEEE operations in the same order per value, so every lane equals the
+ * scalar kernel bit for bit. For depth rate @p a and total depth @p d1
+ * (r = a/d1 in [0, 2]):
+ *   WFront = sum_{n=1}^{N} (-1)^(n+1) D1^n Q_n(r),  Q_n(r) = sum_j P0[n][n-j] r^j,
+ *   alpha  = sum_{n=1}^{N} (-1)^(n+1) D1^n / n!,
+ * Q_n by Horner's rule (positive coefficients: no cancellation), the outer
+ * sums by Horner's rule in d1^2 on odd and even terms separately (two
+ * independent chains of half the length: the chain latency dominates).
+ * Outputs @p w = WFront before clamping and @p alpha (WBack = alpha - w).
+ * N is a compile-time constant so that both loops unroll completely.
+ */
+template <int N, typename T>
+HOV_THIN_INLINE void ThinWilliamsMaxSeries(
+  const T& a, const T& d1, T& w, T& alpha)
+{
+  const T r = a / d1;
+  const T d2 = d1 * d1;
+  T wOdd = T{}, wEven = T{}, aOdd = T{}, aEven = T{};
+#pragma GCC unroll 16
+  for (int n = N; n >= 1; --n)
+  {
+    const double* p = Thin.P0[n];
+    T h = T{} + p[0];
+#pragma GCC unroll 16
+    for (int j = 1; j <= n; ++j)
+    {
+      h = h * r + p[j];
+    }
+    const double f = Thin.InvFactorial[n];
+    if (n % 2)
+    {
+      wOdd = wOdd * d2 + h;
+      aOdd = aOdd * d2 + f;
+    }
+    else
+    {
+      wEven = wEven * d2 + h;
+      aEven = aEven * d2 + f;
+    }
+  }
+  // sum_n (-1)^(n+1) c_n d^n = d (odd part in d^2) - d^2 (even part in d^2).
+  w = d1 * wOdd - d2 * wEven;
+  alpha = d1 * aOdd - d2 * aEven;
+}
 
 /// Number of series terms that reach 2^-56 relative accuracy for total depth
 /// d1: the first terms of WFront and WBack are both >= d1/3 and term n is

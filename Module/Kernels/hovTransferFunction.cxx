@@ -229,13 +229,16 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
       intervals.push_back({ opacity[i].X, opacity[i].Opacity, opacity[i + 1].X, opacity[i + 1].Opacity });
     }
   }
-  const RefinementResult refined = RefineGPUExtinction(intervals, unit, tol, MaxRefinementNodes);
+  const int budget = std::min(std::max(spec.RefinementBudget, 0), MaxRefinementNodes);
+  const RefinementResult refined = RefineGPUExtinction(intervals, unit, tol, budget);
   this->RefinementNodes = refined.Added;
   if (refined.Exhausted)
   {
-    Note(messages, "GPU-compatible refinement stopped at its budget of " +
-        std::to_string(MaxRefinementNodes) + " nodes; worst relative extinction error " +
-        std::to_string(refined.WorstError) + " (tolerance " + std::to_string(tol) + ")");
+    std::ostringstream text;
+    text << "GPU-compatible refinement stopped at its budget of " << budget
+         << " nodes; worst relative extinction error " << refined.WorstError << " (tolerance "
+         << tol << ")";
+    Note(messages, text.str());
   }
   Pwl<1> tau;
   tau.Append(opacity[0].X, { tauOf(opacity[0].Opacity) });
@@ -285,6 +288,12 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
     }
     this->AnyExtinction = this->AnyExtinction || tl[0] > 0.0 || tr[0] > 0.0;
   }
+  this->BuildLookup();
+  return true;
+}
+
+void TransferFunction::BuildLookup()
+{
   // Interval lookup grid (4 buckets per node, at most 2^20).
   this->Buckets.clear();
   this->BucketScale = 0.0;
@@ -325,7 +334,6 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
       }
     }
   }
-  return true;
 }
 
 }

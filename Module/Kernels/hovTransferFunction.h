@@ -81,6 +81,9 @@ struct TransferFunctionSpec
   double UnitDistance = 1.0;   ///< u of vtkVolumeProperty (> 0)
   double GPUTolerance = 1e-4;  ///< relative error bound of the linearised -ln(1-a)/u
   double EmissionScale = 1.0;  ///< Wilhelms-Van Gelder: g = EmissionScale c / u
+  /// Most nodes the GPU-compatible refinement may add (a ray-cast segment pays
+  /// for every node in its range; see vtkHighOrderVolumeMapper's RAY_CAST).
+  int RefinementBudget = 1000000;
 };
 
 class HOV_EXPORT TransferFunction
@@ -134,6 +137,8 @@ public:
   const Node& GetNode(int k) const { return this->Nodes[k]; }
 
 private:
+  /// The interval lookup grid and the slopes of every interval (end of Build()).
+  void BuildLookup();
   std::vector<double> X;
   std::vector<Node> Nodes;
   /// O(1) interval search: bucket b of a uniform grid over [X0, Xn-1] holds

@@ -1,8 +1,9 @@
 #include "hovTwoFieldSegment.h"
 
+#include "hovBreakpointWalk.h"   // the intervals a monotone run crosses
 #include "hovPieceQuadrature.h"  // IntegrateSmoothPiece
 #include "hovSegmentIntegral.h"  // IntegrateSegment (exact pieces)
-#include "hovTransferFunction.h" // the tables walked here
+#include "hovTransferFunction.h" // the tables
 
 #include <algorithm> // std::min, std::max
 #include <cmath>     // isfinite
@@ -17,7 +18,7 @@ constexpr int MaxFieldDegree = Polynomial::MaxDegree - 1;
 /**
  * Walks one field over its monotone runs and its table's intervals (as
  * RunWalker in hovPolynomialSegment.cxx): the current piece of this field is
- * [TCur, TNext] in interval K, values SCur -> SNext (SNext is the node value
+ * [TCur, TNext] in interval Walk.Interval(), values SCur -> SNext (SNext is the node value
  * exactly when the piece ends at a node).
  */
 struct FieldWalker
@@ -28,8 +29,8 @@ struct FieldWalker
   int NEnds = 0;
   int Run = 0;
   double SRunEnd = 0.0;
-  bool Up = true, Last = true, Done = false;
-  int K = -1;
+  BreakpointWalk Walk; ///< the table's intervals along the current run
+  bool Last = true, Done = false;
   double TCur = 0.0, SCur = 0.0, TNext = 0.0, SNext = 0.0;
 
   void Init(const TransferFunction& table, const Polynomial& field, double length)
@@ -56,9 +57,7 @@ struct FieldWalker
   {
     const double t1 = this->Ends[this->Run + 1];
     this->SRunEnd = EvaluateCompensated(this->Field, t1);
-    this->Up = this->SRunEnd > sStart;
-    this->K = this->Up ? this->Table->FindIntervalUpward(sStart)
-                       : this->Table->FindIntervalDownward(sStart);
+    this->Walk = BreakpointWalk::Of(*this->Table, sStart, this->SRunEnd);
     this->TCur = this->Ends[this->Run];
     this->SCur = sStart;
     this->FindNext();
@@ -66,16 +65,13 @@ struct FieldWalker
 
   void FindNext()
   {
-    const std::vector<double>& nodes = this->Table->GetNodes();
-    const int n = static_cast<int>(nodes.size());
-    const double t1 = this->Ends[this->Run + 1], sEnd = this->SRunEnd;
-    this->Last = !(this->Up ? (this->K + 1 < n && nodes[this->K + 1] < sEnd)
-                            : (this->K >= 0 && nodes[this->K] > sEnd));
-    this->SNext = sEnd;
+    const double t1 = this->Ends[this->Run + 1];
+    this->Last = !this->Walk.CrossesNode();
+    this->SNext = this->SRunEnd;
     this->TNext = t1;
     if (!this->Last)
     {
-      this->SNext = this->Up ? nodes[this->K + 1] : nodes[this->K];
+      this->SNext = this->Walk.Node();
       this->TNext = std::min(
         std::max(SolveMonotone(this->Field, this->SNext, this->TCur, t1), this->TCur), t1);
     }
@@ -97,7 +93,7 @@ struct FieldWalker
     {
       this->TCur = this->TNext;
       this->SCur = this->SNext;
-      this->K += this->Up ? 1 : -1;
+      this->Walk.Next();
       this->FindNext();
       return;
     }
@@ -150,10 +146,10 @@ struct Merger
     const double s1A = this->E.SCur, s1B = this->E.ValueAt(t1);
     const double s2A = this->C.SCur, s2B = this->C.ValueAt(t1);
     SegmentEnd fA, fB, cA, cB;
-    this->E.Table->Evaluate(this->E.K, s1A, false, fA);
-    this->E.Table->Evaluate(this->E.K, s1B, false, fB);
-    this->C.Table->Evaluate(this->C.K, s2A, this->Emission, cA);
-    this->C.Table->Evaluate(this->C.K, s2B, this->Emission, cB);
+    this->E.Table->Evaluate(this->E.Walk.Interval(), s1A, false, fA);
+    this->E.Table->Evaluate(this->E.Walk.Interval(), s1B, false, fB);
+    this->C.Table->Evaluate(this->C.Walk.Interval(), s2A, this->Emission, cA);
+    this->C.Table->Evaluate(this->C.Walk.Interval(), s2B, this->Emission, cB);
     for (int c = 0; c < 3; ++c)
     {
       fA.Color[c] = cA.Color[c];

@@ -13,7 +13,7 @@
 // mean absolute differences per channel (x255) stay small; thresholds are the
 // measured values (printed) with margin. See hovTestReferencePeers.h.
 #include "hovTestReferenceDatasets.h"
-#include "hovTestReferencePeers.h"
+#include "hovTestPeers.h"
 #include "hovTestScenes.h"
 
 #include "vtkCamera.h"

@@ -1,4 +1,6 @@
-// OpenGL state is not leaked. A scene of two overlapping opaque boxes (the
+// OpenGL state is not leaked, in every render mode (CPU_ACCURATE, whose image
+// is blitted over the scene; OPENGL_PROJECTION, which draws into a float
+// target and composites it; RAY_CAST). A scene of two overlapping opaque boxes (the
 // farther one added last, so a leaked disabled depth test would draw it on
 // top), a translucent box and a translucent 2D overlay (both sensitive to a
 // leaked blend function) is rendered without and with the volume. At every
@@ -59,14 +61,20 @@ size_t CountDiff(const Image& a, const Image& b, const Image* fl, size_t& consid
   }
   return n;
 }
-}
 
-int TestOpenGLState(int, char*[])
+/// The test in render mode @p mode (checks named with @p name).
+void CheckMode(Checker& ck, int mode, const std::string& name)
 {
-  Checker ck;
+  std::cout << "==== " << name << "\n";
   VolumeScene scene(UnitBlock(2).Grid());
   DefaultTF(scene.Tf);
+  scene.Mapper->SetRenderMode(mode);
+  if (mode == vtkHighOrderVolumeMapper::OPENGL_PROJECTION)
+  {
+    scene.Mapper->SetOpacitySemanticsToVTKUnstructured();
+  }
 
+  auto check = [&](bool ok, const std::string& what) { ck.Check(ok, name + ": " + what); };
   vtkNew<vtkCamera> cam;
   cam->SetFocalPoint(1.0, 0.5, 0.5);
   cam->SetPosition(1.6, 1.3, 4.5);
@@ -115,7 +123,7 @@ int TestOpenGLState(int, char*[])
   double maxd;
   const size_t selfDiff = CountDiff(a1, a1b, nullptr, considered, maxd);
   std::cout << "== scene without the volume rendered twice: " << selfDiff << " pixels differ\n";
-  ck.Check(selfDiff == 0, "(the scene alone is deterministic)");
+  check(selfDiff == 0, "(the scene alone is deterministic)");
 
   ren->AddVolume(scene.Volume);
   scene.Observer->Clear();
@@ -129,20 +137,20 @@ int TestOpenGLState(int, char*[])
   }
   const Sanity s = CheckImage(fl);
   std::cout << "== with the volume: " << s.Str() << "\n";
-  ck.Check(scene.NoMessages(), "no messages");
-  ck.Check(s.Ok() && s.Covered > 2000, "the volume is drawn");
+  check(scene.NoMessages(), "no messages");
+  check(s.Ok() && s.Covered > 2000, "the volume is drawn");
   for (int f = 0; f < 3; ++f)
   {
     const size_t n = CountDiff(frames[f], a1, &fl, considered, maxd);
     std::cout << "  frame " << f + 1 << " vs no volume, at the " << considered
               << " pixels the volume does not cover: " << n << " differ (max " << maxd * 255
               << "/255)\n";
-    ck.Check(considered > 10000 && n == 0,
+    check(considered > 10000 && n == 0,
       "frame " + std::to_string(f + 1) + ": uncovered pixels equal the scene without the volume");
   }
   size_t n = CountDiff(frames[1], frames[2], nullptr, considered, maxd);
   std::cout << "  frame 2 vs frame 3 (all pixels): " << n << " differ\n";
-  ck.Check(n == 0, "consecutive frames with the volume are identical");
+  check(n == 0, "consecutive frames with the volume are identical");
   // Covered pixels do change (the test can see the volume).
   size_t covered = 0, changed = 0;
   for (int j = 0; j < fl.H; ++j)
@@ -159,13 +167,13 @@ int TestOpenGLState(int, char*[])
   }
   std::cout << "  pixels with alpha > 0.05: " << covered << ", of which changed on screen: "
             << changed << "\n";
-  ck.Check(covered > 1000 && changed > 0.95 * covered, "covered pixels show the volume");
+  check(covered > 1000 && changed > 0.95 * covered, "covered pixels show the volume");
 
   ren->RemoveVolume(scene.Volume);
   win->Render();
   n = CountDiff(Capture(win), a1, nullptr, considered, maxd);
   std::cout << "== volume removed again: " << n << " pixels differ from the original frame\n";
-  ck.Check(n == 0, "removing the volume restores the original frame exactly");
+  check(n == 0, "removing the volume restores the original frame exactly");
 
   // Render -> ReleaseGraphicsResources -> render.
   ren->AddVolume(scene.Volume);
@@ -180,15 +188,24 @@ int TestOpenGLState(int, char*[])
   const DiffStats fd = Diff(f1, f2);
   std::cout << "== render / ReleaseGraphicsResources / render: screen pixels differing " << n
             << " (max " << maxd * 255 << "/255), float " << fd.Str() << "\n";
-  ck.Check(n == 0 && fd.Max == 0.0, "identical screen and float images after releasing resources");
+  check(n == 0 && fd.Max == 0.0, "identical screen and float images after releasing resources");
   // Twice in a row, and once more after the window's own release.
   scene.Mapper->ReleaseGraphicsResources(win);
   scene.Mapper->ReleaseGraphicsResources(win);
   win->Render();
   n = CountDiff(r1, Capture(win), nullptr, considered, maxd);
   std::cout << "  after two releases in a row: " << n << " pixels differ\n";
-  ck.Check(n == 0, "identical after releasing twice");
-  ck.Check(scene.NoMessages(), "no messages");
+  check(n == 0, "identical after releasing twice");
+  check(scene.NoMessages(), "no messages");
   scene.Mapper->ReleaseGraphicsResources(win);
+}
+}
+
+int TestOpenGLState(int, char*[])
+{
+  Checker ck;
+  CheckMode(ck, vtkHighOrderVolumeMapper::CPU_ACCURATE, "CPU_ACCURATE");
+  CheckMode(ck, vtkHighOrderVolumeMapper::OPENGL_PROJECTION, "OPENGL_PROJECTION");
+  CheckMode(ck, vtkHighOrderVolumeMapper::RAY_CAST, "RAY_CAST");
   return ck.Result();
 }

@@ -1,4 +1,4 @@
-// Progress events and abort of the CPU path (vtkHighOrderTileBatches.h) on the
+// Progress events and abort of the CPU path (hovTileBatches.h) on the
 // bundled bracket (56071 tetrahedra), plain path and feature path (an
 // isosurface): with a ProgressEvent observer the progress starts at 0, never
 // decreases, ends at exactly 1, and the float image is bit-identical to the

@@ -14,7 +14,7 @@
 // channel; orthographic and perspective; all three opacity semantics with
 // Williams-Max emission and Wilhelms-Van Gelder with VTK-unstructured
 // semantics. The reference's field is first checked against f itself.
-#include "hovTestReferenceRun.h"
+#include "hovTestCellRuns.h"
 #include "hovTestScenes.h"
 
 #include "vtkCellType.h"

@@ -19,7 +19,7 @@
 // (Williams-Max) and Wilhelms-Van Gelder with VTK-unstructured semantics;
 // distorted: GPU-compatible Williams-Max and VTK-unstructured Wilhelms-Van
 // Gelder (its Newton-based reference is slower).
-#include "hovTestReferenceRun.h"
+#include "hovTestCellRuns.h"
 #include "hovTestScenes.h"
 
 #include "vtkCellType.h"

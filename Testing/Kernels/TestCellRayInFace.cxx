@@ -378,7 +378,7 @@ TEST(CellRayInFace, OppositeNormalsDecideOneSide)
 
 TEST(CellRayInFace, TriangleCrossingMatchesTetraFastPathBits)
 {
-  // The fast path's plane of a tetrahedron face (vtkHighOrderTetraSetup:
+  // The fast path's plane of a tetrahedron face (hov::CellSetup:
   // ascending ids, n = (x1 - x0) x (x2 - x0), Offset = n.x0, t = (Offset - n.o)
   // / n.d, dot products summed left to right) must give the general path's t
   // bit for bit.

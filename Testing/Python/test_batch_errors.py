@@ -10,7 +10,6 @@ their defect only. Unknown fields are errors (documented in README
 "Batch rendering"); keys starting with "_" are comments. Render and output
 failures (an unwritable output, a camera that defines no view) exit with 1.
 """
-import argparse
 import copy
 import json
 import os
@@ -19,13 +18,7 @@ import sys
 
 import highordervolume
 
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
+from hov_pytest import arguments, check, finish
 
 
 def base_spec(data):
@@ -87,6 +80,9 @@ CASES = [
     ("ray cast unsupported feature",
      [("render_mode", "ray_cast"), ("isosurfaces", [{"value": 50}])],
      "render_mode: ray_cast does not support isosurfaces (use cpu_accurate)"),
+    ("ray cast cell scalars", [("render_mode", "ray_cast"), ("array.association", "cell")],
+     "render_mode: ray_cast needs a point array (array.association cell: use cpu_accurate "
+     "or opengl_projection)"),
     ("ray cast tolerance type", [("render_mode", "ray_cast"), ("ray_cast_tolerance", "fine")],
      "ray_cast_tolerance: expected a number, got a string"),
     ("ray cast tolerance range", [("ray_cast_tolerance", 0.5)],
@@ -122,10 +118,7 @@ def run(command, path, env):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     exe = os.environ.get("HOV_BATCH_RENDER") or os.path.join(
         os.path.dirname(os.path.dirname(os.path.abspath(args.temp))), "bin", "hovBatchRender")
     env = dict(os.environ)
@@ -214,8 +207,7 @@ def main():
             ok = proc.returncode == 1 and expected in proc.stderr and not os.path.exists(out)
             check(ok, "%s (%s): exit %d, message %r" % (name, tool, proc.returncode,
                                                          proc.stderr.strip()[-300:]))
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

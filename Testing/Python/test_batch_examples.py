@@ -6,7 +6,6 @@ the comparison prints its numbers), and the example spec bracket_spec.json
 through both batch entry points (made small by a copy with a smaller image;
 the data path stays relative to the examples folder), so the examples never rot.
 """
-import argparse
 import json
 import os
 import subprocess
@@ -18,15 +17,9 @@ from vtkmodules.vtkIOXML import vtkXMLImageDataReader
 
 import highordervolume
 
-FAILURES = []
+from hov_pytest import arguments, check, finish
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLES = os.path.join(HERE, "..", "..", "Utilities", "examples")
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
 
 
 def float_image(path):
@@ -57,10 +50,7 @@ def run(command, cwd, env, what):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     folder = os.path.join(os.path.abspath(args.temp), "batch_examples")
     os.makedirs(folder, exist_ok=True)
     env = dict(os.environ)
@@ -101,8 +91,7 @@ def main():
         images.append(float_image(vti))
     check(all(i is not None for i in images) and np.array_equal(images[0], images[1]),
           "bracket_spec.json: both entry points give the same float image")
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

@@ -17,7 +17,6 @@ must exist and match the float image composited over the background to
 within one 8-bit step. In opengl_projection mode, transfer_function.
 gpu_opacity_tolerance reaches the projection in both entry points.
 """
-import argparse
 import json
 import os
 import subprocess
@@ -33,13 +32,7 @@ from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkRenderer, v
 import highordervolume
 from highordervolume import vtkHighOrderVolumeMapper
 
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
+from hov_pytest import arguments, check, finish
 
 
 def batch_exe(temp):
@@ -312,10 +305,7 @@ def check_exists(path, what):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     exe = batch_exe(args.temp)
     check(os.access(exe, os.X_OK), "hovBatchRender found at " + exe)
     env = dict(os.environ)
@@ -325,8 +315,7 @@ def main():
         run_case(name, spec, args, exe, env)
     check_projection_tolerance(args, exe, env)
     check_progress(args)
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

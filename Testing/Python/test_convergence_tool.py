@@ -7,7 +7,6 @@ bin/hov-convergence. Checks: CSV and PNG written; the CSV parses; each max/mean/
 equals the one recomputed here from the written float images (within 1e-6); the fitted orders
 are finite and equal the least-squares slope recomputed here from the CSV's costs and errors.
 """
-import argparse
 import csv
 import math
 import os
@@ -18,23 +17,7 @@ import numpy as np
 
 import highordervolume
 
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
-
-
-def find_script(name):
-    d = os.path.dirname(os.path.abspath(highordervolume.__file__))
-    for _ in range(6):
-        d = os.path.dirname(d)
-        cand = os.path.join(d, "bin", name)
-        if os.path.isfile(cand):
-            return cand
-    return None
+from hov_pytest import arguments, check, FAILURES, find_script
 
 
 def check_study(out, study, n_values):
@@ -73,10 +56,7 @@ def check_study(out, study, n_values):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     data = os.path.join(args.data, "bracket_tet4_ccx.vtu")
     out = os.path.join(args.temp, "test_convergence_tool")
     common = [data, "von_mises", "--out", out, "--size", "128", "128", "--frames", "1"]

@@ -17,7 +17,6 @@ Checks: (1) that root cause, on this VTK; (2) the demo's render_case (which
 now renders a warm-up frame first) gives a labelled frame equal to its last
 frame outside the label, for PT with both sorts and for our mapper.
 """
-import argparse
 import os
 import sys
 
@@ -38,13 +37,7 @@ from vtkmodules.vtkRenderingCore import (vtkCellCenterDepthSort, vtkRenderer,  #
 from vtkmodules.vtkRenderingVolume import vtkProjectedTetrahedraMapper  # noqa: E402
 
 SIZE = 256
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
+from hov_pytest import arguments, check, finish
 
 
 def frames(grid, prop, mapper, n):
@@ -72,10 +65,7 @@ def above(a, b, threshold=8.0 / 255.0):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(os.path.join(args.data, "bracket_tet4_ccx.vtu"))
     reader.Update()
@@ -136,8 +126,7 @@ def main():
         check(n == 0 and not res["errors"],
               "%s: the demo's labelled frame equals its last frame (%d pixels > 8/255)"
               % (name, n))
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

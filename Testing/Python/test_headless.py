@@ -21,7 +21,6 @@ Both passes (the headless twin has no DISPLAY):
      glvnd given no vendor); for hovBatchRender and the Python batch in OPENGL_PROJECTION,
      and hov-compare. An image size of 0 or 65536 in a spec: refused by both batch tools.
 """
-import argparse
 import json
 import os
 import socket
@@ -37,14 +36,9 @@ import highordervolume  # noqa: F401
 from highordervolume import vtkHighOrderOffscreenWindow
 from highordervolume.offscreen import OffscreenError, backend_name, offscreen_window
 
-FAILURES = []
+from hov_pytest import arguments, check, finish
+
 PYTHON = "/usr/bin/python3"
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        FAILURES.append(what)
 
 
 def build_dir(temp):
@@ -263,10 +257,7 @@ def check_demo_headless(args):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     os.makedirs(args.temp, exist_ok=True)
     check_factory(args)
     check_bad_environments(args)
@@ -276,8 +267,7 @@ def main():
     else:
         print("note: no DISPLAY (the headless pass): the X comparisons run in the X pass")
         check_demo_headless(args)
-    print("%d failures" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

@@ -7,7 +7,6 @@ here from the camera parameters, not by the module) and the optical depth is
 integrated with the trapezoid rule. With a constant colour c the exact pixel
 is (c A, A), A = 1 - exp(-integral tau dt), tau = a(s)/u (VTK-unstructured).
 """
-import argparse
 import math
 import os
 import sys
@@ -26,13 +25,7 @@ from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, 
 import highordervolume
 from highordervolume.offscreen import offscreen_window
 
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
+from hov_pytest import arguments, check, FAILURES
 
 
 def pixel_ray(camera, i, j, width, height):
@@ -74,10 +67,7 @@ def reference_alpha(grid, opacity, unit, origin, direction, length, samples=4000
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
 
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(os.path.join(args.data, "bracket_tet4_ccx.vtu"))

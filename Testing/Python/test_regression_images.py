@@ -8,7 +8,6 @@ checked with check_window: VTK's comparison (vtkTesting, threshold 0.15) and the
 with the C++ tests' tolerances, against Testing/Data/Baseline/<test>.png: Python and C++ give
 the same image. A missing baseline fails with a message and writes the candidate.
 """
-import argparse
 import math
 import os
 import sys
@@ -21,7 +20,8 @@ from highordervolume import vtkHighOrderVolumeMapper
 from highordervolume.offscreen import offscreen_window
 from highordervolume.regression import check_window
 
-FAILURES = []
+from hov_pytest import arguments, check, finish
+
 # render_tools.DEFAULT_NODES, as hovRegression.cxx: fraction of the range, r, g, b, opacity.
 NODES = [(0.00, 0.15, 0.25, 0.90, 0.02), (0.03, 0.20, 0.50, 1.00, 0.04),
          (0.09, 0.10, 0.90, 0.90, 0.10), (0.20, 0.30, 1.00, 0.30, 0.25),
@@ -36,12 +36,6 @@ SCENES = {
                                 mode="ray", size=(64, 64), unit=0.01, semantics=0,
                                 tolerance=(0, 0.0)),
 }
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        FAILURES.append(what)
 
 
 def render_scene(args, scene):
@@ -92,10 +86,7 @@ def render_scene(args, scene):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     temp = os.path.join(args.temp, "python_regression" + ("" if os.environ.get("DISPLAY")
                                                            else "_headless"))
     baselines = os.path.join(args.data, "Baseline")
@@ -114,8 +105,7 @@ def main():
     check(not ok and "not found" in lines[0] and
           os.path.exists(os.path.join(temp, "MissingBaseline.png")),
           "a missing baseline fails with a message and writes the candidate")
-    print("%d failures" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

@@ -10,7 +10,6 @@ resolutions and their mean error decreases with the resolution; the end-to-end t
 resampling time plus the first render. Also: hov-compare on the same Lagrange file picks
 RAY_CAST as the reference (CPU_ACCURATE does not render these cells).
 """
-import argparse
 import csv
 import os
 import subprocess
@@ -20,31 +19,11 @@ import numpy as np
 
 import highordervolume
 
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
-    return ok
-
-
-def find_script(name):
-    d = os.path.dirname(os.path.abspath(highordervolume.__file__))
-    for _ in range(6):
-        d = os.path.dirname(d)
-        cand = os.path.join(d, "bin", name)
-        if os.path.isfile(cand):
-            return cand
-    return None
+from hov_pytest import arguments, check, FAILURES, find_script, finish
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
     data = os.path.join(args.data, "platehole_lagrange_hex_q4.vtu")
     out = os.path.join(args.temp, "test_resample_study")
     script = find_script("hov-resample-study")
@@ -104,8 +83,7 @@ def main():
         keys = [ln.split()[0] for ln in proc.stdout.splitlines() if ln.strip()]
         check(proc.returncode == 0 and keys[:1] == ["hov_ray_gpu"] and "hov_cpu_gpu" not in keys,
               "hov-compare on Lagrange cells: RAY_CAST is the reference (%s)" % keys[:3])
-    print("%d failure(s)" % len(FAILURES))
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

@@ -10,7 +10,6 @@ filter with vtkCellCenterDepthSort reports its violation count (>= 0,
 printed). Moving the camera re-executes the filter (its MTime includes the
 camera's).
 """
-import argparse
 import os
 import sys
 
@@ -22,13 +21,7 @@ from vtkmodules.vtkRenderingCore import vtkCamera, vtkCellCenterDepthSort
 
 import highordervolume
 
-FAILURES = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        FAILURES.append(what)
+from hov_pytest import arguments, check, FAILURES
 
 
 def field(grid, name):
@@ -36,10 +29,7 @@ def field(grid, name):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--temp", required=True)
-    args = parser.parse_args()
+    args = arguments()
 
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(os.path.join(args.data, "bracket_tet4_ccx.vtu"))

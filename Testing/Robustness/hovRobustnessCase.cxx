@@ -421,7 +421,10 @@ void SetupMapper(Draw& d, vtkHighOrderVolumeMapper* m, double n)
          << ", isosurfaces " << m->GetNumberOfIsosurfaces() << ", splatting " << m->GetSplatting()
          << ", clip planes "
          << (m->GetClippingPlanes() ? m->GetClippingPlanes()->GetNumberOfItems() : 0)
-         << ", view-depth " << m->GetViewDepthClipping() << "\n";
+         << ", view-depth " << m->GetViewDepthClipping() << "\n"
+         << "tolerances: GPU opacity " << m->GetGPUOpacityTolerance() << ", ray cast "
+         << m->GetRayCastTolerance() << ", termination " << m->GetTerminationTransmittance()
+         << ", tile " << m->GetTileSize() << "\n";
 }
 }
 

@@ -1,0 +1,115 @@
+#include "hovImageDisplay.h"
+
+#include "hovImageDisplayFS.h" // encoded fragment shader
+
+#include "vtkObject.h" // vtkOpenGLError.h uses vtkObject in builds without NDEBUG
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+hov::ImageDisplay::ImageDisplay() = default;
+
+hov::ImageDisplay::~ImageDisplay()
+{
+  delete this->Quad;
+}
+
+bool hov::ImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int width, int height)
+{
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
+  if (!renWin || !rgba || width <= 0 || height <= 0)
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLClearErrorMacro();
+
+  this->Texture->SetContext(renWin);
+  this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (!this->Texture->Create2DFromRaw(width, height, 4, VTK_FLOAT, const_cast<float*>(rgba)))
+  {
+    return false;
+  }
+
+  // Save every state touched; the savers restore it when leaving this scope.
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
+
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+
+  if (!this->Blit(renWin, this->Texture))
+  {
+    return false;
+  }
+  // Not a vtkObject: the static form (vtkErrorMacro needs one in builds without NDEBUG).
+  vtkOpenGLStaticCheckErrorMacro("failed after drawing the high-order volume image");
+  return true;
+}
+
+bool hov::ImageDisplay::Blit(vtkOpenGLRenderWindow* renWin, vtkTextureObject* texture)
+{
+  if (!this->Quad)
+  {
+    this->Quad = new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), hovImageDisplayFS, "");
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
+  {
+    return false;
+  }
+  texture->Activate();
+  this->Quad->Program->SetUniformi("image", texture->GetTextureUnit());
+  this->Quad->Render();
+  texture->Deactivate();
+  return true;
+}
+
+void hov::ImageDisplay::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Texture->ReleaseGraphicsResources(win);
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(win);
+    delete this->Quad;
+    this->Quad = nullptr;
+  }
+}
+
+bool hov::ImageDisplay::ReadDepth(
+  vtkRenderer* ren, int width, int height, int x0, int y0, float* depth)
+{
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
+  if (!renWin || !depth || width <= 0 || height <= 0)
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  // vtkOpenGLRenderWindow::GetZbufferData disables the scissor test and sets
+  // the pack alignment; put both back.
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(ostate, GL_SCISSOR_TEST);
+  GLint packAlignment = 4;
+  glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+  const int ok = renWin->GetZbufferData(x0, y0, x0 + width - 1, y0 + height - 1, depth);
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+  return ok == VTK_OK;
+}

@@ -1,0 +1,240 @@
+#include "hovCellProjector.h"
+
+#include "hovCellSetup.h"     // the cells
+#include "hovProjectorTile.h" // the per-tile work
+#include "hovViewRays.h"      // pixel rays
+
+#include "hovPixelRange.h"       // pixel boxes of far-off cells
+#include "hovTransferFunction.h" // the table
+
+#include "vtkSMPThreadLocal.h" // one tile per thread
+#include "vtkSMPTools.h"       // the per-frame passes
+
+#include <algorithm> // std::min, std::max
+#include <utility>   // pair
+
+/// Per-frame arrays kept across frames.
+struct hov::CellProjector::Buffers
+{
+  ProjectedPoints Points;
+  std::vector<ProjectorTile::CellRecord> Cells;
+  std::vector<CellBox> Boxes; ///< the records' pixel boxes, for binning
+  std::vector<std::pair<float, vtkIdType>> DepthOrder; ///< per-pixel mode: (depth, tetra)
+  std::vector<vtkIdType> Order;                        ///< per-pixel mode: tetras by depth
+  std::vector<int> GeneralOf; ///< per ordered cell: general cell index, or -1
+  TileBins Bins;
+  vtkSMPThreadLocal<ProjectorTile> Tiles;
+};
+
+namespace
+{
+using Box = hov::CellBox;
+using CellRecord = hov::ProjectorTile::CellRecord;
+using Tetra = hov::CellSetup::Tetra;
+
+/// Distance, in ordered cells, at which a tetrahedron is prefetched while the
+/// cell records are built.
+constexpr vtkIdType RecordPrefetch = 8;
+
+/// Pixel box of a tetrahedron: the pixel centres inside its projected
+/// bounding box, widened by BoxMargin pixels against round-off in the
+/// projection (the per-pixel ray test that follows is exact).
+Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
+  const std::vector<unsigned char>& projectable, int width, int height)
+{
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (vtkIdType id : tet.Points)
+  {
+    if (!projectable[id])
+    {
+      return Box{ 0, width - 1, 0, height - 1 }; // crosses the eye plane
+    }
+    x0 = std::min(x0, window[id].x);
+    x1 = std::max(x1, window[id].x);
+    y0 = std::min(y0, window[id].y);
+    y1 = std::max(y1, window[id].y);
+  }
+  return hov::PixelBoxOf(x0, x1, y0, y1, width, height, hov::BoxMargin);
+}
+
+/// Centroid of the corners of general cell @p g (per-pixel mode's depth key).
+glm::dvec3 GeneralCentroid(const hov::CellSetup& setup, vtkIdType g)
+{
+  const hov::GeneralCells& cells = setup.GetGeneralCells();
+  const hov::GeneralCells::Cell& cell = cells.GetCells()[g];
+  const double* x = cells.GetNodes(cell);
+  const int n = hov::CellCornerCount(cell.Shape);
+  glm::dvec3 c(0.0);
+  for (int v = 0; v < n; ++v)
+  {
+    c += glm::dvec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+  }
+  return c / static_cast<double>(n);
+}
+
+/// The record of general cell @p g: only its pixel box and projectability
+/// are read by the tile loop (binning, band test); the rest is zero.
+void GeneralRecord(const hov::GeneralCellTile::FrameData& general, int g, int width,
+  int height, CellRecord& cell)
+{
+  cell = CellRecord();
+  bool projectable = true;
+  cell.PixelBox = hov::GeneralCellTile::PixelBox(general, g, width, height, projectable);
+  cell.Projectable = projectable;
+  cell.Interval = -2;
+}
+/// The record of ordered tetrahedron @p tet (see hov::ProjectorTile::CellRecord).
+void TetraRecord(const Tetra& tet, const hov::ProjectedPoints& points,
+  const hov::TransferFunction& tf, int width, int height, CellRecord& cell)
+{
+  for (int f = 0; f < 4; ++f)
+  {
+    cell.NX[f] = tet.Normal[f].x;
+    cell.NY[f] = tet.Normal[f].y;
+    cell.NZ[f] = tet.Normal[f].z;
+    cell.Offset[f] = tet.Offset[f];
+  }
+  cell.Gradient = tet.Gradient;
+  cell.RefPoint = tet.RefPoint;
+  cell.RefScalar = tet.RefScalar;
+  cell.PixelBox = PixelBox(tet, points.Window, points.Projectable, width, height);
+  cell.Projectable = true;
+  for (int v = 0; v < 4; ++v)
+  {
+    cell.Vertex[v] = points.Window[tet.Points[v]];
+    cell.Projectable = cell.Projectable && points.Projectable[tet.Points[v]];
+  }
+  cell.Interval = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
+  if (cell.Interval == -2)
+  {
+    // Across nodes: a hint for the search of each segment's interval.
+    cell.Interval = -3 - tf.FindIntervalUpward(tet.ScalarMin);
+  }
+}
+}
+
+const std::vector<vtkIdType>& hov::CellProjector::DepthOrder(const CellSetup& setup,
+  const std::vector<vtkIdType>& frontToBack, const ViewRays& rays) const
+{
+  // Per-pixel mode: any cell order gives the same image, since each pixel
+  // sorts its own segments; cells by centroid depth along the central ray
+  // make each pixel's list arrive nearly sorted (cheap insertion sort), and
+  // sorting them once here keeps every tile's list in depth order and in
+  // memory order at the same time.
+  Buffers& buf = *this->Scratch;
+  const auto& tets = setup.GetTetras();
+  const auto& points = setup.GetPoints();
+  const vtkIdType numTets = static_cast<vtkIdType>(tets.size());
+  const ViewRays::Ray centre = rays.PixelRay(rays.GetWidth() / 2, rays.GetHeight() / 2);
+  buf.DepthOrder.resize(frontToBack.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      const vtkIdType id = frontToBack[k];
+      const glm::dvec3 c = id < numTets
+        ? 0.25 * (points[tets[id].Points[0]] + points[tets[id].Points[1]] +
+                   points[tets[id].Points[2]] + points[tets[id].Points[3]])
+        : GeneralCentroid(setup, id - numTets);
+      buf.DepthOrder[k] = { static_cast<float>(glm::dot(c - centre.Origin, centre.Direction)),
+        frontToBack[k] };
+    }
+  });
+  vtkSMPTools::Sort(buf.DepthOrder.begin(), buf.DepthOrder.end()); // (depth, id): deterministic
+  buf.Order.resize(buf.DepthOrder.size());
+  for (size_t k = 0; k < buf.Order.size(); ++k)
+  {
+    buf.Order[k] = buf.DepthOrder[k].second;
+  }
+  return buf.Order;
+}
+
+void hov::CellProjector::BuildRecords(const CellSetup& setup, const std::vector<vtkIdType>& order,
+  const TransferFunction& tf, int width, int height, GeneralCellTile::FrameData& general) const
+{
+  // Per cell, in that order and in one pass, its record for the tile loop:
+  // face planes and field, projected vertices, pixel box, and the
+  // transfer-function interval holding its whole scalar range (most cells of
+  // a fine mesh: their segments skip the search).
+  Buffers& buf = *this->Scratch;
+  const auto& tets = setup.GetTetras();
+  const vtkIdType numTets = static_cast<vtkIdType>(tets.size());
+  const bool hasGeneral = !setup.GetGeneralCells().GetCells().empty();
+  const size_t numCells = order.size();
+  buf.Cells.resize(numCells);
+  buf.Boxes.resize(numCells);
+  buf.GeneralOf.resize(hasGeneral ? numCells : 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType k = b; k < e; ++k)
+    {
+      if (hasGeneral)
+      {
+        buf.GeneralOf[k] = order[k] < numTets ? -1 : static_cast<int>(order[k] - numTets);
+        if (buf.GeneralOf[k] >= 0)
+        {
+          GeneralRecord(general, buf.GeneralOf[k], width, height, buf.Cells[k]);
+          buf.Boxes[k] = buf.Cells[k].PixelBox;
+          continue;
+        }
+      }
+      // The order scatters the tetrahedra in memory: fetch a few ahead.
+      if (k + RecordPrefetch < e && order[k + RecordPrefetch] < numTets)
+      {
+        const char* ahead = reinterpret_cast<const char*>(&tets[order[k + RecordPrefetch]]);
+        for (size_t offset = 0; offset < sizeof(Tetra); offset += 64)
+        {
+          __builtin_prefetch(ahead + offset);
+        }
+      }
+      TetraRecord(tets[order[k]], buf.Points, tf, width, height, buf.Cells[k]);
+      buf.Boxes[k] = buf.Cells[k].PixelBox;
+    }
+  });
+}
+
+hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup,
+  const std::vector<vtkIdType>& frontToBack, const ViewRays& rays, const TransferFunction& tf,
+  const Settings& settings, const float* depth, std::vector<double>& rgba) const
+{
+  const int width = rays.GetWidth(), height = rays.GetHeight();
+  if (width <= 0 || height <= 0 || frontToBack.empty() || tf.GetNumberOfNodes() == 0)
+  {
+    rgba.assign(static_cast<size_t>(std::max(width, 0)) * std::max(height, 0) * 4, 0.0);
+    return Statistics();
+  }
+  // The tiles cover the image and write every pixel: no need to clear it.
+  rgba.resize(static_cast<size_t>(width) * height * 4);
+  // Per-frame arrays live across frames: no allocation, no page faults.
+  if (!this->Scratch)
+  {
+    this->Scratch = std::make_shared<Buffers>();
+  }
+  Buffers& buf = *this->Scratch;
+  buf.Points.Project(rays, setup.GetPoints());
+  const std::vector<vtkIdType>& order =
+    settings.PerPixelSort ? this->DepthOrder(setup, frontToBack, rays) : frontToBack;
+  // The general cells' frame data (their records only carry the pixel box).
+  GeneralCellTile::FrameData general;
+  general.Cells = &setup.GetGeneralCells();
+  general.GeneralOf = &buf.GeneralOf;
+  general.Window = buf.Points.Window.data();
+  general.Perturbation = GeneralCellTile::PerturbationOf(rays);
+  general.Projectable = buf.Points.Projectable.data();
+  general.TF = &tf;
+  general.Segment.Emission = settings.Integration.Emission;
+  this->BuildRecords(setup, order, tf, width, height, general);
+  buf.Bins.Build(buf.Boxes, width, height, TileSizeOf(settings));
+
+  // Tiles in parallel; every pixel is composited by one thread in a fixed order.
+  ProjectorTile::Frame frame;
+  frame.Bins = &buf.Bins;
+  frame.Cells = &buf.Cells;
+  frame.TF = &tf;
+  frame.Settings = &settings;
+  frame.Rays = &rays;
+  frame.Depth = depth;
+  frame.WitnessTol = WitnessRelativeTolerance * rays.GetDepthScale();
+  frame.PerturbX = rays.GetPerturbX();
+  frame.PerturbY = rays.GetPerturbY();
+  frame.General = setup.GetGeneralCells().GetCells().empty() ? nullptr : &general;
+  return RunTiles(buf.Bins, width, height, settings.Progress, buf.Tiles, frame, rgba);
+}

@@ -1,0 +1,127 @@
+#include "hovProjectorBackend.h"
+
+#include "hovCellScene.h"   // cells, order, table
+#include "hovRenderFrame.h" // the frame
+#include "hovViewRays.h"    // pixel rays
+
+#include "hovIsosurface.h"       // Isosurface
+#include "hovTransferFunction.h" // the table
+
+#include "vtkVolume.h" // the property
+
+#include <algorithm> // std::min, std::max
+#include <cmath>     // std::isfinite
+#include <string>    // messages
+#include <vector>    // messages
+
+int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
+{
+  CellScene& scene = this->Scene;
+  bool ok = frame.ValidateView() && scene.Prepare(frame);
+  // Isosurfaces are visible even where the volume does not absorb.
+  bool render = ok && scene.GetCells().GetNumberOfRenderedCells() > 0;
+  bool rebuilt = false;
+  vtkHighOrderTransferFunction* tf = scene.GetTransferFunction();
+  if (render &&
+    !frame.UpdateTransferFunction(tf, frame.Settings.GPUOpacityTolerance, rebuilt) &&
+    frame.Settings.NumberOfIsosurfaces() == 0)
+  {
+    if (rebuilt)
+    {
+      frame.WarnTransparent();
+    }
+    render = false;
+  }
+  ViewRays rays;
+  if (render && !frame.SetupRays(rays, frame.Width, frame.Height))
+  {
+    render = ok = false;
+  }
+  render = render && scene.PrepareOrder(frame, false);
+  frame.Drawn = render;
+  if (!render)
+  {
+    frame.ClearImage();
+    return ok ? 1 : 0;
+  }
+  // The projector sizes the image and writes every pixel: no clearing.
+  CellProjector::Settings settings;
+  settings.Integration.Emission = frame.Settings.Emission;
+  settings.Integration.Method = frame.Settings.Integration;
+  settings.TerminationTransmittance = frame.Settings.TerminationTransmittance;
+  // A cyclic order cannot be exact: fall back to the per-pixel order.
+  settings.PerPixelSort =
+    frame.Settings.Ordering == CellOrdering::PerPixelSort || scene.OrderHasCycles();
+  settings.TileSize = frame.Settings.TileSize;
+  settings.Progress = frame.Progress;
+  const int features = this->PrepareFeatures(frame);
+  CellProjector::Statistics st;
+  if (features > 0) // isosurfaces, separate fields or splatting: the feature path
+  {
+    st = this->Features.GetProjector().Render(scene.GetCells(), scene.GetFrontToBack(), rays,
+      tf->GetTable(), settings, this->Features.GetFeatures(), frame.Depth, frame.RGBA);
+    frame.Stats.SplattedCells = this->Features.GetProjector().GetNumberOfSplats();
+  }
+  else if (features == 0)
+  {
+    st = this->Projector.Render(scene.GetCells(), scene.GetFrontToBack(), rays, tf->GetTable(),
+      settings, frame.Depth, frame.RGBA);
+  }
+  else
+  {
+    frame.ClearImage();
+  }
+  frame.Stats.Aborted = st.Aborted;
+  frame.Stats.WitnessViolations = st.WitnessViolations;
+  frame.Stats.Segments = st.Segments;
+  frame.Stats.Pieces = st.Pieces;
+  return ok ? 1 : 0;
+}
+
+int hov::ProjectorBackend::PrepareFeatures(const RenderFrame& frame)
+{
+  const FrameSettings& s = frame.Settings;
+  FeatureSetup::Options options;
+  int dropped = 0;
+  for (int i = 0; i < s.NumberOfIsosurfaces(); ++i)
+  {
+    const double* v = &s.Isosurfaces[5 * i];
+    Isosurface surface;
+    surface.Value = v[0];
+    for (int k = 0; k < 3; ++k)
+    {
+      surface.Color[k] = std::min(std::max(v[1 + k], 0.0), 1.0); // NaN -> 0
+    }
+    surface.Opacity = std::min(std::max(v[4], 0.0), 1.0);
+    if (!std::isfinite(surface.Value))
+    {
+      ++dropped;
+      continue;
+    }
+    options.Surfaces.push_back(surface);
+  }
+  if (dropped)
+  {
+    frame.Warning(std::to_string(dropped) + " isosurfaces with a NaN/Inf value are ignored.");
+  }
+  options.ColorArray = s.ColorArray;
+  options.ColorComponent = s.ColorComponent;
+  options.IsoArray = s.IsosurfaceArray;
+  options.IsoComponent = s.IsosurfaceComponent;
+  options.Splatting = s.Splatting;
+  options.SplatPixelThreshold = s.SplatPixelThreshold;
+  std::string error;
+  std::vector<std::string> warnings;
+  const bool ok = this->Features.Prepare(
+    options, frame.Input, frame.Renderer, frame.Camera, frame.Volume, error, warnings);
+  for (const std::string& w : warnings)
+  {
+    frame.Warning(w + ".");
+  }
+  if (!ok)
+  {
+    frame.Error("Cannot render: " + error + ".");
+    return -1;
+  }
+  return this->Features.GetFeatures().Active() ? 1 : 0;
+}

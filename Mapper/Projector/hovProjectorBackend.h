@@ -1,0 +1,51 @@
+/**
+ * @class   hov::ProjectorBackend
+ * @brief   The CPU_ACCURATE render mode: HIAC's cell projection on the CPU
+ *          (sections 4-6), exact per-pixel ray segments composited in
+ *          visibility order, with the features of sections 5.1-5.3 when one
+ *          is set.
+ *
+ * Per frame: the shared scene set-up (hov::CellScene: cells, transfer
+ * function, visibility order), the pixel rays with their clipping, then
+ * hov::CellProjector (the plain path) or, with isosurfaces, separate fields
+ * or splatting, hov::FeatureProjector (the feature path, prepared by
+ * hov::FeatureSetup). A cyclic visibility order is composited per pixel. The
+ * image is the frame's double RGBA.
+ *
+ * Also the image of RenderImage() in OPENGL_PROJECTION mode (no window).
+ *
+ * Thread safety: rendering thread only (the projectors run vtkSMPTools).
+ * @sa hov::CellProjector, hov::FeatureProjector, hov::Backend
+ */
+#ifndef hovProjectorBackend_h
+#define hovProjectorBackend_h
+
+#include "hovBackend.h" // the interface
+
+#include "hovCellProjector.h" // the plain path
+#include "hovFeatureSetup.h"  // the feature path
+
+namespace hov
+{
+class CellScene;
+
+class ProjectorBackend : public Backend
+{
+public:
+  explicit ProjectorBackend(CellScene& scene)
+    : Scene(scene)
+  {
+  }
+  int Render(RenderFrame& frame, vtkImageData* floatImage) override;
+
+private:
+  /// The feature settings of @p frame: -1 error (reported), 0 none active, 1 active.
+  int PrepareFeatures(const RenderFrame& frame);
+
+  CellScene& Scene;
+  CellProjector Projector;
+  FeatureSetup Features;
+};
+}
+
+#endif

@@ -1,0 +1,66 @@
+/**
+ * @class   hov::RayCastBackend
+ * @brief   The RAY_CAST render mode (issue 6): one ray per pixel through the
+ *          cells as they are stored, curved Lagrange cells included
+ *          (hov::RayCast, the adapter of hov::CurvedRayCaster).
+ *
+ * Per frame: the input converted and the caster built when the input or the
+ * scalars change (hov::InputKey; skipped cells reported once per input); its
+ * own transfer-function table, linearised at max(GPUOpacityTolerance,
+ * RayCastTolerance / 10) (the table's error within a fifth of the per-pixel
+ * tolerance: a finer table only adds breakpoints to locate); the interaction
+ * level of detail (a window whose DesiredUpdateRate is at least
+ * RayCastInteractiveUpdateRate gets one ray per f x f block of pixels, f from
+ * RayCastInteractiveSubsampling or the time budget at the previous frame's
+ * cost per ray, tolerance x10); rays stop at TerminationTransmittance. Output:
+ * the frame's image and the per-pixel error estimate (GetErrorImage()).
+ *
+ * Thread safety: rendering thread only (the caster runs vtkSMPTools).
+ * @sa hov::RayCast, hov::Backend, vtkHighOrderVolumeMapper (RenderMode)
+ */
+#ifndef hovRayCastBackend_h
+#define hovRayCastBackend_h
+
+#include "hovBackend.h" // the interface
+
+#include "hovRayCast.h"                   // the caster adapter
+#include "hovRenderFrame.h"               // InputKey
+#include "vtkHighOrderTransferFunction.h" // its table
+
+#include "vtkImageData.h" // the error image
+#include "vtkNew.h"       // owned objects
+
+#include <vector> // buffers
+
+namespace hov
+{
+class RayCastBackend : public Backend
+{
+public:
+  int Render(RenderFrame& frame, vtkImageData* floatImage) override;
+
+  /// The per-pixel error estimate of the last frame (array "Error").
+  vtkImageData* GetErrorImage() { return this->ErrorImage; }
+
+private:
+  /// Everything but the error image's publication: 1 success, 0 error.
+  int Trace(RenderFrame& frame);
+  /// The caster for the frame's input (rebuilt when its key changes).
+  void PrepareCaster(const RenderFrame& frame, vtkUnstructuredGrid* grid);
+  /// The pixels per ray in x and y of an interactive frame in @p window.
+  int Subsampling(const RenderFrame& frame, double desiredUpdateRate) const;
+
+  RayCast Caster;
+  bool Valid = false;
+  InputKey Key;
+  bool FeatureWarned = false;
+  vtkNew<vtkHighOrderTransferFunction> TransferFunction;
+  vtkNew<vtkImageData> ErrorImage;
+  std::vector<float> RGBA, Error, Depth;
+  /// Wall seconds per traced ray of the last frame (0: none yet), for the
+  /// interactive frame's time budget.
+  double SecondsPerRay = 0.0;
+};
+}
+
+#endif

@@ -1,0 +1,49 @@
+/**
+ * @class   hov::Backend
+ * @brief   One render mode of vtkHighOrderVolumeMapper: what the facade hands
+ *          a frame to. One implementation per mode: hov::ProjectorBackend
+ *          (CPU_ACCURATE, Mapper/Projector), hov::ProjectionBackend
+ *          (OPENGL_PROJECTION, Mapper/OpenGL), hov::RayCastBackend (RAY_CAST,
+ *          Mapper/RayCast); the facade chooses one in one place
+ *          (vtkHighOrderVolumeMapper::SelectBackend).
+ *
+ * An image backend (DrawsIntoWindow() false) computes the frame's image in
+ * double precision (RenderFrame::RGBA) and the facade publishes it as the
+ * float image and, in a window, blits it over the scene. A window backend
+ * (OPENGL_PROJECTION) draws into the renderer's window itself and writes the
+ * float image it read back (the facade only checks it).
+ *
+ * Thread safety: rendering thread only.
+ * @sa hov::RenderFrame, vtkHighOrderVolumeMapper
+ */
+#ifndef hovBackend_h
+#define hovBackend_h
+
+class vtkImageData;
+class vtkWindow;
+
+namespace hov
+{
+class RenderFrame;
+
+class Backend
+{
+public:
+  virtual ~Backend() = default;
+
+  /**
+   * Render @p frame (see the class doc): 1 on success, also for an image that
+   * is empty for a reason of the scene (RenderFrame::Drawn then tells whether
+   * visible cells were drawn); 0 on error (reported through the frame).
+   * @p floatImage: the window backend's float image (image backends leave it).
+   */
+  virtual int Render(RenderFrame& frame, vtkImageData* floatImage) = 0;
+
+  /// True if the backend draws into the renderer's window itself.
+  virtual bool DrawsIntoWindow() const { return false; }
+
+  virtual void ReleaseGraphicsResources(vtkWindow*) {}
+};
+}
+
+#endif

@@ -1,0 +1,131 @@
+/**
+ * @class   hov::CellSetup
+ * @brief   View-independent preparation of the cells of the accurate CPU
+ *          path: linear tetrahedra for exact ray clipping (the fast path),
+ *          the other supported types in hov::GeneralCells.
+ *
+ * For every valid tetrahedron of the input: its four face planes n.x <= h
+ * (outward normals) and its linear scalar field s(x) = s0 + g.(x - x0). Built
+ * once per input/array change and reused for every view.
+ *
+ * Face planes are computed canonically: from the face's three global point ids
+ * in ascending order, then oriented outward by negation. Two tetrahedra that
+ * share a face therefore hold bit-identical planes up to sign, and a ray's
+ * exit parameter from one equals its entry parameter into the other exactly:
+ * no crack and no overlap between neighbouring cells, by construction.
+ *
+ * Rendered cells are numbered tetrahedra first (0 .. GetTetras().size()-1),
+ * then the general cells (voxel, hexahedron, wedge, pyramid, quadratic
+ * types: GetGeneralCells(), in input order); GetSortGrid() holds them all in
+ * that numbering with their own cell types.
+ *
+ * Validation (counted, reported by the mapper, never fatal): cell types the
+ * CPU path does not support (hov::IsSupportedCellType false: polyhedra,
+ * Lagrange/Bezier cells, 2D cells, ...), broken connectivity, non-finite point
+ * coordinates, non-finite scalars, degenerate tetrahedra (|6V| <= 1e-12
+ * times the cube of the longest edge: no volume to render) are skipped;
+ * inverted tetrahedra (negative VTK orientation) are rendered, since the
+ * planes do not depend on vertex order, and counted.
+ *
+ * Thread safety: Build() runs in parallel internally (vtkSMPTools) and is not
+ * re-entrant; the built arrays are read-only afterwards.
+ * @sa hov::CellProjector
+ */
+#ifndef hovCellSetup_h
+#define hovCellSetup_h
+
+#include "hovGeneralCells.h" // the non-tetrahedral cells
+
+#include "vtkSmartPointer.h"     // For SortGrid
+#include "vtkType.h"             // vtkIdType
+#include "vtkUnstructuredGrid.h" // For SortGrid
+
+#include <glm/glm.hpp> // dvec3
+
+#include <string> // error message
+#include <vector> // storage
+
+class vtkDataArray;
+class vtkPoints;
+class vtkUnstructuredGridBase;
+
+namespace hov
+{
+class CellSetup
+{
+public:
+  struct Tetra
+  {
+    glm::dvec3 Normal[4]; ///< outward face normals (not normalised)
+    double Offset[4];     ///< inside iff dot(Normal[k], x) <= Offset[k]
+    glm::dvec3 Gradient;  ///< scalar gradient (0 for cell scalars)
+    glm::dvec3 RefPoint;  ///< vertex 0
+    double RefScalar;     ///< scalar at vertex 0 (the cell value for cell scalars)
+    double ScalarMin;     ///< smallest vertex scalar
+    double ScalarMax;     ///< largest vertex scalar
+    vtkIdType Points[4];
+    vtkIdType CellId;
+  };
+
+  struct Statistics
+  {
+    vtkIdType Cells = 0;
+    vtkIdType Rendered = 0;
+    vtkIdType General = 0;     ///< rendered non-tetrahedral cells (in Rendered)
+    vtkIdType Unsupported = 0; ///< cells of types the CPU path does not render
+    vtkIdType NonFinitePoints = 0;
+    vtkIdType NonFiniteScalars = 0;
+    vtkIdType Degenerate = 0;
+    vtkIdType Inverted = 0;        ///< tetrahedra
+    vtkIdType InvertedGeneral = 0; ///< other cells
+    vtkIdType Curved = 0;      ///< quadratic cells rendered straight-edged
+    double MaxCurvature = 0.0; ///< their largest node deviation / cell size
+    int FirstUnsupportedType = -1;
+  };
+
+  /**
+   * Prepare every cell of @p grid. @p scalars is a point array (or a cell
+   * array if @p cellScalars); @p component selects a component, -1 the
+   * magnitude. Returns false if nothing can be rendered; @p error then says
+   * why if the input itself is unusable (e.g. an array shorter than the
+   * number of points).
+   */
+  bool Build(vtkUnstructuredGridBase* grid, vtkDataArray* scalars, bool cellScalars, int component,
+    std::string* error = nullptr);
+
+  /**
+   * The rendered tetrahedra as a grid (input points, cell k = GetTetras()[k]):
+   * what a vtkVisibilitySort is given, so that it never sees invalid cells and
+   * the ids it returns are tetra indices.
+   */
+  vtkUnstructuredGrid* GetSortGrid() const { return this->SortGrid; }
+
+  const std::vector<Tetra>& GetTetras() const { return this->Tetras; }
+  /// The rendered non-tetrahedral cells (rendered cell GetTetras().size() + g is cell g).
+  const hov::GeneralCells& GetGeneralCells() const { return this->General; }
+  /// Rendered cells: tetrahedra plus general cells.
+  vtkIdType GetNumberOfRenderedCells() const
+  {
+    return static_cast<vtkIdType>(this->Tetras.size() + this->General.GetCells().size());
+  }
+  /// All input points (dataset coordinates), indexed by point id.
+  const std::vector<glm::dvec3>& GetPoints() const { return this->Points; }
+  const Statistics& GetStatistics() const { return this->Stats; }
+
+private:
+  /// The scalar per point (or cell) into @p values and the points; false (and
+  /// @p error) if the array is too short.
+  bool ReadInput(vtkUnstructuredGridBase* grid, vtkDataArray* scalars, bool cellScalars,
+    int component, std::vector<double>& values, std::string* error);
+  /// The grid of the rendered cells given to visibility sorts.
+  void BuildSortGrid(vtkPoints* points);
+
+  std::vector<Tetra> Tetras;
+  std::vector<glm::dvec3> Points;
+  hov::GeneralCells General;
+  vtkSmartPointer<vtkUnstructuredGrid> SortGrid;
+  Statistics Stats;
+};
+}
+
+#endif

@@ -1,0 +1,44 @@
+/**
+ * @class   hov::ImageCheck
+ * @brief   The checks every render mode applies to the float image it
+ *          produced (issue 21; README, "Failures and messages: the rule").
+ *
+ * - The image never holds NaN or Inf: a pixel whose colour is not finite or
+ *   beyond float's range is drawn transparent and counted in one warning per
+ *   frame.
+ * - An empty image comes with a warning saying why, once until an image is
+ *   not empty again or a setting changes; a frame that was aborted or had
+ *   nothing to draw (RenderFrame::Drawn false) has had its own message.
+ *
+ * Thread safety: rendering thread only (it keeps the warned state between frames).
+ * @sa hov::RenderFrame, vtkHighOrderVolumeMapper
+ */
+#ifndef hovImageCheck_h
+#define hovImageCheck_h
+
+#include "vtkType.h" // vtkMTimeType
+
+#include <cstddef> // size_t
+
+namespace hov
+{
+class RenderFrame;
+
+class ImageCheck
+{
+public:
+  /**
+   * Check @p pixels RGBA values of @p rgba (4 per pixel) of @p frame (see the
+   * class doc); @p settingsTime is the mapper's modification time (a changed
+   * setting warns about an empty image again).
+   */
+  template <typename T>
+  void Check(T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime);
+
+private:
+  bool WarnedEmptyImage = false;
+  vtkMTimeType WarnedTime = 0;
+};
+}
+
+#endif

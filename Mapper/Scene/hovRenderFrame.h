@@ -1,0 +1,159 @@
+/**
+ * @class   hov::RenderFrame
+ * @brief   One render of vtkHighOrderVolumeMapper, as every render mode reads
+ *          it: what is drawn (camera, volume, renderer, size, opaque depth),
+ *          the mapper's settings with every enum converted once
+ *          (FrameSettings), the selected scalars and their cache key, where
+ *          messages and progress go, and what the render produced (the
+ *          image, statistics).
+ *
+ * Built once per render by the facade (vtkHighOrderVolumeMapper::Render or
+ * RenderImage) and handed to the mode's backend (hovBackend.h). The checks
+ * every mode makes are here, in one place: ValidateView() (a camera, a
+ * volume and a positive size; hov::CheckView and a finite view-depth range;
+ * the input brought up to date; the scalars selected), SetupRays() (the
+ * pixel rays and their clipping) and UpdateTransferFunction() (a table from
+ * the volume property, its messages once per rebuild). The rule they follow
+ * (README, "Failures and messages: the rule"): an error where the frame
+ * cannot be rendered, a warning where it is empty for a reason of the scene.
+ *
+ * Thread safety: one frame per render, on the rendering thread.
+ * @sa hov::Backend, vtkHighOrderVolumeMapper
+ */
+#ifndef hovRenderFrame_h
+#define hovRenderFrame_h
+
+#include "hovFrameSettings.h" // FrameSettings, FrameStatistics, FrameMessages
+#include "hovTileBatches.h"   // ProgressFunction
+
+#include "vtkType.h" // vtkMTimeType
+
+#include <algorithm> // std::max
+#include <string>    // messages
+#include <vector>    // the image
+
+class vtkCamera;
+class vtkDataArray;
+class vtkHighOrderTransferFunction;
+class vtkRenderer;
+class vtkUnstructuredGridBase;
+class vtkUnstructuredGridVolumeMapper;
+class vtkVisibilitySort;
+class vtkVolume;
+
+namespace hov
+{
+class ViewRays;
+
+/// The scalars a frame renders (vtkAbstractMapper::GetScalars on the input).
+struct ScalarSelection
+{
+  vtkDataArray* Array = nullptr;
+  /// Where the array was found (GetScalars' cellFlag): 0 point data, 1 cell data, 2 field data.
+  int Association = 0;
+  /// Cell scalars (Association 1): one value per cell.
+  bool CellScalars = false;
+  /// The component rendered, or -1 for the magnitude.
+  int Component = -1;
+  /// VectorMode COMPONENT with VectorComponent outside the array's components
+  /// (Component is then clamped into range).
+  bool ComponentClamped = false;
+};
+
+/// What decides whether a prepared input can be reused: the input, the array,
+/// their modification times, the component and the association.
+struct InputKey
+{
+  vtkUnstructuredGridBase* Input = nullptr;
+  vtkMTimeType InputTime = 0;
+  vtkDataArray* Array = nullptr;
+  vtkMTimeType ArrayTime = 0;
+  int Component = -2;
+  bool CellScalars = false;
+  bool operator==(const InputKey& o) const
+  {
+    return this->Input == o.Input && this->InputTime == o.InputTime && this->Array == o.Array &&
+      this->ArrayTime == o.ArrayTime && this->Component == o.Component &&
+      this->CellScalars == o.CellScalars;
+  }
+  bool operator!=(const InputKey& o) const { return !(*this == o); }
+};
+
+class RenderFrame
+{
+public:
+  // What is drawn (set by the facade).
+  vtkCamera* Camera = nullptr;
+  vtkVolume* Volume = nullptr;
+  /// The renderer drawing the volume, or null (RenderImage: no window).
+  vtkRenderer* Renderer = nullptr;
+  /// The mapper: its input, scalar selection and clipping planes.
+  vtkUnstructuredGridVolumeMapper* Mapper = nullptr;
+  vtkVisibilitySort* VisibilitySort = nullptr;
+  int Width = 0, Height = 0;
+  double Aspect = 1.0;
+  /// The viewport's origin in the window (window renders).
+  int X0 = 0, Y0 = 0;
+  /// Window depth of opaque geometry per pixel (1: nothing), or null.
+  const float* Depth = nullptr;
+  FrameSettings Settings;
+  FrameMessages* Messages = nullptr;
+  /// Progress and abort between tile batches; empty without observers.
+  ProgressFunction Progress;
+
+  // Set by ValidateView().
+  vtkUnstructuredGridBase* Input = nullptr;
+  ScalarSelection Scalars;
+
+  // What the backend produced.
+  /// The image in double precision (4 per pixel, premultiplied, row 0 at the
+  /// bottom), or left empty by a backend that writes the float image itself.
+  std::vector<double> RGBA;
+  /// Whether visible cells were drawn (an empty image then needs a warning).
+  bool Drawn = false;
+  FrameStatistics Stats;
+
+  void Warning(const std::string& text) const { this->Messages->Warning(text); }
+  void Error(const std::string& text) const { this->Messages->Error(text); }
+
+  /**
+   * The checks of every mode, in order: a camera, a volume and a positive
+   * size; a usable view (hov::CheckView) and a finite view-depth range; the
+   * input updated; then the scalars selected (no message: a mode reports
+   * missing input or scalars in its own words). False with an error reported
+   * if the frame cannot be rendered.
+   */
+  bool ValidateView();
+
+  /// The cache key of the selected input and scalars.
+  InputKey Key() const;
+
+  /**
+   * @p rays for a @p width x @p height grid of pixels (the frame's aspect),
+   * with the mapper's clipping planes and view-depth slab. False (an error
+   * reported) if the matrices are singular.
+   */
+  bool SetupRays(ViewRays& rays, int width, int height) const;
+
+  /**
+   * Bring @p tf up to date with the volume property and the frame's settings
+   * (its GPU-compatible linearisation at @p gpuTolerance), reporting the
+   * table's messages when it was rebuilt (@p rebuilt). Returns whether the
+   * volume can be visible: the table has extinction, or the emission model
+   * glows without it.
+   */
+  bool UpdateTransferFunction(vtkHighOrderTransferFunction* tf, double gpuTolerance, bool& rebuilt) const;
+
+  /// The warning for a transfer function that is transparent everywhere.
+  void WarnTransparent() const;
+
+  /// The zero image of the frame's size.
+  void ClearImage()
+  {
+    this->RGBA.assign(
+      static_cast<size_t>(std::max(this->Width, 0)) * std::max(this->Height, 0) * 4, 0.0);
+  }
+};
+}
+
+#endif

@@ -1,0 +1,83 @@
+/**
+ * @file   hovTileBatches.h
+ * @brief  Tile loop of the CPU projectors with progress reports and abort.
+ *
+ * hov::ForTileBatches runs the tiles [0, numTiles) through
+ * vtkSMPTools::For. Without a progress callback it is one parallel loop.
+ * With one, the tiles run in about ProgressBatches consecutive batches (each
+ * a parallel loop) and the callback is called on the calling thread after
+ * each batch with the fraction of tiles done (ending at exactly 1); if it
+ * returns true the remaining batches are skipped. Every pixel belongs to one
+ * tile and a tile's result does not depend on when or where it runs, so the
+ * image of a completed render is bit-identical with or without batches.
+ * hov::ClearTiles zeroes the pixels of the tiles that did not run.
+ *
+ * Thread safety: the callback is only called from the calling thread.
+ * @sa hov::CellProjector, hov::FeatureProjector
+ */
+#ifndef hovTileBatches_h
+#define hovTileBatches_h
+
+#include "vtkSMPTools.h"
+
+#include <algorithm>  // std::min
+#include <functional> // std::function
+#include <vector>     // the image
+
+namespace hov
+{
+/// Progress callback: fraction of tiles done in (0, 1]; return true to abort.
+using ProgressFunction = std::function<bool(double)>;
+
+/// Number of batches the tiles are split into when progress is reported.
+constexpr int ProgressBatches = 32;
+
+/**
+ * Run @p tileFunction(t) for every tile t (in parallel, see the file doc).
+ * Returns the number of tiles run: numTiles unless @p progress aborted.
+ */
+template <typename TileFunction>
+int ForTileBatches(
+  int numTiles, const ProgressFunction& progress, TileFunction&& tileFunction)
+{
+  const int batch =
+    progress ? std::max(1, (numTiles + ProgressBatches - 1) / ProgressBatches)
+             : std::max(1, numTiles);
+  int done = 0;
+  while (done < numTiles)
+  {
+    const int end = std::min(numTiles, done + batch);
+    vtkSMPTools::For(done, end, 1, [&](vtkIdType t0, vtkIdType t1) {
+      for (vtkIdType t = t0; t < t1; ++t)
+      {
+        tileFunction(t);
+      }
+    });
+    done = end;
+    if (progress && progress(static_cast<double>(done) / numTiles) && done < numTiles)
+    {
+      break;
+    }
+  }
+  return done;
+}
+
+/// Zero the RGBA pixels of tiles [firstTile, numTiles) (tiles of @p tileSize, @p tilesX per row).
+inline void ClearTiles(int firstTile, int numTiles, int tilesX, int tileSize,
+  int width, int height, std::vector<double>& rgba)
+{
+  for (int t = firstTile; t < numTiles; ++t)
+  {
+    const int x0 = (t % tilesX) * tileSize, y0 = (t / tilesX) * tileSize;
+    const int x1 = std::min(width, x0 + tileSize), y1 = std::min(height, y0 + tileSize);
+    for (int y = y0; y < y1; ++y)
+    {
+      std::fill(rgba.begin() + (static_cast<size_t>(y) * width + x0) * 4,
+        rgba.begin() + (static_cast<size_t>(y) * width + x1) * 4, 0.0);
+    }
+  }
+}
+
+}
+
+#endif

@@ -1,0 +1,174 @@
+#include "hovViewRays.h"
+
+#include "vtkAbstractMapper3D.h"
+#include "vtkCamera.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+
+#include <algorithm> // std::min, std::max
+#include <cmath>     // std::isfinite
+
+namespace
+{
+/// VTK matrices are row-major with column vectors; glm is column-major.
+glm::dmat4 ToGlm(const vtkMatrix4x4* m)
+{
+  glm::dmat4 g(1.0);
+  if (m)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        g[c][r] = m->GetElement(r, c);
+      }
+    }
+  }
+  return g;
+}
+}
+
+bool hov::ViewRays::Setup(
+  vtkCamera* camera, vtkMatrix4x4* volumeMatrix, int width, int height, double aspect)
+{
+  if (!camera || width <= 0 || height <= 0 || !(aspect > 0.0))
+  {
+    return false;
+  }
+  this->Width = width;
+  this->Height = height;
+  // World -> NDC (z in [-1, 1]), as OpenGL uses it.
+  const glm::dmat4 worldToClip =
+    ToGlm(camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0));
+  this->DataToClip = worldToClip * ToGlm(volumeMatrix);
+  const double det = glm::determinant(this->DataToClip);
+  if (!std::isfinite(det) || det == 0.0)
+  {
+    return false;
+  }
+  this->ClipToData = glm::inverse(this->DataToClip);
+  const glm::dvec3 nearC = this->Unproject(0.0, 0.0, -1.0);
+  const glm::dvec3 farC = this->Unproject(0.0, 0.0, 1.0);
+  this->DepthScale = glm::length(farC - nearC);
+  this->PerturbX = this->Unproject(1.0, 0.0, -1.0) - nearC;
+  this->PerturbY = this->Unproject(0.0, 1.0, -1.0) - nearC;
+  return std::isfinite(this->DepthScale) && this->DepthScale > 0.0;
+}
+
+glm::dvec3 hov::ViewRays::Unproject(double xNdc, double yNdc, double zNdc) const
+{
+  const glm::dvec4 h = this->ClipToData * glm::dvec4(xNdc, yNdc, zNdc, 1.0);
+  return glm::dvec3(h) / h.w;
+}
+
+hov::ViewRays::Ray hov::ViewRays::PixelRay(int i, int j) const
+{
+  const double x = 2.0 * (i + 0.5) / this->Width - 1.0;
+  const double y = 2.0 * (j + 0.5) / this->Height - 1.0;
+  Ray ray;
+  ray.Origin = this->Unproject(x, y, -1.0);
+  const glm::dvec3 delta = this->Unproject(x, y, 1.0) - ray.Origin;
+  ray.TFar = glm::length(delta);
+  ray.Direction = delta / ray.TFar;
+  return ray;
+}
+
+double hov::ViewRays::DepthToT(int i, int j, const Ray& ray, double windowDepth) const
+{
+  const double x = 2.0 * (i + 0.5) / this->Width - 1.0;
+  const double y = 2.0 * (j + 0.5) / this->Height - 1.0;
+  const glm::dvec3 p = this->Unproject(x, y, 2.0 * windowDepth - 1.0);
+  return glm::dot(p - ray.Origin, ray.Direction);
+}
+
+bool hov::ViewRays::Project(const glm::dvec3& p, double& xWindow, double& yWindow) const
+{
+  const glm::dvec4 c = this->DataToClip * glm::dvec4(p, 1.0);
+  if (!(c.w > 0.0))
+  {
+    return false;
+  }
+  xWindow = (c.x / c.w + 1.0) * 0.5 * this->Width;
+  yWindow = (c.y / c.w + 1.0) * 0.5 * this->Height;
+  return std::isfinite(xWindow) && std::isfinite(yWindow);
+}
+
+void hov::ViewRays::ClipRange(const Ray& ray, double& tMin, double& tMax) const
+{
+  for (const glm::dvec4& plane : this->ClipPlanes)
+  {
+    const glm::dvec3 normal(plane);
+    // Kept where value(t) = num + t slope >= 0.
+    const double num = glm::dot(normal, ray.Origin) + plane.w;
+    const double slope = glm::dot(normal, ray.Direction);
+    if (slope > 0.0)
+    {
+      tMin = std::max(tMin, -num / slope);
+    }
+    else if (slope < 0.0)
+    {
+      tMax = std::min(tMax, -num / slope);
+    }
+    else if (num < 0.0)
+    {
+      tMax = tMin; // parallel and outside
+    }
+  }
+}
+
+void hov::ViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera,
+  vtkMatrix4x4* volumeMatrix, const double* viewDepthRange)
+{
+  this->ClipPlanes.clear();
+  vtkNew<vtkMatrix4x4> identity;
+  vtkMatrix4x4* matrix = volumeMatrix ? volumeMatrix : identity.Get();
+  for (int i = 0; mapper && i < mapper->GetNumberOfClippingPlanes(); ++i)
+  {
+    double h[4];
+    mapper->GetClippingPlaneInDataCoords(matrix, i, h);
+    this->ClipPlanes.emplace_back(h[0], h[1], h[2], h[3]);
+  }
+  if (viewDepthRange && camera)
+  {
+    double eye[3], dop[3];
+    camera->GetPosition(eye);
+    camera->GetDirectionOfProjection(dop);
+    const double depthOfEye = vtkMath::Dot(dop, eye);
+    // Near: dop.x - (dop.eye + near) >= 0; far: -dop.x + (dop.eye + far) >= 0.
+    const double world[2][4] = { { dop[0], dop[1], dop[2], -(depthOfEye + viewDepthRange[0]) },
+      { -dop[0], -dop[1], -dop[2], depthOfEye + viewDepthRange[1] } };
+    for (const double* w : world)
+    {
+      // World to data: h_data = M^T h_world (M: data to world).
+      double h[4] = { 0.0, 0.0, 0.0, 0.0 };
+      for (int c = 0; c < 4; ++c)
+      {
+        for (int r = 0; r < 4; ++r)
+        {
+          h[c] += w[r] * matrix->GetElement(r, c);
+        }
+      }
+      this->ClipPlanes.emplace_back(h[0], h[1], h[2], h[3]);
+    }
+  }
+}
+
+hov::ViewRays::Ray hov::ViewRays::TracedPixelRay(
+  int i, int j, double windowDepth, double& tMax) const
+{
+  Ray ray = this->PixelRay(i, j);
+  tMax = ray.TFar;
+  if (windowDepth < 1.0)
+  {
+    tMax = std::min(tMax, this->DepthToT(i, j, ray, windowDepth));
+  }
+  if (this->HasClipping())
+  {
+    double tMin = 0.0;
+    this->ClipRange(ray, tMin, tMax);
+    ray.Origin += tMin * ray.Direction;
+    tMax = tMax > tMin ? tMax - tMin : 0.0;
+  }
+  return ray;
+}

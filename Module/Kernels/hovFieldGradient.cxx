@@ -1,0 +1,184 @@
+#include "hovFieldGradient.h"
+
+#include "hovCellRestriction.h" // AffineFieldBasis, RestrictAffineField, IsGeometryAffine
+
+#include <algorithm> // max
+#include <cmath>     // fabs, isfinite
+
+namespace hov
+{
+namespace
+{
+
+void MatVec(const double m[9], const double v[3], double r[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    r[i] = m[3 * i] * v[0] + m[3 * i + 1] * v[1] + m[3 * i + 2] * v[2];
+  }
+}
+
+/// Coefficients (index 9i + 3j + k of r^i s^j t^k) of d/dpc_axis of @p c.
+void DerivativeCoefficients(const double c[AffineFieldTerms], int axis, double out[AffineFieldTerms])
+{
+  for (int m = 0; m < AffineFieldTerms; ++m)
+  {
+    out[m] = 0.0;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const int e[3] = { i, j, k };
+        if (e[axis] == 0)
+        {
+          continue;
+        }
+        int lowered[3] = { i, j, k };
+        --lowered[axis];
+        out[9 * lowered[0] + 3 * lowered[1] + lowered[2]] += e[axis] * c[9 * i + 3 * j + k];
+      }
+    }
+  }
+}
+}
+
+bool TetraGradient(const double* p, const double* s, double g[3])
+{
+  g[0] = g[1] = g[2] = 0.0;
+  double e[3][3], ds[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      e[i][k] = p[3 * (i + 1) + k] - p[k];
+    }
+    ds[i] = s[i + 1] - s[0];
+  }
+  auto cross = [](const double* a, const double* b, double* r) {
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+  };
+  double c23[3], c31[3], c12[3];
+  cross(e[1], e[2], c23);
+  cross(e[2], e[0], c31);
+  cross(e[0], e[1], c12);
+  const double det = e[0][0] * c23[0] + e[0][1] * c23[1] + e[0][2] * c23[2];
+  if (!(std::fabs(det) > 0.0) || !std::isfinite(det) || !std::isfinite(ds[0] + ds[1] + ds[2]))
+  {
+    return false;
+  }
+  double r[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    r[k] = (ds[0] * c23[k] + ds[1] * c31[k] + ds[2] * c12[k]) / det;
+    if (!std::isfinite(r[k]))
+    {
+      return false;
+    }
+  }
+  g[0] = r[0];
+  g[1] = r[1];
+  g[2] = r[2];
+  return true;
+}
+
+bool AffineGradientAlongRay(CellShape shape, const double* points, const double* scalars,
+  const double origin[3], const double direction[3], double t0, Polynomial gradient[3])
+{
+  if (!IsGeometryAffine(shape, points))
+  {
+    return false;
+  }
+  double basis[AffineFieldTerms * MaxCellNodes];
+  if (!AffineFieldBasis(shape, basis))
+  {
+    return false; // pyramids: rational shape functions
+  }
+  double pcCenter[3], xc[3], jac[9], inv[9];
+  CellParametricCenter(shape, pcCenter);
+  EvaluateGeometry(shape, points, pcCenter, xc, jac);
+  if (!hov::InvertMatrix3(jac, inv))
+  {
+    return false;
+  }
+  // As RestrictCellScalar's affine path: pc(t0) = pc0 + J^-1 (o + t0 d - x0).
+  double pc0[3], rel[3], pcStart[3], step[3];
+  CellNodeParametricCoords(shape, 0, pc0);
+  for (int k = 0; k < 3; ++k)
+  {
+    rel[k] = (origin[k] - points[k]) + t0 * direction[k];
+  }
+  MatVec(inv, rel, pcStart);
+  MatVec(inv, direction, step);
+  for (int k = 0; k < 3; ++k)
+  {
+    pcStart[k] += pc0[k];
+    if (!std::isfinite(pcStart[k]) || !std::isfinite(step[k]))
+    {
+      return false;
+    }
+  }
+  double c[AffineFieldTerms];
+  AffineFieldCoefficients(basis, CellNodeCount(shape), scalars, c);
+  Polynomial dpc[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    double dc[AffineFieldTerms];
+    DerivativeCoefficients(c, axis, dc);
+    dpc[axis] = RestrictAffineField(dc, pcStart, step);
+  }
+  // grad_a = sum_b (J^-1)_{b a} ds/dpc_b.
+  for (int a = 0; a < 3; ++a)
+  {
+    Polynomial g;
+    g.Degree = 0;
+    for (int b = 0; b < 3; ++b)
+    {
+      g.Degree = std::max(g.Degree, dpc[b].Degree);
+      for (int k = 0; k <= dpc[b].Degree; ++k)
+      {
+        g.C[k] += inv[3 * b + a] * dpc[b].C[k];
+      }
+    }
+    g.Degree = EffectiveDegree(g);
+    gradient[a] = g;
+  }
+  return true;
+}
+
+bool CellFieldAndGradient(CellShape shape, const double* points, const double* scalars,
+  const double x[3], double pc[3], double& value, double gradient[3])
+{
+  const bool converged = InvertGeometry(shape, points, x, pc);
+  const int n = CellNodeCount(shape);
+  double w[MaxCellNodes], derivs[3 * MaxCellNodes];
+  CellShapeFunctions(shape, pc, w);
+  CellShapeDerivatives(shape, pc, derivs);
+  double dpc[3] = { 0.0, 0.0, 0.0 };
+  value = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    value += w[i] * scalars[i];
+    for (int b = 0; b < 3; ++b)
+    {
+      dpc[b] += derivs[b * n + i] * scalars[i];
+    }
+  }
+  double xc[3], jac[9], inv[9];
+  EvaluateGeometry(shape, points, pc, xc, jac);
+  gradient[0] = gradient[1] = gradient[2] = 0.0;
+  if (!hov::InvertMatrix3(jac, inv))
+  {
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    gradient[a] = inv[a] * dpc[0] + inv[3 + a] * dpc[1] + inv[6 + a] * dpc[2];
+  }
+  return converged;
+}
+}

@@ -1,0 +1,131 @@
+/**
+ * @file hovShadedSegment.h
+ * @brief Emission-absorption integral over a ray segment whose colour is
+ * shaded with a VARYING gradient (higher-order cells, positional lights) and
+ * whose extinction is modulated by the gradient opacity: adaptive spectral
+ * quadrature with an error estimate.
+ *
+ * Domain: t in [0, L] from the segment's front (eye side); the field s(t)
+ * and its world gradient g(t) from a sampler; the table of
+ * hovTransferFunction.h. With gamma(t) = GO(|g(t)|) (hovGradientOpacity.h)
+ * and c_sh(t) = the shaded chromaticity (ComputeShadingTransform at the point
+ * o + t d, hovVolumeShading.h):
+ *     tau_e(t) = gamma(t) tau(s(t)),  D(t) = int_0^t tau_e,
+ *     C = int_0^L E(t) e^-D(t) dt,    A = 1 - e^-D(L),
+ * E = c_sh tau_e (Williams-Max) or EmissionFactor c_sh (Wilhelms-Van Gelder).
+ * Neither tau_e nor c_sh is polynomial (|g| and the normalisation are
+ * square roots, the clamp and GO have kinks), so no closed form exists.
+ *
+ * Quadrature: [0, L] is cut at the caller's breakpoints (where the
+ * integrand has kinks or jumps: transfer-function node crossings of s, GO
+ * kinks), then each piece is covered by panels processed front to back. On
+ * a panel [a, b] the integrand is sampled at the N + 1 = 17 Chebyshev-Lobatto
+ * points; tau_e's Chebyshev interpolant (DCT-I) is integrated exactly
+ * (indefinite integral in the Chebyshev basis, Clenshaw-Curtis style) to give
+ * D at the same points, then E e^-D is integrated by Clenshaw-Curtis. Error
+ * estimates from the last three Chebyshev coefficients (tail):
+ *     eD = (b - a) tail(tau_e),
+ *     eC = (b - a) tail(E e^-D) + eD (|C_panel| + R),
+ * R bounding what lies behind (WM: max(1, max c); WVG: EF max(1, max c)
+ * (L - b) + 1). A panel is accepted if T_front eC <= Tolerance (b - a)/L,
+ * else bisected (depth <= MaxDepth, panels <= MaxPanels; beyond: accepted,
+ * Converged = false). The sum of accepted T_front eC is ErrorEstimate. A
+ * panel whose integrand is a polynomial of degree <= 13 is integrated exactly
+ * (tail 0 up to rounding); for analytic integrands the error decays like
+ * rho^-N per panel and halving a panel multiplies it by ~2^-16.
+ * Integration stops when the transmittance drops below
+ * 1e-3 Tolerance / R (the rest is added to ErrorEstimate).
+ *
+ * A piece whose midpoint has infinite extinction (an opaque table interval,
+ * GPU-compatible a = 1) absorbs everything: C += T c_sh(front) (WM), A = 1.
+ * A non-finite sample inside a finite piece (missing breakpoints, a failed
+ * Newton inversion in the sampler) is taken as transparent and clears
+ * Converged.
+ *
+ * IntegrateShadedPolynomial (affine cells: s and g polynomials in t):
+ * breakpoints at every table-node crossing of s (monotone runs between the
+ * roots of s', SolveMonotone) and, when |g|^2 has degree <= 9, every
+ * crossing of a GO kink (FindRoots on |g|^2 = m^2); shading clamp kinks are
+ * left to the adaptivity. If s is linear, g constant, every light directional
+ * (and GO, shading then constant), it returns the exact closed form
+ * IntegrateLinearScalarShaded instead (ExactPath = true).
+ *
+ * Measured (TestShadedSegment, GCC 12 Release) against a composite
+ * Gauss-Legendre reference on quadratic fields: requested 1e-6 -> error
+ * 1.8e-8 (550 panels), 1e-9 -> 1.6e-13, 1e-12 -> 2.3e-16; the estimate was
+ * never exceeded (worst error/estimate 0.83). See the test's [measured] lines.
+ *
+ * Thread safety: re-entrant (table and GO function read only; the sampler
+ * must be); IntegrateShadedSegment does not allocate, IntegrateShadedPolynomial
+ * allocates its breakpoint list.
+ * @sa hovVolumeShading.h, hovGradientOpacity.h, hovFieldGradient.h, hovPolynomialSegment.h
+ */
+#ifndef hovShadedSegment_h
+#define hovShadedSegment_h
+
+#include "hovCompositing.h"
+#include "hovConfig.h"
+#include "hovPolynomial.h"
+#include "hovSegmentIntegral.h" // EmissionModel
+#include "hovVolumeShading.h"   // VolumeShadingSettings
+
+#include <vector> // ShadedBreakpoints output
+
+namespace hov
+{
+class GradientOpacityFunction;
+class TransferFunction;
+
+/// s(t) and its world gradient at ray parameter t (segment-local, t in [0, L]).
+using FieldGradientSampler = void (*)(void* user, double t, double& value, double gradient[3]);
+
+/// The segment's position in the lighting frame: point(t) = Origin + t Direction
+/// (Direction unit, pointing away from the eye; the view vector is -Direction).
+struct SegmentRay
+{
+  double Origin[3] = { 0.0, 0.0, 0.0 };
+  double Direction[3] = { 0.0, 0.0, 1.0 };
+};
+
+struct ShadedSegmentSettings
+{
+  EmissionModel Emission = EmissionModel::WilliamsMax;
+  double Tolerance = 1e-9; ///< absolute per channel of the premultiplied RGBA
+  int MaxPanels = 4096;
+  int MaxDepth = 40;
+};
+
+struct ShadedSegmentResult
+{
+  RGBA Color;
+  double ErrorEstimate = 0.0;
+  int Panels = 0;     ///< accepted panels
+  int Samples = 0;    ///< sampler calls
+  bool Converged = true;
+  bool ExactPath = false; ///< the closed form was used (IntegrateShadedPolynomial)
+};
+
+/**
+ * The integral over [0, @p length] (file doc). @p breakpoints: sorted
+ * positions in (0, length) where the integrand has kinks or jumps (may be
+ * null); @p gradientOpacity may be null (gamma = 1).
+ */
+HOV_EXPORT ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf,
+  FieldGradientSampler sampler, void* user, double length, const double* breakpoints,
+  int breakpointCount, const VolumeShadingSettings& shading,
+  const GradientOpacityFunction* gradientOpacity, const SegmentRay& ray,
+  const ShadedSegmentSettings& settings);
+
+/// The breakpoints IntegrateShadedPolynomial uses (file doc), sorted, into @p out.
+HOV_EXPORT int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s,
+  const Polynomial gradient[3], const GradientOpacityFunction* gradientOpacity, double length,
+  std::vector<double>& out);
+
+/// The integral for s(t) and grad s(t) given as polynomials in t (file doc).
+HOV_EXPORT ShadedSegmentResult IntegrateShadedPolynomial(const TransferFunction& tf,
+  const Polynomial& s, const Polynomial gradient[3], double length,
+  const VolumeShadingSettings& shading, const GradientOpacityFunction* gradientOpacity,
+  const SegmentRay& ray, const ShadedSegmentSettings& settings);
+}
+
+#endif
