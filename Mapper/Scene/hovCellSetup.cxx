@@ -74,7 +74,9 @@ void FacePlanes(Tetra& tet, const glm::dvec3 x[4])
       n = -n;
       h = -h;
     }
-    tet.Normal[k] = n;
+    tet.NX[k] = n.x;
+    tet.NY[k] = n.y;
+    tet.NZ[k] = n.z;
     tet.Offset[k] = h;
   }
 }
