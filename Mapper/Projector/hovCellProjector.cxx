@@ -77,9 +77,7 @@ glm::dvec3 GeneralCentroid(const hov::CellSetup& setup, vtkIdType g)
 void GeneralRecord(const hov::GeneralCellTile::FrameData& general, int g, int width,
   int height, CellRecord& cell)
 {
-  static const Tetra zero{};
   cell = CellRecord();
-  cell.Tet = &zero;
   bool projectable = true;
   cell.PixelBox = hov::GeneralCellTile::PixelBox(general, g, width, height, projectable);
   cell.Projectable = projectable;
@@ -89,7 +87,16 @@ void GeneralRecord(const hov::GeneralCellTile::FrameData& general, int g, int wi
 void TetraRecord(const Tetra& tet, const hov::ProjectedPoints& points,
   const hov::TransferFunction& tf, int width, int height, CellRecord& cell)
 {
-  cell.Tet = &tet;
+  for (int f = 0; f < 4; ++f)
+  {
+    cell.NX[f] = tet.Normal[f].x;
+    cell.NY[f] = tet.Normal[f].y;
+    cell.NZ[f] = tet.Normal[f].z;
+    cell.Offset[f] = tet.Offset[f];
+  }
+  cell.Gradient = tet.Gradient;
+  cell.RefPoint = tet.RefPoint;
+  cell.RefScalar = tet.RefScalar;
   cell.PixelBox = PixelBox(tet, points.Window, points.Projectable, width, height);
   cell.Projectable = true;
   for (int v = 0; v < 4; ++v)

@@ -23,7 +23,14 @@ using hov::BoxMargin;
 bool ClipTetra(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& px,
   const glm::dvec3& py, double& tIn, double& tOut)
 {
-  return hov::tile::ClipRayFaces(tet.NX, tet.NY, tet.NZ, tet.Offset, ray, tMax, px, py, tIn, tOut);
+  double nx[4], ny[4], nz[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    nx[k] = tet.Normal[k].x;
+    ny[k] = tet.Normal[k].y;
+    nz[k] = tet.Normal[k].z;
+  }
+  return hov::tile::ClipRayFaces(nx, ny, nz, tet.Offset, ray, tMax, px, py, tIn, tOut);
 }
 
 /// Window-x span of the convex hull of the 4 projected vertices on the row at

@@ -156,9 +156,8 @@ void hov::ProjectorTile::CompactRow(
     {
       continue;
     }
-    const CellSetup::Tetra& tet = *cell.Tet;
-    const double sAtOrigin = tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - tet.RefPoint);
-    const double slope = glm::dot(tet.Gradient, ray.Direction);
+    const double sAtOrigin = cell.RefScalar + glm::dot(cell.Gradient, ray.Origin - cell.RefPoint);
+    const double slope = glm::dot(cell.Gradient, ray.Direction);
     this->QTIn[next] = tIn;
     this->QTOut[next] = tOut;
     this->QSIn[next] = sAtOrigin + tIn * slope;
@@ -233,7 +232,10 @@ void hov::ProjectorTile::RenderInCellOrder(const Frame& frame, const vtkIdType* 
   this->NumQueued = 0;
   for (vtkIdType c = 0; c < count; ++c)
   {
-    PrefetchCells(frame, cells, c, count);
+    if (c + PrefetchDistance < count)
+    {
+      PrefetchCell(frame, cells[c + PrefetchDistance]);
+    }
     const vtkIdType k = cells[c];
     if (IsGeneral(frame, k))
     {

@@ -44,7 +44,6 @@
 #ifndef hovProjectorTile_h
 #define hovProjectorTile_h
 
-#include "hovCellSetup.h"       // the tetrahedra the records point to
 #include "hovGeneralCellTile.h" // non-tetrahedral cells
 #include "hovTileSkeleton.h"    // TilePixels, TileBins, settings, statistics
 
@@ -66,16 +65,17 @@ public:
   using Statistics = ProjectorStatistics;
 
   /**
-   * What the tile loop reads of a cell that depends on the view, stored per
-   * ordered cell (built each frame by the projector in one parallel pass),
-   * and the tetrahedron whose face planes and field it reads in place
-   * (prefetched a few cells ahead, as the record): 96 bytes per cell instead
-   * of a copy of the planes and field (272), for the same values.
+   * Everything the tile loop reads of a cell, stored per ordered cell (built
+   * each frame by the projector in one parallel pass): the tile loop then
+   * reads a few consecutive cache lines per cell instead of a scattered
+   * tetrahedron, four scattered points and several per-cell arrays.
    */
   struct CellRecord
   {
-    /// Face planes and field (general cells: a zero tetrahedron, never read).
-    const CellSetup::Tetra* Tet;
+    double NX[4], NY[4], NZ[4], Offset[4]; ///< face k: (NX,NY,NZ)[k] . x <= Offset[k]
+    glm::dvec3 Gradient;                   ///< as hov::CellSetup::Tetra
+    glm::dvec3 RefPoint;
+    double RefScalar;
     glm::dvec2 Vertex[4]; ///< projected vertices (window coordinates)
     Box PixelBox;         ///< pixel centres of the projected bounding box
     int Interval; ///< transfer-function interval of the whole cell, or a search hint (hov::SegmentJob)

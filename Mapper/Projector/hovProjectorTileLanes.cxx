@@ -41,12 +41,11 @@ __attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell
   std::memcpy(&tMax, r.TMax + p, sizeof(V));
   auto parallel = V{} < V{}; // no lane yet
   V vIn, vOut;
-  const CellSetup::Tetra& tet = *cell.Tet;
-  ClipFourPlanes(tet.NX, tet.NY, tet.NZ, tet.Offset, ox, oy, oz, dx, dy, dz, tMax, vIn, vOut,
-    parallel);
-  const glm::dvec3& g = tet.Gradient;
-  const glm::dvec3& c = tet.RefPoint;
-  const V sAtOrigin = tet.RefScalar + ((g.x * (ox - c.x) + g.y * (oy - c.y)) + g.z * (oz - c.z));
+  ClipFourPlanes(cell.NX, cell.NY, cell.NZ, cell.Offset, ox, oy, oz, dx, dy, dz, tMax, vIn,
+    vOut, parallel);
+  const glm::dvec3& g = cell.Gradient;
+  const glm::dvec3& c = cell.RefPoint;
+  const V sAtOrigin = cell.RefScalar + ((g.x * (ox - c.x) + g.y * (oy - c.y)) + g.z * (oz - c.z));
   const V slope = (g.x * dx + g.y * dy) + g.z * dz;
   const V vsIn = sAtOrigin + vIn * slope;
   const V vsOut = sAtOrigin + vOut * slope;
@@ -108,9 +107,8 @@ inline bool ClipSpanLanes(const CellRecord& cell, const TileRays& rays, size_t p
     ray.Direction = glm::dvec3(rays.DX[pi], rays.DY[pi], rays.DZ[pi]);
     double tIn = 0.0, tOut = 0.0;
     const bool hit = ClipRay(cell, ray, rays.TMax[pi], glm::dvec3(), glm::dvec3(), tIn, tOut);
-    const CellSetup::Tetra& tet = *cell.Tet;
-    const double sAtOrigin = tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - tet.RefPoint);
-    const double slope = glm::dot(tet.Gradient, ray.Direction);
+    const double sAtOrigin = cell.RefScalar + glm::dot(cell.Gradient, ray.Origin - cell.RefPoint);
+    const double slope = glm::dot(cell.Gradient, ray.Direction);
     out.TIn[q + i] = tIn;
     out.TOut[q + i] = tOut;
     out.SIn[q + i] = sAtOrigin + tIn * slope;

@@ -90,9 +90,9 @@ void hov::ProjectorTile::ForCellSegments(const Frame& frame, vtkIdType k, Visit&
       {
         continue;
       }
-      const CellSetup::Tetra& tet = *cell.Tet;
-      const double sAtOrigin = tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - tet.RefPoint);
-      const double slope = glm::dot(tet.Gradient, ray.Direction);
+      const double sAtOrigin =
+        cell.RefScalar + glm::dot(cell.Gradient, ray.Origin - cell.RefPoint);
+      const double slope = glm::dot(cell.Gradient, ray.Direction);
       visit(p, t0, t1, sAtOrigin + t0 * slope, sAtOrigin + t1 * slope);
     }
   }
@@ -127,7 +127,10 @@ void hov::ProjectorTile::CollectFragments(
   for (vtkIdType c = 0; c < count; ++c)
   {
     const vtkIdType k = cells[c];
-    PrefetchCells(frame, cells, c, count);
+    if (c + PrefetchDistance < count)
+    {
+      PrefetchCell(frame, cells[c + PrefetchDistance]);
+    }
     if (records[k].PixelBox[3] < y0 || records[k].PixelBox[2] > y1)
     {
       continue; // not in this band

@@ -77,8 +77,7 @@ inline bool ClipRayFaces(const double* nx, const double* ny, const double* nz,
 inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const glm::dvec3& px,
   const glm::dvec3& py, double& tIn, double& tOut)
 {
-  const CellSetup::Tetra& t = *cell.Tet;
-  return ClipRayFaces(t.NX, t.NY, t.NZ, t.Offset, ray, tMax, px, py, tIn, tOut);
+  return ClipRayFaces(cell.NX, cell.NY, cell.NZ, cell.Offset, ray, tMax, px, py, tIn, tOut);
 }
 
 /// True if the ray is parallel to a face (a zero denominator, as the lanes
@@ -86,11 +85,10 @@ inline bool ClipRay(const CellRecord& cell, const Ray& ray, double tMax, const g
 inline bool IsUndecided(const CellRecord& cell, const Ray& ray)
 {
   bool parallel = false;
-  const CellSetup::Tetra& t = *cell.Tet;
   for (int k = 0; k < 4; ++k)
   {
     const double denom =
-      (t.NX[k] * ray.Direction.x + t.NY[k] * ray.Direction.y) + t.NZ[k] * ray.Direction.z;
+      (cell.NX[k] * ray.Direction.x + cell.NY[k] * ray.Direction.y) + cell.NZ[k] * ray.Direction.z;
     parallel = parallel || denom == 0.0;
   }
   return parallel;
@@ -174,30 +172,13 @@ struct ProjectedEdges
 /// and each one's few pixels take less time than a cache miss.
 constexpr vtkIdType PrefetchDistance = 4;
 
-/// Prefetch what the tile loop reads of the cells of a tile's list @p cells
-/// (@p count of them) ahead of position @p c: the record of the cell
-/// 2 PrefetchDistance on, the tetrahedron of the cell PrefetchDistance on
-/// (its record fetched by then): planes and field, up to RefScalar.
-inline void PrefetchCells(
-  const hov::ProjectorTile::Frame& frame, const vtkIdType* cells, vtkIdType c, vtkIdType count)
+/// Prefetch what the tile loop reads of ordered cell k.
+inline void PrefetchCell(const hov::ProjectorTile::Frame& frame, vtkIdType k)
 {
-  if (c + 2 * PrefetchDistance < count)
+  const char* cell = reinterpret_cast<const char*>(&(*frame.Cells)[k]);
+  for (size_t offset = 0; offset < sizeof(CellRecord); offset += 64)
   {
-    const char* cell =
-      reinterpret_cast<const char*>(&(*frame.Cells)[cells[c + 2 * PrefetchDistance]]);
-    __builtin_prefetch(cell);
-    __builtin_prefetch(cell + sizeof(CellRecord) - 1);
-  }
-  if (c + PrefetchDistance < count)
-  {
-    const CellSetup::Tetra* tet = (*frame.Cells)[cells[c + PrefetchDistance]].Tet;
-    const char* first = reinterpret_cast<const char*>(tet);
-    const char* last = reinterpret_cast<const char*>(&tet->RefScalar + 1) - 1;
-    for (const char* p = first; p < last; p += 64)
-    {
-      __builtin_prefetch(p);
-    }
-    __builtin_prefetch(last);
+    __builtin_prefetch(cell + offset);
   }
 }
 

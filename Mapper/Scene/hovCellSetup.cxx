@@ -76,9 +76,7 @@ void FacePlanes(Tetra& tet, const glm::dvec3 x[4])
       n = -n;
       h = -h;
     }
-    tet.NX[k] = n.x;
-    tet.NY[k] = n.y;
-    tet.NZ[k] = n.z;
+    tet.Normal[k] = n;
     tet.Offset[k] = h;
   }
 }

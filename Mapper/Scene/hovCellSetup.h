@@ -56,10 +56,8 @@ class CellSetup
 public:
   struct Tetra
   {
-    /// Outward face normals (not normalised) by coordinate: inside iff
-    /// (NX, NY, NZ)[k] . x <= Offset[k] for every face k. With the field
-    /// below, what the CPU projector's tile loop reads in place.
-    double NX[4], NY[4], NZ[4], Offset[4];
+    glm::dvec3 Normal[4]; ///< outward face normals (not normalised)
+    double Offset[4];     ///< inside iff dot(Normal[k], x) <= Offset[k]
     glm::dvec3 Gradient;  ///< scalar gradient (0 for cell scalars)
     glm::dvec3 RefPoint;  ///< vertex 0
     double RefScalar;     ///< scalar at vertex 0 (the cell value for cell scalars)
