@@ -278,9 +278,9 @@ void GraphSort::CellPart(const Geometry& g, const Topology& t, const View& v, vt
     return;
   }
   const vtkIdType first = t.CellFaceOffsets[c], last = t.CellFaceOffsets[c + 1];
-  const vtkIdType* faces = t.CellFaces.data();
-  const vtkIdType* neighbours = t.CellNeighbours.data();
-  vtkIdType* out = d.FaceTargets.data() + first;
+  const std::uint32_t* faces = t.CellFaces.data();
+  const CellIndex* neighbours = t.CellNeighbours.data();
+  CellIndex* out = d.FaceTargets.data() + first;
   int numOut = 0, numIn = 0;
   for (vtkIdType e = first; e < last; ++e)
   {

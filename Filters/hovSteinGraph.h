@@ -82,7 +82,7 @@ inline bool Ordered(const View& v, vtkIdType c)
 struct Digraph
 {
   const vtkIdType* FaceOffsets = nullptr;
-  std::vector<vtkIdType> FaceTargets;
+  std::vector<CellIndex> FaceTargets;
   std::vector<std::uint8_t> FaceCount;
   std::vector<vtkIdType> ExtraOffsets; ///< per cell + 1
   std::vector<vtkIdType> ExtraTargets;

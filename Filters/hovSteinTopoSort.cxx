@@ -48,7 +48,7 @@ vtkIdType Kahn(Digraph& d, vtkIdType* queue, vtkIdType tail)
   std::int32_t* indeg = d.InDegree.data();
   const vtkIdType* offsets = d.FaceOffsets;
   const std::uint8_t* counts = d.FaceCount.data();
-  const vtkIdType* targets = d.FaceTargets.data();
+  const CellIndex* targets = d.FaceTargets.data();
   const vtkIdType* extraOffsets = d.ExtraOffsets.data();
   const vtkIdType* extraTargets = d.ExtraTargets.data();
   for (vtkIdType head = 0; head < tail; ++head)
@@ -72,8 +72,8 @@ vtkIdType Kahn(Digraph& d, vtkIdType* queue, vtkIdType tail)
       }
     }
     const vtkIdType u = queue[head];
-    const vtkIdType* t = targets + offsets[u];
-    for (const vtkIdType* last = t + counts[u]; t != last; ++t)
+    const CellIndex* t = targets + offsets[u];
+    for (const CellIndex* last = t + counts[u]; t != last; ++t)
     {
       queue[tail] = *t; // kept only if its count drops to zero
       tail += --indeg[*t] == 0;

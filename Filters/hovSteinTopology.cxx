@@ -142,8 +142,8 @@ void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
       if (interior)
       {
         const vtkIdType k = out.First + out.Count++;
-        t.A[k] = a;
-        t.B[k] = b;
+        t.A[k] = static_cast<CellIndex>(a);
+        t.B[k] = static_cast<CellIndex>(b);
         t.FaceA[k] = static_cast<std::uint8_t>(fa);
         t.ModeA[k] = mode;
         if (mode == FaceExact)
@@ -329,14 +329,14 @@ void Topology::BuildCellFaces(const Geometry& g)
         if (a >= first && a < last)
         {
           const vtkIdType e = cursor[a - first]++;
-          this->CellFaces[e] = 2 * i;
-          this->CellNeighbours[e] = b;
+          this->CellFaces[e] = static_cast<std::uint32_t>(2 * i);
+          this->CellNeighbours[e] = static_cast<CellIndex>(b);
         }
         if (b >= first && b < last)
         {
           const vtkIdType e = cursor[b - first]++;
-          this->CellFaces[e] = 2 * i + 1;
-          this->CellNeighbours[e] = a;
+          this->CellFaces[e] = static_cast<std::uint32_t>(2 * i + 1);
+          this->CellNeighbours[e] = static_cast<CellIndex>(a);
         }
       }
     }

@@ -91,6 +91,16 @@ void vtkSteinVisibilitySort::InitTraversal()
   bool built = rebuild;
   if (this->Algorithm == ADJACENCY_GRAPH && !im.TopologyValid)
   {
+    if (im.Geometry.NumberOfCells > hovStein::MaxIndexedCells)
+    {
+      vtkErrorMacro("ADJACENCY_GRAPH orders at most " << hovStein::MaxIndexedCells
+                                                      << " cells (32-bit adjacency); this input has "
+                                                      << im.Geometry.NumberOfCells
+                                                      << ": use MULTITILED_MERGE.");
+      im.Order.clear();
+      im.SortValid = false;
+      return;
+    }
     built = true;
     im.Topology.Build(im.Geometry);
     im.TopologyValid = true;

@@ -112,7 +112,8 @@
  * adjacency), rebuilt only when the input or the model transform changes.
  * Faces match by point ids: meshes whose neighbouring cells use duplicated
  * points are still ordered exactly, only more slowly (every face is a
- * boundary face).
+ * boundary face). ADJACENCY_GRAPH indexes cells and faces in 32 bits: at most
+ * 700 million cells (an error beyond; MULTITILED_MERGE has no such limit).
  *
  * Thread safety: one sort per object at a time; the set-up, the face
  * matching and, per view, the face directions and edges, the boundary face

@@ -5,9 +5,11 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
+#include "vtkNew.h" // the sort grid of a subset
 #include "vtkPoints.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
+#include "vtkUnstructuredGrid.h"     // the sort grid of a subset
 #include "vtkUnstructuredGridBase.h"
 
 #include <algorithm> // std::sort, std::swap
@@ -278,25 +280,35 @@ bool hov::CellSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* scalars,
   this->Stats.InvertedGeneral = gs.Inverted;
   this->Stats.Curved = gs.Curved;
   this->Stats.MaxCurvature = gs.MaxCurvature;
-  this->BuildSortGrid(grid->GetPoints());
+  this->BuildSortGrid(grid);
   this->Stats.Rendered = this->GetNumberOfRenderedCells();
   return this->Stats.Rendered > 0;
 }
 
-void hov::CellSetup::BuildSortGrid(vtkPoints* points)
+void hov::CellSetup::BuildSortGrid(vtkUnstructuredGridBase* grid)
 {
-  // The grid given to visibility sorts: valid cells only, tetrahedra first
+  // Every input cell a rendered tetrahedron, in input order (the common
+  // case): the input itself is the sort's grid (cell k = GetTetras()[k]), no
+  // copy of its connectivity (80 MB at 2M tetrahedra).
+  if (this->General.GetCells().empty() &&
+    static_cast<vtkIdType>(this->Tetras.size()) == grid->GetNumberOfCells())
+  {
+    this->SortGrid = grid;
+    return;
+  }
+  // Otherwise a grid of the valid cells only, tetrahedra first
   // (cell k = GetTetras()[k]), then the general cells with their own types.
-  this->SortGrid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  this->SortGrid->SetPoints(points);
-  this->SortGrid->Allocate(this->GetNumberOfRenderedCells());
+  vtkNew<vtkUnstructuredGrid> sortGrid;
+  sortGrid->SetPoints(grid->GetPoints());
+  sortGrid->Allocate(this->GetNumberOfRenderedCells());
   for (const Tetra& tet : this->Tetras)
   {
-    this->SortGrid->InsertNextCell(VTK_TETRA, 4, tet.Points);
+    sortGrid->InsertNextCell(VTK_TETRA, 4, tet.Points);
   }
   for (const hov::GeneralCells::Cell& cell : this->General.GetCells())
   {
-    this->SortGrid->InsertNextCell(
+    sortGrid->InsertNextCell(
       static_cast<int>(cell.Shape), cell.NodeCount, this->General.GetNodeIds(cell));
   }
+  this->SortGrid = sortGrid;
 }

@@ -36,9 +36,9 @@
 
 #include "hovGeneralCells.h" // the non-tetrahedral cells
 
-#include "vtkSmartPointer.h"     // For SortGrid
-#include "vtkType.h"             // vtkIdType
-#include "vtkUnstructuredGrid.h" // For SortGrid
+#include "vtkDataSet.h"      // For SortGrid
+#include "vtkSmartPointer.h" // For SortGrid
+#include "vtkType.h"         // vtkIdType
 
 #include <glm/glm.hpp> // dvec3
 
@@ -94,11 +94,12 @@ public:
     std::string* error = nullptr);
 
   /**
-   * The rendered tetrahedra as a grid (input points, cell k = GetTetras()[k]):
+   * The rendered cells as a grid (input points, cell k = rendered cell k):
    * what a vtkVisibilitySort is given, so that it never sees invalid cells and
-   * the ids it returns are tetra indices.
+   * the ids it returns are rendered-cell indices. The input itself when every
+   * input cell is a rendered tetrahedron (no copy).
    */
-  vtkUnstructuredGrid* GetSortGrid() const { return this->SortGrid; }
+  vtkDataSet* GetSortGrid() const { return this->SortGrid; }
 
   const std::vector<Tetra>& GetTetras() const { return this->Tetras; }
   /// The rendered non-tetrahedral cells (rendered cell GetTetras().size() + g is cell g).
@@ -118,12 +119,12 @@ private:
   bool ReadInput(vtkUnstructuredGridBase* grid, vtkDataArray* scalars, bool cellScalars,
     int component, std::vector<double>& values, std::string* error);
   /// The grid of the rendered cells given to visibility sorts.
-  void BuildSortGrid(vtkPoints* points);
+  void BuildSortGrid(vtkUnstructuredGridBase* grid);
 
   std::vector<Tetra> Tetras;
   std::vector<glm::dvec3> Points;
   hov::GeneralCells General;
-  vtkSmartPointer<vtkUnstructuredGrid> SortGrid;
+  vtkSmartPointer<vtkDataSet> SortGrid;
   Statistics Stats;
 };
 }

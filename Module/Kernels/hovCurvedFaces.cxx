@@ -3,8 +3,7 @@
 
 #include "hovBernstein.h" // equispaced Lagrange -> Bernstein, de Casteljau
 
-#include <algorithm>  // std::min, std::max
-#include <functional> // the recursive search
+#include <algorithm> // std::min, std::max, std::swap
 #include <cmath>     // std::abs, std::sqrt
 #include <limits>    // epsilon
 
@@ -22,24 +21,28 @@ constexpr double MergeDistance = 1e-9;
 
 /// Split a (du+1) x (dv+1) net (row a along u, nv = dv + 1 per row) at the
 /// middle of u (@p alongU) or v into @p left and @p right (one de Casteljau
-/// subdivision per line).
+/// subdivision at 1/2 per line: averages only).
 void SplitStrided(const double* net, double* left, double* right, int du, int dv, int nv, bool alongU)
 {
   const int lines = alongU ? nv : du + 1, degree = alongU ? du : dv;
   const int stride = alongU ? nv : 1, step = alongU ? 1 : nv;
+  double w[MaxFaceDegree + 1];
   for (int l = 0; l < lines; ++l)
   {
-    BernsteinPolynomial p, a, b;
-    p.Degree = degree;
+    const int base = l * step;
     for (int i = 0; i <= degree; ++i)
     {
-      p.B[i] = net[l * step + i * stride];
+      w[i] = net[base + i * stride];
     }
-    SubdivideBernstein(p, 0.5, &a, &b);
-    for (int i = 0; i <= degree; ++i)
+    // Stage r: left gets w[0], right gets w[degree - r] (before the averaging).
+    for (int r = 0; r <= degree; ++r)
     {
-      left[l * step + i * stride] = a.B[i];
-      right[l * step + i * stride] = b.B[i];
+      left[base + r * stride] = w[0];
+      right[base + (degree - r) * stride] = w[degree - r];
+      for (int i = 0; i < degree - r; ++i)
+      {
+        w[i] = 0.5 * (w[i] + w[i + 1]);
+      }
     }
   }
 }
@@ -97,8 +100,9 @@ struct FaceProblem
   double E1[3], E2[3];
   double Extent;
 
-  /// h(u, v), its Jacobian and the point.
-  void Evaluate(double u, double v, double h[2], double jac[4], double x[3], double pc[3]) const
+  /// h(u, v), its Jacobian and the point (and, if given, x_u x x_v).
+  void Evaluate(double u, double v, double h[2], double jac[4], double x[3], double pc[3],
+    double* normal = nullptr) const
   {
     double pu[3], pv[3], J[9];
     FaceParametricPoint(*this->Face, u, v, pc, pu, pv);
@@ -116,6 +120,24 @@ struct FaceProblem
     jac[1] = Dot(this->E1, xv);
     jac[2] = Dot(this->E2, xu);
     jac[3] = Dot(this->E2, xv);
+    if (normal)
+    {
+      normal[0] = xu[1] * xv[2] - xu[2] * xv[1];
+      normal[1] = xu[2] * xv[0] - xu[0] * xv[2];
+      normal[2] = xu[0] * xv[1] - xu[1] * xv[0];
+    }
+  }
+
+  /// FaceCrossing::Side from the normal x_u x x_v at the crossing.
+  int Side(const double n[3]) const
+  {
+    const double dn = Dot(this->D, n);
+    const double scale = std::sqrt(Dot(this->D, this->D) * Dot(n, n));
+    if (this->Face->Orientation == 0 || !(std::abs(dn) > SideTolerance * scale))
+    {
+      return 0;
+    }
+    return (dn > 0.0) == (this->Face->Orientation > 0) ? 1 : -1;
   }
 
   /// Newton from (u, v) kept within the box widened by half its size.
@@ -143,7 +165,9 @@ struct FaceProblem
       const bool floor = std::max(std::abs(h[0]), std::abs(h[1])) <= 16.0 * Eps * this->Extent;
       if (step <= 1e-15 || (floor && step <= 1e-9))
       {
-        this->Evaluate(u, v, h, jac, x, pc);
+        double normal[3];
+        this->Evaluate(u, v, h, jac, x, pc, normal);
+        out.Side = this->Side(normal);
         out.U = u;
         out.V = v;
         std::copy(pc, pc + 3, out.PC);
@@ -242,6 +266,7 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
   if (prob.Newton(u, v, box, c) && u >= s.U0 - AcceptSlack && u <= s.U1 + AcceptSlack &&
     v >= s.V0 - AcceptSlack && v <= s.V1 + AcceptSlack)
   {
+    c.Side = c.Grazing ? 0 : c.Side;
     out.push_back(c);
     return 1;
   }
@@ -265,6 +290,89 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
 }
 }
 
+namespace
+{
+/// True if the line o + t d (any t) meets the box (xmin, xmax, ...).
+bool LineMeetsBox(const double box[6], const double o[3], const double d[3])
+{
+  double t0 = -1e300, t1 = 1e300;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (d[k] == 0.0)
+    {
+      if (o[k] < box[2 * k] || o[k] > box[2 * k + 1])
+      {
+        return false;
+      }
+      continue;
+    }
+    double a = (box[2 * k] - o[k]) / d[k], b = (box[2 * k + 1] - o[k]) / d[k];
+    if (a > b)
+    {
+      std::swap(a, b);
+    }
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t0 <= t1;
+}
+
+/// The depth-first search of one face (see FaceRayCrossings): the sub-patch
+/// nets in a workspace where slot (depth, child) holds 2 n values; a child's
+/// net is one de Casteljau split of its parent's.
+struct FaceSearch
+{
+  const FaceProblem& Prob;
+  const FaceSearchSettings& Settings;
+  int FaceIndex, N, NV;
+  double* Work;
+  std::vector<FaceCrossing>& Out;
+  int Examined = 0;
+  bool Complete = true;
+  static constexpr int MaxDepth = 2 * 23 + 2;
+
+  void Visit(int depth, int child, const SubPatch& s)
+  {
+    double* net = this->Work + static_cast<size_t>(2 * this->N) * (2 * depth + child);
+    if (++this->Examined > this->Settings.MaxPatches)
+    {
+      this->Complete = false;
+      return;
+    }
+    bool alongU = true;
+    if (Examine(this->Prob, net, s, this->Settings, this->FaceIndex, this->Out, alongU) != 2)
+    {
+      return;
+    }
+    if (depth + 1 > MaxDepth)
+    {
+      this->Complete = false;
+      return;
+    }
+    const CurvedFacePatch& face = *this->Prob.Face;
+    double* left = this->Work + static_cast<size_t>(2 * this->N) * (2 * (depth + 1));
+    double* right = left + 2 * this->N;
+    for (int c = 0; c < 2; ++c)
+    {
+      SplitStrided(net + c * this->N, left + c * this->N, right + c * this->N, face.DegreeU,
+        face.DegreeV, this->NV, alongU);
+    }
+    if (alongU)
+    {
+      const double m = 0.5 * (s.U0 + s.U1);
+      this->Visit(depth + 1, 0, { s.U0, m, s.V0, s.V1 });
+      this->Visit(depth + 1, 1, { m, s.U1, s.V0, s.V1 });
+    }
+    else
+    {
+      const double m = 0.5 * (s.V0 + s.V1);
+      this->Visit(depth + 1, 0, { s.U0, s.U1, s.V0, m });
+      this->Visit(depth + 1, 1, { s.U0, s.U1, m, s.V1 });
+    }
+  }
+};
+}
+
 int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces, int f,
   const double origin[3], const double direction[3], std::vector<FaceCrossing>& out,
   const FaceSearchSettings& settings, FaceSearchStatus* status)
@@ -274,65 +382,36 @@ int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces,
     return 0;
   }
   const CurvedFacePatch& face = faces.Faces[f];
+  // The net's box (widened by the margin) contains the patch: a line missing
+  // it has no crossing (most patches of a cell a ray meets).
+  if (!LineMeetsBox(face.Box, origin, direction))
+  {
+    if (status)
+    {
+      ++status->Patches;
+    }
+    return 0;
+  }
   FaceProblem prob{ &cell, &face, origin, direction, {}, {}, faces.Extent };
   RayFrame(direction, prob.E1, prob.E2);
   const int n = (face.DegreeU + 1) * (face.DegreeV + 1);
-  double root[2][NetSize];
+  // Workspace: one per thread, grown once (no allocation per call).
+  thread_local std::vector<double> work;
+  const size_t need = static_cast<size_t>(2 * n) * 2 * (FaceSearch::MaxDepth + 1);
+  if (work.size() < need)
+  {
+    work.resize(need);
+  }
   for (int k = 0; k < n; ++k)
   {
     const double* x = &face.Net[3 * k];
     const double rel[3] = { x[0] - origin[0], x[1] - origin[1], x[2] - origin[2] };
-    root[0][k] = Dot(prob.E1, rel);
-    root[1][k] = Dot(prob.E2, rel);
+    work[k] = Dot(prob.E1, rel);
+    work[n + k] = Dot(prob.E2, rel);
   }
   const size_t first = out.size();
-  // Depth-first recursion with the sub-patch nets in a workspace: slot
-  // (depth, child) holds 2 n values; a child's net is one de Casteljau split
-  // of its parent's (no restriction from the root).
-  const int maxDepth = 2 * 23 + 2;
-  std::vector<double> work(static_cast<size_t>(2 * n) * 2 * (maxDepth + 1));
-  std::copy(root[0], root[0] + n, work.begin());
-  std::copy(root[1], root[1] + n, work.begin() + n);
-  int examined = 0;
-  bool complete = true;
-  const int nv = face.DegreeV + 1;
-  std::function<void(int, int, const SubPatch&)> visit = [&](int depth, int child, const SubPatch& s) {
-    double* net = &work[static_cast<size_t>(2 * n) * (2 * depth + child)];
-    if (++examined > settings.MaxPatches)
-    {
-      complete = false;
-      return;
-    }
-    bool alongU = true;
-    if (Examine(prob, net, s, settings, f, out, alongU) != 2)
-    {
-      return;
-    }
-    if (depth + 1 > maxDepth)
-    {
-      complete = false;
-      return;
-    }
-    double* left = &work[static_cast<size_t>(2 * n) * (2 * (depth + 1))];
-    double* right = left + 2 * n;
-    for (int c = 0; c < 2; ++c)
-    {
-      SplitStrided(net + c * n, left + c * n, right + c * n, face.DegreeU, face.DegreeV, nv, alongU);
-    }
-    if (alongU)
-    {
-      const double m = 0.5 * (s.U0 + s.U1);
-      visit(depth + 1, 0, { s.U0, m, s.V0, s.V1 });
-      visit(depth + 1, 1, { m, s.U1, s.V0, s.V1 });
-    }
-    else
-    {
-      const double m = 0.5 * (s.V0 + s.V1);
-      visit(depth + 1, 0, { s.U0, s.U1, s.V0, m });
-      visit(depth + 1, 1, { s.U0, s.U1, m, s.V1 });
-    }
-  };
-  visit(0, 0, { 0.0, 1.0, 0.0, 1.0 });
+  FaceSearch search{ prob, settings, f, n, face.DegreeV + 1, work.data(), out };
+  search.Visit(0, 0, { 0.0, 1.0, 0.0, 1.0 });
   // Merge repeats (a root on a split line is found from both sides).
   size_t kept = first;
   for (size_t i = first; i < out.size(); ++i)
@@ -350,8 +429,8 @@ int FaceRayCrossings(const LagrangeCellView& cell, const CurvedCellFaces& faces,
   out.resize(kept);
   if (status)
   {
-    status->Patches += examined;
-    status->Complete = status->Complete && complete;
+    status->Patches += search.Examined;
+    status->Complete = status->Complete && search.Complete;
   }
   return static_cast<int>(kept - first);
 }

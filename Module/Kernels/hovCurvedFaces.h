@@ -72,6 +72,13 @@ struct CurvedFacePatch
   double P00[3], P10[3], P01[3], P11[3]; ///< bilinear map (u,v) -> pc
   bool Triangle = false;                  ///< one third of a triangular face
   int DegreeU = 1, DegreeV = 1;
+  /// +1 if x_u x x_v points out of the cell, -1 if into it (the patch's
+  /// orientation in parametric space times the sign of det J at its centre;
+  /// det J keeps its sign on a valid cell), 0 if det J vanishes there.
+  int Orientation = 0;
+  /// Box (xmin, xmax, ymin, ymax, zmin, zmax) of the net widened by
+  /// NetMargin x extent: a ray missing it misses the patch.
+  double Box[6] = { 0, 0, 0, 0, 0, 0 };
   /// Control net of x: Net[3 * ((DegreeV + 1) * a + b) + c], a along u, b along v.
   std::vector<double> Net;
 };
@@ -102,7 +109,13 @@ struct FaceCrossing
   double PC[3] = { 0.0, 0.0, 0.0 }; ///< cell parametric coordinates of the point
   int Face = -1;
   bool Grazing = false; ///< found at the resolution limit (tangency or degenerate corner)
+  /// -1 the ray enters the cell here, +1 it leaves, 0 undecided (grazing, or
+  /// |d . n| <= SideTolerance |d| |n| with n = x_u x x_v, or no orientation).
+  int Side = 0;
 };
+
+/// Relative |d . n| below which a crossing's Side is undecided.
+constexpr double SideTolerance = 1e-6;
 
 struct FaceSearchSettings
 {

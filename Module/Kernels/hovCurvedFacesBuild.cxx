@@ -109,6 +109,30 @@ void FaceParametricPoint(
   }
 }
 
+namespace
+{
+/// CurvedFacePatch::Orientation: the parametric normal (P10 - P00) x (P01 -
+/// P00) against the direction from the domain's centre to the (planar, in
+/// parametric space) face, times the sign of det J at the patch's centre.
+int PatchOrientation(const LagrangeCellView& cell, const CurvedFacePatch& p)
+{
+  double centre[3], pc[3], du[3], dv[3], x[3], J[9];
+  cell.Basis->ParametricCenter(centre);
+  FaceParametricPoint(p, 0.5, 0.5, pc, du, dv);
+  const double n[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
+    du[0] * dv[1] - du[1] * dv[0] };
+  const double out = n[0] * (pc[0] - centre[0]) + n[1] * (pc[1] - centre[1]) + n[2] * (pc[2] - centre[2]);
+  EvaluateLagrangePosition(cell, pc, x, J);
+  const double det = J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) +
+    J[2] * (J[3] * J[7] - J[4] * J[6]);
+  if (!(det != 0.0) || !(out != 0.0))
+  {
+    return 0;
+  }
+  return (out > 0.0) == (det > 0.0) ? 1 : -1;
+}
+}
+
 bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
 {
   out.Faces.clear();
@@ -165,17 +189,25 @@ bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
           for (int c = 0; c < 3; ++c)
             p.Net[3 * (nv * a + b) + c] += l.B[b] * y[3 * (nv * a + j) + c];
     }
+    const double margin = FaceSearchSettings().NetMargin * out.Extent;
+    for (int k = 0; k < 3; ++k)
+    {
+      p.Box[2 * k] = 1e300;
+      p.Box[2 * k + 1] = -1e300;
+    }
     for (size_t k = 0; k < p.Net.size(); ++k)
     {
-      out.Bounds[2 * (k % 3)] = std::min(out.Bounds[2 * (k % 3)], p.Net[k]);
-      out.Bounds[2 * (k % 3) + 1] = std::max(out.Bounds[2 * (k % 3) + 1], p.Net[k]);
+      p.Box[2 * (k % 3)] = std::min(p.Box[2 * (k % 3)], p.Net[k]);
+      p.Box[2 * (k % 3) + 1] = std::max(p.Box[2 * (k % 3) + 1], p.Net[k]);
     }
-  }
-  const double margin = FaceSearchSettings().NetMargin * out.Extent;
-  for (int k = 0; k < 3; ++k)
-  {
-    out.Bounds[2 * k] -= margin;
-    out.Bounds[2 * k + 1] += margin;
+    for (int k = 0; k < 3; ++k)
+    {
+      p.Box[2 * k] -= margin;
+      p.Box[2 * k + 1] += margin;
+      out.Bounds[2 * k] = std::min(out.Bounds[2 * k], p.Box[2 * k]);
+      out.Bounds[2 * k + 1] = std::max(out.Bounds[2 * k + 1], p.Box[2 * k + 1]);
+    }
+    p.Orientation = PatchOrientation(cell, p);
   }
   return true;
 }

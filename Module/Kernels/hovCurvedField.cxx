@@ -14,7 +14,9 @@ namespace
 {
 constexpr double Eps = std::numeric_limits<double>::epsilon();
 constexpr double Pi = 3.14159265358979323846;
-/// Chebyshev interpolation degree of curved pieces.
+/// Chebyshev interpolation degrees of curved pieces: the coarse rule first,
+/// the fine one (nested: twice the points) where the coarse estimate misses.
+constexpr int CoarseDegree = 8;
 constexpr int SampleDegree = 16;
 /// Newton tolerance floor of the sampled values, relative to the field scale.
 constexpr double NewtonFloor = 1e-13;
@@ -69,39 +71,147 @@ BernsteinPolynomial ChebyshevToBernstein(const double* c, int n)
   return sum;
 }
 
-/// Chebyshev interpolant of the field on [ta, tb] (degree SampleDegree) with
-/// its error estimate (see hovCurvedSegment.h).
-bool SamplePiece(const LagrangeCellView& cell, const double o[3], const double d[3], double ta,
-  double tb, double pc[3], double scale, FieldPiece& piece)
+/// Tables of the Chebyshev interpolants of degree 8 and 16 (built once,
+/// thread-safe static): cos(pi m / 16) and each T_k(2y - 1) in Bernstein form.
+struct ChebyshevTables
 {
-  const int n = SampleDegree;
-  double f[SampleDegree + 1]; // f[j] at x_j = cos(pi j / n), y = (1 + x)/2
-  for (int i = 0; i <= n; ++i)
+  double Cos[2 * SampleDegree];                           ///< cos(pi m / 16)
+  double Q8[CoarseDegree + 1][CoarseDegree + 1];          ///< T_k at degree 8
+  double Q16[SampleDegree + 1][SampleDegree + 1];         ///< T_k at degree 16
+  ChebyshevTables()
   {
-    const int j = n - i; // ascending t
-    const double y = 0.5 * (1.0 + std::cos(Pi * j / n));
-    if (!FieldAt(cell, o, d, ta + y * (tb - ta), pc, f[j]))
+    for (int m = 0; m < 2 * SampleDegree; ++m)
     {
-      return false;
+      this->Cos[m] = std::cos(Pi * m / SampleDegree);
+    }
+    double e[SampleDegree + 1] = {};
+    for (int k = 0; k <= SampleDegree; ++k)
+    {
+      e[k] = 1.0;
+      const BernsteinPolynomial b16 = ChebyshevToBernstein(e, SampleDegree);
+      std::copy(b16.B, b16.B + SampleDegree + 1, this->Q16[k]);
+      if (k <= CoarseDegree)
+      {
+        const BernsteinPolynomial b8 = ChebyshevToBernstein(e, CoarseDegree);
+        std::copy(b8.B, b8.B + CoarseDegree + 1, this->Q8[k]);
+      }
+      e[k] = 0.0;
     }
   }
+};
+
+const ChebyshevTables& Tables()
+{
+  static const ChebyshevTables tables;
+  return tables;
+}
+
+/// Chebyshev interpolant of degree @p n (8 or 16) from the values @p f at the
+/// points cos(pi j / n) (f[j * stride], stride 16 / n of the degree-16 array),
+/// into @p piece with its error estimate (see hovCurvedSegment.h).
+void Interpolant(const double* f, int n, double ta, double tb, double scale, FieldPiece& piece)
+{
+  const ChebyshevTables& tab = Tables();
+  const int stride = SampleDegree / n;
   double c[SampleDegree + 1], sumAbs = 0.0;
   for (int k = 0; k <= n; ++k)
   {
     double s = 0.0;
     for (int j = 0; j <= n; ++j)
     {
-      s += ((j == 0 || j == n) ? 0.5 : 1.0) * f[j] * std::cos(Pi * j * k / n);
+      // cos(pi j k / n) = Cos[(stride j k) mod 32].
+      s += ((j == 0 || j == n) ? 0.5 : 1.0) * f[j * stride] * tab.Cos[(stride * j * k) % (2 * SampleDegree)];
     }
     c[k] = ((k == 0 || k == n) ? 1.0 : 2.0) * s / n;
     sumAbs += std::abs(c[k]);
   }
   piece.T0 = ta;
   piece.T1 = tb;
-  piece.G = ChebyshevToBernstein(c, n);
+  piece.G = BernsteinPolynomial();
+  piece.G.Degree = n;
+  for (int k = 0; k <= n; ++k)
+  {
+    const double* q = n == SampleDegree ? tab.Q16[k] : tab.Q8[k];
+    for (int j = 0; j <= n; ++j)
+    {
+      piece.G.B[j] += c[k] * q[j];
+    }
+  }
   piece.Error = 2.0 * (std::abs(c[n - 1]) + std::abs(c[n])) + 64.0 * Eps * sumAbs +
     NewtonFloor * scale;
   piece.Exact = false;
+}
+
+/// Chebyshev interpolant of the field on [ta, tb] with its error estimate (see
+/// hovCurvedSegment.h): degree CoarseDegree first, then SampleDegree on the
+/// nested points (the even ones are the coarse rule's) if the estimate misses
+/// @p tol. Each inversion is warm-started from its neighbours (linear
+/// extrapolation / interpolation of their coordinates in t).
+bool SamplePiece(const LagrangeCellView& cell, const double o[3], const double d[3], double ta,
+  double tb, double pc[3], double scale, double tol, FieldPiece& piece)
+{
+  const int n = SampleDegree;
+  const ChebyshevTables& tab = Tables();
+  double f[SampleDegree + 1];      // f[j] at x_j = cos(pi j / n), y = (1 + x)/2
+  double pcs[SampleDegree + 1][3]; // the samples' parametric coordinates
+  double ts[SampleDegree + 1];
+  for (int j = 0; j <= n; ++j)
+  {
+    ts[j] = ta + 0.5 * (1.0 + tab.Cos[j]) * (tb - ta);
+  }
+  // Coarse points, ascending t (j = n, n - 2, ..., 0).
+  for (int i = 0, prev = -1, older = -1; i <= n; i += 2)
+  {
+    const int j = n - i;
+    double guess[3] = { pc[0], pc[1], pc[2] };
+    if (older >= 0)
+    {
+      const double w = (ts[j] - ts[prev]) / (ts[prev] - ts[older]);
+      for (int k = 0; k < 3; ++k)
+      {
+        guess[k] = pcs[prev][k] + w * (pcs[prev][k] - pcs[older][k]);
+      }
+    }
+    if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
+    {
+      std::copy(pc, pc + 3, guess); // retry from the plain warm start
+      if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
+      {
+        return false;
+      }
+    }
+    std::copy(guess, guess + 3, pcs[j]);
+    std::copy(guess, guess + 3, pc);
+    older = prev;
+    prev = j;
+  }
+  Interpolant(f, CoarseDegree, ta, tb, scale, piece);
+  std::copy(pcs[n], pcs[n] + 3, piece.PC0);
+  std::copy(pcs[0], pcs[0] + 3, piece.PC1);
+  piece.HasPC = true;
+  if (piece.Error <= tol)
+  {
+    return true;
+  }
+  // The odd points between them.
+  for (int j = n - 1; j >= 1; j -= 2)
+  {
+    const double w = (ts[j] - ts[j + 1]) / (ts[j - 1] - ts[j + 1]);
+    double guess[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      guess[k] = pcs[j + 1][k] + w * (pcs[j - 1][k] - pcs[j + 1][k]);
+    }
+    if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
+    {
+      std::copy(pcs[j + 1], pcs[j + 1] + 3, guess);
+      if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
+      {
+        return false;
+      }
+    }
+  }
+  Interpolant(f, n, ta, tb, scale, piece);
   return true;
 }
 }
@@ -129,15 +239,15 @@ bool RepresentFieldOnSegment(const LagrangeCellView& cell, const CellDerivativeB
     out.push_back(p);
     return true;
   }
-  return detail::RepresentCurvedField(cell, bounds, origin, direction, t0, t1, pcGuess, settings, out);
+  return detail::RepresentCurvedField(cell, bounds.FieldScale, tol, origin, direction, t0, t1,
+    pcGuess, settings.MaxPieces, out);
 }
 
-bool detail::RepresentCurvedField(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
+bool detail::RepresentCurvedField(const LagrangeCellView& cell, double scale, double tol,
   const double origin[3], const double direction[3], double t0, double t1, const double* pcGuess,
-  const CurvedSegmentSettings& settings, std::vector<FieldPiece>& out)
+  int maxPieces, std::vector<FieldPiece>& out)
 {
   out.clear();
-  const double tol = settings.FieldTolerance * bounds.FieldScale;
   // Curved: Chebyshev pieces, bisected (left first) until the estimate meets the tolerance.
   double pc[3];
   cell.Basis->ParametricCenter(pc);
@@ -155,12 +265,12 @@ bool detail::RepresentCurvedField(const LagrangeCellView& cell, const CellDeriva
     const Span s = stack.back();
     stack.pop_back();
     FieldPiece p;
-    if (!SamplePiece(cell, origin, direction, s.A, s.B, pc, bounds.FieldScale, p))
+    if (!SamplePiece(cell, origin, direction, s.A, s.B, pc, scale, tol, p))
     {
       return false;
     }
     const bool canSplit =
-      static_cast<int>(out.size() + stack.size()) + 2 <= settings.MaxPieces && s.B - s.A > 1e-9 * (t1 - t0);
+      static_cast<int>(out.size() + stack.size()) + 2 <= maxPieces && s.B - s.A > 1e-9 * (t1 - t0);
     if (p.Error > tol && canSplit)
     {
       const double mid = 0.5 * (s.A + s.B);
@@ -197,8 +307,13 @@ int LocateBreakpoints(const LagrangeCellView& cell, const double origin[3],
     {
       // Polish on the exact field: Newton on g(t) - level, g' = grad f . J^-1 d,
       // kept inside the piece (the approximant's root is within ~Error/|g'|).
+      // Warm start: the coordinates interpolated between the piece's ends.
       double pc[3];
       cell.Basis->ParametricCenter(pc);
+      for (int k = 0; k < 3 && piece.HasPC; ++k)
+      {
+        pc[k] = piece.PC0[k] + ys[i] * (piece.PC1[k] - piece.PC0[k]);
+      }
       for (int iter = 0; iter < 4; ++iter)
       {
         double g, grad[3], x[3], J[9], dpc[3];
@@ -217,7 +332,12 @@ int LocateBreakpoints(const LagrangeCellView& cell, const double origin[3],
         {
           break; // not in the approximant root's neighbourhood: keep it
         }
+        const double step = std::abs(next - t);
         t = next;
+        if (step <= 4.0 * Eps * (std::abs(t) + h))
+        {
+          break; // converged (quadratically: the next step would be rounding)
+        }
       }
     }
     roots.push_back(t);

@@ -80,6 +80,7 @@ struct Segment
 bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
 {
   this->Bases.clear();
+  this->Hulls.clear();
   this->Cells.clear();
   this->CellOrder.clear();
   this->Nodes.clear();
@@ -129,6 +130,8 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
         continue;
       }
       this->Bases.push_back(B);
+      this->Hulls.emplace_back();
+      this->Hulls.back().Initialize(B); // false for the special cells: see FieldHull
       basis = static_cast<int>(this->Bases.size()) - 1;
     }
     Cell cell;
@@ -169,6 +172,7 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
         const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
           cell.Scalars.data() };
         built[j] = BuildCurvedFaces(view, cell.Faces) ? 1 : 0;
+        this->FieldHull(cell);
       }
     }
   };
@@ -411,6 +415,30 @@ int CurvedRayCaster::AffineInterval(const Cell& cell, const double o[3], const d
   return 1;
 }
 
+void CurvedRayCaster::FieldHull(Cell& cell) const
+{
+  const LagrangeBasis& basis = this->Bases[cell.Basis];
+  const int n = basis.GetNodeCount();
+  double lo = cell.Scalars[0], hi = cell.Scalars[0], maxAbs = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    lo = std::min(lo, cell.Scalars[i]);
+    hi = std::max(hi, cell.Scalars[i]);
+    maxAbs = std::max(maxAbs, std::abs(cell.Scalars[i]));
+  }
+  // The same scale as ComputeCellDerivativeBounds.
+  cell.FieldScale = hi > lo ? hi - lo : (maxAbs > 0.0 ? maxAbs : 1.0);
+  const LagrangeHull& hull = this->Hulls[cell.Basis];
+  if (hull.IsInitialized())
+  {
+    hull.Hull(cell.Scalars.data(), cell.FieldLo, cell.FieldHi);
+    return;
+  }
+  const CellDerivativeBounds& bounds = this->CellBounds(cell);
+  cell.FieldLo = bounds.Valid ? bounds.FieldMin : -1e300;
+  cell.FieldHi = bounds.Valid ? bounds.FieldMax : 1e300;
+}
+
 const CellDerivativeBounds& CurvedRayCaster::CellBounds(const Cell& cell) const
 {
   std::call_once(*cell.BoundsOnce, [&]() {
@@ -449,7 +477,9 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
       }
       continue;
     }
-    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+    // Finite points and their extent known (Build): inversions skip both checks.
+    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data(),
+      cell.Faces.Extent };
     CurvedRayInterval iv[MaxIntervalsPerCell];
     const int n = RayCurvedCellIntervals(
       view, cell.Faces, origin, direction, t0, t1, iv, MaxIntervalsPerCell, {}, nullptr, &scratch);
@@ -491,6 +521,16 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
   const bool adaptive =
     settings.Method == CurvedQuadrature::LocatedBreakpoints && settings.Samples <= 0;
   CurvedSegmentSettings pass = settings;
+  if (pass.FieldBudgetLength <= 0.0)
+  {
+    // The field error budget is spread over the whole ray's length in the mesh.
+    const double speed = std::sqrt(
+      direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+    for (const Segment& s : segments)
+    {
+      pass.FieldBudgetLength += (s.T1 - s.T0) * speed;
+    }
+  }
   for (int attempt = 0; attempt < MaxTolerancePasses; ++attempt)
   {
     accum = RGBA();
@@ -505,9 +545,17 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
       }
       const Cell& cell = this->Cells[s.Cell];
       const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
-        cell.Scalars.data() };
-      const CurvedSegmentResult r = IntegrateCurvedSegment(
-        view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, pass);
+        cell.Scalars.data(), cell.Faces.Extent };
+      CurvedCellInfo info;
+      info.FieldLo = cell.FieldLo;
+      info.FieldHi = cell.FieldHi;
+      info.FieldScale = cell.FieldScale;
+      info.Affine = cell.Affine;
+      std::copy(cell.X0, cell.X0 + 3, info.X0);
+      std::copy(cell.InverseJ, cell.InverseJ + 9, info.InverseJ);
+      info.Bounds = [this, &cell]() -> const CellDerivativeBounds& { return this->CellBounds(cell); };
+      const CurvedSegmentResult r =
+        IntegrateCurvedSegment(view, info, tf, origin, direction, s.T0, s.T1, s.PC0, pass);
       error += (1.0 - accum.A) * r.ErrorEstimate;
       fieldError += (1.0 - accum.A) * r.FieldErrorEstimate;
       CompositeBehind(accum, r.Color);

@@ -74,6 +74,7 @@
 #include "hovCurvedSegment.h"
 #include "hovEnclosure.h"
 #include "hovLagrangeBasis.h"
+#include "hovLagrangeHull.h"
 
 #include <cstdint> // point ids
 #include <memory>  // per-cell once flags
@@ -149,6 +150,9 @@ private:
     bool Affine = false;
     double X0[3] = { 0.0, 0.0, 0.0 };
     double InverseJ[9] = {}; ///< J^-1, row-major
+    /// Rigorous hull of the field over the cell (LagrangeHull; the special
+    /// cells: the derivative bounds' FieldMin/FieldMax) and its scale.
+    double FieldLo = 0.0, FieldHi = 0.0, FieldScale = 1.0;
     /// Computed on first use by TraceRay (std::call_once: thread safe).
     mutable CellDerivativeBounds Bounds;
     mutable std::unique_ptr<std::once_flag> BoundsOnce;
@@ -162,12 +166,15 @@ private:
   };
   int BuildNode(int first, int count, std::vector<double>& centroids);
   void DetectAffine(Cell& cell) const;
+  /// FieldLo, FieldHi, FieldScale of @p cell.
+  void FieldHull(Cell& cell) const;
   int AffineInterval(const Cell& cell, const double o[3], const double d[3], double t0, double t1,
     double& ta, double& tb, double pc[3]) const;
   void CollectCandidates(const double o[3], const double d[3], double tMin, double tMax,
     std::vector<int>& out) const;
 
   std::vector<LagrangeBasis> Bases;
+  std::vector<LagrangeHull> Hulls; ///< per basis (not initialised for the special cells)
   std::vector<Cell> Cells;
   std::vector<int> CellOrder;
   std::vector<Node> Nodes;

@@ -8,13 +8,67 @@ namespace hov
 {
 namespace
 {
-/// A candidate end of a gap: its t and, if known, its parametric point.
+/// A candidate end of a gap: its t and, if known, its parametric point and
+/// its FaceCrossing::Side (the ends tMin, tMax: 0).
 struct Stop
 {
   double T;
   double PC[3];
   bool HasPC;
+  int Side;
 };
+
+/// True if o + t d is certainly outside the cell: outside the box of the face
+/// nets (Bounds shrunk by half their NetMargin widening; the cell lies in the
+/// nets' box). The ends of a clip to Bounds lie on its surface: outside.
+bool OutsideNetBox(const CurvedCellFaces& faces, const double o[3], const double d[3], double t)
+{
+  const double half = 0.5 * FaceSearchSettings().NetMargin * faces.Extent;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double x = o[k] + t * d[k];
+    if (x < faces.Bounds[2 * k] + half || x > faces.Bounds[2 * k + 1] - half)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * Inside/outside of every gap from the crossings' sides alone (no inversion):
+ * the sides must alternate and agree with the ends known to be outside; a gap
+ * is inside iff the crossing at its start enters (the first gap: iff the first
+ * crossing leaves). False if that cannot be decided (an undecided side, a
+ * repeated side, no crossing with an end not known outside).
+ */
+bool GapsFromSides(const std::vector<Stop>& stops, bool startOutside, bool endOutside,
+  std::vector<char>& inside)
+{
+  const size_t gaps = stops.size() - 1;
+  inside.assign(gaps, 0);
+  if (stops.size() == 2)
+  {
+    return startOutside || endOutside; // no crossing: all outside, if an end is
+  }
+  for (size_t i = 1; i + 1 < stops.size(); ++i)
+  {
+    if (stops[i].Side == 0 || (i > 1 && stops[i].Side != -stops[i - 1].Side))
+    {
+      return false;
+    }
+  }
+  if ((startOutside && stops[1].Side != -1) || (endOutside && stops[gaps - 1].Side != 1))
+  {
+    return false;
+  }
+  inside[0] = stops[1].Side == 1;
+  for (size_t g = 1; g < gaps; ++g)
+  {
+    inside[g] = stops[g].Side == -1;
+  }
+  return true;
+}
 
 /// Classify the point o + t d: outside if it is outside the faces' bounding
 /// box; else inside iff the inversion converges with DistanceOutside <=
@@ -54,7 +108,7 @@ void CollectStops(const std::vector<FaceCrossing>& crossings, double tMin, doubl
   double merge, std::vector<Stop>& stops, CurvedRayStatus& status)
 {
   stops.clear();
-  stops.push_back({ tMin, { 0, 0, 0 }, false });
+  stops.push_back({ tMin, { 0, 0, 0 }, false, 0 });
   std::vector<const FaceCrossing*> inside;
   for (const FaceCrossing& c : crossings)
   {
@@ -69,9 +123,14 @@ void CollectStops(const std::vector<FaceCrossing>& crossings, double tMin, doubl
   {
     if (c->T - stops.back().T <= merge)
     {
+      // One crossing seen from two patches (an edge): its side if they agree.
+      if (stops.size() > 1 && stops.back().Side != c->Side)
+      {
+        stops.back().Side = 0;
+      }
       continue;
     }
-    Stop s{ c->T, { c->PC[0], c->PC[1], c->PC[2] }, true };
+    Stop s{ c->T, { c->PC[0], c->PC[1], c->PC[2] }, true, c->Side };
     stops.push_back(s);
     ++status.Crossings;
     status.Grazing += c->Grazing ? 1 : 0;
@@ -82,7 +141,7 @@ void CollectStops(const std::vector<FaceCrossing>& crossings, double tMin, doubl
   }
   else
   {
-    stops.push_back({ tMax, { 0, 0, 0 }, false });
+    stops.push_back({ tMax, { 0, 0, 0 }, false, 0 });
   }
 }
 }
@@ -115,19 +174,20 @@ int RayCurvedCellIntervals(const LagrangeCellView& cell, const CurvedCellFaces& 
   st.Complete = search.Complete;
   std::vector<Stop> stops;
   CollectStops(crossings, tMin, tMax, settings.MergeRelative * faces.Extent / dLen, stops, st);
-  int count = 0;
-  bool open = false;
+  const size_t gaps = stops.size() - 1;
+  // Inside/outside of each gap: from the crossings' sides if they decide it,
+  // else by inverting the gap's midpoint (midPC then holds its coordinates).
+  std::vector<char> inside;
+  std::vector<double> midPC(3 * gaps, 0.0);
   double centre[3];
   cell.Basis->ParametricCenter(centre);
-  for (size_t g = 0; g + 1 < stops.size(); ++g)
+  const bool fromSides = GapsFromSides(stops, OutsideNetBox(faces, origin, direction, tMin),
+    OutsideNetBox(faces, origin, direction, tMax), inside);
+  for (size_t g = 0; g < gaps; ++g)
   {
     const Stop& a = stops[g];
     const Stop& b = stops[g + 1];
-    if (!(b.T > a.T))
-    {
-      continue;
-    }
-    double pc[3];
+    double* pc = &midPC[3 * g];
     for (int k = 0; k < 3; ++k)
     {
       pc[k] = (a.HasPC && b.HasPC) ? 0.5 * (a.PC[k] + b.PC[k])
@@ -135,9 +195,25 @@ int RayCurvedCellIntervals(const LagrangeCellView& cell, const CurvedCellFaces& 
         : b.HasPC                  ? b.PC[k]
                                    : centre[k];
     }
-    const bool inside = InsideAt(cell, faces, origin, direction, 0.5 * (a.T + b.T), pc,
-      settings.InsideSlack, st.InversionFailures);
-    if (inside)
+    if (!fromSides)
+    {
+      inside[g] = b.T > a.T &&
+        InsideAt(cell, faces, origin, direction, 0.5 * (a.T + b.T), pc, settings.InsideSlack,
+          st.InversionFailures);
+    }
+  }
+  int count = 0;
+  bool open = false;
+  for (size_t g = 0; g < gaps; ++g)
+  {
+    const Stop& a = stops[g];
+    const Stop& b = stops[g + 1];
+    if (!(b.T > a.T))
+    {
+      continue;
+    }
+    const double* pc = &midPC[3 * g];
+    if (inside[g])
     {
       if (!open)
       {
@@ -147,10 +223,15 @@ int RayCurvedCellIntervals(const LagrangeCellView& cell, const CurvedCellFaces& 
         }
         out[count].T0 = a.T;
         std::copy(a.HasPC ? a.PC : pc, (a.HasPC ? a.PC : pc) + 3, out[count].PC0);
+        if (!a.HasPC)
+        {
+          // tMin inside: its coordinates by inversion, warm-started.
+          InsideAt(cell, faces, origin, direction, a.T, out[count].PC0, 1.0, st.InversionFailures);
+        }
         ++count;
       }
       out[count - 1].T1 = b.T;
-      // The end's coordinates: the crossing's, else (tMax) inverted from the midpoint's.
+      // The end's coordinates: the crossing's, else (tMax) inverted from the gap's guess.
       double end[3] = { pc[0], pc[1], pc[2] };
       if (b.HasPC)
       {
@@ -162,12 +243,7 @@ int RayCurvedCellIntervals(const LagrangeCellView& cell, const CurvedCellFaces& 
       }
       std::copy(end, end + 3, out[count - 1].PC1);
     }
-    open = inside;
-  }
-  // tMin inside: its coordinates by inversion from the first interval's guess.
-  if (count > 0 && out[0].T0 == tMin && !stops[0].HasPC)
-  {
-    InsideAt(cell, faces, origin, direction, tMin, out[0].PC0, 1.0, st.InversionFailures);
+    open = inside[g] != 0;
   }
   if (status)
   {

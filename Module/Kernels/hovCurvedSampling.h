@@ -50,12 +50,13 @@ HOV_EXPORT void IntegrateSubPieceFixed(const TransferFunction& tf, const Bernste
 /**
  * The curved branch of RepresentFieldOnSegment (Chebyshev pieces, see
  * hovCurvedSegment.h) without its affine test: for callers that already
- * know the one-piece Taylor model misses the field tolerance.
+ * know the one-piece Taylor model misses the field tolerance. Pieces are
+ * bisected until their error estimate is <= @p tolerance (absolute), at most
+ * @p maxPieces; @p scale is the field scale (CellDerivativeBounds::FieldScale).
  */
-HOV_EXPORT bool RepresentCurvedField(const LagrangeCellView& cell,
-  const CellDerivativeBounds& bounds, const double origin[3], const double direction[3],
-  double t0, double t1, const double* pcGuess, const CurvedSegmentSettings& settings,
-  std::vector<FieldPiece>& out);
+HOV_EXPORT bool RepresentCurvedField(const LagrangeCellView& cell, double scale, double tolerance,
+  const double origin[3], const double direction[3], double t0, double t1, const double* pcGuess,
+  int maxPieces, std::vector<FieldPiece>& out);
 
 /// Gauss-Legendre nodes and weights on [0, 1] (@p n >= 1; Newton on P_n).
 HOV_EXPORT void GaussLegendreUnit(int n, std::vector<double>& x, std::vector<double>& w);

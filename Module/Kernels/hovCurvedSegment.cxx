@@ -2,16 +2,25 @@
 // Lagrange cell: see hovCurvedSegment.h.
 #include "hovCurvedSegment.h"
 
-#include "hovCurvedSampling.h" // the fixed-sample rules
+#include "hovCurvedSampling.h"      // the fixed-sample rules, RepresentCurvedField
+#include "hovCurvedSegmentDetail.h"  // the shared parts
+#include "hovLagrangeRestriction.h"  // the field along the affine cells' parametric line
 #include "hovTransferFunction.h"
 
-#include <algorithm> // std::lower_bound, std::upper_bound, std::sort
-#include <cmath>     // std::abs, std::isfinite, std::sqrt
+#include <algorithm> // std::lower_bound, std::upper_bound, std::min, std::max
+#include <cmath>     // std::abs, std::sqrt
 
 namespace hov
 {
 namespace
 {
+using detail::ValueAt;
+
+double MaxColor(const SegmentEnd& v)
+{
+  return std::max(std::max(std::abs(v.Color[0]), std::abs(v.Color[1])), std::abs(v.Color[2]));
+}
+
 /// Remainder tolerance (relative to the field scale) of the first, coarse
 /// categorization enclosure. The enclosure stays rigorous; coarser only means
 /// a PS verdict may be conservative, which costs our breakpoint location a
@@ -19,164 +28,6 @@ namespace
 /// the enclosure, is integrated). Taylor-model remainders are O(h^2), so
 /// 1e-3 instead of 1e-6 needs ~30x fewer pieces on curved segments.
 constexpr double CoarseEnclosureTolerance = 1e-3;
-
-/// Table values at s (Find + Evaluate).
-SegmentEnd ValueAt(const TransferFunction& tf, double s, bool emission)
-{
-  SegmentEnd v;
-  tf.Evaluate(tf.FindIntervalUpward(s), s, emission, v);
-  return v;
-}
-
-double MaxColor(const SegmentEnd& v)
-{
-  return std::max(std::max(std::abs(v.Color[0]), std::abs(v.Color[1])), std::abs(v.Color[2]));
-}
-
-/// True if the table's extinction (and, WVG, emission) is 0 somewhere on
-/// [lo, hi]: at lo, hi or a node (one-sided values), since it is linear between nodes.
-bool MayBeEmpty(const TransferFunction& tf, double lo, double hi, EmissionModel emission)
-{
-  const bool wvg = emission == EmissionModel::WilhelmsVanGelder;
-  auto zero = [&](const SegmentEnd& v) { return v.Tau == 0.0 && (!wvg || MaxColor(v) == 0.0); };
-  if (zero(ValueAt(tf, lo, wvg)) || zero(ValueAt(tf, hi, wvg)))
-  {
-    return true;
-  }
-  // Only the nodes in [lo, hi] (binary search: the cost does not grow with
-  // the nodes outside the segment's range).
-  const std::vector<double>& x = tf.GetNodes();
-  const auto last = std::upper_bound(x.begin(), x.end(), hi);
-  for (auto it = std::lower_bound(x.begin(), x.end(), lo); it < last; ++it)
-  {
-    SegmentEnd down;
-    tf.Evaluate(tf.FindIntervalDownward(*it), *it, wvg, down);
-    if (zero(ValueAt(tf, *it, wvg)) || zero(down))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-/// Largest |value|s and slopes d/ds of the table on [lo, hi] (jumps skipped).
-struct TableSensitivity
-{
-  double TauMax = 0.0, ColorMax = 0.0, TauSlope = 0.0, ColorSlope = 0.0;
-  /// Infinite extinction somewhere (an opaque medium: opacity 1 in
-  /// GPU-compatible semantics); TauMax and TauSlope cover the finite values.
-  bool Opaque = false;
-};
-
-TableSensitivity Sensitivity(const TransferFunction& tf, double lo, double hi, bool emission)
-{
-  TableSensitivity s;
-  const std::vector<double>& x = tf.GetNodes();
-  // lo, the nodes strictly inside (lo, hi) found by binary search, hi: sorted.
-  std::vector<double> points{ lo };
-  if (lo < hi)
-  {
-    const auto first = std::upper_bound(x.begin(), x.end(), lo);
-    const auto last = std::lower_bound(first, x.end(), hi);
-    points.insert(points.end(), first, last);
-  }
-  points.push_back(hi);
-  std::sort(points.begin(), points.end());
-  for (size_t i = 0; i < points.size(); ++i)
-  {
-    const SegmentEnd v = ValueAt(tf, points[i], emission);
-    if (std::isfinite(v.Tau))
-    {
-      s.TauMax = std::max(s.TauMax, std::abs(v.Tau));
-    }
-    else
-    {
-      s.Opaque = true;
-    }
-    s.ColorMax = std::max(s.ColorMax, MaxColor(v));
-    if (i + 1 < points.size() && points[i + 1] > points[i])
-    {
-      // Slope of the linear piece between consecutive points (inside one interval).
-      const double a = points[i], b = points[i + 1], m = 0.5 * (a + b);
-      SegmentEnd va, vb;
-      const int k = tf.FindIntervalUpward(m);
-      tf.Evaluate(k, a, emission, va);
-      tf.Evaluate(k, b, emission, vb);
-      if (std::isfinite(va.Tau) && std::isfinite(vb.Tau))
-      {
-        s.TauSlope = std::max(s.TauSlope, std::abs(vb.Tau - va.Tau) / (b - a));
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        s.ColorSlope = std::max(s.ColorSlope, std::abs(vb.Color[c] - va.Color[c]) / (b - a));
-      }
-    }
-  }
-  return s;
-}
-
-/// Integrate one sub-piece G on [a, b] (smooth for the table up to the field
-/// error): degree-<=8 approximants (bisected while their bound exceeds the
-/// tolerance, at most @p depth times), each by IntegratePolynomialScalar;
-/// @p speed = |d| converts ray parameter to length.
-void IntegrateSubPiece(const TransferFunction& tf, const BernsteinPolynomial& g, double a, double b,
-  double speed, double tolerance, int depth, const CurvedSegmentSettings& settings,
-  CurvedSegmentResult& result)
-{
-  double bound = 0.0;
-  const Polynomial q = ApproximateBernstein(g, 8, bound);
-  if (bound > tolerance && depth > 0)
-  {
-    BernsteinPolynomial left, right;
-    SubdivideBernstein(g, 0.5, &left, &right);
-    const double mid = 0.5 * (a + b);
-    IntegrateSubPiece(tf, left, a, mid, speed, tolerance, depth - 1, settings, result);
-    IntegrateSubPiece(tf, right, mid, b, speed, tolerance, depth - 1, settings, result);
-    return;
-  }
-  result.FieldError = std::max(result.FieldError, bound);
-  // In the world length along the ray, tau = (t - a) |d|, in [0, h].
-  const double h = (b - a) * speed;
-  Polynomial s = ComposeAffine(q, 0.0, 1.0 / h);
-  s.Degree = q.Degree;
-  const PolynomialSegmentResult r = IntegratePolynomialScalar(tf, s, h, settings.Quadrature);
-  result.ErrorEstimate += (1.0 - result.Color.A) * r.ErrorEstimate;
-  result.Converged = result.Converged && r.Converged;
-  CompositeBehind(result.Color, r.Color);
-  ++result.Pieces;
-}
-/// Order-1 cells (linear tetrahedra and wedges, trilinear hexahedra) have
-/// non-negative shape functions: their field stays within the node values.
-/// The pieces' end values (first and last Bernstein coefficients) are clamped
-/// to that range, so that rounding (an interval end a hair outside the cell,
-/// where the field extrapolates) cannot carry the field past a table node at
-/// the range's end: with opacity 1 there (GPU-compatible semantics) that would
-/// be an opaque medium.
-void ClampOrderOneEnds(const LagrangeCellView& cell, std::vector<FieldPiece>& pieces)
-{
-  if (!cell.Basis || !cell.Scalars)
-  {
-    return;
-  }
-  const int* order = cell.Basis->GetOrder();
-  if (order[0] != 1 || order[1] != 1 || order[2] != 1)
-  {
-    return;
-  }
-  double lo = cell.Scalars[0], hi = cell.Scalars[0];
-  for (int i = 1; i < cell.Basis->GetNodeCount(); ++i)
-  {
-    lo = std::min(lo, cell.Scalars[i]);
-    hi = std::max(hi, cell.Scalars[i]);
-  }
-  for (FieldPiece& p : pieces)
-  {
-    double& a = p.G.B[0];
-    double& b = p.G.B[p.G.Degree];
-    a = std::min(std::max(a, lo), hi);
-    b = std::min(std::max(b, lo), hi);
-  }
-}
 
 /// The categorization enclosure in two stages (see hovCurvedSegment.h); sets
 /// result.Class, fills @p model with the Taylor models.
@@ -200,7 +51,7 @@ FieldEnclosure TwoStageEnclosure(const LagrangeCellView& cell, const CellDerivat
   if (result.Class.Category == SegmentCategory::PiecewiseSmooth &&
     coarse.RemainderTolerance > settings.Enclosure.RemainderTolerance &&
     (settings.Method == CurvedQuadrature::ElVis ||
-      MayBeEmpty(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission)))
+      detail::MayBeEmpty(tf, enc.Lo, enc.Hi, settings.Quadrature.Emission)))
   {
     enc = EncloseFieldOnSegment(
       cell, bounds, origin, direction, t0, t1, pcGuess, settings.Enclosure, &model);
@@ -209,46 +60,6 @@ FieldEnclosure TwoStageEnclosure(const LagrangeCellView& cell, const CellDerivat
   return enc;
 }
 
-/// One smooth piece of the field between located breakpoints.
-struct SubPiece
-{
-  BernsteinPolynomial G;
-  double A, B;
-};
-
-/// The field pieces cut at every located crossing of the table nodes of result.Class.
-std::vector<SubPiece> CutAtBreakpoints(const LagrangeCellView& cell, const double origin[3],
-  const double direction[3], const TransferFunction& tf, const std::vector<FieldPiece>& pieces,
-  CurvedSegmentResult& result)
-{
-  const std::vector<double>& nodes = tf.GetNodes();
-  std::vector<double> cuts;
-  std::vector<SubPiece> subs;
-  for (const FieldPiece& p : pieces)
-  {
-    cuts.assign({ p.T0, p.T1 });
-    for (int k = 0; k < result.Class.NodeCount; ++k)
-    {
-      const double level = nodes[result.Class.FirstNode + k];
-      if (k > 0 && level == nodes[result.Class.FirstNode + k - 1])
-      {
-        continue; // a jump: one location
-      }
-      result.Breakpoints += LocateBreakpoints(cell, origin, direction, p, level, cuts);
-    }
-    std::sort(cuts.begin(), cuts.end());
-    const double h = p.T1 - p.T0;
-    for (size_t i = 0; i + 1 < cuts.size(); ++i)
-    {
-      const double a = std::max(cuts[i], p.T0), b = std::min(cuts[i + 1], p.T1);
-      if (b > a)
-      {
-        subs.push_back({ RestrictBernstein(p.G, (a - p.T0) / h, (b - p.T0) / h), a, b });
-      }
-    }
-  }
-  return subs;
-}
 }
 
 SegmentClassification CategorizeSegment(
@@ -301,36 +112,9 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   {
     return result; // transparent
   }
-  // A cell whose node scalars are all equal carries that constant exactly
-  // (partition of unity); interpolating it would round it (1 - 1e-16), which
-  // matters where the table is singular: opacity 1 at a node in GPU-compatible
-  // semantics is an opaque medium at the node and a finite (clamped)
-  // extinction just below it. The segment then has one exact table value.
-  if (cell.Scalars && cell.Basis)
+  if (detail::IntegrateConstantCell(cell, tf, direction, t0, t1, settings, result))
   {
-    const int n = cell.Basis->GetNodeCount();
-    const double c = cell.Scalars[0];
-    bool constant = n > 0 && std::isfinite(c);
-    for (int i = 1; constant && i < n; ++i)
-    {
-      constant = cell.Scalars[i] == c;
-    }
-    if (constant)
-    {
-      const EmissionModel model = settings.Quadrature.Emission;
-      result.Lo = result.Hi = c;
-      result.Class = CategorizeSegment(tf, c, c, model);
-      result.ExactField = true;
-      if (result.Class.Category != SegmentCategory::Empty)
-      {
-        const SegmentEnd v = ValueAt(tf, c, model == EmissionModel::WilhelmsVanGelder);
-        const double length = (t1 - t0) * std::sqrt(direction[0] * direction[0] +
-                                            direction[1] * direction[1] + direction[2] * direction[2]);
-        result.Color = IntegrateSegment(length, v, v, model, SegmentMethod::Exact);
-        result.Pieces = 1;
-      }
-      return result;
-    }
+    return result;
   }
   std::vector<EnclosurePiece> model;
   const FieldEnclosure enc =
@@ -345,11 +129,14 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   {
     return result; // empty-space skipping: exactly zero
   }
+  const double length = (t1 - t0) *
+    std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  const double fieldTarget =
+    detail::FieldTarget(tf, enc.Lo, enc.Hi, bounds.FieldScale, length, settings);
   std::vector<FieldPiece> pieces;
-  // The first Taylor model is on the whole segment; if it meets the field tolerance
+  // The first Taylor model is on the whole segment; if it meets the field target
   // the geometry is affine (enough): the same test as RepresentFieldOnSegment's.
-  const double fieldTolerance = settings.FieldTolerance * bounds.FieldScale;
-  if (model.size() == 1 && !model[0].Loose && model[0].Remainder <= fieldTolerance)
+  if (model.size() == 1 && !model[0].Loose && model[0].Remainder <= fieldTarget)
   {
     FieldPiece p;
     p.T0 = t0;
@@ -359,60 +146,123 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
     p.Exact = true;
     pieces.push_back(p);
   }
-  else if (!detail::RepresentCurvedField(
-             cell, bounds, origin, direction, t0, t1, pcGuess, settings, pieces))
+  else if (!detail::RepresentCurvedField(cell, bounds.FieldScale, fieldTarget, origin, direction,
+             t0, t1, pcGuess, settings.MaxPieces, pieces))
   {
     result.Converged = false;
     return result;
   }
-  ClampOrderOneEnds(cell, pieces);
-  result.FieldPieces = static_cast<int>(pieces.size());
-  result.ExactField = !pieces.empty() && pieces[0].Exact;
-  const double tolerance = settings.FieldTolerance * bounds.FieldScale;
-  const double speed =
-    std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
-  for (const FieldPiece& p : pieces)
-  {
-    result.FieldError = std::max(result.FieldError, p.Error);
-  }
+  detail::ClampOrderOneEnds(cell, pieces);
   if (settings.Method != CurvedQuadrature::LocatedBreakpoints)
   {
+    for (const FieldPiece& p : pieces)
+    {
+      result.FieldError = std::max(result.FieldError, p.Error);
+    }
+    result.FieldPieces = static_cast<int>(pieces.size());
+    result.ExactField = !pieces.empty() && pieces[0].Exact;
+    const double speed = length / (t1 - t0);
     detail::IntegrateSampledSegment(tf, pieces,
       result.Class.Category == SegmentCategory::Smooth, t0, t1, speed, settings, result);
     return result;
   }
-  const std::vector<SubPiece> subs = CutAtBreakpoints(cell, origin, direction, tf, pieces, result);
-  const bool emission = settings.Quadrature.Emission == EmissionModel::WilhelmsVanGelder;
-  for (const SubPiece& sp : subs)
+  detail::IntegrateRepresentedField(
+    cell, tf, origin, direction, t0, t1, pieces, enc.Lo, enc.Hi, fieldTarget, settings, result);
+  return result;
+}
+
+CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell, const CurvedCellInfo& info,
+  const TransferFunction& tf, const double origin[3], const double direction[3], double t0,
+  double t1, const double* pcGuess, const CurvedSegmentSettings& settings)
+{
+  CurvedSegmentResult result;
+  if (!(t1 > t0))
   {
-    if (settings.Samples > 0)
-    {
-      // Fixed rule: half the segment's nodes shared equally among the pieces, half by
-      // length (so every piece's rule refines with Samples: spectral convergence even
-      // on the short pieces next to a near-tangent breakpoint), at least one each.
-      const double share = 0.5 * settings.Samples / static_cast<double>(subs.size()) +
-        0.5 * settings.Samples * (sp.B - sp.A) / (t1 - t0);
-      const int m = std::max(1, static_cast<int>(std::lround(share)));
-      detail::IntegrateSubPieceFixed(tf, sp.G, sp.A, sp.B, speed, m, emission, result);
-    }
-    else
-    {
-      IntegrateSubPiece(tf, sp.G, sp.A, sp.B, speed, tolerance, 8, settings, result);
-    }
+    return result; // transparent
   }
-  // Field-error contribution (see file doc), on the range widened by the error.
-  const TableSensitivity s = Sensitivity(tf, enc.Lo - result.FieldError, enc.Hi + result.FieldError,
-    settings.Quadrature.Emission == EmissionModel::WilhelmsVanGelder);
-  // An opaque medium ends the ray where it starts: a field error e moves that
-  // point, and the colour there changes by at most ColorSlope e.
-  const double length = (t1 - t0) * speed;
-  if (result.FieldError > 0.0)
+  if (detail::IntegrateConstantCell(cell, tf, direction, t0, t1, settings, result))
   {
-    result.FieldErrorEstimate =
-      (length * (s.ColorSlope * s.TauMax + s.ColorMax * s.TauSlope) + (s.Opaque ? s.ColorSlope : 0.0)) *
-      result.FieldError;
-    result.ErrorEstimate += result.FieldErrorEstimate;
+    return result;
   }
+  const EmissionModel emission = settings.Quadrature.Emission;
+  // The cell's rigorous hull decides what a segment enclosure would only
+  // refine: E (nothing visible anywhere in the cell) is exact; where no zero
+  // of the table lies in the hull no segment can be E, and the breakpoints are
+  // located on the field representation itself (its own range selects the
+  // table nodes), so the Taylor-model enclosure is needed only when the hull
+  // holds a zero of the table (or for the sampled rules, which need E/PS/S).
+  result.Class = CategorizeSegment(tf, info.FieldLo, info.FieldHi, emission);
+  result.Lo = info.FieldLo;
+  result.Hi = info.FieldHi;
+  if (result.Class.Category == SegmentCategory::Empty)
+  {
+    return result; // empty-space skipping: exactly zero
+  }
+  if (settings.Method != CurvedQuadrature::LocatedBreakpoints ||
+    (result.Class.Category == SegmentCategory::PiecewiseSmooth &&
+      detail::MayBeEmpty(tf, info.FieldLo, info.FieldHi, emission)))
+  {
+    return IntegrateCurvedSegment(
+      cell, info.Bounds(), tf, origin, direction, t0, t1, pcGuess, settings);
+  }
+  const double length = (t1 - t0) *
+    std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  const double fieldTarget =
+    detail::FieldTarget(tf, info.FieldLo, info.FieldHi, info.FieldScale, length, settings);
+  std::vector<FieldPiece> pieces;
+  if (info.Affine)
+  {
+    // pc(t) = InverseJ (o + t d - X0): the field along the segment is exactly
+    // the cell's polynomial on that parametric line.
+    FieldPiece p;
+    double start[3], step[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      const double* row = info.InverseJ + 3 * i;
+      const double a[3] = { origin[0] + t0 * direction[0] - info.X0[0],
+        origin[1] + t0 * direction[1] - info.X0[1], origin[2] + t0 * direction[2] - info.X0[2] };
+      start[i] = row[0] * a[0] + row[1] * a[1] + row[2] * a[2];
+      step[i] = (t1 - t0) * (row[0] * direction[0] + row[1] * direction[1] + row[2] * direction[2]);
+    }
+    double rounding = 0.0;
+    if (!LagrangeFieldAlongLine(*cell.Basis, cell.Scalars, start, step, p.G, &rounding))
+    {
+      result.Converged = false;
+      return result;
+    }
+    p.T0 = t0;
+    p.T1 = t1;
+    p.Error = rounding;
+    p.Exact = true;
+    pieces.push_back(p);
+  }
+  else if (!detail::RepresentCurvedField(cell, info.FieldScale, fieldTarget, origin, direction, t0,
+             t1, pcGuess, settings.MaxPieces, pieces))
+  {
+    result.Converged = false;
+    return result;
+  }
+  detail::ClampOrderOneEnds(cell, pieces);
+  // The segment's range from its pieces (within the cell's hull), and the
+  // table nodes in it.
+  double lo = 1e300, hi = -1e300;
+  for (const FieldPiece& p : pieces)
+  {
+    double a, b;
+    BernsteinRange(p.G, a, b);
+    lo = std::min(lo, a - p.Error);
+    hi = std::max(hi, b + p.Error);
+  }
+  lo = std::max(lo, info.FieldLo);
+  hi = std::min(hi, info.FieldHi);
+  if (lo <= hi)
+  {
+    result.Lo = lo;
+    result.Hi = hi;
+    result.Class = CategorizeSegment(tf, lo, hi, emission);
+  }
+  detail::IntegrateRepresentedField(
+    cell, tf, origin, direction, t0, t1, pieces, result.Lo, result.Hi, fieldTarget, settings, result);
   return result;
 }
 }

@@ -77,6 +77,8 @@
 #include "hovEnclosure.h"
 #include "hovPolynomialSegment.h"
 
+#include <functional> // CurvedCellInfo's bounds on demand
+
 namespace hov
 {
 class TransferFunction;
@@ -134,8 +136,17 @@ struct CurvedSegmentSettings
 {
   PolynomialSegmentSettings Quadrature;
   EnclosureSettings Enclosure;
-  /// Target of the field representation error, relative to the field scale.
+  /// Target of the field representation error, relative to the field scale
+  /// (the floor: the budget below may loosen it).
   double FieldTolerance = 1e-10;
+  /// Share of Quadrature.Tolerance the field representation may use: the
+  /// field target of a segment is loosened to what keeps its field-error
+  /// term below this share of the tolerance, spread over FieldBudgetLength
+  /// (hovCurvedSegmentDetail.h, FieldTarget); 0 keeps FieldTolerance.
+  double FieldErrorShare = 0.25;
+  /// World length over which that share is spread (CurvedRayCaster: the
+  /// length of all segments of the ray); 0: the segment's own length.
+  double FieldBudgetLength = 0.0;
   /// Field pieces allowed per segment (curved geometry).
   int MaxPieces = 64;
   /// Quadrature method (see CurvedQuadrature).
@@ -175,6 +186,38 @@ HOV_EXPORT CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& ce
   const double direction[3], double t0, double t1, const double* pcGuess,
   const CurvedSegmentSettings& settings = CurvedSegmentSettings());
 
+/**
+ * What IntegrateCurvedSegment may know about a cell beyond its nodes
+ * (CurvedRayCaster keeps it per cell): a rigorous hull of the field over the
+ * cell (hovLagrangeHull.h, or CellDerivativeBounds' looser FieldMin/FieldMax),
+ * the field scale, the affine map of straight-sided cells, and the
+ * second-derivative bounds on demand (costly, ~1 ms for an order-4
+ * tetrahedron: asked for only when a segment needs a rigorous enclosure).
+ */
+struct CurvedCellInfo
+{
+  double FieldLo = 0.0, FieldHi = 0.0; ///< the field lies in [FieldLo, FieldHi] on the cell
+  double FieldScale = 1.0;            ///< as CellDerivativeBounds::FieldScale
+  bool Affine = false;                ///< x = X0 + J pc on the whole cell
+  double X0[3] = { 0.0, 0.0, 0.0 };
+  double InverseJ[9] = {};            ///< J^-1, row-major
+  std::function<const CellDerivativeBounds&()> Bounds;
+};
+
+/**
+ * IntegrateCurvedSegment with a CurvedCellInfo: the cell's hull categorizes
+ * first (E: exactly zero); where the hull holds no zero of the table and the
+ * method is LocatedBreakpoints, no Taylor-model enclosure is made (the
+ * breakpoints are located on the representation, whose own range selects
+ * the table nodes): affine cells take the exact field on their parametric
+ * line, curved ones the Chebyshev pieces; otherwise the call above with
+ * info.Bounds(). The same colour to the field target, the same error terms.
+ */
+HOV_EXPORT CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
+  const CurvedCellInfo& info, const TransferFunction& tf, const double origin[3],
+  const double direction[3], double t0, double t1, const double* pcGuess,
+  const CurvedSegmentSettings& settings = CurvedSegmentSettings());
+
 /// One piece of the field along the ray: g(t) ~ G((t - T0)/(T1 - T0)), |error| <= Error.
 struct FieldPiece
 {
@@ -182,6 +225,9 @@ struct FieldPiece
   BernsteinPolynomial G;
   double Error = 0.0;
   bool Exact = false; ///< G is the exact polynomial (affine geometry)
+  /// Parametric coordinates at T0 and T1 (sampled pieces): warm starts.
+  bool HasPC = false;
+  double PC0[3] = { 0.0, 0.0, 0.0 }, PC1[3] = { 0.0, 0.0, 0.0 };
 };
 
 /**

@@ -268,8 +268,9 @@ LagrangeInversionResult InvertLagrangeGeometry(const LagrangeCellView& cell, con
   double pc[3], const LagrangeInversionSettings& settings)
 {
   LagrangeInversionResult result;
+  const bool known = cell.Extent > 0.0; // the caller vouches for finite points
   if (!cell.Basis || !cell.Basis->IsInitialized() || !cell.Points || !AllFinite(x, 3) ||
-    !AllFinite(cell.Points, 3 * cell.Basis->GetNodeCount()))
+    (!known && !AllFinite(cell.Points, 3 * cell.Basis->GetNodeCount())))
   {
     double c[3] = { 0.5, 0.5, 0.5 };
     if (cell.Basis)
@@ -279,31 +280,46 @@ LagrangeInversionResult InvertLagrangeGeometry(const LagrangeCellView& cell, con
     std::copy(c, c + 3, pc);
     return result; // InvalidInput
   }
-  const double extent = std::max(LagrangeCellExtent(cell), std::numeric_limits<double>::min());
-  // Starts: guess, centre, then the grid points inside the domain.
-  double starts[29][3];
-  int count = 0;
-  if (AllFinite(pc, 3))
-  {
-    std::copy(pc, pc + 3, starts[count++]);
-  }
-  cell.Basis->ParametricCenter(starts[count++]);
+  const double extent = known ? cell.Extent
+                              : std::max(LagrangeCellExtent(cell), std::numeric_limits<double>::min());
+  // Starts, in turn until one converges: the guess, the centre, then the grid
+  // points inside the domain (made only if the first two fail: a warm start
+  // almost always converges).
   static constexpr double grid[3] = { 0.2, 0.5, 0.8 };
-  for (int g = 0; settings.UseStartGrid && g < 27; ++g)
-  {
-    const double p[3] = { grid[g % 3], grid[(g / 3) % 3], grid[g / 9] };
-    if (cell.Basis->DistanceOutside(p) <= 0.0)
-    {
-      std::copy(p, p + 3, starts[count++]);
-    }
-  }
+  const bool guess = AllFinite(pc, 3);
+  const int count = (guess ? 1 : 0) + 1 + (settings.UseStartGrid ? 27 : 0);
   InversionStatus status = InversionStatus::NoConvergence;
-  double best[3] = { starts[0][0], starts[0][1], starts[0][2] };
+  double best[3] = { 0.0, 0.0, 0.0 };
   double bestResidual = std::numeric_limits<double>::infinity();
-  bool allSingular = true;
+  bool allSingular = true, haveBest = false;
+  const double initial[3] = { pc[0], pc[1], pc[2] };
   for (int k = 0; k < count; ++k)
   {
-    double p[3] = { starts[k][0], starts[k][1], starts[k][2] };
+    double p[3];
+    const int g = k - (guess ? 2 : 1); // grid index
+    if (guess && k == 0)
+    {
+      std::copy(initial, initial + 3, p);
+    }
+    else if (g < 0)
+    {
+      cell.Basis->ParametricCenter(p);
+    }
+    else
+    {
+      p[0] = grid[g % 3];
+      p[1] = grid[(g / 3) % 3];
+      p[2] = grid[g / 9];
+      if (!(cell.Basis->DistanceOutside(p) <= 0.0))
+      {
+        continue;
+      }
+    }
+    if (!haveBest)
+    {
+      std::copy(p, p + 3, best); // the first start, if nothing better is found
+      haveBest = true;
+    }
     ++result.Starts;
     status = NewtonRun(cell, x, extent, settings, p, result);
     if (status == InversionStatus::Converged)

@@ -54,6 +54,10 @@ struct LagrangeCellView
   const LagrangeBasis* Basis = nullptr;
   const double* Points = nullptr;  ///< 3 per node, VTK order
   const double* Scalars = nullptr; ///< 1 per node (may be null: no field)
+  /// LagrangeCellExtent(*this) if the caller knows it (> 0 also vouches that
+  /// the points are finite: InvertLagrangeGeometry then checks neither); 0:
+  /// computed (and the points checked) on every inversion.
+  double Extent = 0.0;
 };
 
 /// x(pc) and, if @p jacobian is given, J[3 i + j] = dx_i / dpc_j.

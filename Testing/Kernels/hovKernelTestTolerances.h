@@ -158,6 +158,26 @@ struct ToleranceTable
   /// Requested relative tolerance of the long double tanh-sinh quadrature.
   double ReferenceQuadratureTol = 1e-16;
 
+  // --- hovLagrangeHull (issue 20) ---
+
+  /// Bernstein-Bezier coefficients (T = M^-1 in long double, rounded) summed
+  /// against the Bernstein basis vs the Lagrange interpolant, relative to
+  /// max |f_i|; also the basis's partition of unity. Measured worst 1.2e-12
+  /// (hexahedron of order 8: T's entries grow with the order, the equispaced
+  /// to Bernstein conversion amplifies rounding), unity 1.6e-15. Margin ~8.
+  double HullReproductionRel = 1e-11;
+
+  /// Hull width over the sampled range minus 1 (smooth fields sampled at the
+  /// nodes of bent cells, orders <= 6, 4000 samples). Measured worst 0.44
+  /// (quadratic tetrahedron: its Bernstein net overshoots by up to half the
+  /// range); the hull is a categorization bound, not a tight range.
+  double HullLoosenessRel = 1.0;
+
+  /// Linear fields: hull ends vs the vertex range, relative to the range
+  /// (the rounding bounds and OutsideSlack 1e-8 widen it). Measured 1.0e-8
+  /// (OutsideSlack itself).
+  double HullLinearAbs = 2e-8;
+
   // --- issue 19: hovBlendModes (MIP / MinIP / average intensity) ---
   // The issue's acceptance asks for 1e-6 on analytic scenes; the kernels are
   // exact up to rounding, so these say how far below that they stay.

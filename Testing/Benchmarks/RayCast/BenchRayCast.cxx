@@ -6,7 +6,14 @@
 // image), with 1 and 2 std::threads (rows interleaved); prints ms per ray,
 // rays per second, segments per ray and the worst error estimate. Each
 // configuration is run --repeat times (interleaved) and the median printed.
+// --mapper: the settings vtkHighOrderVolumeMapper's RAY_CAST uses by default
+// (segment tolerance --tolerance, default 1e-3; GPU-compatible opacity with
+// GPUTolerance 1e-4; the README's 7-node table over the range) instead of the
+// kernel defaults; the generated curved meshes of hovBenchHighOrder join with
+// --only "hex Q3" / "tet P6". The one-thread frame also prints its CPU time
+// (getrusage of the thread: robust to other processes on a shared machine).
 // Not a test: no pass/fail.
+#include "BenchHighOrderMeshes.h" // generated curved meshes
 #include "hovCurvedRayCaster.h"
 #include "hovTransferFunction.h"
 
@@ -17,6 +24,8 @@
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLUnstructuredGridReader.h"
+
+#include <sys/resource.h> // getrusage: CPU time of the one-thread frame
 
 #include <algorithm>
 #include <atomic>
@@ -53,12 +62,8 @@ struct Mesh
   }
 };
 
-bool Load(const std::string& file, const char* array, Mesh& m)
+bool Convert(vtkUnstructuredGrid* grid, const char* array, Mesh& m)
 {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
   vtkDataArray* s = grid ? grid->GetPointData()->GetArray(array) : nullptr;
   if (!grid || !s || grid->GetNumberOfCells() == 0)
   {
@@ -89,9 +94,24 @@ bool Load(const std::string& file, const char* array, Mesh& m)
   return true;
 }
 
+bool Load(const std::string& file, const char* array, Mesh& m)
+{
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  return Convert(reader->GetOutput(), array, m);
+}
+
+double ThreadCPUSeconds()
+{
+  rusage u;
+  getrusage(RUSAGE_THREAD, &u);
+  return u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6 * u.ru_stime.tv_usec;
+}
+
 struct Frame
 {
-  double Seconds = 0.0, WorstError = 0.0;
+  double Seconds = 0.0, WorstError = 0.0, CPUSeconds = 0.0;
   long Rays = 0, Segments = 0, Hit = 0;
 };
 
@@ -122,18 +142,21 @@ Frame Render(const hov::CurvedRayCaster& caster, const hov::TransferFunction& tf
     }
   };
   const auto start = Clock::now();
+  const double cpuStart = ThreadCPUSeconds();
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t)
   {
     pool.emplace_back(work, t);
   }
   work(0);
+  const double cpu = ThreadCPUSeconds() - cpuStart;
   for (std::thread& t : pool)
   {
     t.join();
   }
   Frame total;
   total.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  total.CPUSeconds = cpu; // the calling thread's (all of it with one thread)
   for (const Frame& f : parts)
   {
     total.Rays += f.Rays;
@@ -155,10 +178,22 @@ int main(int argc, char* argv[])
 {
   int size = 256, step = 8, repeat = 3;
   std::string data = HOV_BENCH_DATA_DIR, method = "ours", only;
-  for (int i = 1; i + 1 < argc; i += 2)
+  bool mapper = false;
+  double tolerance = 1e-3;
+  for (int i = 1; i < argc; i += 2)
   {
     const std::string a = argv[i];
-    if (a == "--size")
+    if (a == "--mapper")
+    {
+      mapper = true;
+      --i;
+      continue;
+    }
+    if (i + 1 >= argc)
+      break;
+    if (a == "--tolerance")
+      tolerance = std::atof(argv[i + 1]);
+    else if (a == "--size")
       size = std::atoi(argv[i + 1]);
     else if (a == "--step")
       step = std::max(1, std::atoi(argv[i + 1]));
@@ -175,24 +210,40 @@ int main(int argc, char* argv[])
   settings.Method = method == "elvis" ? hov::CurvedQuadrature::ElVis
     : method == "riemann"             ? hov::CurvedQuadrature::Riemann
                                       : hov::CurvedQuadrature::LocatedBreakpoints;
+  if (mapper)
+  {
+    settings.Quadrature.Tolerance = tolerance;
+  }
   struct Set
   {
     const char* File;
     const char* Array;
     double Lo, Hi;
   };
-  const Set sets[2] = { { "platehole_lagrange_hex_q4.vtu", "von_mises", 1.8, 361.0 },
-    { "tjunction_lagrange_tet_p4.vtu", "speed", 0.05, 2.63 } };
+  const Set sets[4] = { { "platehole_lagrange_hex_q4.vtu", "von_mises", 1.8, 361.0 },
+    { "tjunction_lagrange_tet_p4.vtu", "speed", 0.05, 2.63 }, { "hex Q3", "f", 0.0, 0.0 },
+    { "tet P6", "f", 0.0, 0.0 } };
   std::cout << "hovBenchRayCast: " << size << "x" << size << " view along -z, every " << step
             << "-th pixel, method " << method << ", median of " << repeat << std::endl;
   for (const Set& s : sets)
   {
-    if (!only.empty() && std::string(s.File).find(only) == std::string::npos)
+    const bool generated = s.Lo == s.Hi;
+    if ((only.empty() && generated) ||
+      (!only.empty() && std::string(s.File).find(only) == std::string::npos))
     {
       continue;
     }
     Mesh mesh;
-    if (!Load(data + "/" + s.File, s.Array, mesh))
+    double range[2] = { s.Lo, s.Hi };
+    if (generated)
+    {
+      vtkSmartPointer<vtkUnstructuredGrid> grid = std::string(s.File) == "hex Q3"
+        ? hovBench::CurvedHexMesh(10, 3)
+        : hovBench::CurvedTetMesh(6, 6);
+      grid->GetPointData()->GetArray(s.Array)->GetRange(range);
+      Convert(grid, s.Array, mesh);
+    }
+    else if (!Load(data + "/" + s.File, s.Array, mesh))
     {
       std::cerr << "cannot read " << data << "/" << s.File << std::endl;
       return 1;
@@ -208,13 +259,34 @@ int main(int argc, char* argv[])
       return 1;
     }
     hov::TransferFunctionSpec spec;
-    spec.Semantics = hov::OpacitySemantics::VTKUnstructured;
-    const double span = s.Hi - s.Lo;
-    spec.Color = { { s.Lo, 0.1, 0.2, 0.9 }, { s.Lo + 0.5 * span, 0.2, 0.9, 0.2 },
-      { s.Hi, 0.9, 0.1, 0.1 } };
-    spec.Opacity = { { s.Lo, 0.0 }, { s.Lo + 0.3 * span, 0.2 }, { s.Lo + 0.6 * span, 0.6 },
-      { s.Hi, 1.0 } };
-    spec.UnitDistance = 0.05 * (caster.GetBounds()[1] - caster.GetBounds()[0]);
+    const double lo = range[0], span = range[1] - range[0];
+    if (mapper)
+    {
+      // hovBenchHighOrder's table (the README's) in the mapper's default semantics.
+      static const double nodes[7][5] = { { 0.00, 0.15, 0.25, 0.90, 0.02 },
+        { 0.03, 0.20, 0.50, 1.00, 0.04 }, { 0.09, 0.10, 0.90, 0.90, 0.10 },
+        { 0.20, 0.30, 1.00, 0.30, 0.25 }, { 0.35, 1.00, 1.00, 0.10, 0.50 },
+        { 0.60, 1.00, 0.50, 0.00, 0.80 }, { 1.00, 1.00, 0.05, 0.05, 1.00 } };
+      spec.Semantics = hov::OpacitySemantics::GPUCompatible;
+      spec.GPUTolerance = std::max(1e-4, 0.1 * tolerance);
+      for (const auto& n : nodes)
+      {
+        spec.Color.push_back({ lo + n[0] * span, n[1], n[2], n[3] });
+        spec.Opacity.push_back({ lo + n[0] * span, n[4] });
+      }
+      const double* b = caster.GetBounds();
+      spec.UnitDistance = 0.08 * std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
+                                   (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+    }
+    else
+    {
+      spec.Semantics = hov::OpacitySemantics::VTKUnstructured;
+      spec.Color = { { lo, 0.1, 0.2, 0.9 }, { lo + 0.5 * span, 0.2, 0.9, 0.2 },
+        { lo + span, 0.9, 0.1, 0.1 } };
+      spec.Opacity = { { lo, 0.0 }, { lo + 0.3 * span, 0.2 }, { lo + 0.6 * span, 0.6 },
+        { lo + span, 1.0 } };
+      spec.UnitDistance = 0.05 * (caster.GetBounds()[1] - caster.GetBounds()[0]);
+    }
     hov::TransferFunction tf;
     tf.Build(spec);
     std::cout << s.File << ": " << caster.GetNumberOfCells() << " cells, Build " << build << " s"
@@ -225,7 +297,7 @@ int main(int argc, char* argv[])
               << " s, " << first.Rays << " rays, " << first.Hit << " hit, "
               << static_cast<double>(first.Segments) / std::max(first.Hit, 1L)
               << " segments per hit ray, worst error estimate " << first.WorstError << std::endl;
-    std::vector<double> times[2];
+    std::vector<double> times[2], cpu;
     long rays = first.Rays;
     for (int r = 0; r < repeat; ++r)
     {
@@ -233,8 +305,13 @@ int main(int argc, char* argv[])
       {
         const Frame f = Render(caster, tf, settings, size, step, threads);
         times[threads - 1].push_back(f.Seconds);
+        if (threads == 1)
+        {
+          cpu.push_back(f.CPUSeconds);
+        }
       }
     }
+    std::cout << "  1 thread CPU time: " << 1e3 * Median(cpu) / rays << " ms/ray" << std::endl;
     for (int threads : { 1, 2 })
     {
       const double t = Median(times[threads - 1]);

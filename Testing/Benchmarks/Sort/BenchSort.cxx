@@ -5,7 +5,13 @@
 // (tuned tiles; by default only up to 200k cells, --published for all).
 // --repeat N (default 1): N first sorts (fresh sort objects) and N re-sorts
 // (each after a further 5 degrees), medians printed; --bracket-only skips the
-// RT meshes.
+// RT meshes. --heatsink adds the boundary-heavy finned heatsinks of issue 20
+// (BenchSortMeshes.h: 0.5M and 2M tetrahedra; --heatsink-only: only them).
+// Memory (Linux): per sort object, the resident memory it still holds after
+// its first sort ("held") and the peak above the start during it (VmHWM,
+// reset through /proc/self/clear_refs), in MB.
+#include "BenchSortMeshes.h" // the heatsinks
+
 #include "vtkCamera.h"
 #include "vtkCellCenterDepthSort.h"
 #include "vtkDataSetTriangleFilter.h"
@@ -18,6 +24,7 @@
 
 #include <algorithm> // std::nth_element for medians
 #include <chrono>
+#include <fstream> // /proc/self/status
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -29,6 +36,29 @@ namespace
 double Now()
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// A line "key: value kB" of /proc/self/status, in MB (0 if unavailable).
+double StatusMB(const char* key)
+{
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  const std::string k = std::string(key) + ":";
+  while (std::getline(in, line))
+  {
+    if (line.compare(0, k.size(), k) == 0)
+    {
+      return std::atof(line.c_str() + k.size()) / 1024.0;
+    }
+  }
+  return 0.0;
+}
+
+/// Resets the peak resident size (VmHWM) to the current one; returns the current (MB).
+double ResetPeak()
+{
+  std::ofstream("/proc/self/clear_refs") << "5";
+  return StatusMB("VmRSS");
 }
 
 /// InitTraversal + GetNextCells loop; returns seconds.
@@ -79,6 +109,7 @@ struct SteinRun
   double First = 0, Resort = 0, Setup = 0;
   vtkIdType Tests = 0, Moves = 0, Cycles = 0, Edges = 0, Boundary = 0;
   int Tiles[2] = { 0, 0 };
+  double HeldMB = 0, PeakMB = 0; ///< after / during the first sort, above the start
 };
 
 /// One first sort and @p resorts re-sorts of the view turned by 5 degrees (the
@@ -95,7 +126,10 @@ SteinRun RunSteinOnce(vtkDataSet* d, int algorithm, int tiles, int resorts, std:
   s->SetAlgorithm(algorithm);
   s->SetNumberOfTiles(tiles, tiles);
   SteinRun r;
+  const double before = ResetPeak();
   r.First = Traverse(s);
+  r.PeakMB = StatusMB("VmHWM") - before;
+  r.HeldMB = StatusMB("VmRSS") - before;
   r.Setup = s->GetLastSetupSeconds();
   cam->Azimuth(5);
   r.Resort = Traverse(s);
@@ -127,12 +161,17 @@ SteinRun RunStein(vtkDataSet* d, int algorithm, int tiles, int repeat)
 {
   std::vector<double> first, resort, setup;
   SteinRun r;
+  double held = 0, peak = 0;
   for (int k = 0; k < repeat; ++k)
   {
     r = RunSteinOnce(d, algorithm, tiles, repeat, resort);
     first.push_back(r.First);
     setup.push_back(r.Setup);
+    held = std::max(held, r.HeldMB);
+    peak = std::max(peak, r.PeakMB);
   }
+  r.HeldMB = held;
+  r.PeakMB = peak;
   r.First = Median(first);
   r.Setup = Median(setup);
   r.Resort = Median(resort);
@@ -148,7 +187,7 @@ int main(int argc, char* argv[])
   vtkIdType publishedMax = 200000; // the published merge takes minutes beyond this
   int tuned = -1;                  // -1: n^(1/3)/2 per direction
   int repeat = 1;
-  bool bracketOnly = false;
+  bool bracketOnly = false, heatsink = false, heatsinkOnly = false;
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--published"))
@@ -165,6 +204,10 @@ int main(int argc, char* argv[])
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--bracket-only"))
       bracketOnly = true;
+    else if (!std::strcmp(argv[i], "--heatsink"))
+      heatsink = true;
+    else if (!std::strcmp(argv[i], "--heatsink-only"))
+      heatsink = heatsinkOnly = true;
   }
   if (publishedMax > maxCells)
     publishedMax = maxCells;
@@ -175,13 +218,24 @@ int main(int argc, char* argv[])
   };
   std::vector<Mesh> meshes;
   vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((data + "/bracket_tet4_ccx.vtu").c_str());
-  reader->Update();
-  meshes.push_back({ "bracket", reader->GetOutput() });
+  if (!heatsinkOnly)
+  {
+    reader->SetFileName((data + "/bracket_tet4_ccx.vtu").c_str());
+    reader->Update();
+    meshes.push_back({ "bracket", reader->GetOutput() });
+  }
   for (int e : { 7, 17, 25, 29 })
   {
-    if (!bracketOnly && 5.0 * std::pow(2 * e, 3) <= maxCells)
+    if (!bracketOnly && !heatsinkOnly && 5.0 * std::pow(2 * e, 3) <= maxCells)
       meshes.push_back({ "RT [-" + std::to_string(e) + "," + std::to_string(e) + "]^3", RTMesh(e) });
+  }
+  if (heatsink)
+  {
+    // 16 fins 2 thick (gaps 2) on a 4-layer base, 28 high, 73 deep: 504k tets;
+    // 24 fins, 6-layer base, 42 high, 130 deep: 2.02M tets.
+    meshes.push_back({ "heatsink 0.5M", hovBench::Heatsink(16, 2, 2, 73, 4, 28) });
+    if (maxCells >= 2000000)
+      meshes.push_back({ "heatsink 2M", hovBench::Heatsink(24, 2, 2, 130, 6, 42) });
   }
   std::printf("Graph = ADJACENCY_GRAPH (default), merge = MULTITILED_MERGE (published, tuned "
               "tiles; only up to %lld cells, --published for all). 'first' includes the "
@@ -189,14 +243,16 @@ int main(int argc, char* argv[])
               "azimuth; ratios are re-sort times over CCD's re-sort.\n\n",
     static_cast<long long>(publishedMax));
   std::printf("| mesh | cells | CCD first s | CCD 5deg s | graph first s (setup) | graph 5deg s | "
-              "graph/CCD | boundary cells | tests | edges | cycles | merge first s | merge 5deg s "
+              "graph first/CCD | graph/CCD | graph MB held (peak) | CCD MB held (peak) | boundary cells | "
+              "tests | edges | cycles | merge first s | merge 5deg s "
               "| merge/CCD | merge tests |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-              "---|\n");
+              "---|---|---|---|\n");
   for (const Mesh& m : meshes)
   {
     vtkUnstructuredGrid* g = m.Grid;
     const vtkIdType n = g->GetNumberOfCells();
     std::vector<double> ccdFirsts, ccdResorts;
+    double ccdHeld = 0, ccdPeak = 0;
     for (int k = 0; k < repeat; ++k)
     {
       vtkNew<vtkCamera> ccdCam;
@@ -205,15 +261,20 @@ int main(int argc, char* argv[])
       ccd->SetInput(g);
       ccd->SetCamera(ccdCam);
       ccd->SetMaxCellsReturned(1000);
+      const double before = ResetPeak();
       ccdFirsts.push_back(Traverse(ccd));
+      ccdPeak = std::max(ccdPeak, StatusMB("VmHWM") - before);
+      ccdHeld = std::max(ccdHeld, StatusMB("VmRSS") - before);
       ccdCam->Azimuth(5);
       ccdResorts.push_back(Traverse(ccd));
     }
     const double ccdFirst = Median(ccdFirsts), ccdResort = Median(ccdResorts);
     const SteinRun gr = RunStein(g, vtkSteinVisibilitySort::ADJACENCY_GRAPH, 0, repeat);
-    std::printf("| %s | %lld | %.4f | %.4f | %.4f (%.4f) | %.4f | %.2f | %lld | %lld | %lld | %lld |",
+    std::printf("| %s | %lld | %.4f | %.4f | %.4f (%.4f) | %.4f | %.2f | %.2f | %.0f (%.0f) | "
+                "%.0f (%.0f) | %lld | %lld | %lld | %lld |",
       m.Name.c_str(), static_cast<long long>(n), ccdFirst, ccdResort, gr.First, gr.Setup, gr.Resort,
-      gr.Resort / ccdResort, static_cast<long long>(gr.Boundary), static_cast<long long>(gr.Tests),
+      gr.First / ccdFirst, gr.Resort / ccdResort, gr.HeldMB, gr.PeakMB, ccdHeld, ccdPeak,
+      static_cast<long long>(gr.Boundary), static_cast<long long>(gr.Tests),
       static_cast<long long>(gr.Edges), static_cast<long long>(gr.Cycles));
     if (n <= publishedMax)
     {
