@@ -20,7 +20,7 @@
 // Expected: every channel of every pixel within BlendTolerance; max and mean
 // error per channel printed per scene, mode and blend mode.
 #include "hovTestReference.h"
-#include "hovTestScenes.h"
+#include "hovTestBlendScenes.h"
 
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -145,20 +145,7 @@ Scene QuadraticHex()
   }
   lagrange.AddCell(VTK_LAGRANGE_HEXAHEDRON, ids);
   s.RayGrid = lagrange.Grid();
-  // The triquadratic hexahedron (VTK's node order: corners, edges, faces, centre).
-  const double pc[27][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
-    { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 }, { .5, 0, 0 }, { 1, .5, 0 }, { .5, 1, 0 }, { 0, .5, 0 },
-    { .5, 0, 1 }, { 1, .5, 1 }, { .5, 1, 1 }, { 0, .5, 1 }, { 0, 0, .5 }, { 1, 0, .5 },
-    { 1, 1, .5 }, { 0, 1, .5 }, { 0, .5, .5 }, { 1, .5, .5 }, { .5, 0, .5 }, { .5, 1, .5 },
-    { .5, .5, 0 }, { .5, .5, 1 }, { .5, .5, .5 } };
-  hovTest::MeshBuilder tri;
-  for (int n = 0; n < 27; ++n)
-  {
-    const double px = 2 * pc[n][0] - 1, py = 2 * pc[n][1] - 1, pz = 2 * pc[n][2] - 1;
-    ids[n] = tri.AddPoint(px, py, pz, s.F(px, py, pz));
-  }
-  tri.AddCell(VTK_TRIQUADRATIC_HEXAHEDRON, ids);
-  s.Grid = tri.Grid();
+  s.Grid = hovTest::TriquadraticHex(s.F);
   return s;
 }
 
@@ -301,11 +288,7 @@ int TestBlendModeScenes(int, char*[])
 {
   hovTest::Checker check;
   vtkNew<vtkCamera> cam;
-  cam->SetPosition(3.1, 2.3, 4.4);
-  cam->SetFocalPoint(0.05, -0.03, 0.02);
-  cam->SetViewUp(0, 1, 0);
-  cam->SetViewAngle(32);
-  cam->SetClippingRange(1.0, 20.0);
+  hovTest::BlendCamera(cam);
   const hovTestRef::CameraSpec spec = hovTestRef::ReadCamera(cam);
   std::vector<hovTestRef::Ray> rays(static_cast<size_t>(W) * H);
   for (int j = 0; j < H; ++j)
@@ -321,14 +304,7 @@ int TestBlendModeScenes(int, char*[])
     {
       vtkUnstructuredGrid* grid = mode == 2 && scene.RayGrid ? scene.RayGrid : scene.Grid;
       hovTest::VolumeScene vs(grid);
-      vs.Tf.Color->AddRGBPoint(-0.2, 0.9, 0.2, 0.1);
-      vs.Tf.Color->AddRGBPoint(0.55, 0.2, 0.9, 0.3);
-      vs.Tf.Color->AddRGBPoint(1.4, 0.1, 0.3, 0.95);
-      vs.Tf.Opacity->AddPoint(-0.2, 0.1);
-      vs.Tf.Opacity->AddPoint(0.4, 0.75);
-      vs.Tf.Opacity->AddPoint(0.9, 0.35);
-      vs.Tf.Opacity->AddPoint(1.4, 0.9);
-      vs.Tf.Property->SetScalarOpacityUnitDistance(0.5);
+      hovTest::BlendTF(vs.Tf);
       vtkHighOrderVolumeMapper* mapper = vs.Mapper;
       mapper->SetRenderMode(mode);
       mapper->SetAverageIPScalarRange(AverageRange[0], AverageRange[1]);
