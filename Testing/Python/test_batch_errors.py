@@ -140,12 +140,13 @@ def main():
 
     # RAY_CAST renders cell scalars (issue 19): both tools accept and render
     # the combination (the bracket's von_mises averaged onto its cells).
-    import vtk
-    reader = vtk.vtkXMLUnstructuredGridReader()
+    from vtkmodules.vtkFiltersCore import vtkPointDataToCellData
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+    reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(data)
-    to_cells = vtk.vtkPointDataToCellData()
+    to_cells = vtkPointDataToCellData()
     to_cells.SetInputConnection(reader.GetOutputPort())
-    writer = vtk.vtkXMLUnstructuredGridWriter()
+    writer = vtkXMLUnstructuredGridWriter()
     writer.SetFileName(os.path.join(folder, "cells.vtu"))
     writer.SetInputConnection(to_cells.GetOutputPort())
     writer.Write()
