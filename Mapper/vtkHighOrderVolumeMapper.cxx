@@ -1,5 +1,6 @@
 #include "vtkHighOrderVolumeMapper.h"
 
+#include "hovBlendCheck.h"                // blend-mode warnings
 #include "hovCellScene.h"                 // the cells the projection modes share
 #include "hovFloatImage.h"                // the published image
 #include "hovImageCheck.h"                // NaN/Inf pixels and empty images
@@ -96,6 +97,12 @@ static_assert(Mapper::EXACT_ORDER == 0 && Mapper::APPROXIMATE_ORDER == 1, "Order
 constexpr hov::OpacityLookup Lookups[] = { hov::OpacityLookup::Texture,
   hov::OpacityLookup::Analytic };
 static_assert(Mapper::OPACITY_TEXTURE == 0 && Mapper::OPACITY_ANALYTIC == 1, "Lookups");
+constexpr hov::BlendMode BlendModes[] = { hov::BlendMode::Composite,
+  hov::BlendMode::MaximumIntensity, hov::BlendMode::MinimumIntensity,
+  hov::BlendMode::AverageIntensity };
+static_assert(Mapper::COMPOSITE_BLEND == 0 && Mapper::MAXIMUM_INTENSITY_BLEND == 1 &&
+    Mapper::MINIMUM_INTENSITY_BLEND == 2 && Mapper::AVERAGE_INTENSITY_BLEND == 3,
+  "BlendModes");
 }
 
 struct vtkHighOrderVolumeMapper::Internals
@@ -112,6 +119,7 @@ struct vtkHighOrderVolumeMapper::Internals
   hov::ProjectionBackend Projection;
   hov::RayCastBackend RayCast;
   hov::ImageCheck Check;
+  hov::BlendCheck Blend;
   hov::ImageDisplay Display;
   vtkNew<vtkImageData> FloatImage;
   std::vector<double> RGBA; ///< the last CPU image (GetDoubleImage)
@@ -248,12 +256,14 @@ vtkHighOrderTransferFunction* vtkHighOrderVolumeMapper::GetTransferFunction()
 
 hov::Backend& vtkHighOrderVolumeMapper::SelectBackend(bool window)
 {
+  const bool blend = this->BlendMode > COMPOSITE_BLEND && this->BlendMode <= AVERAGE_INTENSITY_BLEND;
   switch (this->RenderMode)
   {
     case RAY_CAST:
       return this->Impl->RayCast;
     case OPENGL_PROJECTION:
-      if (window)
+      // Blend modes: the CPU kernels' image, shown by the image display.
+      if (window && !blend)
       {
         return this->Impl->Projection;
       }
@@ -292,6 +302,11 @@ void vtkHighOrderVolumeMapper::InitFrame(hov::RenderFrame& frame, vtkCamera* cam
   s.ViewDepthRange[0] = this->ViewDepthRange[0];
   s.ViewDepthRange[1] = this->ViewDepthRange[1];
   s.HasClippingPlanes = this->ClippingPlanes && this->ClippingPlanes->GetNumberOfItems() > 0;
+  // Unsupported blend modes render as composite (hov::BlendCheck warns).
+  const bool blendKnown = this->BlendMode >= 0 && this->BlendMode <= AVERAGE_INTENSITY_BLEND;
+  s.Blend = blendKnown ? BlendModes[this->BlendMode] : hov::BlendMode::Composite;
+  s.AverageRange[0] = this->AverageIPScalarRange[0];
+  s.AverageRange[1] = this->AverageIPScalarRange[1];
   s.RayCastTolerance = this->RayCastTolerance;
   s.RayCastInteractiveUpdateRate = this->RayCastInteractiveUpdateRate;
   s.RayCastInteractiveSubsampling = this->RayCastInteractiveSubsampling;
@@ -305,6 +320,7 @@ void vtkHighOrderVolumeMapper::InitFrame(hov::RenderFrame& frame, vtkCamera* cam
   s.IsosurfaceComponent = this->IsosurfaceArrayComponent;
   s.Splatting = this->Splatting;
   s.SplatPixelThreshold = this->SplatPixelThreshold;
+  this->Impl->Blend.Check(this->BlendMode, s, this->Impl->Messages);
   // Progress and abort between tile batches only with observers (the image is
   // the same either way).
   vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
@@ -458,6 +474,8 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->RayCastInteractiveUpdateRate << " frames/s)\n";
   os << indent << "RayCastInteractiveSubsampling: " << this->RayCastInteractiveSubsampling
      << " (0: from the time budget; last frame " << this->LastRayCastSubsampling << ")\n";
+  os << indent << "AverageIPScalarRange: " << this->AverageIPScalarRange[0] << " "
+     << this->AverageIPScalarRange[1] << "\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";
   os << indent << "CellOrdering: " << this->CellOrdering << "\n";
   os << indent << "GPUOpacityTolerance: " << this->GPUOpacityTolerance << "\n";

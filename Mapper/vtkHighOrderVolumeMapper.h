@@ -282,6 +282,27 @@ public:
   void SetRenderModeToRayCast() { this->SetRenderMode(RAY_CAST); }
   ///@}
 
+  enum BlendModeType
+  {
+    MINIMUM_INTENSITY_BLEND = 2, ///< vtkVolumeMapper's value
+    AVERAGE_INTENSITY_BLEND = 3  ///< vtkVolumeMapper's value
+  };
+  ///@{
+  /**
+   * Blend modes (README, "Blend modes"): COMPOSITE_BLEND (default),
+   * MAXIMUM_INTENSITY_BLEND, MINIMUM_INTENSITY_BLEND, AVERAGE_INTENSITY_BLEND
+   * as vtkGPUVolumeRayCastMapper defines them, exact per ray in every mode
+   * (OPENGL_PROJECTION computes their image with the CPU kernels). Other
+   * values warn once and render as composite; isosurfaces, separate fields
+   * and splatting are not applied with them. AverageIPScalarRange: as
+   * vtkVolumeMapper's (default [VTK_FLOAT_MIN, VTK_FLOAT_MAX]).
+   */
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAverageIntensity() { this->SetBlendMode(AVERAGE_INTENSITY_BLEND); }
+  vtkSetVector2Macro(AverageIPScalarRange, double);
+  vtkGetVectorMacro(AverageIPScalarRange, double, 2);
+  ///@}
+
   ///@{
   /// RAY_CAST: absolute error target per colour channel of each pixel (ElVis's
   /// "pixel-exact" 0.001 by default). Clamped to [1e-12, 0.1] with a warning;
@@ -407,6 +428,7 @@ protected:
   ~vtkHighOrderVolumeMapper() override;
 
   int RenderMode = CPU_ACCURATE;
+  double AverageIPScalarRange[2] = { VTK_FLOAT_MIN, VTK_FLOAT_MAX };
   double RayCastTolerance = 1e-3;
   double RayCastInteractiveUpdateRate = 1.0;
   bool LastRenderWasInteractive = false;

@@ -174,21 +174,19 @@ const std::vector<hov::GeneralCellTile::Hit>& hov::GeneralCellTile::Collect(
   return this->Hits;
 }
 
-hov::RGBA hov::GeneralCellTile::Integrate(const FrameData& frame, int g,
-  const hov::ViewRays::Ray& ray, double t0, double t1, vtkIdType& pieces)
+const std::vector<hov::RestrictedPiece>& hov::GeneralCellTile::Restrict(const FrameData& frame,
+  int g, const hov::ViewRays::Ray& ray, double t0, double t1)
 {
   const hov::GeneralCells& cells = *frame.Cells;
   const hov::GeneralCells::Cell& cell = cells.GetCells()[g];
-  hov::RGBA sum;
   if (cell.ScalarMin == cell.ScalarMax)
   {
     // A constant field (cell scalars): one exact constant piece.
-    hov::Polynomial s;
-    s.C[0] = cell.ScalarMin;
-    const hov::PolynomialSegmentResult r =
-      hov::IntegratePolynomialScalar(*frame.TF, s, t1 - t0, frame.Segment);
-    pieces += r.Pieces;
-    return r.Color;
+    this->Pieces.assign(1, hov::RestrictedPiece());
+    this->Pieces[0].T0 = t0;
+    this->Pieces[0].T1 = t1;
+    this->Pieces[0].S.C[0] = cell.ScalarMin;
+    return this->Pieces;
   }
   const double origin[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
   const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
@@ -206,6 +204,27 @@ hov::RGBA hov::GeneralCellTile::Integrate(const FrameData& frame, int g,
   for (hov::RestrictedPiece& piece : this->Pieces)
   {
     hov::TrimNegligibleTerms(piece.S, piece.T1 - piece.T0, tol);
+  }
+  return this->Pieces;
+}
+
+hov::RGBA hov::GeneralCellTile::Integrate(const FrameData& frame, int g,
+  const hov::ViewRays::Ray& ray, double t0, double t1, vtkIdType& pieces)
+{
+  const hov::GeneralCells::Cell& cell = frame.Cells->GetCells()[g];
+  hov::RGBA sum;
+  if (cell.ScalarMin == cell.ScalarMax)
+  {
+    // A constant field (cell scalars): one exact constant piece.
+    hov::Polynomial s;
+    s.C[0] = cell.ScalarMin;
+    const hov::PolynomialSegmentResult r =
+      hov::IntegratePolynomialScalar(*frame.TF, s, t1 - t0, frame.Segment);
+    pieces += r.Pieces;
+    return r.Color;
+  }
+  for (const hov::RestrictedPiece& piece : this->Restrict(frame, g, ray, t0, t1))
+  {
     const hov::PolynomialSegmentResult r =
       hov::IntegratePolynomialScalar(*frame.TF, piece.S, piece.T1 - piece.T0, frame.Segment);
     pieces += r.Pieces;

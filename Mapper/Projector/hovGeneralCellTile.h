@@ -129,6 +129,14 @@ public:
   hov::RGBA Integrate(const FrameData& frame, int g, const hov::ViewRays::Ray& ray,
     double t0, double t1, vtkIdType& pieces);
 
+  /**
+   * The scalar of general cell @p g along [@p t0, @p t1] of @p ray as
+   * polynomial pieces in t - T0 (the pieces Integrate() integrates; one
+   * exact constant piece for a constant cell); valid until the next call.
+   */
+  const std::vector<hov::RestrictedPiece>& Restrict(
+    const FrameData& frame, int g, const hov::ViewRays::Ray& ray, double t0, double t1);
+
   /// The rays' symbolic displacement (GetPerturbX, GetPerturbY) for FrameData.
   static hov::RayPerturbation PerturbationOf(const hov::ViewRays& rays);
 

@@ -1,5 +1,6 @@
 #include "hovProjectorBackend.h"
 
+#include "hovBlendCheck.h"  // BlendSettingsOf
 #include "hovCellScene.h"   // cells, order, table
 #include "hovRenderFrame.h" // the frame
 #include "hovViewRays.h"    // pixel rays
@@ -22,9 +23,13 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   bool render = ok && scene.GetCells().GetNumberOfRenderedCells() > 0;
   bool rebuilt = false;
   vtkHighOrderTransferFunction* tf = scene.GetTransferFunction();
+  const bool blend = frame.Settings.Blend != BlendMode::Composite;
+  // Average intensity is opaque grey wherever the ray meets the range, even
+  // with no opacity; the other blend modes draw no features.
   if (render &&
     !frame.UpdateTransferFunction(tf, frame.Settings.GPUOpacityTolerance, rebuilt) &&
-    frame.Settings.NumberOfIsosurfaces() == 0)
+    (blend || frame.Settings.NumberOfIsosurfaces() == 0) &&
+    frame.Settings.Blend != BlendMode::AverageIntensity)
   {
     if (rebuilt)
     {
@@ -36,6 +41,20 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   if (render && !frame.SetupRays(rays, frame.Width, frame.Height))
   {
     render = ok = false;
+  }
+  if (render && blend)
+  {
+    // No order needed: max, min and sums commute (hov::BlendProjector).
+    ProjectorSettings settings;
+    settings.TileSize = frame.Settings.TileSize;
+    settings.Progress = frame.Progress;
+    const ProjectorStatistics st = this->Blend.Render(scene.GetCells(), rays,
+      tf->GetBlendTable(), BlendSettingsOf(frame), settings, frame.Depth, frame.RGBA);
+    frame.Drawn = true;
+    frame.Stats.Aborted = st.Aborted;
+    frame.Stats.Segments = st.Segments;
+    frame.Stats.Pieces = st.Pieces;
+    return 1;
   }
   render = render && scene.PrepareOrder(frame, false);
   frame.Drawn = render;

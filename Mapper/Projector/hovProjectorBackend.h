@@ -10,7 +10,8 @@
  * hov::CellProjector (the plain path) or, with isosurfaces, separate fields
  * or splatting, hov::FeatureProjector (the feature path, prepared by
  * hov::FeatureSetup). A cyclic visibility order is composited per pixel. The
- * image is the frame's double RGBA.
+ * image is the frame's double RGBA. Blend modes other than composite:
+ * hov::BlendProjector (no order, no features).
  *
  * Also the image of RenderImage() in OPENGL_PROJECTION mode (no window).
  *
@@ -22,6 +23,7 @@
 
 #include "hovBackend.h" // the interface
 
+#include "hovBlendProjector.h" // the blend modes
 #include "hovCellProjector.h" // the plain path
 #include "hovFeatureSetup.h"  // the feature path
 
@@ -44,6 +46,7 @@ private:
 
   CellScene& Scene;
   CellProjector Projector;
+  BlendProjector Blend;
   FeatureSetup Features;
 };
 }

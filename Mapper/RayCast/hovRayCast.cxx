@@ -11,21 +11,22 @@
 #include <cmath>   // std::isfinite
 #include <cstdint> // 64-bit connectivity
 
-bool hov::RayCast::SetInput(
-  vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, std::string* message)
+bool hov::RayCast::SetInput(vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component,
+  bool cellScalars, std::string* message)
 {
   this->Ready = false;
   if (!grid || !scalars || !grid->GetPoints() ||
-    scalars->GetNumberOfTuples() != grid->GetNumberOfPoints())
+    scalars->GetNumberOfTuples() !=
+      (cellScalars ? grid->GetNumberOfCells() : grid->GetNumberOfPoints()))
   {
     if (message)
     {
-      *message = "no grid, no points, or no point scalars with one value per point";
+      *message = "no grid, no points, or no scalars with one value per point (cell)";
     }
     return false;
   }
   hov::RayCastCells& mesh = this->Mesh;
-  mesh.Convert(grid, scalars, component);
+  mesh.Convert(grid, scalars, component, cellScalars);
   hov::CurvedMeshInput input;
   input.Points = mesh.Points.data();
   input.NumberOfPoints = static_cast<std::int64_t>(mesh.Scalars.size());
@@ -54,7 +55,7 @@ bool hov::RayCast::SetInput(
 
 bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
   const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
-  Issues* issues, const hov::ProgressFunction& progress) const
+  Issues* issues, const hov::ProgressFunction& progress, const hov::BlendSettings* blend) const
 {
   std::atomic<long long> notConverged(0), notFinite(0), traced(0), segments(0), breakpoints(0);
   if (!this->Ready || !rgba)
@@ -79,7 +80,17 @@ bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction
           const double o[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
           const double d[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
           hov::CurvedRayStats stats;
-          c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e, &stats);
+          if (blend)
+          {
+            hov::RayBlendState state;
+            this->Caster.TraceRayBlend(o, d, 0.0, tMax, tf, *blend, settings, state, &stats);
+            c = hov::ResolveBlend(state, *blend, tf);
+            e = state.ErrorBound;
+          }
+          else
+          {
+            c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e, &stats);
+          }
           if (!stats.Converged)
           {
             ++notConverged;

@@ -54,13 +54,14 @@ class RayCast
 {
 public:
   /**
-   * Prepare @p grid with the point scalars @p scalars (component
-   * @p component, -1: magnitude; cells converted by hov::RayCastCells). Returns
+   * Prepare @p grid with the point scalars @p scalars, or with
+   * @p cellScalars one value per cell (component @p component, -1:
+   * magnitude; cells converted by hov::RayCastCells). Returns
    * false if no cell is usable; @p message receives a summary of skipped
    * cells or the reason for failure (empty if everything was usable).
    */
-  bool SetInput(
-    vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, std::string* message);
+  bool SetInput(vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component,
+    bool cellScalars, std::string* message);
 
   /// Conversion counts of the last SetInput() (hov::RayCastCells).
   const hov::RayCastCells& GetConversion() const { return this->Mesh; }
@@ -89,10 +90,13 @@ public:
   };
   /// @p progress (may be empty): called on the calling thread after each of
   /// about hov::ProgressBatches batches of rows with the fraction done;
-  /// returning true stops the render (hovTileBatches.h).
+  /// returning true stops the render (hovTileBatches.h). With @p blend, the
+  /// blend mode's pixel instead (CurvedRayCaster::TraceRayBlend, @p tf the
+  /// raw blend table) and the extremum's ErrorBound (scalar units) as error.
   bool Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
     const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
-    Issues* issues = nullptr, const hov::ProgressFunction& progress = {}) const;
+    Issues* issues = nullptr, const hov::ProgressFunction& progress = {},
+    const hov::BlendSettings* blend = nullptr) const;
 
 private:
   hov::CurvedRayCaster Caster;

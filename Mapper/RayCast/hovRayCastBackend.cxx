@@ -1,5 +1,6 @@
 #include "hovRayCastBackend.h"
 
+#include "hovBlendCheck.h" // BlendSettingsOf
 #include "hovFloatImage.h" // the error image
 #include "hovViewRays.h"   // pixel rays
 
@@ -47,7 +48,8 @@ void hov::RayCastBackend::PrepareCaster(const RenderFrame& frame, vtkUnstructure
   }
   std::string message;
   const bool ok =
-    this->Caster.SetInput(grid, frame.Scalars.Array, frame.Scalars.Component, &message);
+    this->Caster.SetInput(grid, frame.Scalars.Array, frame.Scalars.Component,
+      frame.Scalars.CellScalars, &message);
   if (!message.empty())
   {
     frame.Warning("RAY_CAST: skipped " + message + "; the rest is rendered.");
@@ -90,17 +92,19 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
     frame.Error("RAY_CAST needs a vtkUnstructuredGrid input and a vtkVolumeProperty.");
     return 0;
   }
-  if (!frame.Scalars.Array || frame.Scalars.Association != 0)
+  if (!frame.Scalars.Array || (frame.Scalars.Association != 0 && !frame.Scalars.CellScalars))
   {
-    frame.Error("RAY_CAST needs numeric point scalars (set point scalars on the input or "
-                "select a numeric point array with SelectScalarArray()).");
+    frame.Error("RAY_CAST needs numeric point or cell scalars (set scalars on the input or "
+                "select a numeric array with SelectScalarArray()).");
     this->Valid = false;
     return 0;
   }
   this->PrepareCaster(frame, grid);
   const FrameSettings& s = frame.Settings;
-  const bool features = s.NumberOfIsosurfaces() > 0 || s.Splatting || !s.ColorArray.empty() ||
-    !s.IsosurfaceArray.empty();
+  // (With a blend mode hov::BlendCheck has warned already.)
+  const bool features = s.Blend == BlendMode::Composite &&
+    (s.NumberOfIsosurfaces() > 0 || s.Splatting || !s.ColorArray.empty() ||
+      !s.IsosurfaceArray.empty());
   if (features && !this->FeatureWarned)
   {
     this->FeatureWarned = true;
@@ -122,7 +126,7 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   {
     return 1; // nothing to render (warned above)
   }
-  if (!visible)
+  if (!visible && s.Blend != BlendMode::AverageIntensity) // average: grey even without opacity
   {
     if (rebuilt)
     {
@@ -170,8 +174,12 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
   RayCast::Issues issues;
   const auto start = std::chrono::steady_clock::now();
-  this->Caster.Render(rays, this->TransferFunction->GetTable(), settings, this->RGBA.data(),
-    error.data(), rayDepth, &issues, frame.Progress);
+  const BlendSettings blend = BlendSettingsOf(frame);
+  const bool blending = blend.Mode != BlendMode::Composite;
+  this->Caster.Render(rays,
+    blending ? this->TransferFunction->GetBlendTable() : this->TransferFunction->GetTable(),
+    settings, this->RGBA.data(), error.data(), rayDepth, &issues, frame.Progress,
+    blending ? &blend : nullptr);
   if (!issues.Aborted && rw * rh > 0)
   {
     this->SecondsPerRay =

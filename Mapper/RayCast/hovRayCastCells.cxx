@@ -134,7 +134,7 @@ double PointValue(vtkDataArray* scalars, vtkIdType i, int component)
 }
 
 vtkIdType hov::RayCastCells::Convert(
-  vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component)
+  vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, bool cellScalars)
 {
   *this = hov::RayCastCells();
   this->Offsets.push_back(0);
@@ -145,7 +145,7 @@ vtkIdType hov::RayCastCells::Convert(
   for (vtkIdType i = 0; i < np; ++i)
   {
     grid->GetPoints()->GetPoint(i, &this->Points[3 * static_cast<size_t>(i)]);
-    this->Scalars[i] = PointValue(scalars, i, component);
+    this->Scalars[i] = cellScalars ? 0.0 : PointValue(scalars, i, component);
   }
   vtkDataArray* degreesArray = grid->GetCellData()->GetHigherOrderDegrees();
   vtkDataArray* weights = grid->GetPointData()->GetRationalWeights();
@@ -203,7 +203,9 @@ vtkIdType hov::RayCastCells::Convert(
       it = bases.emplace(key, ok ? basis : hov::LagrangeBasis()).first;
     }
     const hov::LagrangeBasis& basis = it->second;
-    bool ok = basis.IsInitialized();
+    // Cell scalars: the cell's value at each of its own (copied) nodes.
+    const double cellValue = cellScalars ? PointValue(scalars, c, component) : 0.0;
+    bool ok = basis.IsInitialized() && std::isfinite(cellValue);
     for (vtkIdType i = 0; i < n && ok; ++i)
     {
       ok = ids[i] >= 0 && ids[i] < np && std::isfinite(this->Scalars[ids[i]]);
@@ -224,7 +226,7 @@ vtkIdType hov::RayCastCells::Convert(
       for (int i = 0; i < nodes; ++i)
       {
         std::copy_n(&this->Points[3 * ids[i]], 3, &x[3 * i]);
-        s[i] = this->Scalars[ids[i]];
+        s[i] = cellScalars ? cellValue : this->Scalars[ids[i]];
       }
     }
     else
@@ -244,6 +246,7 @@ vtkIdType hov::RayCastCells::Convert(
           }
           s[k] += w[i] * this->Scalars[ids[i]];
         }
+        s[k] = cellScalars ? cellValue : s[k];
       }
     }
     if (CheckJacobian(basis, x.data(), type == VTK_PYRAMID || type == VTK_QUADRATIC_PYRAMID) <= 0)
@@ -251,7 +254,7 @@ vtkIdType hov::RayCastCells::Convert(
       ++this->Inverted;
       continue;
     }
-    if (native)
+    if (native && !cellScalars)
     {
       this->Connectivity.insert(this->Connectivity.end(), ids, ids + n);
       ++this->Native;
@@ -265,7 +268,7 @@ vtkIdType hov::RayCastCells::Convert(
       {
         this->Connectivity.push_back(first + k);
       }
-      ++this->Converted;
+      ++(native ? this->Native : this->Converted);
     }
     this->Offsets.push_back(static_cast<std::int64_t>(this->Connectivity.size()));
     this->Types.push_back(static_cast<unsigned char>(lagrangeType));

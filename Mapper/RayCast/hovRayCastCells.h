@@ -75,9 +75,13 @@ public:
 
   /**
    * Fill the arrays from @p grid and point scalars @p scalars (component
-   * @p component, or the magnitude if -1). Returns the number of kept cells.
+   * @p component, or the magnitude if -1). With @p cellScalars the array has
+   * one value per cell: every cell gets its own copy of its nodes, all with
+   * the cell's value (a piecewise-constant field; the same geometry).
+   * Returns the number of kept cells.
    */
-  vtkIdType Convert(vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component);
+  vtkIdType Convert(
+    vtkUnstructuredGrid* grid, vtkDataArray* scalars, int component, bool cellScalars = false);
 
   /// One line naming the skipped counts (empty if nothing was skipped).
   std::string Summary() const;

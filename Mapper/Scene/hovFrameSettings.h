@@ -12,6 +12,7 @@
 #ifndef hovFrameSettings_h
 #define hovFrameSettings_h
 
+#include "hovBlendModes.h"       // BlendMode
 #include "hovProjectionColor.h"  // ProjectionColorMethod
 #include "hovSegmentIntegral.h"  // EmissionModel, SegmentMethod
 #include "hovTransferFunction.h" // OpacitySemantics
@@ -77,6 +78,9 @@ struct FrameSettings
   bool ViewDepthClipping = false;
   double ViewDepthRange[2] = { 0.0, 1.0 };
   bool HasClippingPlanes = false;
+  /// Blend mode (hovBlendModes.h); unsupported public values arrive as Composite.
+  BlendMode Blend = BlendMode::Composite;
+  double AverageRange[2] = { -VTKFloatMax, VTKFloatMax };
 
   // RAY_CAST
   double RayCastTolerance = 1e-3;

@@ -1,5 +1,7 @@
 #include "vtkHighOrderTransferFunction.h"
 
+#include "hovBlendModes.h" // BlendModeTableSpec
+
 #include "hovOpacityRefinement.h" // the slab nodes of the linear-opacity table
 #include "hovTransferFunction.h" // the kernel table built here
 
@@ -248,6 +250,7 @@ std::vector<hov::OpacityNode> SlabNodes(
 vtkHighOrderTransferFunction::vtkHighOrderTransferFunction()
   : Table(new hov::TransferFunction)
   , LinearOpacityTable(new hov::TransferFunction)
+  , BlendTable(new hov::TransferFunction)
 {
 }
 
@@ -281,6 +284,7 @@ bool vtkHighOrderTransferFunction::Update(vtkVolumeProperty* property)
   ReadColor(property, comp, this->SamplingTolerance, spec.Color);
   ReadOpacity(property->GetScalarOpacity(comp), this->SamplingTolerance, spec.Opacity);
   this->Table->Build(spec, &this->Messages);
+  this->BlendTable->Build(hov::BlendModeTableSpec(spec), nullptr); // its problems: as above
   // As hov::TransferFunction::Build takes it (a bad value is reported there).
   this->UnitDistance =
     spec.UnitDistance > 0.0 && std::isfinite(spec.UnitDistance) ? spec.UnitDistance : 1.0;

@@ -103,6 +103,8 @@ public:
   {
     return this->OpacitySemantics == 0 ? *this->LinearOpacityTable : *this->Table;
   }
+  /// The raw opacity and colour the blend modes read (hov::BlendModeTableSpec).
+  const hov::TransferFunction& GetBlendTable() const { return *this->BlendTable; }
   /// The unit distance of the last build (vtkVolumeProperty's, per component).
   double GetUnitDistance() const { return this->UnitDistance; }
 #endif
@@ -136,6 +138,7 @@ private:
 
   std::unique_ptr<hov::TransferFunction> Table;
   std::unique_ptr<hov::TransferFunction> LinearOpacityTable;
+  std::unique_ptr<hov::TransferFunction> BlendTable;
   double UnitDistance = 1.0;
   std::vector<std::string> Messages;
   vtkVolumeProperty* LastProperty = nullptr;

@@ -68,13 +68,6 @@ void MergeBox(double into[6], const double box[6])
   }
 }
 
-/// One ray segment: an inside interval of one cell.
-struct Segment
-{
-  double T0, T1;
-  int Cell;
-  double PC0[3];
-};
 }
 
 bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
@@ -448,17 +441,13 @@ const CellDerivativeBounds& CurvedRayCaster::CellBounds(const Cell& cell) const
   return cell.Bounds;
 }
 
-RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3], double tMin,
-  double tMax, const TransferFunction& tf, const CurvedSegmentSettings& settings,
-  double* errorEstimate, CurvedRayStats* stats) const
+void CurvedRayCaster::CollectSegments(const double origin[3], const double direction[3],
+  double tMin, double tMax, std::vector<Segment>& segments, CurvedRayStats& st) const
 {
-  RGBA accum;
-  double error = 0.0;
-  CurvedRayStats st;
+  segments.clear();
   std::vector<int> candidates;
   this->CollectCandidates(origin, direction, tMin, tMax, candidates);
   st.CandidateCells = static_cast<int>(candidates.size());
-  std::vector<Segment> segments;
   std::vector<FaceCrossing> scratch;
   for (int c : candidates)
   {
@@ -514,6 +503,17 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
     }
     segments.resize(kept);
   }
+}
+
+RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3], double tMin,
+  double tMax, const TransferFunction& tf, const CurvedSegmentSettings& settings,
+  double* errorEstimate, CurvedRayStats* stats) const
+{
+  RGBA accum;
+  double error = 0.0;
+  CurvedRayStats st;
+  std::vector<Segment> segments;
+  this->CollectSegments(origin, direction, tMin, tMax, segments, st);
   // The tolerance is per pixel: each segment is integrated to it, and if the
   // transmittance-weighted sum of the segments' estimates exceeds it (many
   // segments along the ray), the ray is integrated again with every segment's

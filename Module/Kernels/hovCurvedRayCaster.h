@@ -68,6 +68,7 @@
 #ifndef hovCurvedRayCaster_h
 #define hovCurvedRayCaster_h
 
+#include "hovBlendModes.h" // TraceRayBlend
 #include "hovCompositing.h"
 #include "hovConfig.h"
 #include "hovCurvedFaces.h"
@@ -137,7 +138,33 @@ public:
     const TransferFunction& tf, const CurvedSegmentSettings& settings, double* errorEstimate = nullptr,
     CurvedRayStats* stats = nullptr) const;
 
+  /**
+   * The blend modes (hovBlendModes.h): every segment of the ray o + t d,
+   * t in [@p tMin, @p tMax], accumulated into @p state (no compositing, no
+   * early termination): the field's pieces (RepresentFieldOnSegment, with
+   * their error bound e_i) as polynomials of degree <= 8 (ApproximateBernstein,
+   * bisected while its bound exceeds FieldTolerance x the field scale; its
+   * bound added to e_i) in the world length along the ray; a cell with equal
+   * node scalars (cell scalars) is one exact constant segment. Implemented in
+   * hovCurvedRayBlend.cxx.
+   */
+  void TraceRayBlend(const double origin[3], const double direction[3], double tMin, double tMax,
+    const TransferFunction& table, const BlendSettings& blend,
+    const CurvedSegmentSettings& settings, RayBlendState& state,
+    CurvedRayStats* stats = nullptr) const;
+
 private:
+  /// One ray segment: an inside interval of one cell.
+  struct Segment
+  {
+    double T0, T1;
+    int Cell;
+    double PC0[3];
+  };
+  /// The ray's inside intervals, sorted, each part of the ray once (file doc).
+  void CollectSegments(const double origin[3], const double direction[3], double tMin,
+    double tMax, std::vector<Segment>& segments, CurvedRayStats& st) const;
+
   struct Cell
   {
     int Basis = 0;

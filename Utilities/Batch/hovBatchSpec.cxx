@@ -561,12 +561,6 @@ bool ParseBatchSpec(const std::string& text, const std::string& baseDir, BatchSp
   {
     c.Error("render_mode", "ray_cast does not support isosurfaces (use cpu_accurate)");
   }
-  if (spec.RenderMode == 2 && spec.CellArray)
-  {
-    // vtkHighOrderVolumeMapper's RAY_CAST refuses cell scalars at render time.
-    c.Error("render_mode", "ray_cast needs a point array (array.association cell: use cpu_accurate "
-                           "or opengl_projection)");
-  }
   return errors.empty();
 }
 

@@ -315,10 +315,6 @@ def parse_spec(root, base_dir="."):
                 "opengl_projection does not support isosurfaces or clipping (use cpu_accurate)")
     if spec["render_mode"] == 2 and spec["isosurfaces"]:
         c.error("render_mode", "ray_cast does not support isosurfaces (use cpu_accurate)")
-    if spec["render_mode"] == 2 and spec["array"]["association"] == 1:
-        # vtkHighOrderVolumeMapper's RAY_CAST refuses cell scalars at render time.
-        c.error("render_mode", "ray_cast needs a point array (array.association cell: use "
-                "cpu_accurate or opengl_projection)")
     if c.errors:
         raise SpecError(c.errors)
     return spec
