@@ -381,6 +381,9 @@ public:
   vtkGetMacro(NumberOfPieces, vtkIdType);
   vtkGetMacro(NumberOfRays, vtkIdType);
   vtkGetMacro(LastImageTime, double);
+  /// Worst error estimate of a shaded segment integrated by quadrature (README,
+  /// "Shading and gradient opacity"); 0 if every one had a closed form.
+  vtkGetMacro(ShadingErrorEstimate, double);
   ///@}
 
   ///@{
@@ -447,6 +450,7 @@ protected:
   vtkIdType NumberOfPieces = 0;
   vtkIdType NumberOfRays = 0;
   double LastImageTime = 0.0;
+  double ShadingErrorEstimate = 0.0;
   bool LastRenderAborted = false;
 
 private:

@@ -3,6 +3,8 @@
 
 #include "hovCurvedRayCell.h"     // inside intervals
 #include "hovTransferFunction.h"  // TraceRay's table
+#include "hovCurvedShadedSegment.h" // shaded segments
+#include "hovVolumeShading.h"       // VolumeShadingSettings::Shade
 
 #include <algorithm> // std::nth_element, std::sort, std::min, std::max
 #include <atomic>    // Build()'s work counter
@@ -506,8 +508,12 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
       const Cell& cell = this->Cells[s.Cell];
       const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
         cell.Scalars.data() };
-      const CurvedSegmentResult r = IntegrateCurvedSegment(
-        view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, pass);
+      const bool shaded = (pass.Shading && pass.Shading->Shade) || pass.GradientOpacity;
+      const CurvedSegmentResult r = shaded
+        ? IntegrateCurvedShadedSegment(
+            view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, pass)
+        : IntegrateCurvedSegment(
+            view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, pass);
       error += (1.0 - accum.A) * r.ErrorEstimate;
       fieldError += (1.0 - accum.A) * r.FieldErrorEstimate;
       CompositeBehind(accum, r.Color);
