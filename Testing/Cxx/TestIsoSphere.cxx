@@ -128,12 +128,7 @@ double RenderError(CubeSplit split, bool slab, bool perPixel, int& pixels, bool&
   const Image img = RenderDouble(scene.Mapper, cam, scene.Volume, N, N, &status);
   // The one expected message: the volume itself is not shaded where there are
   // isosurfaces (hov::PropertyAudit; the volume here is black anyway).
-  const std::string warning = scene.Observer->GetWarningMessage();
-  const bool onlyAudit = !scene.Observer->GetWarning() ||
-    (warning.find("Shade (volume shading) is not applied in CPU_ACCURATE mode with isosurfaces") !=
-        std::string::npos &&
-      warning.find("Warning", warning.find("Warning") + 1) == std::string::npos);
-  clean = status == 1 && !scene.Observer->GetError() && onlyAudit &&
+  clean = status == 1 && scene.NoMessagesBut(IsoShadeWarning) &&
     scene.Mapper->GetWitnessViolations() == 0;
   if (!clean)
   {

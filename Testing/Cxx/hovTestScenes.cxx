@@ -152,6 +152,16 @@ bool VolumeScene::NoMessages() const
   return !this->Observer->GetError() && !this->Observer->GetWarning();
 }
 
+bool VolumeScene::NoMessagesBut(const std::string& allowed) const
+{
+  const std::string w = this->Observer->GetWarningMessage();
+  const size_t first = w.find("Warning");
+  return !this->Observer->GetError() &&
+    (!this->Observer->GetWarning() ||
+      (w.find(allowed) != std::string::npos &&
+        w.find("Warning", first == std::string::npos ? 0 : first + 1) == std::string::npos));
+}
+
 //------------------------------------------------------------------------------
 void ObliqueCamera(vtkCamera* cam)
 {

@@ -86,6 +86,11 @@ void BracketTF(TF& tf, double unit);
 //------------------------------------------------------------------------------
 // The mapper under test.
 
+/// The one warning of a volume with Shade on and isosurfaces in CPU_ACCURATE
+/// (hov::PropertyAudit: the volume itself is not shaded there).
+constexpr const char* IsoShadeWarning =
+  "Shade (volume shading) is not applied in CPU_ACCURATE mode with isosurfaces";
+
 /// A vtkHighOrderVolumeMapper in a vtkVolume with the property of Tf, and an
 /// observer of the mapper's errors and warnings. The transfer function and the
 /// mapper's settings are up to the test.
@@ -99,6 +104,8 @@ struct VolumeScene
   explicit VolumeScene(vtkUnstructuredGrid* input = nullptr);
   /// No error and no warning observed (since the last Observer->Clear()).
   bool NoMessages() const;
+  /// No error, and no warning but at most one containing @p allowed.
+  bool NoMessagesBut(const std::string& allowed) const;
 };
 
 //------------------------------------------------------------------------------
