@@ -15,6 +15,11 @@ namespace
 {
 using Ray = hov::ViewRays::Ray;
 
+/// A bounded cost per segment (pathological fields: the robustness test's
+/// 1e9 scalars); beyond it the result is kept with its error estimate.
+constexpr int MaxPanels = 256;
+constexpr int MaxDepth = 20;
+
 /// @p g (dataset coordinates) as a world gradient.
 glm::dvec3 ToWorld(const hov::Features& f, const glm::dvec3& g)
 {
@@ -86,6 +91,8 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
   hov::ShadedSegmentSettings settings;
   settings.Emission = frame.Emission;
   settings.Tolerance = frame.Tolerance;
+  settings.MaxPanels = MaxPanels;
+  settings.MaxDepth = MaxDepth;
   const vtkIdType numTets = static_cast<vtkIdType>(frame.Setup->GetTetras().size());
   hov::ShadedSegmentResult r;
   if (cell < numTets)

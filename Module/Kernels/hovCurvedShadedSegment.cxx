@@ -13,6 +13,10 @@ namespace hov
 {
 namespace
 {
+/// Panels and bisection depth of one segment's quadrature (see the file doc).
+constexpr int MaxShadedPanels = 128;
+constexpr int MaxShadedDepth = 16;
+
 /// Field and world gradient along the ray, by Newton inversion from the last sample.
 struct RaySampler
 {
@@ -157,6 +161,11 @@ CurvedSegmentResult IntegrateCurvedShadedSegment(const LagrangeCellView& cell,
   ShadedSegmentSettings quadrature;
   quadrature.Emission = settings.Quadrature.Emission;
   quadrature.Tolerance = settings.Quadrature.Tolerance;
+  // A bounded cost per segment (every sample is a Newton inversion): beyond
+  // it the result is kept with its estimate and Converged false (the caller
+  // reports it), instead of minutes on a pathological field.
+  quadrature.MaxPanels = MaxShadedPanels;
+  quadrature.MaxDepth = MaxShadedDepth;
   const ShadedSegmentResult r = IntegrateShadedSegment(tf, &RaySampler::Sample, &sampler, length,
     breaks.data(), static_cast<int>(breaks.size()), vs, go, ray, quadrature);
   out.Color = r.Color;
