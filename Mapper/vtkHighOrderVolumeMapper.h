@@ -28,7 +28,10 @@
  * (a/u, VTK's unstructured mappers), RAW_EXTINCTION (a). Emission
  * (SetEmissionModel): WILLIAMS_MAX (colour x extinction, as VTK) or
  * WILHELMS_VAN_GELDER (glow per unit distance x EmissionScale). Lengths are
- * dataset lengths. The image is float premultiplied RGBA (GetFloatImage(),
+ * dataset lengths. The property's Shade/Ambient/Diffuse/Specular/SpecularPower
+ * and gradient opacity apply in CPU_ACCURATE and RAY_CAST (README, "Shading
+ * and gradient opacity": what each mode honours; others warn once).
+ * The image is float premultiplied RGBA (GetFloatImage(),
  * row 0 at the bottom), blended over what is drawn, with rays stopping at
  * opaque geometry drawn before the volume.
  *

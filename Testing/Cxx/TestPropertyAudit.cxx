@@ -24,24 +24,6 @@
 
 namespace
 {
-class WarningCounter : public vtkCommand
-{
-public:
-  static WarningCounter* New() { return new WarningCounter; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    (event == vtkCommand::WarningEvent ? this->Warnings : this->Errors)++;
-    this->Text += static_cast<const char*>(data);
-  }
-  int Warnings = 0, Errors = 0;
-  std::string Text;
-  void Clear()
-  {
-    this->Warnings = this->Errors = 0;
-    this->Text.clear();
-  }
-};
-
 struct Feature
 {
   const char* Name; ///< what the warning must contain
@@ -71,7 +53,7 @@ int TestPropertyAudit(int, char*[])
   hovTest::DefaultTF(scene.Tf);
   vtkHighOrderVolumeMapper* mapper = scene.Mapper;
   vtkVolumeProperty* p = scene.Tf.Property;
-  vtkNew<WarningCounter> counter;
+  vtkNew<hovTest::MessageCounter> counter;
   mapper->AddObserver(vtkCommand::WarningEvent, counter);
   mapper->AddObserver(vtkCommand::ErrorEvent, counter);
   vtkNew<vtkCamera> camera;

@@ -62,33 +62,6 @@ constexpr double Ka = 0.3, Kd = 0.5, Ks = 0.2, Power = 8.0;
 constexpr double GO0 = 0.2, GO1 = 1.0; // gradient opacity: (0, GO0) to (1, GO1)
 constexpr double EmissionScale = 0.7;
 
-/// Counts the warnings of the object it observes.
-class WarningCounter : public vtkCommand
-{
-public:
-  static WarningCounter* New() { return new WarningCounter; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    if (event == vtkCommand::WarningEvent)
-    {
-      ++this->Warnings;
-      this->Text += static_cast<const char*>(data);
-    }
-    else if (event == vtkCommand::ErrorEvent)
-    {
-      ++this->Errors;
-      this->Text += static_cast<const char*>(data);
-    }
-  }
-  int Warnings = 0, Errors = 0;
-  std::string Text;
-  void Clear()
-  {
-    this->Warnings = this->Errors = 0;
-    this->Text.clear();
-  }
-};
-
 Real Dot(const hovTestRef::Vec3& a, const hovTestRef::Vec3& b)
 {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -151,24 +124,14 @@ int TestVolumeShadingAnalytic(int, char*[])
   hovTest::VolumeScene scene(grid);
   vtkHighOrderVolumeMapper* mapper = scene.Mapper;
   vtkVolumeProperty* property = scene.Tf.Property;
-  scene.Tf.Color->RemoveAllPoints();
-  scene.Tf.Color->AddRGBPoint(SA, ColorA[0], ColorA[1], ColorA[2]);
-  scene.Tf.Color->AddRGBPoint(SB, ColorB[0], ColorB[1], ColorB[2]);
-  scene.Tf.Opacity->RemoveAllPoints();
-  scene.Tf.Opacity->AddPoint(SA, Tau);
-  scene.Tf.Opacity->AddPoint(SB, Tau);
-  property->SetScalarOpacityUnitDistance(1.0);
-  property->SetAmbient(Ka);
-  property->SetDiffuse(Kd);
-  property->SetSpecular(Ks);
-  property->SetSpecularPower(Power);
+  hovTest::LinearShadingTF(scene.Tf, SA, SB, ColorA, ColorB, Tau, Tau, Ka, Kd, Ks, Power);
   vtkNew<vtkPiecewiseFunction> gradientOpacity;
   gradientOpacity->AddPoint(0.0, GO0);
   gradientOpacity->AddPoint(1.0, GO1);
   mapper->SetOpacitySemanticsToRawExtinction();
   mapper->SetEmissionScale(EmissionScale);
   mapper->SetRayCastTolerance(1e-9);
-  vtkNew<WarningCounter> counter;
+  vtkNew<hovTest::MessageCounter> counter;
   mapper->AddObserver(vtkCommand::WarningEvent, counter);
   mapper->AddObserver(vtkCommand::ErrorEvent, counter);
 
