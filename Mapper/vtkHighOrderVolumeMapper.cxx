@@ -7,8 +7,10 @@
 #include "hovImageDisplay.h"              // the CPU image over the scene, depth read-back
 #include "hovProjectionBackend.h"         // OPENGL_PROJECTION
 #include "hovProjectorBackend.h"          // CPU_ACCURATE
+#include "hovPropertyAudit.h"             // unhonoured property features
 #include "hovRayCastBackend.h"            // RAY_CAST
 #include "hovRenderFrame.h"               // the frame
+#include "hovShadingSetup.h"              // shading, gradient opacity, lights
 #include "vtkHighOrderTransferFunction.h" // GetTransferFunction
 #include "vtkSteinVisibilitySort.h"       // the default (exact) visibility sort
 
@@ -120,6 +122,8 @@ struct vtkHighOrderVolumeMapper::Internals
   hov::RayCastBackend RayCast;
   hov::ImageCheck Check;
   hov::BlendCheck Blend;
+  hov::PropertyAudit Audit;
+  hov::ShadingFrameSettings LastShading; ///< the last frame's (PrintSelf)
   hov::ImageDisplay Display;
   vtkNew<vtkImageData> FloatImage;
   std::vector<double> RGBA; ///< the last CPU image (GetDoubleImage)
@@ -321,6 +325,7 @@ void vtkHighOrderVolumeMapper::InitFrame(hov::RenderFrame& frame, vtkCamera* cam
   s.Splatting = this->Splatting;
   s.SplatPixelThreshold = this->SplatPixelThreshold;
   this->Impl->Blend.Check(this->BlendMode, s, this->Impl->Messages);
+  hov::ReadVolumeShading(volume, renderer, camera, this->BlendMode == COMPOSITE_BLEND, s.Shading);
   // Progress and abort between tile batches only with observers (the image is
   // the same either way).
   vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
@@ -352,6 +357,12 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
   this->NumberOfRays = st.Rays;
   this->NumberOfSplattedCells = st.SplattedCells;
   this->LastRenderAborted = st.Aborted;
+  this->ShadingErrorEstimate = st.ShadingErrorEstimate;
+  this->Impl->LastShading = frame.Settings.Shading;
+  if (frame.Volume)
+  {
+    this->Impl->Audit.Check(frame, frame.Volume->GetProperty());
+  }
   if (st.ProjectedTriangles >= 0)
   {
     this->NumberOfProjectedTriangles = st.ProjectedTriangles;
@@ -498,7 +509,25 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->IsosurfaceArrayComponent << "\n";
   os << indent << "Splatting: " << this->Splatting << " (threshold " << this->SplatPixelThreshold
      << " pixels^2)\n";
+  os << indent << "ProjectionColorMethod: " << this->ProjectionColorMethod << "\n";
+  os << indent << "ProjectionOrder: " << this->ProjectionOrder << "\n";
+  os << indent << "ProjectionOpacityLookup: " << this->ProjectionOpacityLookup << "\n";
+  os << indent << "BlendMode: " << this->BlendMode << "\n";
+  // Diagnostics of the last render.
+  os << indent << "LastImageTime: " << this->LastImageTime << " s\n";
+  os << indent << "LastRenderAborted: " << this->LastRenderAborted << "\n";
+  os << indent << "LastRenderWasInteractive: " << this->LastRenderWasInteractive << "\n";
+  os << indent << "LastRayCastSubsampling: " << this->LastRayCastSubsampling << "\n";
   os << indent << "WitnessViolations: " << this->WitnessViolations << "\n";
   os << indent << "NumberOfRenderedCells: " << this->NumberOfRenderedCells << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
+  os << indent << "NumberOfSegments: " << this->NumberOfSegments << "\n";
+  os << indent << "NumberOfPieces: " << this->NumberOfPieces << "\n";
+  os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
+  os << indent << "NumberOfSplattedCells: " << this->NumberOfSplattedCells << "\n";
+  os << indent << "NumberOfProjectedTriangles: " << this->NumberOfProjectedTriangles << "\n";
+  os << indent << "NumberOfProjectedSlabs: " << this->NumberOfProjectedSlabs << "\n";
+  os << indent << "ShadingErrorEstimate: " << this->ShadingErrorEstimate << "\n";
+  hov::PrintFrameState(os, indent, this->Impl->LastShading, this->Impl->Audit.GetLast(),
+    this->Impl->Scene.GetTransferFunction());
 }

@@ -28,7 +28,10 @@
  * (a/u, VTK's unstructured mappers), RAW_EXTINCTION (a). Emission
  * (SetEmissionModel): WILLIAMS_MAX (colour x extinction, as VTK) or
  * WILHELMS_VAN_GELDER (glow per unit distance x EmissionScale). Lengths are
- * dataset lengths. The image is float premultiplied RGBA (GetFloatImage(),
+ * dataset lengths. The property's Shade/Ambient/Diffuse/Specular/SpecularPower
+ * and gradient opacity apply in CPU_ACCURATE and RAY_CAST (README, "Shading
+ * and gradient opacity": what each mode honours; others warn once).
+ * The image is float premultiplied RGBA (GetFloatImage(),
  * row 0 at the bottom), blended over what is drawn, with rays stopping at
  * opaque geometry drawn before the volume.
  *
@@ -402,6 +405,9 @@ public:
   vtkGetMacro(NumberOfPieces, vtkIdType);
   vtkGetMacro(NumberOfRays, vtkIdType);
   vtkGetMacro(LastImageTime, double);
+  /// Worst error estimate of a shaded segment integrated by quadrature (README,
+  /// "Shading and gradient opacity"); 0 if every one had a closed form.
+  vtkGetMacro(ShadingErrorEstimate, double);
   ///@}
 
   ///@{
@@ -469,6 +475,7 @@ protected:
   vtkIdType NumberOfPieces = 0;
   vtkIdType NumberOfRays = 0;
   double LastImageTime = 0.0;
+  double ShadingErrorEstimate = 0.0;
   bool LastRenderAborted = false;
 
 private:

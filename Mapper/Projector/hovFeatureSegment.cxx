@@ -293,6 +293,25 @@ hov::RGBA hov::FeatureSegment::Integrate(const FrameData& frame, vtkIdType cell,
   const int numSurfaces = static_cast<int>(features.IsoValues.size());
   hov::RGBA sum;
   bool front = includeFront;
+  if (features.VolumeActive() && numSurfaces == 0 && !twoFields)
+  {
+    hov::ShadedCellSegment::FrameData shaded;
+    shaded.Setup = frame.Setup;
+    shaded.Features = frame.Features;
+    shaded.TF = frame.TF;
+    shaded.Emission = frame.Segment.Emission;
+    shaded.Tolerance = frame.Segment.Tolerance;
+    for (const Piece& piece : this->Pieces)
+    {
+      hov::CompositeBehind(
+        sum, this->Shaded.Integrate(shaded, cell, ray, piece.T0, piece.T1, piece.S[0], pieces));
+      if (sum.A >= 1.0)
+      {
+        break;
+      }
+    }
+    return sum;
+  }
   for (const Piece& piece : this->Pieces)
   {
     const double length = piece.T1 - piece.T0;

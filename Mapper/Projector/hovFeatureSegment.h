@@ -25,7 +25,9 @@
  * Integration per piece: hov::IntegratePolynomialScalar (one field, no
  * surface), hov::IntegrateTwoFields (separate colour field),
  * hov::IntegrateWithSurfaces (one- or three-field overload) otherwise; pieces
- * composited front to back.
+ * composited front to back. With the volume's own shading or gradient
+ * opacity (hov::Features::VolumeActive) and neither surfaces nor a separate
+ * colour field, each piece goes to hov::ShadedCellSegment instead.
  *
  * Thread safety: one object per thread; the frame data is read-only.
  * @sa hov::FeatureTile, hovIsosurface.h, hovTwoFieldSegment.h
@@ -33,7 +35,8 @@
 #ifndef hovFeatureSegment_h
 #define hovFeatureSegment_h
 
-#include "hovFeatures.h" // settings
+#include "hovFeatures.h"          // settings
+#include "hovShadedCellSegment.h" // the volume's own shading
 #include "hovViewRays.h" // Ray
 
 #include "hovCellRestriction.h"   // RestrictedPiece
@@ -85,6 +88,10 @@ public:
   hov::RGBA Integrate(const FrameData& frame, vtkIdType cell, const hov::ViewRays::Ray& ray,
     double t0, double t1, bool includeFront, vtkIdType& pieces);
 
+  /// Worst error estimate of the shaded quadrature segments so far (hov::ShadedCellSegment).
+  double GetShadingErrorEstimate() const { return this->Shaded.GetWorstErrorEstimate(); }
+  void ResetShadingErrorEstimate() { this->Shaded.ResetWorstErrorEstimate(); }
+
   /// Linear fields of per-point @p values over every tetrahedron of @p setup.
   static void TetraFields(
     const hov::CellSetup& setup, const std::vector<double>& values, std::vector<LinearField>& out);
@@ -112,6 +119,7 @@ private:
   std::vector<double> Breaks;
   std::vector<double> NodeValues[3];
   std::vector<hov::IsovalueCrossing> Crossings;
+  hov::ShadedCellSegment Shaded;
 };
 }
 

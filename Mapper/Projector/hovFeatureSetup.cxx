@@ -1,9 +1,9 @@
 #include "hovFeatureSetup.h"
 
+#include "hovShadingSetup.h" // ReadLights
+
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
-#include "vtkLight.h"
-#include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPointData.h"
 #include "vtkRenderer.h"
@@ -11,7 +11,8 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
-#include <cmath> // std::isfinite, std::sqrt
+#include <algorithm> // std::copy, std::equal
+#include <cmath>     // std::isfinite, std::sqrt
 
 bool hov::FeatureSetup::PrepareField(const std::string& name, int component,
   const char* what, vtkUnstructuredGridBase* input, FieldCache& cache, std::string& error,
@@ -86,52 +87,9 @@ bool hov::FeatureSetup::PrepareField(const std::string& name, int component,
 void hov::FeatureSetup::PrepareLights(vtkRenderer* renderer, vtkCamera* camera, vtkVolume* volume)
 {
   hov::Features& f = this->Features;
-  f.Lights.clear();
-  if (!renderer)
-  {
-    // A white headlight along the direction of projection.
-    hov::ShadingLight light;
-    double dop[3];
-    camera->GetDirectionOfProjection(dop);
-    std::copy(dop, dop + 3, light.Direction);
-    camera->GetPosition(light.Position);
-    f.Lights.push_back(light);
-    f.Material.TwoSidedLighting = true;
-  }
-  else
-  {
-    vtkLightCollection* lights = renderer->GetLights();
-    vtkCollectionSimpleIterator it;
-    lights->InitTraversal(it);
-    while (vtkLight* l = lights->GetNextLight(it))
-    {
-      if (!l->GetSwitch())
-      {
-        continue;
-      }
-      hov::ShadingLight light;
-      double position[3], focal[3];
-      l->GetTransformedPosition(position);
-      l->GetTransformedFocalPoint(focal);
-      for (int k = 0; k < 3; ++k)
-      {
-        light.Direction[k] = focal[k] - position[k];
-        light.Position[k] = position[k];
-      }
-      if (light.Direction[0] == 0.0 && light.Direction[1] == 0.0 && light.Direction[2] == 0.0)
-      {
-        light.Direction[2] = -1.0; // as vtkLight's default
-      }
-      l->GetDiffuseColor(light.Color);
-      light.Intensity = l->GetIntensity();
-      light.Positional = l->GetPositional() != 0;
-      l->GetAttenuationValues(light.Attenuation);
-      light.ConeAngle = l->GetConeAngle();
-      light.Exponent = l->GetExponent();
-      f.Lights.push_back(light);
-    }
-    f.Material.TwoSidedLighting = renderer->GetTwoSidedLighting() != 0;
-  }
+  bool singleHeadlight = false;
+  double ambient[3];
+  hov::ReadLights(renderer, camera, f.Lights, f.Material.TwoSidedLighting, singleHeadlight, ambient);
   vtkVolumeProperty* property = volume->GetProperty();
   if (property->GetShade(0))
   {
@@ -193,9 +151,56 @@ bool hov::FeatureSetup::Prepare(const Options& options, vtkUnstructuredGridBase*
     }
     f.IsoField = &this->Iso.Values;
   }
+  this->PrepareVolumeShading(options.Shading, warnings);
   if (f.Active())
   {
     this->PrepareLights(renderer, camera, volume);
   }
   return true;
+}
+
+void hov::FeatureSetup::PrepareVolumeShading(
+  const hov::ShadingFrameSettings* shading, std::vector<std::string>& warnings)
+{
+  hov::Features& f = this->Features;
+  f.VolumeShading = hov::VolumeShadingSettings();
+  f.VolumeLights.clear();
+  f.UseGradientOpacity = false;
+  if (!shading || !shading->Active())
+  {
+    return;
+  }
+  if (shading->Shade)
+  {
+    f.VolumeLights = shading->Lights;
+    f.VolumeShading.Shade = true;
+    f.VolumeShading.Material = shading->Material;
+    f.VolumeShading.Ambient = shading->Ambient;
+    std::copy(shading->AmbientLight, shading->AmbientLight + 3, f.VolumeShading.AmbientLight);
+    f.VolumeShading.Lights = f.VolumeLights.data();
+    f.VolumeShading.LightCount = static_cast<int>(f.VolumeLights.size());
+  }
+  const std::vector<hov::OpacityNode>& nodes = shading->GradientOpacityNodes;
+  const auto same = [](const hov::OpacityNode& a, const hov::OpacityNode& b) {
+    return a.X == b.X && a.Opacity == b.Opacity;
+  };
+  if (shading->GradientOpacity && this->GradientOpacityNodes.size() == nodes.size() &&
+    std::equal(nodes.begin(), nodes.end(), this->GradientOpacityNodes.begin(), same))
+  {
+    f.UseGradientOpacity = !f.GradientOpacity.IsIdentity(); // built for these nodes
+  }
+  else if (shading->GradientOpacity)
+  {
+    // Rebuilt (and its messages reported) only when the nodes change.
+    this->GradientOpacityNodes = nodes;
+    hov::GradientOpacitySpec spec;
+    spec.Nodes = shading->GradientOpacityNodes;
+    std::vector<std::string> messages;
+    f.GradientOpacity.Build(spec, &messages);
+    for (const std::string& m : messages)
+    {
+      warnings.push_back("Gradient opacity: " + m);
+    }
+    f.UseGradientOpacity = !f.GradientOpacity.IsIdentity();
+  }
 }

@@ -31,6 +31,7 @@
 
 #include "hovFeatureProjector.h" // the renderer
 #include "hovFeatures.h"         // the frame settings
+#include "hovFrameSettings.h"    // ShadingFrameSettings
 
 #include "vtkType.h" // vtkMTimeType
 
@@ -57,6 +58,8 @@ public:
     int IsoComponent = -1;
     bool Splatting = false;
     double SplatPixelThreshold = 2.0;
+    /// The volume's shading and gradient opacity (null: none).
+    const hov::ShadingFrameSettings* Shading = nullptr;
   };
 
   /**
@@ -82,9 +85,12 @@ private:
     vtkUnstructuredGridBase* input, FieldCache& cache, std::string& error,
     std::vector<std::string>& warnings);
   void PrepareLights(vtkRenderer* renderer, vtkCamera* camera, vtkVolume* volume);
+  /// The volume's shading and gradient opacity into the features.
+  void PrepareVolumeShading(const hov::ShadingFrameSettings* shading, std::vector<std::string>& warnings);
 
   hov::Features Features;
   FieldCache Color, Iso;
+  std::vector<hov::OpacityNode> GradientOpacityNodes; ///< what Features.GradientOpacity was built from
   hov::FeatureProjector Projector;
 };
 }

@@ -181,6 +181,8 @@ void hov::FeatureTile::Segment(
   const bool includeFront = !(std::abs(tIn - this->LastExit[p]) <= frame.WitnessTol);
   const hov::RGBA c = this->Integrator.Integrate(
     frame.Segment, (*frame.Order)[k], this->Rays[p], tIn, tOut, includeFront, st.Pieces);
+  st.ShadingErrorEstimate =
+    std::max(st.ShadingErrorEstimate, this->Integrator.GetShadingErrorEstimate());
   this->Witness(p, tIn, tOut, frame.WitnessTol);
   this->LastExit[p] = tOut;
   this->Composite(frame, p, c);
@@ -203,6 +205,7 @@ void hov::FeatureTile::Render(
   const Frame& frame, int tileIndex, std::vector<double>& rgba, Stats& st)
 {
   this->Init(frame, tileIndex);
+  this->Integrator.ResetShadingErrorEstimate();
   const vtkIdType* cells = frame.Bins.Cells.data() + frame.Bins.Start[tileIndex];
   const vtkIdType count = frame.Bins.Start[tileIndex + 1] - frame.Bins.Start[tileIndex];
   if (!frame.Settings->PerPixelSort)

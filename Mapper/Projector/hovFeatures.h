@@ -17,8 +17,10 @@
 #ifndef hovFeatures_h
 #define hovFeatures_h
 
-#include "hovIsosurface.h" // Isosurface
-#include "hovShading.h"    // ShadingLight, ShadingMaterial
+#include "hovGradientOpacity.h" // GradientOpacityFunction
+#include "hovIsosurface.h"      // Isosurface
+#include "hovShading.h"         // ShadingLight, ShadingMaterial
+#include "hovVolumeShading.h"   // VolumeShadingSettings
 
 #include <glm/glm.hpp> // dmat3, dmat4
 
@@ -48,9 +50,19 @@ struct Features
   double SplatPixelThreshold = 2.0;
   static constexpr double SplatMaxSide = 3.0;
 
+  /// The volume's own shading (Shade on; its Lights point into VolumeLights,
+  /// world coordinates) and gradient opacity: hov::ShadedCellSegment.
+  hov::VolumeShadingSettings VolumeShading;
+  std::vector<hov::ShadingLight> VolumeLights;
+  hov::GradientOpacityFunction GradientOpacity;
+  bool UseGradientOpacity = false;
+
+  bool VolumeActive() const { return this->VolumeShading.Shade || this->UseGradientOpacity; }
+
   bool Active() const
   {
-    return !this->Surfaces.empty() || this->ColorField || this->IsoField || this->Splatting;
+    return !this->Surfaces.empty() || this->ColorField || this->IsoField || this->Splatting ||
+      this->VolumeActive();
   }
 };
 }

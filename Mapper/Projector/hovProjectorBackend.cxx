@@ -94,6 +94,7 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   frame.Stats.WitnessViolations = st.WitnessViolations;
   frame.Stats.Segments = st.Segments;
   frame.Stats.Pieces = st.Pieces;
+  frame.Stats.ShadingErrorEstimate = st.ShadingErrorEstimate;
   return ok ? 1 : 0;
 }
 
@@ -129,6 +130,7 @@ int hov::ProjectorBackend::PrepareFeatures(const RenderFrame& frame)
   options.IsoComponent = s.IsosurfaceComponent;
   options.Splatting = s.Splatting;
   options.SplatPixelThreshold = s.SplatPixelThreshold;
+  options.Shading = &s.Shading;
   std::string error;
   std::vector<std::string> warnings;
   const bool ok = this->Features.Prepare(

@@ -57,6 +57,7 @@ struct ProjectorStatistics
   vtkIdType WitnessViolations = 0; ///< pixels where the order was wrong
   vtkIdType Segments = 0;          ///< ray-cell segments integrated
   vtkIdType Pieces = 0;            ///< pieces integrated (>= Segments)
+  double ShadingErrorEstimate = 0.0; ///< worst estimate of a shaded quadrature segment
   bool Aborted = false;            ///< Progress returned true: unrendered tiles are zero
 };
 
@@ -165,6 +166,7 @@ ProjectorStatistics RunTiles(const TileBins& bins, int width, int height,
     stats.WitnessViolations += st.WitnessViolations;
     stats.Segments += st.Segments;
     stats.Pieces += st.Pieces;
+    stats.ShadingErrorEstimate = std::max(stats.ShadingErrorEstimate, st.ShadingErrorEstimate);
   }
   return stats;
 }

@@ -170,6 +170,7 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   settings.Quadrature.Tolerance =
     interactive ? std::min(10.0 * s.RayCastTolerance, 0.05) : s.RayCastTolerance;
   settings.TerminationTransmittance = s.TerminationTransmittance;
+  this->Shading.Prepare(frame, settings);
   this->RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
   std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
   RayCast::Issues issues;

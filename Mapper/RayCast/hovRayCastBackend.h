@@ -24,6 +24,7 @@
 #include "hovBackend.h" // the interface
 
 #include "hovRayCast.h"                   // the caster adapter
+#include "hovRayCastShading.h"            // shading, gradient opacity
 #include "hovRenderFrame.h"               // InputKey
 #include "vtkHighOrderTransferFunction.h" // its table
 
@@ -51,6 +52,7 @@ private:
   int Subsampling(const RenderFrame& frame, double desiredUpdateRate) const;
 
   RayCast Caster;
+  RayCastShading Shading;
   bool Valid = false;
   InputKey Key;
   bool FeatureWarned = false;

@@ -15,7 +15,9 @@
 #include "hovBlendModes.h"       // BlendMode
 #include "hovProjectionColor.h"  // ProjectionColorMethod
 #include "hovSegmentIntegral.h"  // EmissionModel, SegmentMethod
-#include "hovTransferFunction.h" // OpacitySemantics
+#include "hovShading.h"          // ShadingLight, ShadingMaterial
+#include "hovTransferFunction.h" // OpacitySemantics, OpacityNode
+#include "hovVolumeShading.h"    // AmbientTerm
 
 #include "vtkType.h" // vtkIdType
 
@@ -60,6 +62,20 @@ enum class OpacityLookup
   Analytic = 1
 };
 
+/// The volume's own shading and gradient opacity (vtkVolumeProperty, component
+/// 0, COMPOSITE blending only; read by hov::ReadVolumeShading).
+struct ShadingFrameSettings
+{
+  bool Shade = false;       ///< Shade(0) on and COMPOSITE blending
+  ShadingMaterial Material; ///< Ambient/Diffuse/Specular/SpecularPower, two-sided lighting
+  AmbientTerm Ambient = AmbientTerm::MaterialColor;
+  double AmbientLight[3] = { 0.0, 0.0, 0.0 }; ///< sum of I La (AmbientTerm::LightAmbient)
+  std::vector<ShadingLight> Lights;           ///< world coordinates
+  bool GradientOpacity = false;               ///< a gradient-opacity function applies
+  std::vector<OpacityNode> GradientOpacityNodes;
+  bool Active() const { return this->Shade || this->GradientOpacity; }
+};
+
 /// The mapper's settings (see vtkHighOrderVolumeMapper.h for their meaning).
 struct FrameSettings
 {
@@ -101,6 +117,8 @@ struct FrameSettings
   bool Splatting = false;
   double SplatPixelThreshold = 2.0;
 
+  ShadingFrameSettings Shading;
+
   int NumberOfIsosurfaces() const { return static_cast<int>(this->Isosurfaces.size() / 5); }
 };
 
@@ -120,6 +138,8 @@ struct FrameStatistics
   vtkIdType ProjectedSlabs = -1;
   int Interactive = -1;       ///< RAY_CAST: 1 for the interactive level of detail
   int RayCastSubsampling = 0; ///< RAY_CAST: pixels per ray in x and y
+  /// Worst error estimate of a shaded segment integrated by quadrature (0: none).
+  double ShadingErrorEstimate = 0.0;
 };
 
 /// Where a frame's messages go: the mapper's vtkWarningMacro / vtkErrorMacro.

@@ -3,6 +3,8 @@
 
 #include "hovCurvedRayCell.h"     // inside intervals
 #include "hovTransferFunction.h"  // TraceRay's table
+#include "hovCurvedShadedSegment.h" // shaded segments
+#include "hovVolumeShading.h"       // VolumeShadingSettings::Shade
 
 #include <algorithm> // std::nth_element, std::sort, std::min, std::max
 #include <atomic>    // Build()'s work counter
@@ -546,16 +548,25 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
       const Cell& cell = this->Cells[s.Cell];
       const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
         cell.Scalars.data(), cell.Faces.Extent };
-      CurvedCellInfo info;
-      info.FieldLo = cell.FieldLo;
-      info.FieldHi = cell.FieldHi;
-      info.FieldScale = cell.FieldScale;
-      info.Affine = cell.Affine;
-      std::copy(cell.X0, cell.X0 + 3, info.X0);
-      std::copy(cell.InverseJ, cell.InverseJ + 9, info.InverseJ);
-      info.Bounds = [this, &cell]() -> const CellDerivativeBounds& { return this->CellBounds(cell); };
-      const CurvedSegmentResult r =
-        IntegrateCurvedSegment(view, info, tf, origin, direction, s.T0, s.T1, s.PC0, pass);
+      const bool shaded = (pass.Shading && pass.Shading->Shade) || pass.GradientOpacity;
+      CurvedSegmentResult r;
+      if (shaded)
+      {
+        r = IntegrateCurvedShadedSegment(
+          view, this->CellBounds(cell), tf, origin, direction, s.T0, s.T1, s.PC0, pass);
+      }
+      else
+      {
+        CurvedCellInfo info;
+        info.FieldLo = cell.FieldLo;
+        info.FieldHi = cell.FieldHi;
+        info.FieldScale = cell.FieldScale;
+        info.Affine = cell.Affine;
+        std::copy(cell.X0, cell.X0 + 3, info.X0);
+        std::copy(cell.InverseJ, cell.InverseJ + 9, info.InverseJ);
+        info.Bounds = [this, &cell]() -> const CellDerivativeBounds& { return this->CellBounds(cell); };
+        r = IntegrateCurvedSegment(view, info, tf, origin, direction, s.T0, s.T1, s.PC0, pass);
+      }
       error += (1.0 - accum.A) * r.ErrorEstimate;
       fieldError += (1.0 - accum.A) * r.FieldErrorEstimate;
       CompositeBehind(accum, r.Color);

@@ -81,7 +81,9 @@
 
 namespace hov
 {
+class GradientOpacityFunction;
 class TransferFunction;
+struct VolumeShadingSettings;
 
 enum class SegmentCategory
 {
@@ -157,6 +159,10 @@ struct CurvedSegmentSettings
   /// A ray stops once its transmittance is at most this (CurvedRayCaster:
   /// no segment is integrated once the opacity is >= 1 - this).
   double TerminationTransmittance = 1e-12;
+  /// The volume's own shading and gradient opacity (either non-null: the
+  /// segment goes to IntegrateCurvedShadedSegment, hovCurvedShadedSegment.h).
+  const VolumeShadingSettings* Shading = nullptr;
+  const GradientOpacityFunction* GradientOpacity = nullptr;
 };
 
 struct CurvedSegmentResult

@@ -6,7 +6,8 @@
 // so the isosurface s = R^2 is exactly the sphere of radius R). The volume
 // does not absorb; the surface is opaque (opacity 1), white, Phong-shaded
 // with the property's Shade on, Ambient 0, Diffuse 1, Specular 0 and the
-// headlight of RenderImage (directional, along the view). Orthographic view
+// headlight of RenderImage (directional, along the view; the one warning
+// allowed says that the volume itself is not shaded). Orthographic view
 // along -z: at a pixel (x, y) inside the sphere's disc the closed form is
 //   R = G = B = |n . l| = sqrt(R^2 - x^2 - y^2) / R,  A = 1
 // (the sphere's analytic normal). Measured: the largest error over every
@@ -125,7 +126,10 @@ double RenderError(CubeSplit split, bool slab, bool perPixel, int& pixels, bool&
   AlongZ(cam);
   int status = 0;
   const Image img = RenderDouble(scene.Mapper, cam, scene.Volume, N, N, &status);
-  clean = status == 1 && scene.NoMessages() && scene.Mapper->GetWitnessViolations() == 0;
+  // The one expected message: the volume itself is not shaded where there are
+  // isosurfaces (hov::PropertyAudit; the volume here is black anyway).
+  clean = status == 1 && scene.NoMessagesBut(IsoShadeWarning) &&
+    scene.Mapper->GetWitnessViolations() == 0;
   if (!clean)
   {
     std::cout << "  status " << status << ", witness " << scene.Mapper->GetWitnessViolations()

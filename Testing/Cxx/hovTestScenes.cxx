@@ -147,9 +147,48 @@ VolumeScene::VolumeScene(vtkUnstructuredGrid* input)
   }
 }
 
+void LinearShadingTF(TF& tf, double sA, double sB, const double colorA[3],
+  const double colorB[3], double opacityA, double opacityB, double ka, double kd, double ks,
+  double power)
+{
+  tf.Color->RemoveAllPoints();
+  tf.Color->AddRGBPoint(sA, colorA[0], colorA[1], colorA[2]);
+  tf.Color->AddRGBPoint(sB, colorB[0], colorB[1], colorB[2]);
+  tf.Opacity->RemoveAllPoints();
+  tf.Opacity->AddPoint(sA, opacityA);
+  tf.Opacity->AddPoint(sB, opacityB);
+  tf.Property->SetScalarOpacityUnitDistance(1.0);
+  tf.Property->SetAmbient(ka);
+  tf.Property->SetDiffuse(kd);
+  tf.Property->SetSpecular(ks);
+  tf.Property->SetSpecularPower(power);
+}
+
+void MessageCounter::Execute(vtkObject*, unsigned long event, void* data)
+{
+  (event == vtkCommand::WarningEvent ? this->Warnings : this->Errors)++;
+  this->Text += static_cast<const char*>(data);
+}
+
+void MessageCounter::Clear()
+{
+  this->Warnings = this->Errors = 0;
+  this->Text.clear();
+}
+
 bool VolumeScene::NoMessages() const
 {
   return !this->Observer->GetError() && !this->Observer->GetWarning();
+}
+
+bool VolumeScene::NoMessagesBut(const std::string& allowed) const
+{
+  const std::string w = this->Observer->GetWarningMessage();
+  const size_t first = w.find("Warning");
+  return !this->Observer->GetError() &&
+    (!this->Observer->GetWarning() ||
+      (w.find(allowed) != std::string::npos &&
+        w.find("Warning", first == std::string::npos ? 0 : first + 1) == std::string::npos));
 }
 
 //------------------------------------------------------------------------------

@@ -79,12 +79,35 @@ void DefaultTF(TF& tf, double unit = 0.5);
 /// unit distance @p unit.
 void ConstantTF(TF& tf, const double rgb[3], double opacity, double unit);
 
+/// Colour linear from @p colorA at @p sA to @p colorB at @p sB, opacity linear
+/// from @p opacityA to @p opacityB over the same nodes, unit distance 1, and
+/// the lighting coefficients @p ka, @p kd, @p ks, @p power (Shade untouched).
+void LinearShadingTF(TF& tf, double sA, double sB, const double colorA[3],
+  const double colorB[3], double opacityA, double opacityB, double ka, double kd, double ks,
+  double power);
+
 /// The five nodes over the bracket's von_mises range [0, 170] (every opacity
 /// node is also a colour node), unit distance @p unit.
 void BracketTF(TF& tf, double unit);
 
 //------------------------------------------------------------------------------
 // The mapper under test.
+
+/// The one warning of a volume with Shade on and isosurfaces in CPU_ACCURATE
+/// (hov::PropertyAudit: the volume itself is not shaded there).
+constexpr const char* IsoShadeWarning =
+  "Shade (volume shading) is not applied in CPU_ACCURATE mode with isosurfaces";
+
+/// Counts (and keeps the text of) the warnings and errors of what it observes.
+class MessageCounter : public vtkCommand
+{
+public:
+  static MessageCounter* New() { return new MessageCounter; }
+  void Execute(vtkObject*, unsigned long event, void* data) override;
+  void Clear();
+  int Warnings = 0, Errors = 0;
+  std::string Text;
+};
 
 /// A vtkHighOrderVolumeMapper in a vtkVolume with the property of Tf, and an
 /// observer of the mapper's errors and warnings. The transfer function and the
@@ -99,6 +122,8 @@ struct VolumeScene
   explicit VolumeScene(vtkUnstructuredGrid* input = nullptr);
   /// No error and no warning observed (since the last Observer->Clear()).
   bool NoMessages() const;
+  /// No error, and no warning but at most one containing @p allowed.
+  bool NoMessagesBut(const std::string& allowed) const;
 };
 
 //------------------------------------------------------------------------------

@@ -1,0 +1,157 @@
+#include "hovShadedCellSegment.h"
+
+#include "hovCellSetup.h"    // the tetrahedra
+#include "hovFeatures.h"     // the shading settings, frames
+#include "hovGeneralCells.h" // the general cells
+
+#include "hovFieldGradient.h"   // AffineGradientAlongRay, CellFieldAndGradient
+#include "hovShadedSegment.h"   // IntegrateShadedPolynomial, IntegrateShadedSegment
+#include "hovVolumeShading.h"   // IntegrateLinearScalarShaded
+
+#include <algorithm> // std::max
+#include <cmath>     // std::isfinite
+
+namespace
+{
+using Ray = hov::ViewRays::Ray;
+
+/// A bounded cost per segment (pathological fields: the robustness test's
+/// 1e9 scalars); beyond it the result is kept with its error estimate.
+constexpr int MaxPanels = 256;
+constexpr int MaxDepth = 20;
+
+/// @p g (dataset coordinates) as a world gradient.
+glm::dvec3 ToWorld(const hov::Features& f, const glm::dvec3& g)
+{
+  return f.NormalToWorld * g;
+}
+
+/// The polynomial gradient @p g (dataset coordinates) as world polynomials.
+void ToWorld(const hov::Features& f, const hov::Polynomial g[3], hov::Polynomial out[3])
+{
+  const glm::dmat3& n = f.NormalToWorld; // n[column][row]
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = hov::Polynomial();
+    out[i].Degree = std::max(g[0].Degree, std::max(g[1].Degree, g[2].Degree));
+    for (int k = 0; k <= out[i].Degree; ++k)
+    {
+      out[i].C[k] = n[0][i] * g[0].C[k] + n[1][i] * g[1].C[k] + n[2][i] * g[2].C[k];
+    }
+  }
+}
+
+/// The segment's position in the lighting (world) frame, from ray parameter @p t0.
+hov::SegmentRay WorldRay(const hov::Features& f, const Ray& ray, double t0)
+{
+  hov::SegmentRay out;
+  const glm::dvec4 x = f.DataToWorld * glm::dvec4(ray.Origin + t0 * ray.Direction, 1.0);
+  const glm::dvec3 d = glm::normalize(glm::dmat3(f.DataToWorld) * ray.Direction);
+  for (int k = 0; k < 3; ++k)
+  {
+    out.Origin[k] = x[k];
+    out.Direction[k] = d[k];
+  }
+  return out;
+}
+
+/// Pointwise field and world gradient of a general cell along a ray piece.
+struct CellSampler
+{
+  const hov::Features* F;
+  hov::CellShape Shape;
+  const double* Nodes;
+  const double* Scalars;
+  glm::dvec3 Origin, Direction; ///< dataset coordinates, at the piece's start
+  double PC[3];
+
+  static void Sample(void* user, double t, double& value, double gradient[3])
+  {
+    auto* self = static_cast<CellSampler*>(user);
+    const glm::dvec3 x = self->Origin + t * self->Direction;
+    const double xd[3] = { x.x, x.y, x.z };
+    double g[3] = { 0.0, 0.0, 0.0 };
+    hov::CellFieldAndGradient(self->Shape, self->Nodes, self->Scalars, xd, self->PC, value, g);
+    const glm::dvec3 gw = ToWorld(*self->F, glm::dvec3(g[0], g[1], g[2]));
+    gradient[0] = gw.x;
+    gradient[1] = gw.y;
+    gradient[2] = gw.z;
+  }
+};
+}
+
+hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType cell,
+  const Ray& ray, double t0, double t1, const hov::Polynomial& s, vtkIdType& pieces)
+{
+  const hov::Features& f = *frame.Features;
+  const hov::TransferFunction& tf = *frame.TF;
+  const double length = t1 - t0;
+  const hov::GradientOpacityFunction* go = f.UseGradientOpacity ? &f.GradientOpacity : nullptr;
+  const hov::SegmentRay wray = WorldRay(f, ray, t0);
+  hov::ShadedSegmentSettings settings;
+  settings.Emission = frame.Emission;
+  settings.Tolerance = frame.Tolerance;
+  settings.MaxPanels = MaxPanels;
+  settings.MaxDepth = MaxDepth;
+  const vtkIdType numTets = static_cast<vtkIdType>(frame.Setup->GetTetras().size());
+  hov::ShadedSegmentResult r;
+  if (cell < numTets)
+  {
+    const glm::dvec3 gw = ToWorld(f, frame.Setup->GetTetras()[cell].Gradient);
+    const double g[3] = { gw.x, gw.y, gw.z };
+    if (hov::LightsAreDirectional(f.VolumeShading))
+    {
+      // Constant gradient, constant light and view: the closed form.
+      const double toViewer[3] = { -wray.Direction[0], -wray.Direction[1], -wray.Direction[2] };
+      const hov::ShadingTransform shade =
+        hov::ComputeShadingTransform(f.VolumeShading, g, wray.Origin, toViewer);
+      const double gamma = go ? go->EvaluateGradient(g) : 1.0;
+      hov::IntegrationSettings integration;
+      integration.Emission = frame.Emission;
+      int n = 0;
+      const double sBack = s.C[0] + (s.Degree > 0 ? s.C[1] * length : 0.0);
+      const hov::RGBA c = hov::IntegrateLinearScalarShaded(
+        tf, s.C[0], sBack, length, shade, gamma, integration, &n);
+      pieces += n;
+      return c;
+    }
+    hov::Polynomial gp[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      gp[k].C[0] = g[k];
+    }
+    r = hov::IntegrateShadedPolynomial(tf, s, gp, length, f.VolumeShading, go, wray, settings);
+  }
+  else
+  {
+    const hov::GeneralCells& cells = frame.Setup->GetGeneralCells();
+    const hov::GeneralCells::Cell& c = cells.GetCells()[cell - numTets];
+    const double* nodes = cells.GetNodes(c);
+    const double* scalars = cells.GetScalars(c);
+    const double o[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
+    const double d[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
+    hov::Polynomial g[3], gw[3];
+    if (c.Affine && hov::AffineGradientAlongRay(c.Shape, nodes, scalars, o, d, t0, g))
+    {
+      ToWorld(f, g, gw);
+      r = hov::IntegrateShadedPolynomial(tf, s, gw, length, f.VolumeShading, go, wray, settings);
+    }
+    else
+    {
+      // Breakpoints: the table-node crossings of the restricted scalar.
+      hov::ShadedBreakpoints(tf, s, g, nullptr, length, this->Breaks);
+      CellSampler sampler{ &f, c.Shape, nodes, scalars, ray.Origin + t0 * ray.Direction,
+        ray.Direction, { 0.0, 0.0, 0.0 } };
+      hov::CellParametricCenter(c.Shape, sampler.PC);
+      r = hov::IntegrateShadedSegment(tf, &CellSampler::Sample, &sampler, length,
+        this->Breaks.data(), static_cast<int>(this->Breaks.size()), f.VolumeShading, go, wray,
+        settings);
+    }
+  }
+  pieces += std::max(r.Panels, 1);
+  if (std::isfinite(r.ErrorEstimate))
+  {
+    this->WorstError = std::max(this->WorstError, r.ErrorEstimate);
+  }
+  return r.Color;
+}

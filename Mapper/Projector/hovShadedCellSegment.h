@@ -1,0 +1,89 @@
+/**
+ * @class   hov::ShadedCellSegment
+ * @brief   One restricted piece of a ray segment through one cell, with the
+ *          volume's own shading and gradient opacity (vtkVolumeProperty Shade,
+ *          Ambient/Diffuse/Specular/SpecularPower, the gradient-opacity
+ *          function; hov::Features::VolumeShading / GradientOpacity).
+ *
+ * The CPU_ACCURATE side of hovVolumeShading.h, hovGradientOpacity.h and
+ * hovShadedSegment.h (their file docs define the model: VTK's GPU ray
+ * caster's per-sample colour clamp(ka A + kd D c + ks S) and extinction
+ * GO(|grad s|) tau(s), in the continuum limit):
+ *  - linear tetrahedra: the gradient is constant over the cell, so under
+ *    directional lights the shading transform and the gradient-opacity factor
+ *    are one per segment and the integral is the closed form
+ *    hov::IntegrateLinearScalarShaded (exact; no error estimate);
+ *  - affine general cells (voxels, parallelepipeds, prismatic wedges,
+ *    straight-sided quadratic tetrahedra, ...): s(t) and grad s(t) are
+ *    polynomials along the ray (hov::AffineGradientAlongRay):
+ *    hov::IntegrateShadedPolynomial (closed form when s is linear and the
+ *    lights directional, adaptive quadrature with an error estimate otherwise);
+ *  - other cells (distorted hexahedra, pyramids): the field and gradient
+ *    sampled pointwise (hov::CellFieldAndGradient) for
+ *    hov::IntegrateShadedSegment, cut at the transfer-function node
+ *    crossings of the restricted scalar.
+ * Positional lights make the transform vary along every ray: the quadrature
+ * path, also on tetrahedra.
+ *
+ * Frames: rays, points and gradients in dataset coordinates; shading in world
+ * coordinates (points by DataToWorld, gradients by NormalToWorld, the view
+ * vector the normalised world ray direction). The quadrature's positions
+ * along the ray use the dataset parameter (exact for rigid volume matrices;
+ * with a scaled matrix positional lights see slightly moved points).
+ *
+ * The worst error estimate of the quadrature segments is kept
+ * (GetWorstErrorEstimate) and reported as a frame diagnostic.
+ *
+ * Thread safety: one object per thread; the frame data is read only.
+ * @sa hov::FeatureSegment, hovVolumeShading.h, hovShadedSegment.h
+ */
+#ifndef hovShadedCellSegment_h
+#define hovShadedCellSegment_h
+
+#include "hovViewRays.h" // Ray
+
+#include "hovCompositing.h"     // RGBA
+#include "hovPolynomial.h"      // Polynomial
+#include "hovSegmentIntegral.h" // EmissionModel
+
+#include "vtkType.h" // vtkIdType
+
+#include <vector> // breakpoints
+
+namespace hov
+{
+class CellSetup;
+class TransferFunction;
+struct Features;
+
+class ShadedCellSegment
+{
+public:
+  /// What every piece of a frame reads.
+  struct FrameData
+  {
+    const hov::CellSetup* Setup = nullptr;
+    const hov::Features* Features = nullptr;
+    const hov::TransferFunction* TF = nullptr;
+    hov::EmissionModel Emission = hov::EmissionModel::WilliamsMax;
+    double Tolerance = 1e-9; ///< absolute per channel, per segment (quadrature)
+  };
+
+  /**
+   * Premultiplied RGBA of rendered cell @p cell over [@p t0, @p t1] of
+   * @p ray, where the cell's scalar is @p s (in tau = t - t0). @p pieces is
+   * incremented by the pieces or panels integrated.
+   */
+  hov::RGBA Integrate(const FrameData& frame, vtkIdType cell, const hov::ViewRays::Ray& ray,
+    double t0, double t1, const hov::Polynomial& s, vtkIdType& pieces);
+
+  double GetWorstErrorEstimate() const { return this->WorstError; }
+  void ResetWorstErrorEstimate() { this->WorstError = 0.0; }
+
+private:
+  std::vector<double> Breaks;
+  double WorstError = 0.0;
+};
+}
+
+#endif
