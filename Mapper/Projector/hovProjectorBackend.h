@@ -12,6 +12,9 @@
  * hov::FeatureSetup). A cyclic visibility order is composited per pixel. The
  * image is the frame's double RGBA.
  *
+ * Interactive frames (RenderFrame::Subsampling f > 1): the same exact rays,
+ * one per f x f block of pixels, replicated onto the block (hovReducedImage.h).
+ *
  * Also the image of RenderImage() in OPENGL_PROJECTION mode (no window).
  *
  * Thread safety: rendering thread only (the projectors run vtkSMPTools).
@@ -24,6 +27,8 @@
 
 #include "hovCellProjector.h" // the plain path
 #include "hovFeatureSetup.h"  // the feature path
+
+#include <vector> // interactive frames
 
 namespace hov
 {
@@ -45,6 +50,8 @@ private:
   CellScene& Scene;
   CellProjector Projector;
   FeatureSetup Features;
+  std::vector<double> Reduced; ///< the reduced image of an interactive frame
+  std::vector<float> Depth;    ///< its opaque depth
 };
 }
 
