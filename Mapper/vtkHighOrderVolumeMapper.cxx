@@ -382,6 +382,12 @@ void vtkHighOrderVolumeMapper::ChooseLevel(hov::RenderFrame& frame, vtkRenderer*
       impl.Budget.Choose(CPU_ACCURATE, levelBudget, frame.Width, frame.Height, fixed, true)
         .Subsampling);
   }
+  if (frame.Subsampling > 1 && impl.CostMode == CPU_ACCURATE)
+  {
+    // Reduced CPU frames composite each pixel's segments in their own order
+    // (exact per ray): no visibility sort, the fixed part of the frame.
+    frame.Settings.Ordering = hov::CellOrdering::PerPixelSort;
+  }
 }
 
 bool vtkHighOrderVolumeMapper::FinishLevel(hov::RenderFrame& frame, double seconds)

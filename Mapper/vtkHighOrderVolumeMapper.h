@@ -15,7 +15,8 @@
  *    With isosurfaces, separate colour/isosurface fields or splatting (HIAC
  *    5.1-5.3), the feature path. Mapper/Projector.
  *  - OPENGL_PROJECTION: HIAC section 7 (regions of every projected cell and
- *    slab, drawn with OpenGL into a float target), for interaction.
+ *    slab, drawn with OpenGL into a float target). Not faster than
+ *    CPU_ACCURATE on a software OpenGL (README, "Choosing a render mode").
  *    Mapper/Regions, Mapper/OpenGL. RenderImage() in this mode renders the
  *    CPU_ACCURATE image (it has no window).
  *  - RAY_CAST: one ray per pixel through curved Lagrange and Bezier cells of
@@ -31,6 +32,9 @@
  * dataset lengths. The image is float premultiplied RGBA (GetFloatImage(),
  * row 0 at the bottom), blended over what is drawn, with rays stopping at
  * opaque geometry drawn before the volume.
+ *
+ * Interaction follows the volume's allocated render time in every mode (see
+ * AutoAdjustImageSampleDistance); for vtkLODProp3D see the README.
  *
  * Render() and RenderImage() build one frame (hov::RenderFrame: the settings
  * converted once, the view, the opaque depth), hand it to the render mode's

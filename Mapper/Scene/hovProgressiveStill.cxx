@@ -22,11 +22,19 @@ hov::ProgressiveStill::~ProgressiveStill()
 {
   if (this->Interactor && this->Observer)
   {
-    if (this->TimerId >= 0)
-    {
-      this->Interactor->DestroyTimer(this->TimerId);
-    }
+    this->StopTimer();
     this->Interactor->RemoveObserver(this->Observer);
+  }
+}
+
+void hov::ProgressiveStill::StopTimer()
+{
+  // Never from inside a TimerEvent: VTK 9.1's X interactor iterates over its
+  // timers while it invokes the event.
+  if (this->Interactor && this->TimerId >= 0 && !this->InTimer)
+  {
+    this->Interactor->DestroyTimer(this->TimerId);
+    this->TimerId = -1;
   }
 }
 
@@ -39,6 +47,10 @@ int hov::ProgressiveStill::Level(vtkRenderer* renderer, vtkVolume* volume,
   {
     this->Cancel();
     return 1;
+  }
+  if (!this->Running)
+  {
+    this->StopTimer(); // the last refinement's timer, once outside its event
   }
   vtkDataSet* input = vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
   const int* size = renderer->GetSize();
@@ -57,6 +69,7 @@ int hov::ProgressiveStill::Level(vtkRenderer* renderer, vtkVolume* volume,
   {
     if (this->Interactor && this->Observer)
     {
+      this->StopTimer();
       this->Interactor->RemoveObserver(this->Observer);
     }
     this->Interactor = iren;
@@ -81,6 +94,7 @@ const float* hov::ProgressiveStill::Finished(bool aborted, const float* rgba, si
   {
     this->Running = false; // the exact frame: done
     this->Completed.clear();
+    this->StopTimer();
     return nullptr;
   }
   this->Completed.assign(rgba, rgba + 4 * pixels);
@@ -92,15 +106,20 @@ const float* hov::ProgressiveStill::Finished(bool aborted, const float* rgba, si
 void hov::ProgressiveStill::Cancel()
 {
   this->Running = false;
+  this->Pending = false;
   this->Key.clear();
   this->Completed.clear();
+  this->StopTimer();
 }
 
 void hov::ProgressiveStill::Schedule()
 {
-  if (this->Interactor && this->TimerId < 0)
+  // One repeating timer while refining (creating or destroying timers inside
+  // VTK 9.1's TimerEvent is not safe): each tick renders a pending level.
+  this->Pending = true;
+  if (this->Interactor && this->TimerId < 0 && !this->InTimer)
   {
-    this->TimerId = this->Interactor->CreateOneShotTimer(1);
+    this->TimerId = this->Interactor->CreateRepeatingTimer(10);
   }
 }
 
@@ -108,13 +127,15 @@ void hov::ProgressiveStill::OnTimer(vtkObject*, unsigned long, void* clientData,
 {
   auto* self = static_cast<ProgressiveStill*>(clientData);
   const int id = callData ? *static_cast<int*>(callData) : -1;
-  if (id != self->TimerId || self->TimerId < 0)
+  if (id != self->TimerId || self->TimerId < 0 || self->InTimer)
   {
     return;
   }
-  self->TimerId = -1;
-  if (self->Running && self->Interactor)
+  if (self->Running && self->Pending && self->Interactor)
   {
+    self->Pending = false;
+    self->InTimer = true;
     self->Interactor->Render(); // the next level
+    self->InTimer = false;
   }
 }

@@ -8,9 +8,10 @@
  * frame whose estimated exact cost is above the mapper's ProgressiveTime is
  * drawn in levels, one per Render(): first one ray per f x f block (f fitting
  * the interactor's DesiredUpdateRate), then f / 4, ..., then the exact frame.
- * After each level a one-shot timer of the interactor (CreateOneShotTimer)
- * asks for the next Render(); the application's event loop runs in between,
- * so the UI stays live. The exact level is abortable (the window's
+ * After each level a repeating timer of the interactor (10 ms, created for
+ * the refinement and destroyed after it, never inside a TimerEvent: VTK 9.1's
+ * X interactor iterates over its timers while invoking it) asks for the next
+ * Render(); the application's event loop runs in between, so the UI stays live. The exact level is abortable (the window's
  * AbortCheckEvent, SetAbortExecute, and X events pending on the window);
  * an aborted level shows the last completed one and is retried by the timer.
  * A change of the view (camera, volume, mapper, input, size) starts again at
@@ -70,10 +71,13 @@ public:
 private:
   static void OnTimer(vtkObject* caller, unsigned long, void* clientData, void* callData);
   void Schedule();
+  void StopTimer();
 
   std::vector<vtkMTimeType> Key;
   int Current = 1;
   bool Running = false;
+  bool Pending = false; ///< a level waits for the timer
+  bool InTimer = false; ///< inside our TimerEvent (no timer may be created or destroyed)
   std::vector<float> Completed; ///< the last completed level's image
   vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
   unsigned long Observer = 0;

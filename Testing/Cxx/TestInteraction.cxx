@@ -26,6 +26,7 @@
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <thread>
@@ -41,16 +42,19 @@ class TimerInteractor : public vtkRenderWindowInteractor
 public:
   static TimerInteractor* New();
   vtkTypeMacro(TimerInteractor, vtkRenderWindowInteractor);
-  std::vector<int> Pending;
-  /// Fires every pending timer once; returns how many fired.
+  std::vector<int> Pending; ///< the timers that exist
+  /// Fires every timer once; returns how many fired.
   size_t FireTimers()
   {
-    std::vector<int> ids;
-    ids.swap(this->Pending);
+    const std::vector<int> ids = this->Pending;
     for (int id : ids)
     {
       int timerId = id;
       this->InvokeEvent(vtkCommand::TimerEvent, &timerId);
+      if (this->IsOneShotTimer(timerId))
+      {
+        this->DestroyTimer(timerId);
+      }
     }
     return ids.size();
   }
@@ -61,7 +65,12 @@ protected:
     this->Pending.push_back(timerId);
     return timerId;
   }
-  int InternalDestroyTimer(int) override { return 1; }
+  int InternalDestroyTimer(int platformId) override
+  {
+    this->Pending.erase(
+      std::remove(this->Pending.begin(), this->Pending.end(), platformId), this->Pending.end());
+    return 1;
+  }
 };
 vtkStandardNewMacro(TimerInteractor);
 
