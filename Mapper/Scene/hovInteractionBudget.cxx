@@ -78,7 +78,9 @@ void hov::InteractionBudget::Measure(
     // A few rays say little about the cost per ray (per-cell work of the tile
     // loop dominates): keep the exact frame's, and let the fixed part absorb
     // the difference, so that the next factor adapts to what was measured.
-    c.Fixed = std::max(0.0, seconds - c.PerRay * rays);
+    // Averaged with the previous value: the cost of a few rays varies with
+    // the factor, and an undamped fixed part makes f oscillate.
+    c.Fixed = 0.5 * (c.Fixed + std::max(0.0, seconds - c.PerRay * rays));
     return;
   }
   c.Fixed = std::min(std::max(fixedSeconds, 0.0), seconds);
