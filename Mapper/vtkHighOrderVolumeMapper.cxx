@@ -3,6 +3,7 @@
 #include "hovCellScene.h"                 // the cells the projection modes share
 #include "hovFloatImage.h"                // the published image
 #include "hovImageCheck.h"                // NaN/Inf pixels and empty images
+#include "hovFrameLevel.h"                // the level of detail of a window frame
 #include "hovImageDisplay.h"              // the CPU image over the scene, depth read-back
 #include "hovInteractionBudget.h"         // interactive frames
 #include "hovProgressiveStill.h"          // progressive still frames
@@ -23,7 +24,6 @@
 #include "vtkPlaneCollection.h" // clipping planes
 #include "vtkPointData.h"     // the float image
 #include "vtkRenderWindow.h"  // CheckAbortStatus
-#include "vtkRenderWindowInteractor.h" // the interactive budget
 #include "vtkRenderer.h"      // viewport, depth
 #include "vtkTimerLog.h"      // frame times
 #include "vtkVolume.h"        // the volume
@@ -341,52 +341,16 @@ bool vtkHighOrderVolumeMapper::ReportTileProgress(vtkRenderer* renderer, double 
 void vtkHighOrderVolumeMapper::ChooseLevel(hov::RenderFrame& frame, vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& impl = *this->Impl;
-  impl.CostMode = this->RenderMode;
-  const double budget = vol->GetAllocatedRenderTime();
-  const hov::InteractionBudget::Choice choice = impl.Budget.Choose(this->RenderMode, budget,
-    frame.Width, frame.Height, this->InteractiveSubsampling, this->AutoAdjustImageSampleDistance);
-  frame.Interactive = choice.Interactive;
-  frame.Subsampling = choice.Subsampling;
-  double levelBudget = budget;
-  if (choice.Interactive)
+  hov::LevelSettings settings;
+  settings.Mode = this->RenderMode;
+  settings.Fixed = this->InteractiveSubsampling;
+  settings.AutoAdjust = this->AutoAdjustImageSampleDistance;
+  settings.ProgressiveTime = this->ProgressiveTime;
+  impl.CostMode =
+    hov::ChooseFrameLevel(frame, settings, impl.Budget, impl.Progressive, ren, vol, this);
+  if (impl.Progressive.Active() && !frame.Progress)
   {
-    impl.Progressive.Cancel();
-  }
-  else
-  {
-    // A slow still frame: coarse first (the factor fitting the interactor's rate).
-    vtkRenderWindowInteractor* iren = ren->GetRenderWindow()->GetInteractor();
-    const double rate = iren ? iren->GetDesiredUpdateRate() : 0.0;
-    levelBudget = rate > 0.0 ? 1.0 / rate : 0.0;
-    const int coarse = rate > 0.0
-      ? std::max(2,
-          impl.Budget.Choose(this->RenderMode, levelBudget, frame.Width, frame.Height, 0, true)
-            .Subsampling)
-      : 1;
-    frame.Subsampling =
-      impl.Progressive.Level(ren, vol, this, choice.Estimate, this->ProgressiveTime, coarse);
-    if (impl.Progressive.Active() && !frame.Progress)
-    {
-      frame.Progress = [this, ren](double done) { return this->ReportTileProgress(ren, done); };
-    }
-  }
-  if (frame.Subsampling > 1 && this->RenderMode == OPENGL_PROJECTION &&
-    impl.Budget.FixedSeconds(OPENGL_PROJECTION) >= levelBudget)
-  {
-    // The regions alone exceed the budget at any resolution: the exact rays
-    // of the CPU path at reduced resolution instead (README, "Interaction").
-    impl.CostMode = CPU_ACCURATE;
-    frame.Settings.Mode = hov::RenderMode::CPUAccurate;
-    const int fixed = frame.Interactive ? this->InteractiveSubsampling : 0;
-    frame.Subsampling = std::max(2,
-      impl.Budget.Choose(CPU_ACCURATE, levelBudget, frame.Width, frame.Height, fixed, true)
-        .Subsampling);
-  }
-  if (frame.Subsampling > 1 && impl.CostMode == CPU_ACCURATE)
-  {
-    // Reduced CPU frames composite each pixel's segments in their own order
-    // (exact per ray): no visibility sort, the fixed part of the frame.
-    frame.Settings.Ordering = hov::CellOrdering::PerPixelSort;
+    frame.Progress = [this, ren](double done) { return this->ReportTileProgress(ren, done); };
   }
 }
 

@@ -8,8 +8,9 @@
  * a parallel loop; a batch that takes longer than ProgressBatchSeconds makes
  * the next ones smaller, so that a long frame answers an abort within about
  * that time) and the callback is called on the calling thread after each
- * batch with the fraction of tiles done (ending at exactly 1); if it returns
- * true the remaining batches are skipped. Every pixel belongs to one
+ * batch with the fraction of tiles done (ending at exactly 1), and once with 0
+ * before the first (an abort requested during the set-up); if it returns true
+ * the remaining batches are skipped. Every pixel belongs to one
  * tile and a tile's result does not depend on when or where it runs, so the
  * image of a completed render is bit-identical with or without batches.
  * hov::ClearTiles zeroes the pixels of the tiles that did not run.
@@ -33,7 +34,7 @@ namespace hov
 using ProgressFunction = std::function<bool(double)>;
 
 /// Number of batches the tiles are split into when progress is reported.
-constexpr int ProgressBatches = 32;
+constexpr int ProgressBatches = 128;
 
 /// Longest wall time of a batch between two progress reports (seconds).
 constexpr double ProgressBatchSeconds = 0.04;
@@ -49,6 +50,10 @@ int ForTileBatches(
   int batch = progress ? std::max(1, (numTiles + ProgressBatches - 1) / ProgressBatches)
                        : std::max(1, numTiles);
   int done = 0;
+  if (progress && progress(0.0))
+  {
+    return 0; // aborted during the set-up before the tiles
+  }
   while (done < numTiles)
   {
     const auto start = std::chrono::steady_clock::now();

@@ -9,7 +9,7 @@
 //     render); per frame: wall time (Render + WaitForCompletion) and the
 //     mapper's pixels per ray;
 //  3. the still frame after interaction: progressive levels driven by the
-//     interactor's timers (ProcessEvents) until the exact level; its float
+//     interactor's event loop (Start(), ended at the exact level); its float
 //     image against a non-interactive render of the same view (the same
 //     mapper with AutoAdjustImageSampleDistance off, ProgressiveTime 0):
 //     equal bit for bit?
@@ -215,7 +215,7 @@ Result RunMode(const Args& args, const hovBench::Mesh& mesh, int mode, const std
   r.Levels = 1;
   if (mapper->GetLastSubsampling() > 1)
   {
-    // The application's event loop: the mapper's one-shot timers render the
+    // The application's event loop: the mapper's timer renders the
     // next levels; a watcher ends the loop at the exact level.
     Watch watch{ mapper, 1, mapper->GetLastSubsampling() };
     vtkNew<vtkCallbackCommand> watcher;
