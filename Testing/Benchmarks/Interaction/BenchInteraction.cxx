@@ -179,7 +179,11 @@ Result RunMode(const Args& args, const hovBench::Mesh& mesh, int mode, const std
   win->SetSize(size, size);
   win->SetMultiSamples(0);
   win->AddRenderer(ren);
-  vtkNew<vtkRenderWindowInteractor> iren;
+  // Kept until the end of the run: VTK 9.1's X interactor keeps destroyed
+  // instances in its event loop's list (a later Start() crashed).
+  static std::vector<vtkSmartPointer<vtkRenderWindowInteractor>> interactors;
+  auto iren = vtkSmartPointer<vtkRenderWindowInteractor>::New();
+  interactors.push_back(iren);
   iren->SetRenderWindow(win);
   iren->SetDesiredUpdateRate(args.Rate);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
@@ -267,7 +271,11 @@ Result RunMode(const Args& args, const hovBench::Mesh& mesh, int mode, const std
     request.Requested = false;
     iren->Render();
     r.NextComplete = !mapper->GetLastRenderAborted();
+    win->RemoveObserver(onCheck);
   }
+  mapper->SetProgressiveTime(0.0); // no refinement left pending
+  iren->Render();
+  win->RemoveRenderer(ren);
   return r;
 }
 
