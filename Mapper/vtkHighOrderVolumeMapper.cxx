@@ -4,11 +4,15 @@
 #include "hovCellScene.h"                 // the cells the projection modes share
 #include "hovFloatImage.h"                // the published image
 #include "hovImageCheck.h"                // NaN/Inf pixels and empty images
+#include "hovFrameLevel.h"                // the level of detail of a window frame
 #include "hovImageDisplay.h"              // the CPU image over the scene, depth read-back
+#include "hovInteractionBudget.h"         // interactive frames
+#include "hovProgressiveStill.h"          // progressive still frames
 #include "hovProjectionBackend.h"         // OPENGL_PROJECTION
 #include "hovProjectorBackend.h"          // CPU_ACCURATE
 #include "hovPropertyAudit.h"             // unhonoured property features
 #include "hovRayCastBackend.h"            // RAY_CAST
+#include "hovReducedImage.h"              // ReducedSize
 #include "hovRenderFrame.h"               // the frame
 #include "hovShadingSetup.h"              // shading, gradient opacity, lights
 #include "vtkHighOrderTransferFunction.h" // GetTransferFunction
@@ -125,6 +129,14 @@ struct vtkHighOrderVolumeMapper::Internals
   hov::PropertyAudit Audit;
   hov::ShadingFrameSettings LastShading; ///< the last frame's (PrintSelf)
   hov::ImageDisplay Display;
+  hov::InteractionBudget Budget;
+  hov::ProgressiveStill Progressive;
+  /// The render mode whose cost the frame measures (CPU_ACCURATE for an
+  /// OPENGL_PROJECTION interactive frame drawn by the CPU path).
+  int CostMode = 0;
+  /// Seconds of the last frame that depend on its number of rays (the
+  /// backend's time after its fixed part, hov::FrameStatistics::FixedSeconds).
+  double LoopSeconds = 0.0;
   vtkNew<vtkImageData> FloatImage;
   std::vector<double> RGBA; ///< the last CPU image (GetDoubleImage)
   std::vector<float> Depth;
@@ -198,6 +210,7 @@ HOV_FINITE_SETTER(TerminationTransmittance, 0.0, 0.1)
 HOV_FINITE_SETTER(SplatPixelThreshold, 0.0, 1e6)
 HOV_FINITE_SETTER(RayCastTolerance, 1e-12, 0.1)
 HOV_FINITE_SETTER(RayCastInteractiveUpdateRate, 0.0, 1e6)
+HOV_FINITE_SETTER(ProgressiveTime, 0.0, 1e6)
 HOV_FINITE_SETTER(EmissionScale, 0.0, 1e6)
 
 int vtkHighOrderVolumeMapper::AddIsosurface(
@@ -261,7 +274,7 @@ vtkHighOrderTransferFunction* vtkHighOrderVolumeMapper::GetTransferFunction()
 hov::Backend& vtkHighOrderVolumeMapper::SelectBackend(bool window)
 {
   const bool blend = this->BlendMode > COMPOSITE_BLEND && this->BlendMode <= AVERAGE_INTENSITY_BLEND;
-  switch (this->RenderMode)
+  switch (window ? this->Impl->CostMode : this->RenderMode)
   {
     case RAY_CAST:
       return this->Impl->RayCast;
@@ -312,8 +325,6 @@ void vtkHighOrderVolumeMapper::InitFrame(hov::RenderFrame& frame, vtkCamera* cam
   s.AverageRange[0] = this->AverageIPScalarRange[0];
   s.AverageRange[1] = this->AverageIPScalarRange[1];
   s.RayCastTolerance = this->RayCastTolerance;
-  s.RayCastInteractiveUpdateRate = this->RayCastInteractiveUpdateRate;
-  s.RayCastInteractiveSubsampling = this->RayCastInteractiveSubsampling;
   s.ColorMethod = Convert(ColorMethods, this->ProjectionColorMethod);
   s.Order = Convert(Orders, this->ProjectionOrder);
   s.Lookup = Convert(Lookups, this->ProjectionOpacityLookup);
@@ -343,7 +354,57 @@ bool vtkHighOrderVolumeMapper::ReportTileProgress(vtkRenderer* renderer, double 
   // Called on the rendering thread between tile batches (hovTileBatches.h).
   this->UpdateProgress(done);
   vtkRenderWindow* window = renderer ? renderer->GetRenderWindow() : nullptr;
-  return this->AbortExecute || (window && window->CheckAbortStatus());
+  // A progressive level also stops for the UI's pending events (X windows).
+  return this->AbortExecute || (window && window->CheckAbortStatus()) ||
+    (window && this->Impl->Progressive.Active() && window->GetEventPending());
+}
+
+void vtkHighOrderVolumeMapper::ChooseLevel(hov::RenderFrame& frame, vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& impl = *this->Impl;
+  hov::LevelSettings settings;
+  settings.Mode = this->RenderMode;
+  settings.Fixed = this->InteractiveSubsampling;
+  settings.AutoAdjust = this->AutoAdjustImageSampleDistance;
+  settings.ProgressiveTime = this->ProgressiveTime;
+  impl.CostMode =
+    hov::ChooseFrameLevel(frame, settings, impl.Budget, impl.Progressive, ren, vol, this);
+  if (impl.Progressive.Active() && !frame.Progress)
+  {
+    frame.Progress = [this, ren](double done) { return this->ReportTileProgress(ren, done); };
+  }
+}
+
+bool vtkHighOrderVolumeMapper::FinishLevel(hov::RenderFrame& frame, double seconds)
+{
+  Internals& impl = *this->Impl;
+  const int f = frame.Subsampling;
+  this->LastRenderWasInteractive = frame.Interactive;
+  this->LastSubsampling = f;
+  if (!this->LastRenderAborted)
+  {
+    // Everything but the backend's per-ray part is fixed: set-up, order, the
+    // expansion of a reduced image, depth read-back and display.
+    impl.Budget.Measure(impl.CostMode, seconds, seconds - std::max(impl.LoopSeconds, 0.0),
+      static_cast<double>(hov::ReducedSize(frame.Width, f)) * hov::ReducedSize(frame.Height, f),
+      f > 1);
+  }
+  auto* rgba = vtkFloatArray::SafeDownCast(impl.FloatImage->GetPointData()->GetScalars());
+  const size_t pixels = static_cast<size_t>(frame.Width) * frame.Height;
+  if (!rgba || static_cast<size_t>(rgba->GetNumberOfTuples()) != pixels)
+  {
+    return false;
+  }
+  const float* previous =
+    impl.Progressive.Finished(this->LastRenderAborted, rgba->GetPointer(0), pixels);
+  if (previous)
+  {
+    // An aborted exact level shows the last completed level.
+    std::copy(previous, previous + 4 * pixels, rgba->GetPointer(0));
+    rgba->Modified();
+    return true;
+  }
+  return false;
 }
 
 void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPixels)
@@ -368,14 +429,6 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
     this->NumberOfProjectedTriangles = st.ProjectedTriangles;
     this->NumberOfProjectedSlabs = st.ProjectedSlabs;
   }
-  if (st.Interactive >= 0)
-  {
-    this->LastRenderWasInteractive = st.Interactive != 0;
-  }
-  if (st.RayCastSubsampling > 0)
-  {
-    this->LastRayCastSubsampling = st.RayCastSubsampling;
-  }
   const size_t pixels = static_cast<size_t>(std::max(frame.Width, 0)) * std::max(frame.Height, 0);
   if (windowPixels)
   {
@@ -396,7 +449,11 @@ int vtkHighOrderVolumeMapper::ComputeImage(hov::RenderFrame& frame, hov::Backend
   this->LastRenderAborted = false;
   this->UpdateProgress(0.0);
   frame.RGBA.swap(this->Impl->RGBA); // reuse the last image's storage
+  vtkNew<vtkTimerLog> backendTimer;
+  backendTimer->StartTimer();
   const int status = backend.Render(frame, nullptr);
+  backendTimer->StopTimer();
+  this->Impl->LoopSeconds = backendTimer->GetElapsedTime() - frame.Stats.FixedSeconds;
   this->Publish(frame, nullptr);
   if (!this->LastRenderAborted && this->GetProgress() < 1.0)
   {
@@ -412,6 +469,9 @@ int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, 
   hov::RenderFrame frame;
   this->InitFrame(frame, camera, volume, width, height,
     height > 0 ? static_cast<double>(width) / height : 1.0, nullptr);
+  this->Impl->CostMode = this->RenderMode;
+  this->LastRenderWasInteractive = false; // no window, no budget: exact
+  this->LastSubsampling = 1;
   return this->ComputeImage(frame, this->SelectBackend(false));
 }
 
@@ -425,22 +485,28 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  hov::Backend& backend = this->SelectBackend(true);
   hov::RenderFrame frame;
   // The same aspect VTK's own mappers and actors use for the projection.
   this->InitFrame(frame, ren->GetActiveCamera(), vol, width, height, ren->GetTiledAspectRatio(), ren);
   frame.X0 = x0;
   frame.Y0 = y0;
   Internals& impl = *this->Impl;
+  this->ChooseLevel(frame, ren, vol);
+  hov::Backend& backend = this->SelectBackend(true);
   if (backend.DrawsIntoWindow())
   {
     // It reads the scene depth, draws and reads the float image back itself.
     this->LastRenderAborted = false; // a window backend's frame is never aborted
+    vtkNew<vtkTimerLog> backendTimer;
+    backendTimer->StartTimer();
     backend.Render(frame, impl.FloatImage);
+    backendTimer->StopTimer();
+    impl.LoopSeconds = backendTimer->GetElapsedTime() - frame.Stats.FixedSeconds;
     auto* rgba = vtkFloatArray::SafeDownCast(impl.FloatImage->GetPointData()->GetScalars());
     this->Publish(frame, rgba->GetPointer(0));
     timer->StopTimer();
     this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
+    this->FinishLevel(frame, this->TimeToDraw);
     return;
   }
   if (this->UseDepthBuffer)
@@ -456,6 +522,10 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
   this->ComputeImage(frame, backend);
+  vtkNew<vtkTimerLog> tail;
+  tail->StartTimer();
+  timer->StopTimer();
+  this->FinishLevel(frame, timer->GetElapsedTime());
   vtkDataArray* rgba = impl.FloatImage->GetPointData()->GetScalars();
   if (rgba && rgba->GetNumberOfTuples() == static_cast<vtkIdType>(width) * height)
   {
@@ -464,8 +534,8 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       vtkErrorMacro("Could not draw the volume image with OpenGL.");
     }
   }
-  timer->StopTimer();
-  this->TimeToDraw = timer->GetElapsedTime();
+  tail->StopTimer();
+  this->TimeToDraw = timer->GetElapsedTime() + tail->GetElapsedTime();
 }
 
 void vtkHighOrderVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
@@ -481,10 +551,14 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RenderMode: " << this->RenderMode << " (projection colour method "
      << this->ProjectionColorMethod << ", order " << this->ProjectionOrder << ", opacity lookup "
      << this->ProjectionOpacityLookup << ")\n";
-  os << indent << "RayCastTolerance: " << this->RayCastTolerance << " (interactive above "
-     << this->RayCastInteractiveUpdateRate << " frames/s)\n";
-  os << indent << "RayCastInteractiveSubsampling: " << this->RayCastInteractiveSubsampling
-     << " (0: from the time budget; last frame " << this->LastRayCastSubsampling << ")\n";
+  os << indent << "RayCastTolerance: " << this->RayCastTolerance
+     << " (RayCastInteractiveUpdateRate, deprecated: " << this->RayCastInteractiveUpdateRate
+     << ")\n";
+  os << indent << "AutoAdjustImageSampleDistance: " << this->AutoAdjustImageSampleDistance
+     << ", InteractiveSubsampling: " << this->InteractiveSubsampling
+     << " (0: from the allocated render time; last frame " << this->LastSubsampling
+     << (this->LastRenderWasInteractive ? ", interactive" : "") << ")\n";
+  os << indent << "ProgressiveTime: " << this->ProgressiveTime << "\n";
   os << indent << "AverageIPScalarRange: " << this->AverageIPScalarRange[0] << " "
      << this->AverageIPScalarRange[1] << "\n";
   os << indent << "OpacitySemantics: " << this->OpacitySemantics << "\n";

@@ -15,7 +15,8 @@
  *    With isosurfaces, separate colour/isosurface fields or splatting (HIAC
  *    5.1-5.3), the feature path. Mapper/Projector.
  *  - OPENGL_PROJECTION: HIAC section 7 (regions of every projected cell and
- *    slab, drawn with OpenGL into a float target), for interaction.
+ *    slab, drawn with OpenGL into a float target). Not faster than
+ *    CPU_ACCURATE on a software OpenGL (README, "Choosing a render mode").
  *    Mapper/Regions, Mapper/OpenGL. RenderImage() in this mode renders the
  *    CPU_ACCURATE image (it has no window).
  *  - RAY_CAST: one ray per pixel through curved Lagrange and Bezier cells of
@@ -34,6 +35,9 @@
  * The image is float premultiplied RGBA (GetFloatImage(),
  * row 0 at the bottom), blended over what is drawn, with rays stopping at
  * opaque geometry drawn before the volume.
+ *
+ * Interaction follows the volume's allocated render time in every mode (see
+ * AutoAdjustImageSampleDistance); for vtkLODProp3D see the README.
  *
  * Render() and RenderImage() build one frame (hov::RenderFrame: the settings
  * converted once, the view, the opaque depth), hand it to the render mode's
@@ -272,11 +276,8 @@ public:
    * The render mode (see the class doc and the README). Not applied in
    * OPENGL_PROJECTION: isosurfaces, separate fields, splatting, clipping
    * planes and view-depth clipping; in RAY_CAST: isosurfaces, separate fields
-   * and splatting (one warning names them). RAY_CAST in a window whose
-   * DesiredUpdateRate is at least RayCastInteractiveUpdateRate draws a cheaper
-   * frame (one ray per f x f block of pixels, tolerance x10; f from
-   * RayCastInteractiveSubsampling, or from the time budget at the previous
-   * frame's cost per ray, 2 <= f <= 16); the still frame is at full accuracy.
+   * and splatting (one warning names them). Which mode for what, measured:
+   * README, "Choosing a render mode".
    */
   vtkSetClampMacro(RenderMode, int, CPU_ACCURATE, RAY_CAST);
   vtkGetMacro(RenderMode, int);
@@ -315,16 +316,42 @@ public:
   ///@}
 
   ///@{
-  /// RAY_CAST interaction threshold in frames per second (see RenderMode;
-  /// clamped to [0, 1e6] with a warning), whether the last frame was the
-  /// interactive one, the pixels per ray of interactive frames (0, the
-  /// default: from the time budget; clamped to [0, 64]) and of the last frame.
+  /**
+   * Interaction, as VTK's volume mappers do it (README, "Interaction"): a
+   * window frame is given the volume's GetAllocatedRenderTime(). With
+   * AutoAdjustImageSampleDistance on (default), a frame whose estimated exact
+   * cost (measured per mode) exceeds it is an interactive frame: one exact ray
+   * per f x f block of pixels, f from the budget (2..16) or
+   * InteractiveSubsampling if > 0 (clamped to [0, 64]); RAY_CAST at
+   * tolerance x10, OPENGL_PROJECTION in the approximate order. Frames that fit
+   * (the still frame) are exact. A still frame estimated above
+   * ProgressiveTime seconds (default 0.5; 0 off; clamped to [0, 1e6]) in a
+   * window with an initialized interactor is progressive: coarse at once, then
+   * refined on the interactor's timer, its exact level abortable.
+   */
+  vtkSetMacro(AutoAdjustImageSampleDistance, bool);
+  vtkGetMacro(AutoAdjustImageSampleDistance, bool);
+  vtkBooleanMacro(AutoAdjustImageSampleDistance, bool);
+  vtkSetClampMacro(InteractiveSubsampling, int, 0, 64);
+  vtkGetMacro(InteractiveSubsampling, int);
+  virtual void SetProgressiveTime(double value);
+  vtkGetMacro(ProgressiveTime, double);
+  /// Whether the last frame was interactive, and its pixels per ray (> 1 also
+  /// for a progressive level).
+  vtkGetMacro(LastRenderWasInteractive, bool);
+  vtkGetMacro(LastSubsampling, int);
+  ///@}
+
+  ///@{
+  /// Deprecated RAY_CAST names: Set/GetRayCastInteractiveSubsampling are
+  /// InteractiveSubsampling, GetLastRayCastSubsampling is GetLastSubsampling;
+  /// RayCastInteractiveUpdateRate is kept (range checked) but no longer read:
+  /// the allocated render time decides.
+  void SetRayCastInteractiveSubsampling(int f) { this->SetInteractiveSubsampling(f); }
+  int GetRayCastInteractiveSubsampling() { return this->InteractiveSubsampling; }
+  int GetLastRayCastSubsampling() { return this->LastSubsampling; }
   virtual void SetRayCastInteractiveUpdateRate(double value);
   vtkGetMacro(RayCastInteractiveUpdateRate, double);
-  vtkGetMacro(LastRenderWasInteractive, bool);
-  vtkSetClampMacro(RayCastInteractiveSubsampling, int, 0, 64);
-  vtkGetMacro(RayCastInteractiveSubsampling, int);
-  vtkGetMacro(LastRayCastSubsampling, int);
   ///@}
 
   /// RAY_CAST: per-pixel error estimate of the last image (array "Error", one
@@ -395,7 +422,8 @@ public:
   void GetDoubleImage(vtkDoubleArray* rgba);
 
   ///@{
-  /// Diagnostics of the last render. RAY_CAST: NumberOfRays traced,
+  /// Diagnostics of the last render. NumberOfRays: the pixel rays (fewer in an
+  /// interactive frame; RAY_CAST: those traced). RAY_CAST:
   /// NumberOfSegments cell intervals, NumberOfPieces those plus the
   /// breakpoints located in them. LastImageTime: wall-clock seconds of the image.
   vtkGetMacro(WitnessViolations, vtkIdType);
@@ -437,9 +465,11 @@ protected:
   double AverageIPScalarRange[2] = { VTK_FLOAT_MIN, VTK_FLOAT_MAX };
   double RayCastTolerance = 1e-3;
   double RayCastInteractiveUpdateRate = 1.0;
+  bool AutoAdjustImageSampleDistance = true;
+  int InteractiveSubsampling = 0;
+  double ProgressiveTime = 0.5;
   bool LastRenderWasInteractive = false;
-  int RayCastInteractiveSubsampling = 0;
-  int LastRayCastSubsampling = 1;
+  int LastSubsampling = 1;
   int ProjectionColorMethod = EXACT_COLOR;
   int ProjectionOrder = EXACT_ORDER;
   int ProjectionOpacityLookup = OPACITY_ANALYTIC;
@@ -492,6 +522,12 @@ private:
   int ComputeImage(hov::RenderFrame& frame, hov::Backend& backend);
   /// The frame's statistics and checked image into this mapper.
   void Publish(hov::RenderFrame& frame, float* windowPixels);
+  /// The level of detail of a window frame (hov::InteractionBudget,
+  /// hov::ProgressiveStill) into @p frame.
+  void ChooseLevel(hov::RenderFrame& frame, vtkRenderer* ren, vtkVolume* vol);
+  /// After a window frame of @p seconds: its cost measured, the progressive
+  /// refinement advanced; true if the image was replaced by the last level.
+  bool FinishLevel(hov::RenderFrame& frame, double seconds);
   /// Progress callback of the CPU tile loops: true to abort.
   bool ReportTileProgress(vtkRenderer* renderer, double done);
 

@@ -4,6 +4,7 @@
 #include "hovFloatImage.h"                // the float image read back
 #include "hovImageDisplay.h"              // ReadDepth
 #include "hovProjectionVertex.h"          // FloatsPerVertex (group budget)
+#include "hovReducedImage.h"              // interactive frames
 #include "hovRenderFrame.h"               // the frame
 #include "vtkHighOrderTransferFunction.h" // the table object
 
@@ -15,6 +16,7 @@
 
 #include <algorithm> // std::reverse_copy, std::all_of
 #include <cfloat>    // FLT_MAX
+#include <chrono>    // the fixed part of the frame's cost
 #include <cmath>     // std::abs
 #include <sstream>   // messages
 
@@ -104,6 +106,13 @@ hov::ProjectionRenderer::Options RenderOptions(
 
 int hov::ProjectionBackend::Render(RenderFrame& frame, vtkImageData* floatImage)
 {
+  const auto begin = std::chrono::steady_clock::now();
+  // An interactive frame: the approximate order, into a target of one pixel
+  // per f x f block, blitted over the viewport (hovReducedImage.h).
+  if (frame.Interactive)
+  {
+    frame.Settings.Order = ProjectionOrder::Approximate;
+  }
   const FrameSettings& s = frame.Settings;
   frame.Stats.ProjectedTriangles = frame.Stats.ProjectedSlabs = 0;
   if (!this->WarnedFeatures &&
@@ -143,11 +152,29 @@ int hov::ProjectionBackend::Render(RenderFrame& frame, vtkImageData* floatImage)
     }
   }
   float* pixels = FloatImagePixels(floatImage, "RGBA", 4, frame.Width, frame.Height, true);
-  if (!this->Draw(frame, settings, depth, pixels))
+  const int f = std::max(frame.Subsampling, 1);
+  const int rw = ReducedSize(frame.Width, f), rh = ReducedSize(frame.Height, f);
+  if (f > 1)
+  {
+    if (depth)
+    {
+      ReduceDepth(depth, frame.Width, frame.Height, rw, rh, this->ReducedDepth);
+      depth = this->ReducedDepth.data();
+    }
+    this->Reduced.resize(static_cast<size_t>(rw) * rh * 4);
+  }
+  this->BuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  if (!this->Draw(frame, settings, depth, f > 1 ? this->Reduced.data() : pixels, rw, rh))
   {
     frame.Error("Could not draw the cell projection with OpenGL.");
     std::fill(pixels, pixels + static_cast<size_t>(frame.Width) * frame.Height * 4, 0.0f);
   }
+  else if (f > 1)
+  {
+    ExpandImage(this->Reduced.data(), rw, rh, 4, pixels, frame.Width, frame.Height);
+  }
+  frame.Stats.FixedSeconds = this->BuildSeconds;
+  frame.Stats.Rays = static_cast<vtkIdType>(rw) * rh;
   frame.Stats.ProjectedTriangles = this->Statistics.Triangles;
   frame.Stats.ProjectedSlabs = this->Statistics.Slabs;
   return 1;
@@ -174,8 +201,8 @@ bool hov::ProjectionBackend::PrepareFrame(RenderFrame& frame)
   return frame.Settings.Order != ProjectionOrder::Exact || scene.PrepareOrder(frame, true);
 }
 
-bool hov::ProjectionBackend::Draw(
-  RenderFrame& frame, ProjectionRegions::Settings& settings, const float* depth, float* pixels)
+bool hov::ProjectionBackend::Draw(RenderFrame& frame, ProjectionRegions::Settings& settings,
+  const float* depth, float* pixels, int width, int height)
 {
   // The cells in groups, built while the previous group is drawn.
   const CellSetup& cells = this->Scene.GetCells();
@@ -191,6 +218,7 @@ bool hov::ProjectionBackend::Draw(
     {
       return false;
     }
+    const auto start = std::chrono::steady_clock::now();
     const vtkIdType last = std::min(total, next + group);
     this->Statistics.Add(this->Regions.Build(cells, this->BackToFront, next, last,
       settings.ExtinctionTf ? tf->GetLinearOpacityTable() : tf->GetTable(), settings, geometry));
@@ -201,11 +229,13 @@ bool hov::ProjectionBackend::Draw(
       ? largestGroup
       : std::max(MinGroupCells, static_cast<vtkIdType>(GroupVertexBudget / bytesPerCell));
     next = last;
+    this->BuildSeconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return true;
   };
   const ProjectionRenderer::Options options = RenderOptions(settings, frame.Settings);
   return this->Renderer.Render(
-    frame.Renderer, produce, this->Geometry, options, depth, frame.Width, frame.Height, pixels);
+    frame.Renderer, produce, this->Geometry, options, depth, width, height, pixels);
 }
 
 void hov::ProjectionBackend::CheckColorRange(

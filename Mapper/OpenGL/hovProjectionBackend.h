@@ -13,7 +13,9 @@
  * the previous one is drawn; the float image read back into the mapper's
  * image. Isosurfaces, separate fields, splatting and clipping are not applied
  * (one warning). The vertex colours go to OpenGL as floats: a table whose
- * colours exceed float's range is warned about once per build.
+ * colours exceed float's range is warned about once per build. Interactive
+ * frames (RenderFrame::Interactive): the centroid order and a target of one
+ * pixel per f x f block, which the blit replicates over the viewport.
  *
  * Thread safety: rendering thread only.
  * @sa hov::ProjectionRegions, hov::ProjectionRenderer, hov::Backend
@@ -51,9 +53,10 @@ private:
   bool PrepareFrame(RenderFrame& frame);
   /// One warning when the table's colours exceed float's range.
   void CheckColorRange(const RenderFrame& frame, vtkHighOrderTransferFunction* tf);
-  /// The region triangles of BackToFront, group by group, drawn as they come.
+  /// The region triangles of BackToFront, group by group, drawn as they come
+  /// into a @p width x @p height target (the frame's, or its reduced size).
   bool Draw(RenderFrame& frame, ProjectionRegions::Settings& settings, const float* depth,
-    float* pixels);
+    float* pixels, int width, int height);
 
   CellScene& Scene;
   ProjectionRegions Regions;
@@ -62,6 +65,8 @@ private:
   ProjectionRegions::Geometry Geometry;
   std::vector<float> Depth;
   std::vector<vtkIdType> BackToFront;
+  std::vector<float> Reduced, ReducedDepth; ///< an interactive frame's target and depth
+  double BuildSeconds = 0.0; ///< the frame's CPU set-up and region building
   bool WarnedFeatures = false;
   /// The table build (and emission model) whose colour range was checked.
   int ColorRangeCheckedBuild = -1;

@@ -1,9 +1,10 @@
 #include "hovProjectorBackend.h"
 
-#include "hovBlendCheck.h"  // BlendSettingsOf
-#include "hovCellScene.h"   // cells, order, table
-#include "hovRenderFrame.h" // the frame
-#include "hovViewRays.h"    // pixel rays
+#include "hovBlendCheck.h"    // BlendSettingsOf
+#include "hovCellScene.h"    // cells, order, table
+#include "hovReducedImage.h" // interactive frames
+#include "hovRenderFrame.h"  // the frame
+#include "hovViewRays.h"     // pixel rays
 
 #include "hovIsosurface.h"       // Isosurface
 #include "hovTransferFunction.h" // the table
@@ -11,12 +12,14 @@
 #include "vtkVolume.h" // the property
 
 #include <algorithm> // std::min, std::max
+#include <chrono>    // the fixed part of the frame's cost
 #include <cmath>     // std::isfinite
 #include <string>    // messages
 #include <vector>    // messages
 
 int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
 {
+  const auto begin = std::chrono::steady_clock::now();
   CellScene& scene = this->Scene;
   bool ok = frame.ValidateView() && scene.Prepare(frame);
   // Isosurfaces are visible even where the volume does not absorb.
@@ -37,8 +40,11 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
     }
     render = false;
   }
+  // An interactive frame: one exact ray per f x f block (hovReducedImage.h).
+  const int f = std::max(frame.Subsampling, 1);
+  const int rw = ReducedSize(frame.Width, f), rh = ReducedSize(frame.Height, f);
   ViewRays rays;
-  if (render && !frame.SetupRays(rays, frame.Width, frame.Height))
+  if (render && !frame.SetupRays(rays, rw, rh))
   {
     render = ok = false;
   }
@@ -74,22 +80,37 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   settings.TileSize = frame.Settings.TileSize;
   settings.Progress = frame.Progress;
   const int features = this->PrepareFeatures(frame);
+  const float* depth = frame.Depth;
+  if (depth && f > 1)
+  {
+    ReduceDepth(frame.Depth, frame.Width, frame.Height, rw, rh, this->Depth);
+    depth = this->Depth.data();
+  }
+  std::vector<double>& image = f > 1 ? this->Reduced : frame.RGBA;
+  frame.Stats.FixedSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   CellProjector::Statistics st;
   if (features > 0) // isosurfaces, separate fields or splatting: the feature path
   {
     st = this->Features.GetProjector().Render(scene.GetCells(), scene.GetFrontToBack(), rays,
-      tf->GetTable(), settings, this->Features.GetFeatures(), frame.Depth, frame.RGBA);
+      tf->GetTable(), settings, this->Features.GetFeatures(), depth, image);
     frame.Stats.SplattedCells = this->Features.GetProjector().GetNumberOfSplats();
   }
   else if (features == 0)
   {
-    st = this->Projector.Render(scene.GetCells(), scene.GetFrontToBack(), rays, tf->GetTable(),
-      settings, frame.Depth, frame.RGBA);
+    st = this->Projector.Render(
+      scene.GetCells(), scene.GetFrontToBack(), rays, tf->GetTable(), settings, depth, image);
   }
   else
   {
     frame.ClearImage();
   }
+  if (features >= 0 && f > 1)
+  {
+    frame.ClearImage();
+    ExpandImage(this->Reduced.data(), rw, rh, 4, frame.RGBA.data(), frame.Width, frame.Height);
+  }
+  frame.Stats.Rays = static_cast<vtkIdType>(rw) * rh;
   frame.Stats.Aborted = st.Aborted;
   frame.Stats.WitnessViolations = st.WitnessViolations;
   frame.Stats.Segments = st.Segments;

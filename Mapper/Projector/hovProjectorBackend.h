@@ -13,6 +13,9 @@
  * image is the frame's double RGBA. Blend modes other than composite:
  * hov::BlendProjector (no order, no features).
  *
+ * Interactive frames (RenderFrame::Subsampling f > 1): the same exact rays,
+ * one per f x f block of pixels, replicated onto the block (hovReducedImage.h).
+ *
  * Also the image of RenderImage() in OPENGL_PROJECTION mode (no window).
  *
  * Thread safety: rendering thread only (the projectors run vtkSMPTools).
@@ -26,6 +29,8 @@
 #include "hovBlendProjector.h" // the blend modes
 #include "hovCellProjector.h" // the plain path
 #include "hovFeatureSetup.h"  // the feature path
+
+#include <vector> // interactive frames
 
 namespace hov
 {
@@ -48,6 +53,8 @@ private:
   CellProjector Projector;
   BlendProjector Blend;
   FeatureSetup Features;
+  std::vector<double> Reduced; ///< the reduced image of an interactive frame
+  std::vector<float> Depth;    ///< its opaque depth
 };
 }
 

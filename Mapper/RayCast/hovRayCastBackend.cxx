@@ -1,20 +1,18 @@
 #include "hovRayCastBackend.h"
 
-#include "hovBlendCheck.h" // BlendSettingsOf
-#include "hovFloatImage.h" // the error image
-#include "hovViewRays.h"   // pixel rays
+#include "hovBlendCheck.h"   // BlendSettingsOf
+#include "hovFloatImage.h"   // the error image
+#include "hovReducedImage.h" // interactive frames
+#include "hovViewRays.h"     // pixel rays
 
 #include "hovCurvedSegment.h"    // CurvedSegmentSettings
 #include "hovTransferFunction.h" // the kernel table
 
-#include "vtkRenderWindow.h"     // interaction level of detail
-#include "vtkRenderer.h"         // its window
 #include "vtkUnstructuredGrid.h" // the input
 #include "vtkVolume.h"           // the property
 
 #include <algorithm> // std::min, std::max
-#include <chrono>    // the interactive frame's time budget
-#include <cmath>     // std::sqrt, std::ceil
+#include <chrono>    // the fixed part of the frame's cost
 #include <sstream>   // messages
 #include <string>    // messages
 
@@ -22,18 +20,12 @@ namespace
 {
 /// Most nodes the ray caster's GPU-compatible table may add (see its use).
 constexpr int RayCastTableBudget = 16384;
-/// Pixel (i of n) of the full image -> pixel of the reduced one (m <= n).
-inline int Reduced(int i, int n, int m)
-{
-  return std::min(static_cast<int>(static_cast<long long>(i) * m / n), m - 1);
-}
 }
 
 int hov::RayCastBackend::Render(RenderFrame& frame, vtkImageData*)
 {
   frame.ClearImage();
   this->Error.assign(static_cast<size_t>(std::max(frame.Width, 0)) * std::max(frame.Height, 0), 0.0f);
-  frame.Stats.Interactive = 0;
   const int status = this->Trace(frame);
   PublishFloatImage(this->ErrorImage, "Error", 1, frame.Width, frame.Height, this->Error.data());
   return status;
@@ -65,23 +57,9 @@ void hov::RayCastBackend::PrepareCaster(const RenderFrame& frame, vtkUnstructure
   this->Key = key;
 }
 
-int hov::RayCastBackend::Subsampling(const RenderFrame& frame, double desiredUpdateRate) const
-{
-  int f = frame.Settings.RayCastInteractiveSubsampling;
-  if (f <= 0)
-  {
-    // The factor that fits the time budget at the last frame's cost per ray.
-    const double budget = 1.0 / desiredUpdateRate;
-    const double cost = this->SecondsPerRay * frame.Width * frame.Height;
-    f = this->SecondsPerRay > 0.0
-      ? std::min(std::max(static_cast<int>(std::ceil(std::sqrt(cost / budget))), 2), 16)
-      : 2;
-  }
-  return f;
-}
-
 int hov::RayCastBackend::Trace(RenderFrame& frame)
 {
+  const auto begin = std::chrono::steady_clock::now();
   if (!frame.ValidateView())
   {
     return 0;
@@ -135,15 +113,12 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
     return 1; // nothing visible
   }
 
-  // Interaction level of detail (see the RenderMode doc).
-  vtkRenderWindow* window = frame.Renderer ? frame.Renderer->GetRenderWindow() : nullptr;
-  const bool interactive =
-    window && window->GetDesiredUpdateRate() >= s.RayCastInteractiveUpdateRate;
-  frame.Stats.Interactive = interactive ? 1 : 0;
-  const int f = interactive ? this->Subsampling(frame, window->GetDesiredUpdateRate()) : 1;
-  frame.Stats.RayCastSubsampling = f;
+  // Interactive frames (the facade's choice, hovInteractionBudget.h): one ray
+  // per f x f block, each stopping at the nearest opaque depth of its block.
+  const bool interactive = frame.Interactive;
+  const int f = std::max(frame.Subsampling, 1);
   const int width = frame.Width, height = frame.Height;
-  const int rw = (width + f - 1) / f, rh = (height + f - 1) / f;
+  const int rw = ReducedSize(width, f), rh = ReducedSize(height, f);
   ViewRays rays;
   if (!frame.SetupRays(rays, rw, rh))
   {
@@ -151,18 +126,9 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   }
   frame.Drawn = true;
   const float* rayDepth = frame.Depth;
-  if (frame.Depth && interactive)
+  if (frame.Depth && f > 1)
   {
-    // Each ray stops at the nearest opaque depth of its block.
-    this->Depth.assign(static_cast<size_t>(rw) * rh, 1.0f);
-    for (int j = 0; j < height; ++j)
-    {
-      for (int i = 0; i < width; ++i)
-      {
-        float& d = this->Depth[static_cast<size_t>(Reduced(j, height, rh)) * rw + Reduced(i, width, rw)];
-        d = std::min(d, frame.Depth[static_cast<size_t>(j) * width + i]);
-      }
-    }
+    ReduceDepth(frame.Depth, width, height, rw, rh, this->Depth);
     rayDepth = this->Depth.data();
   }
   CurvedSegmentSettings settings;
@@ -174,18 +140,14 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   this->RGBA.assign(4 * static_cast<size_t>(rw) * rh, 0.0f);
   std::vector<float> error(static_cast<size_t>(rw) * rh, 0.0f);
   RayCast::Issues issues;
-  const auto start = std::chrono::steady_clock::now();
+  frame.Stats.FixedSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   const BlendSettings blend = BlendSettingsOf(frame);
   const bool blending = blend.Mode != BlendMode::Composite;
   this->Caster.Render(rays,
     blending ? this->TransferFunction->GetBlendTable() : this->TransferFunction->GetTable(),
     settings, this->RGBA.data(), error.data(), rayDepth, &issues, frame.Progress,
     blending ? &blend : nullptr);
-  if (!issues.Aborted && rw * rh > 0)
-  {
-    this->SecondsPerRay =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / (rw * rh);
-  }
   frame.Stats.Aborted = issues.Aborted;
   frame.Stats.Rays = issues.Rays;
   frame.Stats.Segments = issues.Segments;
@@ -200,20 +162,7 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
     frame.Warning(text.str());
   }
   // The (reduced) image onto every pixel.
-  for (int j = 0; j < height; ++j)
-  {
-    for (int i = 0; i < width; ++i)
-    {
-      const size_t p = static_cast<size_t>(j) * width + i;
-      const size_t q = interactive
-        ? static_cast<size_t>(Reduced(j, height, rh)) * rw + Reduced(i, width, rw)
-        : p;
-      for (int c = 0; c < 4; ++c)
-      {
-        frame.RGBA[4 * p + c] = this->RGBA[4 * q + c];
-      }
-      this->Error[p] = error[q];
-    }
-  }
+  ExpandImage(this->RGBA.data(), rw, rh, 4, frame.RGBA.data(), width, height);
+  ExpandImage(error.data(), rw, rh, 1, this->Error.data(), width, height);
   return 1;
 }

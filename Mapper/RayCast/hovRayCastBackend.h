@@ -8,11 +8,10 @@
  * scalars change (hov::InputKey; skipped cells reported once per input); its
  * own transfer-function table, linearised at max(GPUOpacityTolerance,
  * RayCastTolerance / 10) (the table's error within a fifth of the per-pixel
- * tolerance: a finer table only adds breakpoints to locate); the interaction
- * level of detail (a window whose DesiredUpdateRate is at least
- * RayCastInteractiveUpdateRate gets one ray per f x f block of pixels, f from
- * RayCastInteractiveSubsampling or the time budget at the previous frame's
- * cost per ray, tolerance x10); rays stop at TerminationTransmittance. Output:
+ * tolerance: a finer table only adds breakpoints to locate); interactive
+ * frames (RenderFrame::Interactive, chosen by the facade from the allocated
+ * render time: hov::InteractionBudget) trace one ray per f x f block of
+ * pixels at tolerance x10; rays stop at TerminationTransmittance. Output:
  * the frame's image and the per-pixel error estimate (GetErrorImage()).
  *
  * Thread safety: rendering thread only (the caster runs vtkSMPTools).
@@ -48,8 +47,6 @@ private:
   int Trace(RenderFrame& frame);
   /// The caster for the frame's input (rebuilt when its key changes).
   void PrepareCaster(const RenderFrame& frame, vtkUnstructuredGrid* grid);
-  /// The pixels per ray in x and y of an interactive frame in @p window.
-  int Subsampling(const RenderFrame& frame, double desiredUpdateRate) const;
 
   RayCast Caster;
   RayCastShading Shading;
@@ -59,9 +56,6 @@ private:
   vtkNew<vtkHighOrderTransferFunction> TransferFunction;
   vtkNew<vtkImageData> ErrorImage;
   std::vector<float> RGBA, Error, Depth;
-  /// Wall seconds per traced ray of the last frame (0: none yet), for the
-  /// interactive frame's time budget.
-  double SecondsPerRay = 0.0;
 };
 }
 

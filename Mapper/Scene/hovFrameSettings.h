@@ -100,8 +100,6 @@ struct FrameSettings
 
   // RAY_CAST
   double RayCastTolerance = 1e-3;
-  double RayCastInteractiveUpdateRate = 1.0;
-  int RayCastInteractiveSubsampling = 0;
 
   // OPENGL_PROJECTION
   ProjectionColorMethod ColorMethod = ProjectionColorMethod::ExactColor;
@@ -136,10 +134,11 @@ struct FrameStatistics
   /// Set by the mode they belong to only (-1 / 0: not reported by this frame).
   vtkIdType ProjectedTriangles = -1;
   vtkIdType ProjectedSlabs = -1;
-  int Interactive = -1;       ///< RAY_CAST: 1 for the interactive level of detail
-  int RayCastSubsampling = 0; ///< RAY_CAST: pixels per ray in x and y
   /// Worst error estimate of a shaded segment integrated by quadrature (0: none).
   double ShadingErrorEstimate = 0.0;
+  /// Seconds of the frame that do not depend on its number of pixels (the
+  /// cells, the order; hov::InteractionBudget).
+  double FixedSeconds = 0.0;
 };
 
 /// Where a frame's messages go: the mapper's vtkWarningMacro / vtkErrorMacro.

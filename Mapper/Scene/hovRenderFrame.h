@@ -97,6 +97,12 @@ public:
   /// Window depth of opaque geometry per pixel (1: nothing), or null.
   const float* Depth = nullptr;
   FrameSettings Settings;
+  /// An interactive frame (hov::InteractionBudget, chosen by the facade from
+  /// the allocated render time): one ray per Subsampling x Subsampling block
+  /// of pixels (hovReducedImage.h), RAY_CAST at tolerance x10,
+  /// OPENGL_PROJECTION in the approximate order. Still frames: false, 1.
+  bool Interactive = false;
+  int Subsampling = 1;
   FrameMessages* Messages = nullptr;
   /// Progress and abort between tile batches; empty without observers.
   ProgressFunction Progress;

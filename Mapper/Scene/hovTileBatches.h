@@ -5,9 +5,12 @@
  * hov::ForTileBatches runs the tiles [0, numTiles) through
  * vtkSMPTools::For. Without a progress callback it is one parallel loop.
  * With one, the tiles run in about ProgressBatches consecutive batches (each
- * a parallel loop) and the callback is called on the calling thread after
- * each batch with the fraction of tiles done (ending at exactly 1); if it
- * returns true the remaining batches are skipped. Every pixel belongs to one
+ * a parallel loop; a batch that takes longer than ProgressBatchSeconds makes
+ * the next ones smaller, so that a long frame answers an abort within about
+ * that time) and the callback is called on the calling thread after each
+ * batch with the fraction of tiles done (ending at exactly 1), and once with 0
+ * before the first (an abort requested during the set-up); if it returns true
+ * the remaining batches are skipped. Every pixel belongs to one
  * tile and a tile's result does not depend on when or where it runs, so the
  * image of a completed render is bit-identical with or without batches.
  * hov::ClearTiles zeroes the pixels of the tiles that did not run.
@@ -21,6 +24,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>  // std::min
+#include <chrono>     // batch times
 #include <functional> // std::function
 #include <vector>     // the image
 
@@ -30,7 +34,10 @@ namespace hov
 using ProgressFunction = std::function<bool(double)>;
 
 /// Number of batches the tiles are split into when progress is reported.
-constexpr int ProgressBatches = 32;
+constexpr int ProgressBatches = 128;
+
+/// Longest wall time of a batch between two progress reports (seconds).
+constexpr double ProgressBatchSeconds = 0.04;
 
 /**
  * Run @p tileFunction(t) for every tile t (in parallel, see the file doc).
@@ -40,12 +47,16 @@ template <typename TileFunction>
 int ForTileBatches(
   int numTiles, const ProgressFunction& progress, TileFunction&& tileFunction)
 {
-  const int batch =
-    progress ? std::max(1, (numTiles + ProgressBatches - 1) / ProgressBatches)
-             : std::max(1, numTiles);
+  int batch = progress ? std::max(1, (numTiles + ProgressBatches - 1) / ProgressBatches)
+                       : std::max(1, numTiles);
   int done = 0;
+  if (progress && progress(0.0))
+  {
+    return 0; // aborted during the set-up before the tiles
+  }
   while (done < numTiles)
   {
+    const auto start = std::chrono::steady_clock::now();
     const int end = std::min(numTiles, done + batch);
     vtkSMPTools::For(done, end, 1, [&](vtkIdType t0, vtkIdType t1) {
       for (vtkIdType t = t0; t < t1; ++t)
@@ -54,6 +65,12 @@ int ForTileBatches(
       }
     });
     done = end;
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (progress && seconds > ProgressBatchSeconds)
+    {
+      batch = std::max(1, static_cast<int>(batch * ProgressBatchSeconds / seconds));
+    }
     if (progress && progress(static_cast<double>(done) / numTiles) && done < numTiles)
     {
       break;

@@ -1,0 +1,48 @@
+/**
+ * @file    hovFrameLevel.h
+ * @brief   The level of detail of one window frame of vtkHighOrderVolumeMapper
+ *          (README, "Interaction"): interactive (the volume's allocated render
+ *          time is shorter than the exact frame's measured cost,
+ *          hov::InteractionBudget), a progressive level of a slow still frame
+ *          (hov::ProgressiveStill), or exact.
+ *
+ * Reduced frames (f > 1) of CPU_ACCURATE composite per pixel (exact per ray,
+ * no visibility sort); those of OPENGL_PROJECTION are drawn by the CPU path
+ * when the projection's fixed part alone exceeds the level's budget.
+ *
+ * Thread safety: rendering thread only.
+ * @sa hov::InteractionBudget, hov::ProgressiveStill, hovReducedImage.h
+ */
+#ifndef hovFrameLevel_h
+#define hovFrameLevel_h
+
+class vtkAbstractMapper;
+class vtkRenderer;
+class vtkVolume;
+
+namespace hov
+{
+class InteractionBudget;
+class ProgressiveStill;
+class RenderFrame;
+
+/// The mapper's interaction settings (vtkHighOrderVolumeMapper).
+struct LevelSettings
+{
+  int Mode = 0;        ///< RenderMode (the hov::RenderMode value)
+  int Fixed = 0;       ///< InteractiveSubsampling (0: from the budget)
+  bool AutoAdjust = true;
+  double ProgressiveTime = 0.5;
+};
+
+/**
+ * Sets frame.Interactive, frame.Subsampling and, for reduced frames, the
+ * settings they change (see the file doc). Returns the render mode whose
+ * backend draws the frame and whose cost it measures.
+ */
+int ChooseFrameLevel(RenderFrame& frame, const LevelSettings& settings,
+  const InteractionBudget& budget, ProgressiveStill& progressive, vtkRenderer* renderer,
+  vtkVolume* volume, vtkAbstractMapper* mapper);
+}
+
+#endif
