@@ -5,48 +5,32 @@
  * A vtkUnstructuredGridVolumeMapper that reads the same vtkVolumeProperty as
  * VTK's volume mappers and evaluates the emission-absorption integral along
  * every pixel's ray in closed form (double precision, every transfer-function
- * breakpoint kept), with three render modes (SetRenderMode):
+ * breakpoint kept). Render modes (SetRenderMode; README, "Choosing a render
+ * mode"):
  *  - CPU_ACCURATE (default): HIAC cell projection (Williams, Max & Stein,
- *    IEEE TVCG 1998, sections 4-6): cells in the exact visibility order of
- *    vtkSteinVisibilitySort (or any vtkVisibilitySort, or per pixel), exact
- *    ray entry and exit per OpenGL pixel centre, the scalar split at every
- *    breakpoint; linear tetrahedra by a fast exact path, voxels, hexahedra,
- *    wedges, pyramids and their quadratic forms with their own interpolants.
- *    With isosurfaces, separate colour/isosurface fields or splatting (HIAC
- *    5.1-5.3), the feature path. Mapper/Projector.
- *  - OPENGL_PROJECTION: HIAC section 7 (regions of every projected cell and
- *    slab, drawn with OpenGL into a float target). Not faster than
- *    CPU_ACCURATE on a software OpenGL (README, "Choosing a render mode").
- *    Mapper/Regions, Mapper/OpenGL. RenderImage() in this mode renders the
- *    CPU_ACCURATE image (it has no window).
+ *    IEEE TVCG 1998, sections 4-6) in the exact visibility order of
+ *    vtkSteinVisibilitySort, linear and quadratic cells. Mapper/Projector.
+ *  - OPENGL_PROJECTION: HIAC section 7 regions drawn with OpenGL into a float
+ *    target (not faster than CPU_ACCURATE on a software OpenGL).
+ *    Mapper/Regions, Mapper/OpenGL. RenderImage() gives the CPU_ACCURATE image.
  *  - RAY_CAST: one ray per pixel through curved Lagrange and Bezier cells of
- *    any order and every other cell the module reads (ElVis, Nelson et al.,
- *    IEEE TVCG 2012, with rigorous enclosures and located breakpoints), to a
- *    stated per-pixel tolerance. Mapper/RayCast.
+ *    any order (ElVis, Nelson et al., IEEE TVCG 2012, with rigorous
+ *    enclosures), to a stated per-pixel tolerance. Mapper/RayCast.
  *
- * Opacity semantics (SetOpacitySemantics): GPU_COMPATIBLE (default,
- * extinction -ln(1 - a)/u, vtkGPUVolumeRayCastMapper's limit), VTK_UNSTRUCTURED
- * (a/u, VTK's unstructured mappers), RAW_EXTINCTION (a). Emission
- * (SetEmissionModel): WILLIAMS_MAX (colour x extinction, as VTK) or
- * WILHELMS_VAN_GELDER (glow per unit distance x EmissionScale). Lengths are
- * dataset lengths. The property's Shade/Ambient/Diffuse/Specular/SpecularPower
- * and gradient opacity apply in CPU_ACCURATE and RAY_CAST (README, "Shading
- * and gradient opacity": what each mode honours; others warn once).
- * The image is float premultiplied RGBA (GetFloatImage(),
- * row 0 at the bottom), blended over what is drawn, with rays stopping at
- * opaque geometry drawn before the volume.
+ * Opacity semantics: GPU_COMPATIBLE (default, vtkGPUVolumeRayCastMapper's
+ * limit), VTK_UNSTRUCTURED (VTK's unstructured mappers), RAW_EXTINCTION.
+ * Emission: WILLIAMS_MAX (as VTK) or WILHELMS_VAN_GELDER. Shading, gradient
+ * opacity and blend modes as VTK's GPU mapper defines them (README: what each
+ * mode honours; anything else warns once). Interaction follows the volume's
+ * allocated render time in every mode. The image is float premultiplied RGBA
+ * (GetFloatImage(), row 0 at the bottom), blended over what is drawn, rays
+ * stopping at opaque geometry drawn before the volume.
  *
- * Interaction follows the volume's allocated render time in every mode (see
- * AutoAdjustImageSampleDistance); for vtkLODProp3D see the README.
- *
- * Render() and RenderImage() build one frame (hov::RenderFrame: the settings
- * converted once, the view, the opaque depth), hand it to the render mode's
- * backend (hov::Backend, chosen in SelectBackend()), publish the image and,
- * in a window, display it. Bad input never crashes and never produces NaN
- * pixels: errors and warnings follow one rule for every mode (README,
- * "Failures and messages: the rule"). Every measured accuracy, speed and test
- * name is in the README (sections "Mapper settings" to "High-order ray
- * casting").
+ * Render() and RenderImage() build one frame (hov::RenderFrame), hand it to
+ * the render mode's backend (hov::Backend, SelectBackend()), publish the
+ * image and, in a window, display it. Bad input never crashes and never
+ * produces NaN pixels (README, "Failures and messages: the rule"). Measured
+ * accuracy, speed and test names: README.
  *
  * Thread safety: rendering uses vtkSMPTools internally; the float image is
  * bit-identical for any number of threads.
@@ -325,9 +309,11 @@ public:
    * InteractiveSubsampling if > 0 (clamped to [0, 64]); RAY_CAST at
    * tolerance x10, OPENGL_PROJECTION in the approximate order. Frames that fit
    * (the still frame) are exact. A still frame estimated above
-   * ProgressiveTime seconds (default 0.5; 0 off; clamped to [0, 1e6]) in a
-   * window with an initialized interactor is progressive: coarse at once, then
-   * refined on the interactor's timer, its exact level abortable.
+   * ProgressiveTime seconds (default 0.5; 0 off; clamped to [0, 1e6]) right
+   * after an interactive frame, in a window with an initialized interactor,
+   * is progressive: coarse at once, then refined on the interactor's timer,
+   * its exact level abortable. Still frames not preceded by interaction are
+   * exact at once.
    */
   vtkSetMacro(AutoAdjustImageSampleDistance, bool);
   vtkGetMacro(AutoAdjustImageSampleDistance, bool);

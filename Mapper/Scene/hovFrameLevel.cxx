@@ -38,7 +38,7 @@ int hov::ChooseFrameLevel(RenderFrame& frame, const LevelSettings& s,
       ? std::max(2, budget.Choose(s.Mode, levelBudget, frame.Width, frame.Height, 0, true).Subsampling)
       : 1;
     frame.Subsampling =
-      progressive.Level(ren, vol, mapper, choice.Estimate, s.ProgressiveTime, coarse);
+      progressive.Level(ren, vol, mapper, choice.Estimate, s.ProgressiveTime, coarse, s.AfterInteraction);
   }
   if (frame.Subsampling > 1 && s.Mode == Projection &&
     budget.FixedSeconds(Projection) >= levelBudget)

@@ -33,6 +33,8 @@ struct LevelSettings
   int Fixed = 0;       ///< InteractiveSubsampling (0: from the budget)
   bool AutoAdjust = true;
   double ProgressiveTime = 0.5;
+  /// The previous frame was interactive (only then may a refinement start).
+  bool AfterInteraction = false;
 };
 
 /**

@@ -39,7 +39,7 @@ void hov::ProgressiveStill::StopTimer()
 }
 
 int hov::ProgressiveStill::Level(vtkRenderer* renderer, vtkVolume* volume,
-  vtkAbstractMapper* mapper, double estimate, double threshold, int coarse)
+  vtkAbstractMapper* mapper, double estimate, double threshold, int coarse, bool mayStart)
 {
   vtkRenderWindow* window = renderer->GetRenderWindow();
   vtkRenderWindowInteractor* iren = window ? window->GetInteractor() : nullptr;
@@ -62,7 +62,8 @@ int hov::ProgressiveStill::Level(vtkRenderer* renderer, vtkVolume* volume,
     // A new view: coarse first if the exact frame is slow.
     this->Key = key;
     this->Completed.clear();
-    this->Current = estimate > threshold && coarse > 1 ? coarse : 1;
+    const bool refining = this->Running;
+    this->Current = (mayStart || refining) && estimate > threshold && coarse > 1 ? coarse : 1;
     this->Running = this->Current > 1;
   }
   if (this->Running && this->Interactor != iren)

@@ -14,8 +14,12 @@
  * Render(); the application's event loop runs in between, so the UI stays live. The exact level is abortable (the window's
  * AbortCheckEvent, SetAbortExecute, and X events pending on the window);
  * an aborted level shows the last completed one and is retried by the timer.
- * A change of the view (camera, volume, mapper, input, size) starts again at
- * the coarse level; an interactive frame cancels the refinement.
+ * Only a still frame that follows an interactive frame (the mouse release)
+ * starts a refinement: a still frame of a new view drawn without interaction
+ * (a script rendering one view after another, a screenshot) is exact at once,
+ * so no caller ever reads a coarse level it did not ask for. A change of the
+ * view during a refinement starts it again at the coarse level; an
+ * interactive frame cancels it.
  *
  * Without an initialized interactor (offscreen, RenderImage) every still frame
  * is exact at once.
@@ -51,10 +55,12 @@ public:
    * The pixels per ray of a still frame of @p volume in @p renderer (1: exact)
    * and whether it is a progressive level. @p estimate: the exact frame's
    * estimated seconds (-1 unknown); @p threshold: ProgressiveTime (<= 0: off);
-   * @p coarse: the factor that fits the interactive budget.
+   * @p coarse: the factor that fits the interactive budget; @p mayStart:
+   * whether a new refinement may start (the previous frame was interactive
+   * or a refinement is under way; see the class doc).
    */
   int Level(vtkRenderer* renderer, vtkVolume* volume, vtkAbstractMapper* mapper, double estimate,
-    double threshold, int coarse);
+    double threshold, int coarse, bool mayStart);
 
   /// Whether the frame of the last Level() call is a progressive one.
   bool Active() const { return this->Running; }

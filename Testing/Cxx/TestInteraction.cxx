@@ -9,7 +9,8 @@
 //  3. The still frame after it (DesiredUpdateRate 0.0001) equals the
 //     reference bit for bit (once its progressive levels, if any, are done).
 //  4. Progressive still frames (ProgressiveTime 1e-9: every still frame is
-//     "slow"): a new view first gives a coarse level with a one-shot timer
+//     "slow"): a new view without interaction is exact at once; after an
+//     interactive frame the release first gives a coarse level with a one-shot timer
 //     pending; firing the timers renders finer levels up to the exact one,
 //     equal bit for bit to the non-interactive render of that view.
 //  5. CPU modes: an AbortCheckEvent observer that sets AbortRender stops a
@@ -148,11 +149,22 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
     name + ": the still frame after interaction equals the non-interactive render bit for bit (" +
       std::to_string(levels) + " level(s))");
 
-  // 4: progressive levels of a new view.
+  // 4: a new view drawn without interaction (a script's loop of screenshots)
+  // is exact at once, however slow; after interaction it is progressive.
   mapper->SetProgressiveTime(1e-9);
   cam->Azimuth(10.0);
   win->SetDesiredUpdateRate(0.0001);
   win->Render();
+  const int direct = mapper->GetLastSubsampling();
+  const Image directImage = FloatImage(mapper);
+  ck.Check(direct == 1 && directImage.V == Reference(win, mapper).V,
+    name + ": a still frame of a new view without interaction is exact at once (f = " +
+      std::to_string(direct) + ")");
+  cam->Azimuth(10.0);
+  win->SetDesiredUpdateRate(1e6);
+  win->Render(); // interaction
+  win->SetDesiredUpdateRate(0.0001);
+  win->Render(); // the release
   const int coarse = mapper->GetLastSubsampling();
   const Image coarseImage = FloatImage(mapper);
   const bool pending = !iren->Pending.empty();
@@ -181,6 +193,9 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
     const unsigned long tag = win->AddObserver(vtkCommand::AbortCheckEvent, abortCheck);
     // A progressive exact level aborted: the last completed level is shown.
     cam->Azimuth(10.0);
+    win->SetDesiredUpdateRate(1e6);
+    win->Render(); // interaction, then the release
+    win->SetDesiredUpdateRate(0.0001);
     win->Render();
     while (mapper->GetLastSubsampling() >= 8 && iren->FireTimers() > 0)
     {
