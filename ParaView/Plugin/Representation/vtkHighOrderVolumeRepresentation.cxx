@@ -288,6 +288,10 @@ void vtkHighOrderVolumeRepresentation::SetRenderMode(int mode)
   this->Mapper->SetRenderMode(mode);
   this->ApplyColorSamplingTolerance();
 }
+void vtkHighOrderVolumeRepresentation::SetBlendMode(int mode)
+{
+  this->Mapper->SetBlendMode(mode);
+}
 void vtkHighOrderVolumeRepresentation::SetOpacitySemantics(int semantics)
 {
   this->Mapper->SetOpacitySemantics(semantics);

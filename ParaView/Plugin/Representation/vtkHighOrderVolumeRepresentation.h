@@ -70,6 +70,7 @@ public:
   ///@{
   /// Forwarded to the mapper (see vtkHighOrderVolumeMapper for the meaning of each).
   void SetRenderMode(int mode);
+  void SetBlendMode(int mode);
   void SetOpacitySemantics(int semantics);
   void SetGPUOpacityTolerance(double tolerance);
   void SetEmissionModel(int model);
