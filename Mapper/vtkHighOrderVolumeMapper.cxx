@@ -543,7 +543,7 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastImageTime: " << this->LastImageTime << " s\n";
   os << indent << "LastRenderAborted: " << this->LastRenderAborted << "\n";
   os << indent << "LastRenderWasInteractive: " << this->LastRenderWasInteractive << "\n";
-  os << indent << "LastRayCastSubsampling: " << this->LastRayCastSubsampling << "\n";
+  os << indent << "LastSubsampling: " << this->LastSubsampling << "\n";
   os << indent << "WitnessViolations: " << this->WitnessViolations << "\n";
   os << indent << "NumberOfRenderedCells: " << this->NumberOfRenderedCells << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";

@@ -167,13 +167,14 @@ int TestPropertyAudit(int, char*[])
   frames(1);
   std::ostringstream os;
   mapper->Print(os);
-  const char* names[] = { "RenderMode", "RayCastTolerance", "RayCastInteractiveSubsampling",
+  const char* names[] = { "RenderMode", "RayCastTolerance", "InteractiveSubsampling",
     "OpacitySemantics", "CellOrdering", "GPUOpacityTolerance", "EmissionModel", "EmissionScale",
     "IntegrationMethod", "VectorMode", "VectorComponent", "TerminationTransmittance",
     "UseDepthBuffer", "TileSize", "ViewDepthClipping", "VisibilitySort", "Isosurfaces",
     "ColorArrayName", "IsosurfaceArrayName", "Splatting", "ProjectionColorMethod",
     "ProjectionOrder", "ProjectionOpacityLookup", "BlendMode", "LastImageTime",
-    "LastRenderAborted", "LastRenderWasInteractive", "LastRayCastSubsampling",
+    "LastRenderAborted", "LastRenderWasInteractive", "LastSubsampling",
+    "AutoAdjustImageSampleDistance", "ProgressiveTime", "AverageIPScalarRange",
     "WitnessViolations", "NumberOfRenderedCells", "NumberOfSkippedCells", "NumberOfSegments",
     "NumberOfPieces", "NumberOfRays", "NumberOfSplattedCells", "NumberOfProjectedTriangles",
     "NumberOfProjectedSlabs", "ShadingErrorEstimate", "Shading (last frame): Shade 1",
