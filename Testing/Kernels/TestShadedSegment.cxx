@@ -47,23 +47,13 @@ TEST(ShadedSegment, QuadraticFieldsAgainstLongDoubleReference)
   for (int trial = 0; trial < 40; ++trial)
   {
     const Case c = RandomCase(rng, trial);
-    hov::TransferFunction tf;
-    tf.Build(c.Spec);
-    hov::GradientOpacityFunction go;
-    go.Build(c.GO);
-    hov::VolumeShadingSettings vs;
-    vs.Shade = true;
-    vs.Material = c.Material;
-    vs.Lights = c.Lights.data();
-    vs.LightCount = static_cast<int>(c.Lights.size());
-    hov::Polynomial s, g[3];
-    c.F.Polynomials(s, g);
-    hov::SegmentRay ray;
-    for (int i = 0; i < 3; ++i)
-    {
-      ray.Origin[i] = c.F.O[i];
-      ray.Direction[i] = c.F.D[i];
-    }
+    const hovtest::CaseInputs in(c);
+    const hov::TransferFunction& tf = in.TF;
+    const hov::GradientOpacityFunction& go = in.GO;
+    const hov::VolumeShadingSettings& vs = in.Shading;
+    const hov::Polynomial& s = in.S;
+    const hov::Polynomial* g = in.G;
+    const hov::SegmentRay& ray = in.Ray;
     for (hov::EmissionModel em : { hov::EmissionModel::WilliamsMax, hov::EmissionModel::WilhelmsVanGelder })
     {
       const bool wvg = em == hov::EmissionModel::WilhelmsVanGelder;

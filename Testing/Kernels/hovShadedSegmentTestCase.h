@@ -11,7 +11,9 @@
 #define hovShadedSegmentTestCase_h
 
 #include "hovGradientOpacity.h"
+#include "hovShadedSegment.h" // SegmentRay
 #include "hovShading.h"
+#include "hovVolumeShading.h"
 #include "hovTransferFunction.h"
 
 #include "hovFeatureTestReference.h"
@@ -101,6 +103,33 @@ struct Case
   std::vector<hov::ShadingLight> Lights;
   hov::ShadingMaterial Material;
   double Length = 1.0;
+};
+
+/// The kernel's inputs of a case: the tables, the shading settings (Shade on,
+/// the case's lights), the field and gradient polynomials and the ray.
+struct CaseInputs
+{
+  hov::TransferFunction TF;
+  hov::GradientOpacityFunction GO;
+  hov::VolumeShadingSettings Shading;
+  hov::Polynomial S, G[3];
+  hov::SegmentRay Ray;
+
+  explicit CaseInputs(const Case& c)
+  {
+    this->TF.Build(c.Spec);
+    this->GO.Build(c.GO);
+    this->Shading.Shade = true;
+    this->Shading.Material = c.Material;
+    this->Shading.Lights = c.Lights.data();
+    this->Shading.LightCount = static_cast<int>(c.Lights.size());
+    c.F.Polynomials(this->S, this->G);
+    for (int i = 0; i < 3; ++i)
+    {
+      this->Ray.Origin[i] = c.F.O[i];
+      this->Ray.Direction[i] = c.F.D[i];
+    }
+  }
 };
 
 inline Case RandomCase(std::mt19937_64& rng, int trial)
