@@ -226,6 +226,8 @@ def standalone_render(case, camera, size, catcher=None):
     setters = {"OpacitySemantics": lambda v: mapper.SetOpacitySemantics(
         ["GPU compatible", "VTK unstructured", "Raw extinction"].index(v)),
         "RayCastTolerance": mapper.SetRayCastTolerance,
+        "AccurateBlendMode": lambda v: mapper.SetBlendMode(
+            ["Composite", "Maximum intensity", "Minimum intensity", "Average intensity"].index(v)),
         "CellOrdering": lambda v: mapper.SetCellOrdering(
             ["Visibility sort", "Per-pixel sort"].index(v))}
     for name, value in case["properties"].items():

@@ -2,7 +2,8 @@
 through ParaView's "Accurate Volume" (pvbatch, one rank), each compared with the VTK 9.1
 module's own float image of the same camera and property (this process).
 
-A tenth case renders the bracket with ParaView's default colour map (Cool to Warm: Diverging,
+Two more render the bracket's maximum (CPU) and average (ray cast) intensity through the
+AccurateBlendMode property. Another renders the bracket with ParaView's default colour map (Cool to Warm: Diverging,
 discretized to 256 steps); its standalone reference uses the same map continuous, linearised
 to 1e-4 (what the plugin does with it).
 
@@ -31,6 +32,10 @@ def main():
     # the continuous map linearised to 1e-4, as the standalone mapper does with that setting.
     cases.append(hpt.make_case(args, "bracket", 0, tag="bracket_cpu_default_colormap",
                                paraview_colormap=True))
+    # The blend modes through the representation's AccurateBlendMode property.
+    for mode, blend in ((0, "Maximum intensity"), (2, "Average intensity")):
+        cases.append(hpt.make_case(args, "bracket", mode, tag="bracket_%d_%s" % (
+            mode, blend.split()[0].lower()), properties={"AccurateBlendMode": blend}))
     out = os.path.join(args.temp, "paraview_modes")
     results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
     messages = hpt.messages_by_case(stderr)
