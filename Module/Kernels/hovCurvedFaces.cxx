@@ -2,6 +2,7 @@
 #include "hovCurvedFaces.h"
 
 #include "hovBernstein.h" // equispaced Lagrange -> Bernstein, de Casteljau
+#include "hovRayClip.h"   // ClipRayToBox
 
 #include <algorithm> // std::min, std::max, std::swap
 #include <cmath>     // std::abs, std::sqrt
@@ -295,26 +296,8 @@ namespace
 /// True if the line o + t d (any t) meets the box (xmin, xmax, ...).
 bool LineMeetsBox(const double box[6], const double o[3], const double d[3])
 {
-  double t0 = -1e300, t1 = 1e300;
-  for (int k = 0; k < 3; ++k)
-  {
-    if (d[k] == 0.0)
-    {
-      if (o[k] < box[2 * k] || o[k] > box[2 * k + 1])
-      {
-        return false;
-      }
-      continue;
-    }
-    double a = (box[2 * k] - o[k]) / d[k], b = (box[2 * k + 1] - o[k]) / d[k];
-    if (a > b)
-    {
-      std::swap(a, b);
-    }
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  return t0 <= t1;
+  double t0, t1;
+  return ClipRayToBox(box, o, d, -1e300, 1e300, t0, t1);
 }
 
 /// The depth-first search of one face (see FaceRayCrossings): the sub-patch

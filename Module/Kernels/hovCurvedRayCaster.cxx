@@ -2,6 +2,7 @@
 #include "hovCurvedRayCaster.h"
 
 #include "hovCurvedRayCell.h"     // inside intervals
+#include "hovRayClip.h"           // ClipRayToBox
 #include "hovTransferFunction.h"  // TraceRay's table
 #include "hovCurvedShadedSegment.h" // shaded segments
 #include "hovVolumeShading.h"       // VolumeShadingSettings::Shade
@@ -30,33 +31,6 @@ constexpr double MinSegmentTolerance = 1e-13;
 /// TraceRay: an interval ending within this (relative) of what earlier
 /// intervals cover adds nothing and is dropped.
 constexpr double CoverTolerance = 1e-10;
-
-/// Ray parameter range [t0, t1] inside @p box, clipped to [tMin, tMax]; false if empty.
-bool SlabTest(const double box[6], const double o[3], const double d[3], double tMin, double tMax,
-  double& t0, double& t1)
-{
-  t0 = tMin;
-  t1 = tMax;
-  for (int k = 0; k < 3; ++k)
-  {
-    if (d[k] == 0.0)
-    {
-      if (o[k] < box[2 * k] || o[k] > box[2 * k + 1])
-      {
-        return false;
-      }
-      continue;
-    }
-    double a = (box[2 * k] - o[k]) / d[k], b = (box[2 * k + 1] - o[k]) / d[k];
-    if (a > b)
-    {
-      std::swap(a, b);
-    }
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-  }
-  return t0 <= t1;
-}
 
 void MergeBox(double into[6], const double box[6])
 {
@@ -277,7 +251,7 @@ void CurvedRayCaster::CollectCandidates(
   {
     const Node& node = this->Nodes[stack[--top]];
     double t0, t1;
-    if (!SlabTest(node.Box, o, d, tMin, tMax, t0, t1))
+    if (!ClipRayToBox(node.Box, o, d, tMin, tMax, t0, t1))
     {
       continue;
     }
@@ -309,7 +283,7 @@ void CurvedRayCaster::CollectSegments(const double origin[3], const double direc
   {
     const Cell& cell = this->Cells[c];
     double t0, t1;
-    if (!SlabTest(cell.Faces.Bounds, origin, direction, tMin, tMax, t0, t1))
+    if (!ClipRayToBox(cell.Faces.Bounds, origin, direction, tMin, tMax, t0, t1))
     {
       continue;
     }

@@ -26,6 +26,8 @@
 #ifndef hovRayClip_h
 #define hovRayClip_h
 
+#include <algorithm> // std::min, std::max, std::swap
+
 namespace hov
 {
 /**
@@ -61,6 +63,38 @@ inline void ClipFourPlanes(const double* nx, const double* ny, const double* nz,
   const T out12 = leave[2] < leave[1] ? leave[2] : leave[1];
   const T out012 = out12 < out0 ? out12 : out0;
   tOut = leave[3] < out012 ? leave[3] : out012;
+}
+
+/**
+ * The slab test: [t0, t1] = the part of [tMin, tMax] where o + t d lies in
+ * the axis-aligned box (xmin, xmax, ymin, ymax, zmin, zmax); false if empty.
+ * A zero direction component keeps the whole range if o is inside that slab.
+ * Shared by the curved ray caster's BVH and the curved face search.
+ */
+inline bool ClipRayToBox(const double box[6], const double o[3], const double d[3], double tMin,
+  double tMax, double& t0, double& t1)
+{
+  t0 = tMin;
+  t1 = tMax;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (d[k] == 0.0)
+    {
+      if (o[k] < box[2 * k] || o[k] > box[2 * k + 1])
+      {
+        return false;
+      }
+      continue;
+    }
+    double a = (box[2 * k] - o[k]) / d[k], b = (box[2 * k + 1] - o[k]) / d[k];
+    if (a > b)
+    {
+      std::swap(a, b);
+    }
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t0 <= t1;
 }
 }
 
