@@ -21,6 +21,7 @@ struct hov::CellProjector::Buffers
   std::vector<CellBox> Boxes; ///< the records' pixel boxes, for binning
   std::vector<std::pair<float, vtkIdType>> DepthOrder; ///< per-pixel mode: (depth, tetra)
   std::vector<vtkIdType> Order;                        ///< per-pixel mode: tetras by depth
+  std::vector<unsigned char> Covers; ///< per-pixel mode: the cell covers a pixel centre
   std::vector<int> GeneralOf; ///< per ordered cell: general cell index, or -1
   TileBins Bins;
   vtkSMPThreadLocal<ProjectorTile> Tiles;
@@ -121,16 +122,38 @@ const std::vector<vtkIdType>& hov::CellProjector::DepthOrder(const CellSetup& se
   // make each pixel's list arrive nearly sorted (cheap insertion sort), and
   // sorting them once here keeps every tile's list in depth order and in
   // memory order at the same time.
+  //
+  // A tetrahedron whose pixel box holds no pixel centre adds nothing to any
+  // pixel: it is left out here (most of a large mesh's cells in a reduced
+  // interactive frame, whose few rays miss them), so neither the sort nor
+  // the records nor the binning pay for it. The image is the same.
   Buffers& buf = *this->Scratch;
   const auto& tets = setup.GetTetras();
   const auto& points = setup.GetPoints();
   const vtkIdType numTets = static_cast<vtkIdType>(tets.size());
-  const ViewRays::Ray centre = rays.PixelRay(rays.GetWidth() / 2, rays.GetHeight() / 2);
+  const int width = rays.GetWidth(), height = rays.GetHeight();
+  const ViewRays::Ray centre = rays.PixelRay(width / 2, height / 2);
+  const vtkIdType n = static_cast<vtkIdType>(frontToBack.size());
   buf.DepthOrder.resize(frontToBack.size());
-  vtkSMPTools::For(0, static_cast<vtkIdType>(frontToBack.size()), [&](vtkIdType b, vtkIdType e) {
+  buf.Covers.resize(frontToBack.size());
+  vtkSMPTools::For(0, n, [&](vtkIdType b, vtkIdType e) {
     for (vtkIdType k = b; k < e; ++k)
     {
       const vtkIdType id = frontToBack[k];
+      if (id < numTets)
+      {
+        const Box box =
+          PixelBox(tets[id], buf.Points.Window, buf.Points.Projectable, width, height);
+        buf.Covers[k] = box[0] <= box[1] && box[2] <= box[3];
+        if (!buf.Covers[k])
+        {
+          continue;
+        }
+      }
+      else
+      {
+        buf.Covers[k] = 1;
+      }
       const glm::dvec3 c = id < numTets
         ? 0.25 * (points[tets[id].Points[0]] + points[tets[id].Points[1]] +
                    points[tets[id].Points[2]] + points[tets[id].Points[3]])
@@ -139,6 +162,15 @@ const std::vector<vtkIdType>& hov::CellProjector::DepthOrder(const CellSetup& se
         frontToBack[k] };
     }
   });
+  size_t kept = 0;
+  for (size_t k = 0; k < buf.DepthOrder.size(); ++k)
+  {
+    if (buf.Covers[k])
+    {
+      buf.DepthOrder[kept++] = buf.DepthOrder[k];
+    }
+  }
+  buf.DepthOrder.resize(kept);
   vtkSMPTools::Sort(buf.DepthOrder.begin(), buf.DepthOrder.end()); // (depth, id): deterministic
   buf.Order.resize(buf.DepthOrder.size());
   for (size_t k = 0; k < buf.Order.size(); ++k)
