@@ -307,7 +307,9 @@ public:
    * cost (measured per mode) exceeds it is an interactive frame: one exact ray
    * per f x f block of pixels, f from the budget (2..16) or
    * InteractiveSubsampling if > 0 (clamped to [0, 64]); RAY_CAST at
-   * tolerance x10, OPENGL_PROJECTION in the approximate order. Frames that fit
+   * tolerance x10 (by the CPU path's exact rays when every cell is linear and
+   * no CPU-only feature is set), OPENGL_PROJECTION in the approximate order
+   * (or by the CPU path when its regions alone exceed the budget). Frames that fit
    * (the still frame) are exact. A still frame estimated above
    * ProgressiveTime seconds (default 0.5; 0 off; clamped to [0, 1e6]) right
    * after an interactive frame, in a window with an initialized interactor,

@@ -4,12 +4,58 @@
 #include "hovProgressiveStill.h"  // progressive levels
 #include "hovRenderFrame.h"       // the frame
 
+#include "vtkAbstractMapper.h"         // the input
+#include "vtkCellType.h"               // linear cell types
 #include "vtkRenderWindow.h"           // its interactor
+#include "vtkUnsignedCharArray.h"      // the input's cell types
+#include "vtkUnstructuredGrid.h"       // the input
 #include "vtkRenderWindowInteractor.h" // the interactive rate
 #include "vtkRenderer.h"               // its window
 #include "vtkVolume.h"                 // the allocated render time
 
 #include <algorithm> // std::max
+
+namespace
+{
+/// RAY_CAST input that the CPU path renders exactly and with every feature
+/// set: linear cells only (curved geometry is the ray caster's job), no
+/// CPU-only feature that the ray caster's still frame would not show.
+bool CPUPathRendersSame(vtkAbstractMapper* mapper, const hov::FrameSettings& settings)
+{
+  if (!settings.Isosurfaces.empty() || !settings.ColorArray.empty() ||
+    !settings.IsosurfaceArray.empty() || settings.Splatting)
+  {
+    return false;
+  }
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  if (!grid || grid->GetNumberOfCells() == 0)
+  {
+    return false;
+  }
+  // One byte per cell (a fraction of a millisecond for a million cells).
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  if (!types)
+  {
+    return false;
+  }
+  const unsigned char* type = types->GetPointer(0);
+  for (vtkIdType i = 0; i < types->GetNumberOfValues(); ++i)
+  {
+    switch (type[i])
+    {
+      case VTK_TETRA:
+      case VTK_HEXAHEDRON:
+      case VTK_VOXEL:
+      case VTK_WEDGE:
+      case VTK_PYRAMID:
+        break;
+      default:
+        return false;
+    }
+  }
+  return true;
+}
+}
 
 int hov::ChooseFrameLevel(RenderFrame& frame, const LevelSettings& s,
   const InteractionBudget& budget, ProgressiveStill& progressive, vtkRenderer* ren,
@@ -45,6 +91,19 @@ int hov::ChooseFrameLevel(RenderFrame& frame, const LevelSettings& s,
   {
     // The regions alone exceed the budget at any resolution: the exact rays
     // of the CPU path at reduced resolution instead.
+    costMode = CPU;
+    frame.Settings.Mode = RenderMode::CPUAccurate;
+    const int fixed = frame.Interactive ? s.Fixed : 0;
+    frame.Subsampling = std::max(
+      2, budget.Choose(CPU, levelBudget, frame.Width, frame.Height, fixed, true).Subsampling);
+  }
+  constexpr int Ray = static_cast<int>(RenderMode::RayCast);
+  if (frame.Subsampling > 1 && s.Mode == Ray && CPUPathRendersSame(mapper, frame.Settings))
+  {
+    // Linear cells: the CPU path's exact rays cost a fraction of the ray
+    // caster's (no cell search, no root isolation), and its image is exact
+    // where the ray caster's is within its tolerance: reduced levels by the
+    // CPU path, the exact level by the ray caster.
     costMode = CPU;
     frame.Settings.Mode = RenderMode::CPUAccurate;
     const int fixed = frame.Interactive ? s.Fixed : 0;

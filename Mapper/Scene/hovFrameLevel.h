@@ -8,7 +8,10 @@
  *
  * Reduced frames (f > 1) of CPU_ACCURATE composite per pixel (exact per ray,
  * no visibility sort); those of OPENGL_PROJECTION are drawn by the CPU path
- * when the projection's fixed part alone exceeds the level's budget.
+ * when the projection's fixed part alone exceeds the level's budget; those of
+ * RAY_CAST by the CPU path when every cell is linear and no CPU-only feature
+ * is set (its exact rays cost a fraction of the ray caster's), by the ray
+ * caster otherwise (curved cells).
  *
  * Thread safety: rendering thread only.
  * @sa hov::InteractionBudget, hov::ProgressiveStill, hovReducedImage.h

@@ -13,6 +13,8 @@
 //     interactive frame the release first gives a coarse level with a one-shot timer
 //     pending; firing the timers renders finer levels up to the exact one,
 //     equal bit for bit to the non-interactive render of that view.
+//  6. RAY_CAST on linear cells: its reduced frame (InteractiveSubsampling 4)
+//     is the CPU path's, bit for bit (README, "Interaction").
 //  5. CPU modes: an AbortCheckEvent observer that sets AbortRender stops a
 //     still frame (LastRenderAborted); the next still frame is complete and
 //     equals the non-interactive render. An abort of a progressive exact
@@ -175,6 +177,26 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
       mapper->GetLastSubsampling() == 1 && refined.V == ref2.V,
     name + ": progressive still frame: level f = " + std::to_string(coarse) + " at once, " +
       std::to_string(progressiveLevels) + " levels by timer, the last equal to the non-interactive render");
+
+  // 6: RAY_CAST's reduced frames of linear cells come from the CPU path.
+  if (mode == vtkHighOrderVolumeMapper::RAY_CAST)
+  {
+    mapper->SetInteractiveSubsampling(4);
+    win->SetDesiredUpdateRate(1e6);
+    win->Render();
+    const Image rayReduced = FloatImage(mapper);
+    const int fRay = mapper->GetLastSubsampling();
+    mapper->SetRenderMode(vtkHighOrderVolumeMapper::CPU_ACCURATE);
+    win->Render();
+    const Image cpuReduced = FloatImage(mapper);
+    mapper->SetRenderMode(mode);
+    mapper->SetInteractiveSubsampling(0);
+    StillFrame(win, iren, mapper);
+    ck.Check(fRay == 4 && mapper->GetLastSubsampling() == 1 && rayReduced.V == cpuReduced.V &&
+        CheckImage(rayReduced).Covered > 100,
+      name + ": the reduced frame of linear cells is the CPU path's, bit for bit (f = " +
+        std::to_string(fRay) + ")");
+  }
 
   // 5: abort (CPU modes: the tile batches).
   if (mode != vtkHighOrderVolumeMapper::OPENGL_PROJECTION)
