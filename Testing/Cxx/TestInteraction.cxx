@@ -13,12 +13,12 @@
 //     interactive frame the release first gives a coarse level with a one-shot timer
 //     pending; firing the timers renders finer levels up to the exact one,
 //     equal bit for bit to the non-interactive render of that view.
-//  6. RAY_CAST on linear cells: its reduced frame (InteractiveSubsampling 4)
-//     is the CPU path's, bit for bit (README, "Interaction").
 //  5. CPU modes: an AbortCheckEvent observer that sets AbortRender stops a
 //     still frame (LastRenderAborted); the next still frame is complete and
 //     equals the non-interactive render. An abort of a progressive exact
 //     level shows the last completed level instead of a partial image.
+//  6. RAY_CAST on linear cells: its reduced frame (InteractiveSubsampling 4)
+//     is the CPU path's, bit for bit (README, "Interaction").
 #include "hovTestScenes.h"
 
 #include "vtkCallbackCommand.h"
