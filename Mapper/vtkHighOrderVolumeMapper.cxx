@@ -447,8 +447,10 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   hov::Backend& backend = this->SelectBackend(true);
   if (backend.DrawsIntoWindow())
   {
-    // It reads the scene depth, draws and reads the float image back itself.
-    this->LastRenderAborted = false; // a window backend's frame is never aborted
+    // It reads the scene depth, draws and reads the float image back itself;
+    // an aborted frame draws nothing (its last completed level is drawn here).
+    this->AbortExecute = 0;
+    this->LastRenderAborted = false;
     vtkNew<vtkTimerLog> backendTimer;
     backendTimer->StartTimer();
     backend.Render(frame, impl.FloatImage);
@@ -458,7 +460,11 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->Publish(frame, rgba->GetPointer(0));
     timer->StopTimer();
     this->LastImageTime = this->TimeToDraw = timer->GetElapsedTime();
-    this->FinishLevel(frame, this->TimeToDraw);
+    if (this->FinishLevel(frame, this->TimeToDraw) &&
+      !impl.Display.Draw(ren, rgba->GetPointer(0), width, height))
+    {
+      vtkErrorMacro("Could not draw the volume image with OpenGL.");
+    }
     return;
   }
   if (this->UseDepthBuffer)

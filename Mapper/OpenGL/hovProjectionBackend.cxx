@@ -169,6 +169,12 @@ int hov::ProjectionBackend::Render(RenderFrame& frame, vtkImageData* floatImage)
     frame.Error("Could not draw the cell projection with OpenGL.");
     std::fill(pixels, pixels + static_cast<size_t>(frame.Width) * frame.Height * 4, 0.0f);
   }
+  else if (frame.Stats.Aborted)
+  {
+    // Nothing was read back or shown (the mapper shows the last completed
+    // progressive level, if any).
+    std::fill(pixels, pixels + static_cast<size_t>(frame.Width) * frame.Height * 4, 0.0f);
+  }
   else if (f > 1)
   {
     ExpandImage(this->Reduced.data(), rw, rh, 4, pixels, frame.Width, frame.Height);
@@ -216,6 +222,14 @@ bool hov::ProjectionBackend::Draw(RenderFrame& frame, ProjectionRegions::Setting
   auto produce = [&](ProjectionRegions::Geometry& geometry) {
     if (next >= total)
     {
+      return false;
+    }
+    // Progress and abort between groups (a group is at most 1/MaxGroups of
+    // the cells): an aborted frame draws nothing over the scene.
+    if (next > 0 && frame.Progress && frame.Progress(static_cast<double>(next) / total))
+    {
+      frame.Stats.Aborted = true;
+      this->Renderer.Stop();
       return false;
     }
     const auto start = std::chrono::steady_clock::now();

@@ -207,7 +207,7 @@ bool hov::ProjectionRenderer::DrawRegions(vtkRenderer* ren, const Producer& prod
     this->SetUniforms(options);
     // Group after group, a flush after each: a software rasterizer (llvmpipe)
     // rasterizes a group while the next one is built and its vertices processed.
-    while (ok && produce(geometry))
+    while (ok && !this->StopRequested && produce(geometry))
     {
       hov::ProjectionStream::Range range;
       ok = this->Stream.Append(geometry, range);
@@ -234,6 +234,7 @@ bool hov::ProjectionRenderer::Render(vtkRenderer* ren, const Producer& produce,
   const float* sceneDepth, int width, int height, float* image)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
+  this->StopRequested = false;
   if (!renWin || width <= 0 || height <= 0)
   {
     return false;
@@ -276,7 +277,7 @@ bool hov::ProjectionRenderer::Render(vtkRenderer* ren, const Producer& produce,
       }
       ok = this->DrawRegions(ren, produce, geometry, options);
       ostate->vtkglDisable(GL_DEPTH_TEST);
-      if (ok && image)
+      if (ok && image && !this->StopRequested)
       {
         GLint packAlignment = 4;
         glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
@@ -289,7 +290,7 @@ bool hov::ProjectionRenderer::Render(vtkRenderer* ren, const Producer& produce,
     ostate->PopFramebufferBindings();
   }
   // The float image over the scene: the one image blit.
-  ok = ok && this->Display.Blit(renWin, this->ColorTexture);
+  ok = ok && (this->StopRequested || this->Display.Blit(renWin, this->ColorTexture));
   // Not a vtkObject: the static form (vtkErrorMacro needs one in builds without NDEBUG).
   vtkOpenGLStaticCheckErrorMacro("failed after the high-order cell projection");
   return ok;

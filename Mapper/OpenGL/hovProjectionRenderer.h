@@ -78,13 +78,20 @@ public:
    * viewport of @p ren (@p width x @p height); @p sceneDepth (width*height
    * window depths) or null. If @p image is given, the float image is read
    * back into it (width*height*4 floats). Returns false if OpenGL resources
-   * could not be made.
+   * could not be made. A producer that calls Stop() (an abort between
+   * groups) ends the frame with nothing read back and nothing drawn over the
+   * scene (Stopped() says so).
    */
   bool Render(vtkRenderer* ren, const Producer& produce,
     hov::ProjectionRegions::Geometry& geometry, const Options& options,
     const float* sceneDepth, int width, int height, float* image);
 
   void ReleaseGraphicsResources(vtkWindow* win);
+
+  /// From the producer: no more groups, and the frame is not shown.
+  void Stop() { this->StopRequested = true; }
+  /// Whether the last Render() was stopped.
+  bool Stopped() const { return this->StopRequested; }
 
 private:
   ProjectionRenderer(const hov::ProjectionRenderer&) = delete;
@@ -108,6 +115,7 @@ private:
   hov::ImageDisplay Display; ///< the blit of the float target over the scene
   int Width = 0, Height = 0;
   int DepthWidth = 0, DepthHeight = 0;
+  bool StopRequested = false;
   bool HaveOpacityTable = false;
 };
 }

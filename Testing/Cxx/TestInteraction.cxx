@@ -13,7 +13,7 @@
 //     interactive frame the release first gives a coarse level with a one-shot timer
 //     pending; firing the timers renders finer levels up to the exact one,
 //     equal bit for bit to the non-interactive render of that view.
-//  5. CPU modes: an AbortCheckEvent observer that sets AbortRender stops a
+//  5. Every mode: an AbortCheckEvent observer that sets AbortRender stops a
 //     still frame (LastRenderAborted); the next still frame is complete and
 //     equals the non-interactive render. An abort of a progressive exact
 //     level shows the last completed level instead of a partial image.
@@ -198,8 +198,8 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
         std::to_string(fRay) + ")");
   }
 
-  // 5: abort (CPU modes: the tile batches).
-  if (mode != vtkHighOrderVolumeMapper::OPENGL_PROJECTION)
+  // 5: abort (CPU modes: between tile batches; OPENGL_PROJECTION: between
+  // groups of cells).
   {
     AbortRequest request;
     vtkNew<vtkCallbackCommand> abortCheck;

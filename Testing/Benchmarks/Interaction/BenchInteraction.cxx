@@ -256,7 +256,7 @@ Result RunMode(const Args& args, const hovBench::Mesh& mesh, int mode, const std
   r.StillDiff = MaxDiff(still, Copy(mapper));
 
   // 4. Abort 0.3 s into a still frame (the exact frame of a new view).
-  if (args.Abort && mode != vtkHighOrderVolumeMapper::OPENGL_PROJECTION && r.Exact > 0.5)
+  if (args.Abort && r.Exact > 0.5)
   {
     AbortRequest request;
     vtkNew<vtkCallbackCommand> onCheck, onProgress;
