@@ -3,8 +3,8 @@
 // (interior maximum), rendered by us (CPU_ACCURATE, exact per ray) and, after
 // vtkResampleToImage at n^3 points (n = 5, 9, 17), by the GPU ray caster
 // with the same property (linear interpolation), camera and blend mode
-// (MAXIMUM_INTENSITY and MINIMUM_INTENSITY; the GPU mapper's MIP/MinIP read
-// the raw opacity table, as ours). The difference is the resampling's
+// (MAXIMUM_INTENSITY, MINIMUM_INTENSITY and AVERAGE_INTENSITY; the GPU
+// mapper's MIP/MinIP read the raw opacity table, as ours). The difference is the resampling's
 // (trilinear interpolation of a quadratic: O(h^2)) plus the GPU's 8-bit
 // window (1/255) and its sampling: the max and mean RGB differences are
 // printed per resolution and must shrink from n = 5 to n = 17 (mean: at every
@@ -68,9 +68,9 @@ int TestBlendModesGPU(int, char*[])
   hovTest::BlendTF(scene.Tf);
   scene.Tf.Property->SetInterpolationTypeToLinear();
   const int sizes[3] = { 5, 9, 17 };
-  for (int blend = 1; blend <= 2; ++blend)
+  for (int blend = 1; blend <= 3; ++blend)
   {
-    const char* name = blend == 1 ? "MIP" : "MinIP";
+    const char* name = blend == 1 ? "MIP" : (blend == 2 ? "MinIP" : "average");
     scene.Mapper->SetBlendMode(blend);
     const hovTest::Image ours = hovTest::Render(scene.Mapper, cam, scene.Volume, W, H);
     Difference d[3];
