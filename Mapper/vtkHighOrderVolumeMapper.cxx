@@ -319,6 +319,11 @@ void vtkHighOrderVolumeMapper::ChooseLevel(hov::RenderFrame& frame, vtkRenderer*
   settings.AutoAdjust = this->AutoAdjustImageSampleDistance;
   settings.ProgressiveTime = this->ProgressiveTime;
   settings.AfterInteraction = this->LastRenderWasInteractive;
+  if (this->RenderMode == RAY_CAST)
+  {
+    frame.SelectInput(); // the key of the input the ray caster was built for
+    settings.RayCastEveryCell = impl.RayCast.RendersEveryCell(frame.Key());
+  }
   impl.CostMode =
     hov::ChooseFrameLevel(frame, settings, impl.Budget, impl.Progressive, ren, vol, this);
   if (impl.Progressive.Active() && !frame.Progress)
@@ -333,6 +338,7 @@ bool vtkHighOrderVolumeMapper::FinishLevel(hov::RenderFrame& frame, double secon
   const int f = frame.Subsampling;
   this->LastRenderWasInteractive = frame.Interactive;
   this->LastSubsampling = f;
+  this->LastDrawingMode = impl.CostMode;
   if (!this->LastRenderAborted)
   {
     // Everything but the backend's per-ray part is fixed: set-up, order, the
@@ -424,6 +430,7 @@ int vtkHighOrderVolumeMapper::RenderImage(vtkCamera* camera, vtkVolume* volume, 
   this->Impl->CostMode = this->RenderMode;
   this->LastRenderWasInteractive = false; // no window, no budget: exact
   this->LastSubsampling = 1;
+  this->LastDrawingMode = this->RenderMode;
   return this->ComputeImage(frame, this->SelectBackend(false));
 }
 
@@ -451,10 +458,15 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     // an aborted frame draws nothing (its last completed level is drawn here).
     this->AbortExecute = 0;
     this->LastRenderAborted = false;
+    this->UpdateProgress(0.0);
     vtkNew<vtkTimerLog> backendTimer;
     backendTimer->StartTimer();
     backend.Render(frame, impl.FloatImage);
     backendTimer->StopTimer();
+    if (!frame.Stats.Aborted)
+    {
+      this->UpdateProgress(1.0);
+    }
     impl.LoopSeconds = backendTimer->GetElapsedTime() - frame.Stats.FixedSeconds;
     auto* rgba = vtkFloatArray::SafeDownCast(impl.FloatImage->GetPointData()->GetScalars());
     this->Publish(frame, rgba->GetPointer(0));
@@ -550,6 +562,7 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastRenderAborted: " << this->LastRenderAborted << "\n";
   os << indent << "LastRenderWasInteractive: " << this->LastRenderWasInteractive << "\n";
   os << indent << "LastSubsampling: " << this->LastSubsampling << "\n";
+  os << indent << "LastDrawingMode: " << this->LastDrawingMode << "\n";
   os << indent << "WitnessViolations: " << this->WitnessViolations << "\n";
   os << indent << "NumberOfRenderedCells: " << this->NumberOfRenderedCells << "\n";
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";

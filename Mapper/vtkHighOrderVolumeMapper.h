@@ -328,6 +328,10 @@ public:
   /// for a progressive level).
   vtkGetMacro(LastRenderWasInteractive, bool);
   vtkGetMacro(LastSubsampling, int);
+  /// The render mode whose path drew the last frame: the RenderMode, except
+  /// for reduced frames drawn by CPU_ACCURATE's path (OPENGL_PROJECTION when
+  /// its regions alone exceed the budget; RAY_CAST on linear cells).
+  vtkGetMacro(LastDrawingMode, int);
   ///@}
 
   ///@{
@@ -458,6 +462,7 @@ protected:
   double ProgressiveTime = 0.5;
   bool LastRenderWasInteractive = false;
   int LastSubsampling = 1;
+  int LastDrawingMode = CPU_ACCURATE;
   int ProjectionColorMethod = EXACT_COLOR;
   int ProjectionOrder = EXACT_ORDER;
   int ProjectionOpacityLookup = OPACITY_ANALYTIC;

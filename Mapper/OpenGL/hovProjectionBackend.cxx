@@ -224,9 +224,10 @@ bool hov::ProjectionBackend::Draw(RenderFrame& frame, ProjectionRegions::Setting
     {
       return false;
     }
-    // Progress and abort between groups (a group is at most 1/MaxGroups of
-    // the cells): an aborted frame draws nothing over the scene.
-    if (next > 0 && frame.Progress && frame.Progress(static_cast<double>(next) / total))
+    // Progress and abort before each group (a group holds about 1/MaxGroups
+    // of the cells, at least CellsPerGroup): an aborted frame draws nothing
+    // over the scene.
+    if (frame.Progress && frame.Progress(static_cast<double>(next) / total))
     {
       frame.Stats.Aborted = true;
       this->Renderer.Stop();

@@ -209,6 +209,9 @@ bool hov::ProjectionRenderer::DrawRegions(vtkRenderer* ren, const Producer& prod
     // rasterizes a group while the next one is built and its vertices processed.
     while (ok && !this->StopRequested && produce(geometry))
     {
+      // The producer reports progress: an observer may have made another
+      // context current (this one's bindings are kept with it).
+      renWin->MakeCurrent();
       hov::ProjectionStream::Range range;
       ok = this->Stream.Append(geometry, range);
       if (ok && range.Count > 0)

@@ -55,6 +55,7 @@ void hov::RayCastBackend::PrepareCaster(const RenderFrame& frame, vtkUnstructure
   }
   this->Valid = true; // cached also when nothing is usable: one warning per input
   this->Key = key;
+  this->Skipped = ok ? grid->GetNumberOfCells() - this->Caster.GetNumberOfCells() : -1;
 }
 
 int hov::RayCastBackend::Trace(RenderFrame& frame)

@@ -42,6 +42,14 @@ public:
   /// The per-pixel error estimate of the last frame (array "Error").
   vtkImageData* GetErrorImage() { return this->ErrorImage; }
 
+  /// Whether the caster is built for the input of @p key and renders every
+  /// one of its cells (none skipped: no inverted, degenerate or unsupported
+  /// cell), so that another exact path may draw the same picture.
+  bool RendersEveryCell(const InputKey& key) const
+  {
+    return this->Valid && key == this->Key && this->Skipped == 0;
+  }
+
 private:
   /// Everything but the error image's publication: 1 success, 0 error.
   int Trace(RenderFrame& frame);
@@ -52,6 +60,7 @@ private:
   RayCastShading Shading;
   bool Valid = false;
   InputKey Key;
+  vtkIdType Skipped = -1; ///< cells of the input the caster leaves out
   bool FeatureWarned = false;
   vtkNew<vtkHighOrderTransferFunction> TransferFunction;
   vtkNew<vtkImageData> ErrorImage;

@@ -98,7 +98,8 @@ int hov::ChooseFrameLevel(RenderFrame& frame, const LevelSettings& s,
       2, budget.Choose(CPU, levelBudget, frame.Width, frame.Height, fixed, true).Subsampling);
   }
   constexpr int Ray = static_cast<int>(RenderMode::RayCast);
-  if (frame.Subsampling > 1 && s.Mode == Ray && CPUPathRendersSame(mapper, frame.Settings))
+  if (frame.Subsampling > 1 && s.Mode == Ray && s.RayCastEveryCell &&
+    CPUPathRendersSame(mapper, frame.Settings))
   {
     // Linear cells: the CPU path's exact rays cost a fraction of the ray
     // caster's (no cell search, no root isolation), and its image is exact
@@ -109,6 +110,10 @@ int hov::ChooseFrameLevel(RenderFrame& frame, const LevelSettings& s,
     const int fixed = frame.Interactive ? s.Fixed : 0;
     frame.Subsampling = std::max(
       2, budget.Choose(CPU, levelBudget, frame.Width, frame.Height, fixed, true).Subsampling);
+  }
+  if (!frame.Interactive && progressive.Active())
+  {
+    progressive.Drawn(frame.Subsampling); // the factor of this level, if changed above
   }
   if (frame.Subsampling > 1 && costMode == CPU)
   {

@@ -9,9 +9,11 @@
  * Reduced frames (f > 1) of CPU_ACCURATE composite per pixel (exact per ray,
  * no visibility sort); those of OPENGL_PROJECTION are drawn by the CPU path
  * when the projection's fixed part alone exceeds the level's budget; those of
- * RAY_CAST by the CPU path when every cell is linear and no CPU-only feature
- * is set (its exact rays cost a fraction of the ray caster's), by the ray
- * caster otherwise (curved cells).
+ * RAY_CAST by the CPU path when every cell is linear, the ray caster skips
+ * none of them and no CPU-only feature is set (its exact rays cost a fraction
+ * of the ray caster's), by the ray caster otherwise (curved cells). A
+ * progressive level drawn at another factor than it was scheduled at tells
+ * hov::ProgressiveStill, whose next level is then finer than the one drawn.
  *
  * Thread safety: rendering thread only.
  * @sa hov::InteractionBudget, hov::ProgressiveStill, hovReducedImage.h
@@ -38,6 +40,10 @@ struct LevelSettings
   double ProgressiveTime = 0.5;
   /// The previous frame was interactive (only then may a refinement start).
   bool AfterInteraction = false;
+  /// RAY_CAST: the ray caster renders every cell of the input (it has been
+  /// built for it and skipped none), a condition for its reduced frames to be
+  /// drawn by the CPU path.
+  bool RayCastEveryCell = false;
 };
 
 /**

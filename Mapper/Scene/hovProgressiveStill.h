@@ -62,6 +62,16 @@ public:
   int Level(vtkRenderer* renderer, vtkVolume* volume, vtkAbstractMapper* mapper, double estimate,
     double threshold, int coarse, bool mayStart);
 
+  /// The level of the last Level() call is drawn at @p factor pixels per ray
+  /// (another path's budget may change it): the next level is finer than that.
+  void Drawn(int factor)
+  {
+    if (this->Running && factor > 1)
+    {
+      this->Current = factor;
+    }
+  }
+
   /// Whether the frame of the last Level() call is a progressive one.
   bool Active() const { return this->Running; }
 

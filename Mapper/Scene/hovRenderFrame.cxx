@@ -39,6 +39,12 @@ bool hov::RenderFrame::ValidateView()
     this->Error(text.str());
     return false;
   }
+  this->SelectInput();
+  return true;
+}
+
+void hov::RenderFrame::SelectInput()
+{
   vtkUnstructuredGridVolumeMapper* mapper = this->Mapper;
   if (mapper->GetNumberOfInputConnections(0) > 0)
   {
@@ -68,7 +74,6 @@ bool hov::RenderFrame::ValidateView()
       s.Component = 0;
     }
   }
-  return true;
 }
 
 hov::InputKey hov::RenderFrame::Key() const

@@ -107,7 +107,7 @@ public:
   /// Progress and abort between tile batches; empty without observers.
   ProgressFunction Progress;
 
-  // Set by ValidateView().
+  // Set by ValidateView() (SelectInput()).
   vtkUnstructuredGridBase* Input = nullptr;
   ScalarSelection Scalars;
 
@@ -131,7 +131,11 @@ public:
    */
   bool ValidateView();
 
-  /// The cache key of the selected input and scalars.
+  /// The input updated and its scalars selected (Input, Scalars; part of
+  /// ValidateView, no message).
+  void SelectInput();
+
+  /// The cache key of the selected input and scalars (after SelectInput()).
   InputKey Key() const;
 
   /**

@@ -173,7 +173,7 @@ int TestPropertyAudit(int, char*[])
     "UseDepthBuffer", "TileSize", "ViewDepthClipping", "VisibilitySort", "Isosurfaces",
     "ColorArrayName", "IsosurfaceArrayName", "Splatting", "ProjectionColorMethod",
     "ProjectionOrder", "ProjectionOpacityLookup", "BlendMode", "LastImageTime",
-    "LastRenderAborted", "LastRenderWasInteractive", "LastSubsampling",
+    "LastRenderAborted", "LastRenderWasInteractive", "LastSubsampling", "LastDrawingMode",
     "AutoAdjustImageSampleDistance", "ProgressiveTime", "AverageIPScalarRange",
     "WitnessViolations", "NumberOfRenderedCells", "NumberOfSkippedCells", "NumberOfSegments",
     "NumberOfPieces", "NumberOfRays", "NumberOfSplattedCells", "NumberOfProjectedTriangles",
