@@ -86,30 +86,36 @@ int hov::ChooseFrameLevel(RenderFrame& frame, const LevelSettings& s,
     frame.Subsampling =
       progressive.Level(ren, vol, mapper, choice.Estimate, s.ProgressiveTime, coarse, s.AfterInteraction);
   }
+  // A reduced frame drawn by the CPU path instead: the factor from the CPU
+  // path's own costs, for a progressive level never coarser than the one
+  // scheduled (each level is then finer than the last drawn, so the
+  // refinement reaches the exact level).
+  auto byCPU = [&]() {
+    costMode = CPU;
+    frame.Settings.Mode = RenderMode::CPUAccurate;
+    const int fixed = frame.Interactive ? s.Fixed : 0;
+    int f = budget.Choose(CPU, levelBudget, frame.Width, frame.Height, fixed, true).Subsampling;
+    if (!frame.Interactive)
+    {
+      f = std::min(f, frame.Subsampling);
+    }
+    frame.Subsampling = std::max(2, f);
+  };
+  constexpr int Ray = static_cast<int>(RenderMode::RayCast);
   if (frame.Subsampling > 1 && s.Mode == Projection &&
     budget.FixedSeconds(Projection) >= levelBudget)
   {
     // The regions alone exceed the budget at any resolution: the exact rays
     // of the CPU path at reduced resolution instead.
-    costMode = CPU;
-    frame.Settings.Mode = RenderMode::CPUAccurate;
-    const int fixed = frame.Interactive ? s.Fixed : 0;
-    frame.Subsampling = std::max(
-      2, budget.Choose(CPU, levelBudget, frame.Width, frame.Height, fixed, true).Subsampling);
+    byCPU();
   }
-  constexpr int Ray = static_cast<int>(RenderMode::RayCast);
-  if (frame.Subsampling > 1 && s.Mode == Ray && s.RayCastEveryCell &&
+  else if (frame.Subsampling > 1 && s.Mode == Ray && s.RayCastEveryCell &&
     CPUPathRendersSame(mapper, frame.Settings))
   {
     // Linear cells: the CPU path's exact rays cost a fraction of the ray
-    // caster's (no cell search, no root isolation), and its image is exact
-    // where the ray caster's is within its tolerance: reduced levels by the
-    // CPU path, the exact level by the ray caster.
-    costMode = CPU;
-    frame.Settings.Mode = RenderMode::CPUAccurate;
-    const int fixed = frame.Interactive ? s.Fixed : 0;
-    frame.Subsampling = std::max(
-      2, budget.Choose(CPU, levelBudget, frame.Width, frame.Height, fixed, true).Subsampling);
+    // caster's (no cell search, no root isolation) and use the same closed
+    // forms: reduced levels by the CPU path, the exact level by the ray caster.
+    byCPU();
   }
   if (!frame.Interactive && progressive.Active())
   {
