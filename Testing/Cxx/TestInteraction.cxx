@@ -261,14 +261,12 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
 int TestInteraction(int argc, char* argv[])
 {
   Checker ck;
-  auto grid = LoadBracket(argc, argv);
-  if (!ck.Check(grid != nullptr, "bracket loaded"))
+  std::unique_ptr<VolumeScene> bracket = BracketScene(ck, argc, argv);
+  if (!bracket)
   {
     return ck.Result();
   }
-  VolumeScene scene(grid);
-  BracketTF(scene.Tf, 2.0);
-  scene.Volume->SetProperty(scene.Tf.Property);
+  VolumeScene& scene = *bracket;
   const struct
   {
     int Mode;
@@ -279,10 +277,7 @@ int TestInteraction(int argc, char* argv[])
   for (const auto& m : modes)
   {
     vtkNew<vtkCamera> cam;
-    cam->SetFocalPoint(50, 30, 40);
-    cam->SetPosition(50 + 160, 30 + 120, 40 + 200);
-    cam->SetViewUp(0, 0, 1);
-    cam->SetClippingRange(50, 600);
+    BracketCamera(cam);
     CheckMode(ck, scene, cam, m.Mode, m.Name);
   }
   ck.Check(scene.NoMessages(), "no error or warning");

@@ -124,23 +124,18 @@ int TestInteractionEventLoop(int argc, char* argv[])
                  "this test)\n";
     return ck.Result();
   }
-  auto grid = LoadBracket(argc, argv);
-  if (!ck.Check(grid != nullptr, "bracket loaded"))
+  std::unique_ptr<VolumeScene> bracket = BracketScene(ck, argc, argv);
+  if (!bracket)
   {
     return ck.Result();
   }
-  VolumeScene scene(grid);
-  BracketTF(scene.Tf, 2.0);
-  scene.Volume->SetProperty(scene.Tf.Property);
+  VolumeScene& scene = *bracket;
   vtkHighOrderVolumeMapper* mapper = scene.Mapper;
   mapper->SetRenderMode(vtkHighOrderVolumeMapper::CPU_ACCURATE);
   mapper->SetProgressiveTime(1e-9);
 
   vtkNew<vtkCamera> cam;
-  cam->SetFocalPoint(50, 30, 40);
-  cam->SetPosition(50 + 160, 30 + 120, 40 + 200);
-  cam->SetViewUp(0, 0, 1);
-  cam->SetClippingRange(50, 600);
+  BracketCamera(cam);
   auto renderer = BlackRenderer(cam);
   renderer->AddVolume(scene.Volume);
   auto other = BlackRenderer(cam);

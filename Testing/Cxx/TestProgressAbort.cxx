@@ -137,19 +137,14 @@ void CheckWindowAbort(Checker& ck, VolumeScene& scene, vtkCamera* cam)
 int TestProgressAbort(int argc, char* argv[])
 {
   Checker ck;
-  auto grid = LoadBracket(argc, argv);
-  if (!ck.Check(grid != nullptr, "bracket loaded"))
+  std::unique_ptr<VolumeScene> bracket = BracketScene(ck, argc, argv);
+  if (!bracket)
   {
     return ck.Result();
   }
-  VolumeScene scene(grid);
-  BracketTF(scene.Tf, 2.0);
-  scene.Volume->SetProperty(scene.Tf.Property);
+  VolumeScene& scene = *bracket;
   vtkNew<vtkCamera> cam;
-  cam->SetFocalPoint(50, 30, 40);
-  cam->SetPosition(50 + 160, 30 + 120, 40 + 200);
-  cam->SetViewUp(0, 0, 1);
-  cam->SetClippingRange(50, 600);
+  BracketCamera(cam);
 
   CheckCase(ck, scene, cam, "plain path");
   CheckWindowAbort(ck, scene, cam);

@@ -303,4 +303,25 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadBracket(int argc, char* argv[], std::st
   }
   return grid;
 }
+
+std::unique_ptr<VolumeScene> BracketScene(Checker& ck, int argc, char* argv[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = LoadBracket(argc, argv);
+  if (!ck.Check(grid != nullptr, "bracket loaded"))
+  {
+    return nullptr;
+  }
+  auto scene = std::make_unique<VolumeScene>(grid);
+  BracketTF(scene->Tf, 2.0);
+  scene->Volume->SetProperty(scene->Tf.Property);
+  return scene;
+}
+
+void BracketCamera(vtkCamera* cam)
+{
+  cam->SetFocalPoint(50, 30, 40);
+  cam->SetPosition(50 + 160, 30 + 120, 40 + 200);
+  cam->SetViewUp(0, 0, 1);
+  cam->SetClippingRange(50, 600);
+}
 }

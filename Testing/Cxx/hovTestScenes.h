@@ -25,6 +25,8 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <memory> // BracketScene
+
 #include <string>
 
 class vtkActor;
@@ -179,6 +181,13 @@ vtkSmartPointer<vtkActor> BoxActor(const double b[6], const double rgb[3], doubl
 /// in @p file if given.
 vtkSmartPointer<vtkUnstructuredGrid> LoadBracket(
   int argc, char* argv[], std::string* file = nullptr);
+
+/// The bracket (LoadBracket) in a VolumeScene with BracketTF(unit 2); null
+/// after a failed check if it could not be loaded.
+std::unique_ptr<VolumeScene> BracketScene(Checker& ck, int argc, char* argv[]);
+
+/// The oblique perspective view of the bracket the interaction tests use.
+void BracketCamera(vtkCamera* cam);
 }
 
 #endif
