@@ -422,11 +422,33 @@ int main(int argc, char* argv[])
       o.SkipTess = true;
     else if (a == "--skip-interactive")
       o.SkipInteractive = true;
+    else
+    {
+      // --help, or an argument this benchmark does not know (or one missing
+      // its value): say how to run it instead of running minutes of frames.
+      const bool help = a == "--help" || a == "-h";
+      std::fprintf(help ? stdout : stderr,
+        "%shovBenchHighOrder [--size 256] [--only NAME] [--levels 4] [--frames 8]\n"
+        "  [--skip-tess] [--skip-interactive] [--data DIR] [--tolerance 1e-3]\n"
+        "  [--save-images DIR] [--compare-images DIR] [--semantics gpu|vtk]\n"
+        "  NAME: a part of \"plate Q4\", \"T-junction P4\", \"curved hex Q3\", "
+        "\"curved tet P6\"\n",
+        help ? "" : ("unknown argument or missing value: " + a + "\n").c_str());
+      return help ? 0 : 1;
+    }
   }
   std::printf("hovBenchHighOrder: %dx%d, RayCastTolerance %g, ratios = ours / tessellation "
               "route (tessellation time excluded from that route)\n",
     o.Size, o.Size, o.Tolerance);
   const char* names[4] = { "plate Q4", "T-junction P4", "curved hex Q3", "curved tet P6" };
+  if (!o.Only.empty() &&
+    std::none_of(std::begin(names), std::end(names),
+      [&](const char* n) { return std::string(n).find(o.Only) != std::string::npos; }))
+  {
+    std::fprintf(stderr, "--only %s matches no dataset (plate Q4, T-junction P4, curved hex Q3, "
+                         "curved tet P6)\n", o.Only.c_str());
+    return 1;
+  }
   for (int k = 0; k < 4; ++k)
   {
     if (!o.Only.empty() && std::string(names[k]).find(o.Only) == std::string::npos)

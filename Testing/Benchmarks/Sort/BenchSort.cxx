@@ -25,6 +25,7 @@
 #include <algorithm> // std::nth_element for medians
 #include <chrono>
 #include <fstream> // /proc/self/status
+#include <iostream> // --help
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -208,6 +209,18 @@ int main(int argc, char* argv[])
       heatsink = true;
     else if (!std::strcmp(argv[i], "--heatsink-only"))
       heatsink = heatsinkOnly = true;
+    else
+    {
+      // --help, or an argument this benchmark does not know: say how to run
+      // it instead of running minutes of sorts.
+      const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
+      (help ? std::cout : std::cerr)
+        << (help ? "" : std::string("unknown argument: ") + argv[i] + "\n")
+        << "hovBenchSort [--data DIR] [--repeat N] [--bracket-only] [--heatsink] "
+           "[--heatsink-only] [--published] [--max-cells N] [--published-max-cells N] "
+           "[--tiles N]\n";
+      return help ? 0 : 1;
+    }
   }
   if (publishedMax > maxCells)
     publishedMax = maxCells;
