@@ -107,20 +107,6 @@ int StillFrame(vtkRenderWindow* win, TimerInteractor* iren, vtkHighOrderVolumeMa
   return levels;
 }
 
-/// The non-interactive render of the current view (the mapper's settings restored).
-Image Reference(vtkRenderWindow* win, vtkHighOrderVolumeMapper* mapper)
-{
-  const double progressive = mapper->GetProgressiveTime();
-  mapper->AutoAdjustImageSampleDistanceOff();
-  mapper->SetProgressiveTime(0.0);
-  win->SetDesiredUpdateRate(0.0001);
-  win->Render();
-  Image ref = FloatImage(mapper);
-  mapper->AutoAdjustImageSampleDistanceOn();
-  mapper->SetProgressiveTime(progressive);
-  return ref;
-}
-
 void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const std::string& name)
 {
   vtkHighOrderVolumeMapper* mapper = scene.Mapper;
@@ -133,7 +119,7 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
   iren->Initialize();
 
   // 1-3: reference, interactive frame, still frame.
-  const Image ref = Reference(win, mapper);
+  const Image ref = NonInteractiveRender(win, mapper);
   win->SetDesiredUpdateRate(1e6);
   win->Render();
   const Image fast = FloatImage(mapper);
@@ -161,7 +147,7 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
   win->Render();
   const int direct = mapper->GetLastSubsampling();
   const Image directImage = FloatImage(mapper);
-  ck.Check(direct == 1 && directImage.V == Reference(win, mapper).V,
+  ck.Check(direct == 1 && directImage.V == NonInteractiveRender(win, mapper).V,
     name + ": a still frame of a new view without interaction is exact at once (f = " +
       std::to_string(direct) + ")");
   cam->Azimuth(10.0);
@@ -174,7 +160,7 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
   const bool pending = !iren->Pending.empty();
   const int progressiveLevels = StillFrame(win, iren, mapper);
   const Image refined = FloatImage(mapper);
-  const Image ref2 = Reference(win, mapper);
+  const Image ref2 = NonInteractiveRender(win, mapper);
   ck.Check(coarse > 1 && pending && CheckImage(coarseImage).Ok() &&
       mapper->GetLastSubsampling() == 1 && refined.V == ref2.V,
     name + ": progressive still frame: level f = " + std::to_string(coarse) + " at once, " +
@@ -248,7 +234,7 @@ void CheckMode(Checker& ck, VolumeScene& scene, vtkCamera* cam, int mode, const 
     win->RemoveObserver(tag);
     win->Render();
     const Image complete = FloatImage(mapper);
-    const Image ref3 = Reference(win, mapper);
+    const Image ref3 = NonInteractiveRender(win, mapper);
     ck.Check(aborted && !mapper->GetLastRenderAborted() && complete.V == ref3.V,
       name + ": AbortCheckEvent stops a still frame; the next still frame is complete");
   }

@@ -88,18 +88,6 @@ void InteractThenRelease(vtkRenderWindow* win, vtkCamera* cam)
   win->Render();
 }
 
-Image Reference(vtkRenderWindow* win, vtkHighOrderVolumeMapper* mapper)
-{
-  mapper->AutoAdjustImageSampleDistanceOff();
-  mapper->SetProgressiveTime(0.0);
-  win->SetDesiredUpdateRate(0.0001);
-  win->Render();
-  Image ref = FloatImage(mapper);
-  mapper->AutoAdjustImageSampleDistanceOn();
-  mapper->SetProgressiveTime(1e-9);
-  return ref;
-}
-
 /// An on-screen X window (the interactor needs its X window) of W x H.
 vtkSmartPointer<vtkRenderWindow> XWindow(vtkRenderer* ren)
 {
@@ -187,7 +175,7 @@ int TestInteractionEventLoop(int argc, char* argv[])
     // is rendered in a new window of the same size.
     win->RemoveRenderer(renderer);
     auto refWindow = XWindow(renderer);
-    const Image ref = Reference(refWindow, mapper);
+    const Image ref = NonInteractiveRender(refWindow, mapper);
     refWindow->RemoveRenderer(renderer);
     ck.Check(coarse > 1 && watch.Exact && watch.Levels >= 2 && !watch.WatchdogFired &&
         refined.V == ref.V && CheckImage(ref).Covered > 1000,

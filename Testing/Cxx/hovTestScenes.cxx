@@ -324,4 +324,18 @@ void BracketCamera(vtkCamera* cam)
   cam->SetViewUp(0, 0, 1);
   cam->SetClippingRange(50, 600);
 }
+
+Image NonInteractiveRender(vtkRenderWindow* win, vtkHighOrderVolumeMapper* mapper)
+{
+  const double progressive = mapper->GetProgressiveTime();
+  const bool autoAdjust = mapper->GetAutoAdjustImageSampleDistance();
+  mapper->AutoAdjustImageSampleDistanceOff();
+  mapper->SetProgressiveTime(0.0);
+  win->SetDesiredUpdateRate(0.0001);
+  win->Render();
+  Image ref = FloatImage(mapper);
+  mapper->SetAutoAdjustImageSampleDistance(autoAdjust);
+  mapper->SetProgressiveTime(progressive);
+  return ref;
+}
 }

@@ -188,6 +188,11 @@ std::unique_ptr<VolumeScene> BracketScene(Checker& ck, int argc, char* argv[]);
 
 /// The oblique perspective view of the bracket the interaction tests use.
 void BracketCamera(vtkCamera* cam);
+
+/// The non-interactive render of @p win's current view by @p mapper
+/// (AutoAdjustImageSampleDistance off, ProgressiveTime 0, the still rate):
+/// the reference of the interaction tests; the mapper's settings restored.
+Image NonInteractiveRender(vtkRenderWindow* win, vtkHighOrderVolumeMapper* mapper);
 }
 
 #endif
