@@ -1,6 +1,7 @@
 // Lagrange tetrahedra, hexahedra and wedges: see hovLagrangeBasis.h.
 #include "hovLagrangeBasis.h"
 
+#include "hovLagrangeFactors.h"   // Lagrange1D, Eta1D
 #include "hovLagrangeNumbering.h" // VTK node numbering
 #include "hovLagrangeSpecial.h"   // 15-node tetrahedron, 21-node wedge
 
@@ -9,54 +10,10 @@
 
 namespace hov
 {
+using detail::Eta1D;
+using detail::Lagrange1D;
 namespace
 {
-/// 1D Lagrange polynomials of order p on the nodes m/p at x, and derivatives
-/// (the same values as vtkLagrangeInterpolation::EvaluateShapeAndGradient).
-struct Lagrange1D
-{
-  double L[MaxLagrangeOrder + 1];
-  double D[MaxLagrangeOrder + 1];
-  /// L_j = prod_{k != j} (v - k) / (j - k), v = p x, and (derivatives) L_j' =
-  /// p sum_{k != j} prod_{q != j, k} (v - q) / prod_{q != j} (j - q), the inner
-  /// products from prefix / suffix products: O(p^2) per direction.
-  void Compute(int p, double x, bool derivatives)
-  {
-    const double v = p * x;
-    double num[MaxLagrangeOrder + 1], prefix[MaxLagrangeOrder + 2];
-    for (int k = 0; k <= p; ++k)
-    {
-      num[k] = v - k;
-    }
-    for (int j = 0; j <= p; ++j)
-    {
-      double denom = 1.0;
-      prefix[0] = 1.0;
-      for (int k = 0; k <= p; ++k)
-      {
-        prefix[k + 1] = prefix[k] * (k == j ? 1.0 : num[k]);
-        denom *= k == j ? 1.0 : static_cast<double>(j - k);
-      }
-      this->L[j] = prefix[p + 1] / denom;
-      double d = 0.0;
-      if (derivatives)
-      {
-        double suffix = 1.0;
-        for (int k = p; k >= 0; --k)
-        {
-          if (k != j)
-          {
-            d += prefix[k] * suffix;
-            suffix *= num[k];
-          }
-        }
-        d *= p / denom;
-      }
-      this->D[j] = d;
-    }
-  }
-};
-
 /// The sum-factorised hexahedron interpolation for @p C components (see
 /// InterpolateHexahedron); C is a template argument so the loops unroll.
 template <int C, bool G>
@@ -139,23 +96,6 @@ void SumFactorisedAny(const std::vector<std::array<int, 4>>& nodes, int nodeCoun
   }
 }
 
-/// Silvester's Eta(n, c, x) for c = 0..n and d/dx (vtkHigherOrderTriangle::Eta/Deta).
-struct Eta1D
-{
-  double E[MaxLagrangeOrder + 1];
-  double D[MaxLagrangeOrder + 1];
-  void Compute(int n, double x)
-  {
-    this->E[0] = 1.0;
-    this->D[0] = 0.0;
-    for (int c = 1; c <= n; ++c)
-    {
-      const double factor = (n * x - c + 1.0) / c;
-      this->E[c] = this->E[c - 1] * factor;
-      this->D[c] = this->D[c - 1] * factor + this->E[c - 1] * n / c;
-    }
-  }
-};
 }
 
 int LagrangeNodeCount(LagrangeShape shape, const int order[3])
@@ -184,6 +124,7 @@ bool LagrangeBasis::Initialize(
 {
   this->NodeCount = 0;
   this->Nodes.clear();
+  this->SimplexNodes.clear();
   this->Special = false;
   this->Shape = shape;
   auto fail = [&](const std::string& why) {
@@ -193,6 +134,7 @@ bool LagrangeBasis::Initialize(
     }
     this->NodeCount = 0;
     this->Nodes.clear();
+    this->SimplexNodes.clear();
     return false;
   };
   const int type = static_cast<int>(shape);
@@ -261,7 +203,11 @@ bool LagrangeBasis::Initialize(
     for (int k = 0; k <= order[2]; ++k)
       for (int j = 0; j <= order[0]; ++j)
         for (int i = 0; i + j <= order[0]; ++i)
-          put(detail::LagrangeWedgeIndex(i, j, k, order), i, j, k, 0);
+        {
+          const int index = detail::LagrangeWedgeIndex(i, j, k, order);
+          put(index, i, j, k, 0);
+          this->SimplexNodes.push_back(index);
+        }
   }
   else
   {
@@ -271,7 +217,9 @@ bool LagrangeBasis::Initialize(
         for (int c = 0; a + b + c <= n; ++c)
         {
           const int lambda[4] = { a, b, c, n - a - b - c };
-          put(detail::LagrangeTetraIndex(lambda, n), a, b, c, n - a - b - c);
+          const int index = detail::LagrangeTetraIndex(lambda, n);
+          put(index, a, b, c, n - a - b - c);
+          this->SimplexNodes.push_back(index);
         }
   }
   if (filled != nodeCount)
@@ -524,7 +472,12 @@ void LagrangeBasis::Interpolate(const double pc[3], const double* values, int co
     this->InterpolateHexahedron(pc, values, components, value, gradient);
     return;
   }
-  // The common cases with compile-time loops: positions (3) and scalars (1).
+  if (!this->Special)
+  {
+    this->InterpolateSimplex(pc, values, components, value, gradient);
+    return;
+  }
+  // The special cells, with compile-time loops for positions (3) and scalars (1).
   if (components == 3 || components == 1)
   {
     const bool three = components == 3;

@@ -125,6 +125,10 @@ private:
   template <int C, bool G>
   void InterpolateNodes(const double pc[3], const double* values, double* value,
     double* gradient) const;
+  /// Interpolate() for tetrahedra and wedges by sum factorisation over the
+  /// simplex indices (hovLagrangeSimplexSum.cxx).
+  void InterpolateSimplex(const double pc[3], const double* values, int components, double* value,
+    double* gradient) const;
   /// Interpolate() for hexahedra by sum factorisation (tensor-product basis).
   void InterpolateHexahedron(const double pc[3], const double* values, int components,
     double* value, double* gradient) const;
@@ -136,6 +140,9 @@ private:
   int NodeCount = 0;
   bool Special = false;
   std::vector<std::array<int, 4>> Nodes;
+  /// Tetrahedra: the node of (a, b, c) in the order a, b, c ascending
+  /// (a + b + c <= n); wedges: the node of (i, j, k) in the order k, j, i.
+  std::vector<int> SimplexNodes;
 };
 }
 

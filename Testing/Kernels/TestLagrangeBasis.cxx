@@ -160,6 +160,73 @@ TEST(LagrangeBasis, DerivativesMatchCentralDifferences)
   hovtest::ReportMeasured("LagrangeBasis.DerivativeVsFD", worst);
 }
 
+/// Interpolate() (sum-factorised for hexahedra, tetrahedra and wedges) against
+/// the weighted sum of FunctionsAndDerivatives() (the node loop), for 1-4
+/// components, every shape and order up to MaxLagrangeOrder.
+TEST(LagrangeBasis, InterpolateMatchesWeights)
+{
+  std::mt19937_64 rng(64);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  hovtest::Worst worst;
+  int cases = 0;
+  for (const LagrangeCase& c : AllLagrangeCases(hov::MaxLagrangeOrder))
+  {
+    hov::LagrangeBasis b;
+    ASSERT_TRUE(hovtest::InitBasis(c, b)) << c.Name();
+    const int n = b.GetNodeCount();
+    std::vector<double> w(n), d(3 * n), values(4 * n);
+    for (double& v : values)
+    {
+      v = value(rng);
+    }
+    for (int trial = 0; trial < 4; ++trial)
+    {
+      double pc[3];
+      hovtest::RandomPC(b, rng, 0.0, pc);
+      b.FunctionsAndDerivatives(pc, w.data(), d.data());
+      // The scale of the sums: sum |w_i| and sum |dw_i| (the values are in [-1, 1]).
+      double scaleW = 0.0, scaleD = 0.0;
+      for (int i = 0; i < n; ++i)
+      {
+        scaleW += std::abs(w[i]);
+        scaleD += std::abs(d[i]) + std::abs(d[n + i]) + std::abs(d[2 * n + i]);
+      }
+      for (int comps = 1; comps <= 4; ++comps)
+      {
+        double v[4], g[12], vOnly[4];
+        b.Interpolate(pc, values.data(), comps, v, g);
+        b.Interpolate(pc, values.data(), comps, vOnly, nullptr);
+        ++cases;
+        for (int k = 0; k < comps; ++k)
+        {
+          double ref = 0.0, refG[3] = { 0.0, 0.0, 0.0 };
+          for (int i = 0; i < n; ++i)
+          {
+            const double x = values[static_cast<size_t>(i) * comps + k];
+            ref += w[i] * x;
+            for (int m = 0; m < 3; ++m)
+            {
+              refG[m] += d[m * n + i] * x;
+            }
+          }
+          const double ev = std::abs(v[k] - ref) / scaleW;
+          worst.Add(ev, c.Name());
+          ASSERT_LE(ev, 1e-14) << c.Name() << " components " << comps;
+          ASSERT_LE(std::abs(vOnly[k] - ref) / scaleW, 1e-14) << c.Name() << " without gradient";
+          for (int m = 0; m < 3; ++m)
+          {
+            const double eg = std::abs(g[3 * k + m] - refG[m]) / scaleD;
+            worst.Add(eg, c.Name());
+            ASSERT_LE(eg, 1e-14) << c.Name() << " components " << comps << " d/dpc" << m;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(cases, 100);
+  hovtest::ReportMeasured("LagrangeBasis.InterpolateVsWeights", worst);
+}
+
 TEST(LagrangeBasis, OrdersFromPointCountsAndDegrees)
 {
   hov::LagrangeBasis b;
