@@ -12,91 +12,6 @@ namespace hov
 {
 using detail::Eta1D;
 using detail::Lagrange1D;
-namespace
-{
-/// The sum-factorised hexahedron interpolation for @p C components (see
-/// InterpolateHexahedron); C is a template argument so the loops unroll.
-template <int C, bool G>
-void SumFactorised(const std::vector<std::array<int, 4>>& nodes, int nodeCount, int n0, int n1,
-  int n2, const Lagrange1D (&l)[3], const double* values, double* value, double* gradient)
-{
-  constexpr int M = MaxLagrangeOrder + 1;
-  // Gather the node values in tensor order: T[(k n1 + j) n0 + i][c].
-  double tensor[M * M * M][C];
-  for (int i = 0; i < nodeCount; ++i)
-  {
-    const std::array<int, 4>& ijk = nodes[i];
-    double* t = tensor[(ijk[2] * n1 + ijk[1]) * n0 + ijk[0]];
-    const double* node = values + static_cast<size_t>(i) * C;
-    for (int c = 0; c < C; ++c)
-    {
-      t[c] = node[c];
-    }
-  }
-  double v[C] = {}, g[3 * C] = {};
-  for (int k = 0; k < n2; ++k)
-  {
-    double b[C] = {}, br[C] = {}, bs[C] = {};
-    for (int j = 0; j < n1; ++j)
-    {
-      double a[C] = {}, ar[C] = {};
-      const double(*row)[C] = tensor + (k * n1 + j) * n0;
-      for (int i = 0; i < n0; ++i)
-      {
-        for (int c = 0; c < C; ++c)
-        {
-          a[c] += l[0].L[i] * row[i][c];
-          if (G)
-          {
-            ar[c] += l[0].D[i] * row[i][c];
-          }
-        }
-      }
-      for (int c = 0; c < C; ++c)
-      {
-        b[c] += l[1].L[j] * a[c];
-        if (G)
-        {
-          br[c] += l[1].L[j] * ar[c];
-          bs[c] += l[1].D[j] * a[c];
-        }
-      }
-    }
-    for (int c = 0; c < C; ++c)
-    {
-      v[c] += l[2].L[k] * b[c];
-      if (!G)
-      {
-        continue;
-      }
-      g[3 * c] += l[2].L[k] * br[c];
-      g[3 * c + 1] += l[2].L[k] * bs[c];
-      g[3 * c + 2] += l[2].D[k] * b[c];
-    }
-  }
-  std::copy(v, v + C, value);
-  if (G)
-  {
-    std::copy(g, g + 3 * C, gradient);
-  }
-}
-
-/// SumFactorised with or without the gradient.
-template <int C>
-void SumFactorisedAny(const std::vector<std::array<int, 4>>& nodes, int nodeCount, int n0, int n1,
-  int n2, const Lagrange1D (&l)[3], const double* values, double* value, double* gradient)
-{
-  if (gradient)
-  {
-    SumFactorised<C, true>(nodes, nodeCount, n0, n1, n2, l, values, value, gradient);
-  }
-  else
-  {
-    SumFactorised<C, false>(nodes, nodeCount, n0, n1, n2, l, values, value, gradient);
-  }
-}
-
-}
 
 int LagrangeNodeCount(LagrangeShape shape, const int order[3])
 {
@@ -124,7 +39,7 @@ bool LagrangeBasis::Initialize(
 {
   this->NodeCount = 0;
   this->Nodes.clear();
-  this->SimplexNodes.clear();
+  this->SumNodes.clear();
   this->Special = false;
   this->Shape = shape;
   auto fail = [&](const std::string& why) {
@@ -134,7 +49,7 @@ bool LagrangeBasis::Initialize(
     }
     this->NodeCount = 0;
     this->Nodes.clear();
-    this->SimplexNodes.clear();
+    this->SumNodes.clear();
     return false;
   };
   const int type = static_cast<int>(shape);
@@ -196,7 +111,11 @@ bool LagrangeBasis::Initialize(
     for (int k = 0; k <= order[2]; ++k)
       for (int j = 0; j <= order[1]; ++j)
         for (int i = 0; i <= order[0]; ++i)
-          put(detail::LagrangeHexIndex(i, j, k, order), i, j, k, 0);
+        {
+          const int index = detail::LagrangeHexIndex(i, j, k, order);
+          put(index, i, j, k, 0);
+          this->SumNodes.push_back(index);
+        }
   }
   else if (shape == LagrangeShape::Wedge)
   {
@@ -206,7 +125,7 @@ bool LagrangeBasis::Initialize(
         {
           const int index = detail::LagrangeWedgeIndex(i, j, k, order);
           put(index, i, j, k, 0);
-          this->SimplexNodes.push_back(index);
+          this->SumNodes.push_back(index);
         }
   }
   else
@@ -219,7 +138,7 @@ bool LagrangeBasis::Initialize(
           const int lambda[4] = { a, b, c, n - a - b - c };
           const int index = detail::LagrangeTetraIndex(lambda, n);
           put(index, a, b, c, n - a - b - c);
-          this->SimplexNodes.push_back(index);
+          this->SumNodes.push_back(index);
         }
   }
   if (filled != nodeCount)
@@ -410,34 +329,6 @@ void LagrangeBasis::FunctionsAndDerivatives(const double pc[3], double* w, doubl
   });
 }
 
-void LagrangeBasis::InterpolateHexahedron(const double pc[3], const double* values,
-  int components, double* value, double* gradient) const
-{
-  // Sum factorisation: x(r,s,t) = sum_k L_k(t) sum_j L_j(s) sum_i L_i(r) X_ijk,
-  // O(p^4) instead of the O(p^3) node loop's ~3x larger constant per node.
-  const int p0 = this->Order[0], p1 = this->Order[1], p2 = this->Order[2];
-  const int n0 = p0 + 1, n1 = p1 + 1, n2 = p2 + 1;
-  const bool derivs = gradient != nullptr;
-  Lagrange1D l[3];
-  l[0].Compute(p0, pc[0], derivs);
-  l[1].Compute(p1, pc[1], derivs);
-  l[2].Compute(p2, pc[2], derivs);
-  switch (components)
-  {
-    case 1:
-      SumFactorisedAny<1>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
-      return;
-    case 3:
-      SumFactorisedAny<3>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
-      return;
-    case 2:
-      SumFactorisedAny<2>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
-      return;
-    default:
-      SumFactorisedAny<4>(this->Nodes, this->NodeCount, n0, n1, n2, l, values, value, gradient);
-  }
-}
-
 template <int C, bool G>
 void LagrangeBasis::InterpolateNodes(
   const double pc[3], const double* values, double* value, double* gradient) const
@@ -467,14 +358,9 @@ void LagrangeBasis::Interpolate(const double pc[3], const double* values, int co
   double* value, double* gradient) const
 {
   components = std::min(std::max(components, 1), 4);
-  if (this->Shape == LagrangeShape::Hexahedron && !this->Special)
-  {
-    this->InterpolateHexahedron(pc, values, components, value, gradient);
-    return;
-  }
   if (!this->Special)
   {
-    this->InterpolateSimplex(pc, values, components, value, gradient);
+    this->InterpolateFactorised(pc, values, components, value, gradient);
     return;
   }
   // The special cells, with compile-time loops for positions (3) and scalars (1).

@@ -125,12 +125,9 @@ private:
   template <int C, bool G>
   void InterpolateNodes(const double pc[3], const double* values, double* value,
     double* gradient) const;
-  /// Interpolate() for tetrahedra and wedges by sum factorisation over the
-  /// simplex indices (hovLagrangeSimplexSum.cxx).
-  void InterpolateSimplex(const double pc[3], const double* values, int components, double* value,
-    double* gradient) const;
-  /// Interpolate() for hexahedra by sum factorisation (tensor-product basis).
-  void InterpolateHexahedron(const double pc[3], const double* values, int components,
+  /// Interpolate() by sum factorisation over the node indices, every shape
+  /// but the special cells (hovLagrangeSumFactorisation.cxx).
+  void InterpolateFactorised(const double pc[3], const double* values, int components,
     double* value, double* gradient) const;
   template <class Visitor>
   void VisitSpecial(const double pc[3], Visitor&& visit) const;
@@ -140,9 +137,9 @@ private:
   int NodeCount = 0;
   bool Special = false;
   std::vector<std::array<int, 4>> Nodes;
-  /// Tetrahedra: the node of (a, b, c) in the order a, b, c ascending
-  /// (a + b + c <= n); wedges: the node of (i, j, k) in the order k, j, i.
-  std::vector<int> SimplexNodes;
+  /// The nodes in the order of the sums: tetrahedra (a, b, c) with a, b, c
+  /// ascending (a + b + c <= n); hexahedra and wedges (i, j, k) with k, j, i.
+  std::vector<int> SumNodes;
 };
 }
 
