@@ -209,37 +209,46 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
   const CurvedFacePatch& face = *prob.Face;
   const int du = face.DegreeU, dv = face.DegreeV, nv = dv + 1, n = (du + 1) * nv;
   const double* net[2] = { netIn, netIn + n };
+  const double margin = settings.NetMargin * prob.Extent;
+  // Exclusion first (most sub-patches the search meets are excluded): the
+  // ranges of the nets, component by component, then the derivative nets.
   Interval range[2], deriv[2][2];
   for (int c = 0; c < 2; ++c)
   {
-    range[c] = { net[c][0], net[c][0] };
-    deriv[c][0] = deriv[c][1] = { 1e300, -1e300 };
-    for (int a = 0; a <= du; ++a)
+    double lo = net[c][0], hi = net[c][0];
+    for (int k = 1; k < n; ++k)
     {
-      for (int b = 0; b < nv; ++b)
-      {
-        const double v = net[c][a * nv + b];
-        range[c] = { std::min(range[c].Lo, v), std::max(range[c].Hi, v) };
-        if (a < du)
-        {
-          const double g = net[c][(a + 1) * nv + b] - v;
-          deriv[c][0] = { std::min(deriv[c][0].Lo, g), std::max(deriv[c][0].Hi, g) };
-        }
-        if (b < dv)
-        {
-          const double g = net[c][a * nv + b + 1] - v;
-          deriv[c][1] = { std::min(deriv[c][1].Lo, g), std::max(deriv[c][1].Hi, g) };
-        }
-      }
+      lo = std::min(lo, net[c][k]);
+      hi = std::max(hi, net[c][k]);
     }
-  }
-  const double margin = settings.NetMargin * prob.Extent;
-  for (const Interval& r : range)
-  {
-    if (r.Lo > margin || r.Hi < -margin)
+    if (lo > margin || hi < -margin)
     {
       return 0; // the convex hull of the net misses the ray
     }
+    range[c] = { lo, hi };
+  }
+  for (int c = 0; c < 2; ++c)
+  {
+    // Ranges of the differences along u (a) and along v (b).
+    const double* x = net[c];
+    double uLo = 1e300, uHi = -1e300, vLo = 1e300, vHi = -1e300;
+    for (int k = 0; k < du * nv; ++k)
+    {
+      const double g = x[k + nv] - x[k];
+      uLo = std::min(uLo, g);
+      uHi = std::max(uHi, g);
+    }
+    for (int a = 0; a <= du; ++a)
+    {
+      for (int b = 0; b < dv; ++b)
+      {
+        const double g = x[a * nv + b + 1] - x[a * nv + b];
+        vLo = std::min(vLo, g);
+        vHi = std::max(vHi, g);
+      }
+    }
+    deriv[c][0] = { uLo, uHi };
+    deriv[c][1] = { vLo, vHi };
   }
   const Interval ad = Mul(deriv[0][0], deriv[1][1]), bc = Mul(deriv[0][1], deriv[1][0]);
   const bool unique = (ad.Lo - bc.Hi > 0.0) || (ad.Hi - bc.Lo < 0.0);
