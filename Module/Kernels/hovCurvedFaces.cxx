@@ -201,6 +201,53 @@ bool SameCrossing(const FaceCrossing& a, const FaceCrossing& b, double minSize)
   return dist <= MergeDistance || ((a.Grazing || b.Grazing) && dist <= 64.0 * minSize);
 }
 
+/**
+ * The Newton start in a sub-patch, (a, b) in [0, 1]^2 of it: the zero of the
+ * bilinear interpolant of h at its corners (the corner control points are h's
+ * values there), by a few Newton steps on that interpolant from the centre;
+ * the centre if they do not converge inside. Only the start: the crossing is
+ * still Newton's on the exact map, under the same stopping rules.
+ */
+void BilinearStart(const double* const net[2], int du, int nv, int n, double& a, double& b)
+{
+  double A[2], B[2], C[2], D[2];
+  for (int c = 0; c < 2; ++c)
+  {
+    const double h00 = net[c][0], h01 = net[c][nv - 1], h10 = net[c][du * nv],
+                 h11 = net[c][n - 1];
+    A[c] = h00;
+    B[c] = h10 - h00;
+    C[c] = h01 - h00;
+    D[c] = h11 - h10 - h01 + h00;
+  }
+  double x = 0.5, y = 0.5;
+  for (int iter = 0; iter < 8; ++iter)
+  {
+    const double f0 = A[0] + B[0] * x + C[0] * y + D[0] * x * y;
+    const double f1 = A[1] + B[1] * x + C[1] * y + D[1] * x * y;
+    const double j00 = B[0] + D[0] * y, j01 = C[0] + D[0] * x;
+    const double j10 = B[1] + D[1] * y, j11 = C[1] + D[1] * x;
+    const double det = j00 * j11 - j01 * j10;
+    if (!(std::abs(det) > 0.0))
+    {
+      return;
+    }
+    const double dx = -(j11 * f0 - j01 * f1) / det, dy = -(-j10 * f0 + j00 * f1) / det;
+    x += dx;
+    y += dy;
+    if (!(x >= -0.25 && x <= 1.25 && y >= -0.25 && y <= 1.25))
+    {
+      return; // not inside: the centre
+    }
+    if (std::max(std::abs(dx), std::abs(dy)) <= 1e-6)
+    {
+      break;
+    }
+  }
+  a = std::min(1.0, std::max(0.0, x));
+  b = std::min(1.0, std::max(0.0, y));
+}
+
 /// Examine one sub-patch: 0 excluded, 1 done (crossing appended if found), 2 split.
 /// @p net: the sub-patch's two projected nets (component c at net + c * n).
 int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
@@ -271,7 +318,9 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
   FaceCrossing c;
   c.Face = faceIndex;
   c.Grazing = !unique;
-  double u = 0.5 * (s.U0 + s.U1), v = 0.5 * (s.V0 + s.V1);
+  double a = 0.5, b = 0.5;
+  BilinearStart(net, du, nv, n, a, b);
+  double u = s.U0 + a * (s.U1 - s.U0), v = s.V0 + b * (s.V1 - s.V0);
   const double box[4] = { s.U0, s.U1, s.V0, s.V1 };
   if (prob.Newton(u, v, box, c) && u >= s.U0 - AcceptSlack && u <= s.U1 + AcceptSlack &&
     v >= s.V0 - AcceptSlack && v <= s.V1 + AcceptSlack)
