@@ -305,36 +305,52 @@ int LocateBreakpoints(const LagrangeCellView& cell, const double origin[3],
     double t = piece.T0 + ys[i] * h;
     if (!piece.Exact)
     {
-      // Polish on the exact field: Newton on g(t) - level, g' = grad f . J^-1 d,
-      // kept inside the piece (the approximant's root is within ~Error/|g'|).
-      // Warm start: the coordinates interpolated between the piece's ends.
+      // Polish on the exact field: Newton on the coupled system x(pc) = o + t d,
+      // f(pc) = level in (pc, t), one geometry and one field evaluation per step,
+      // from the ray point's exact coordinates (one inversion); kept inside the
+      // piece (the approximant's root is within ~Error/|g'|). Each step solves
+      //   [J -d; grad^T 0] (dpc, dt) = -(x - o - t d, f - level)
+      // by dpc = a + b dt, a = -J^-1 r, b = J^-1 d. Warm start: the coordinates
+      // interpolated between the piece's ends.
       double pc[3];
       cell.Basis->ParametricCenter(pc);
       for (int k = 0; k < 3 && piece.HasPC; ++k)
       {
         pc[k] = piece.PC0[k] + ys[i] * (piece.PC1[k] - piece.PC0[k]);
       }
-      for (int iter = 0; iter < 4; ++iter)
+      double g, grad[3];
+      bool ok = FieldAt(cell, origin, direction, t, pc, g, grad);
+      for (int iter = 0; ok && iter < 4; ++iter)
       {
-        double g, grad[3], x[3], J[9], dpc[3];
-        if (!FieldAt(cell, origin, direction, t, pc, g, grad))
+        double x[3], J[9], r[3], a[3], b[3];
+        if (iter > 0)
         {
-          break;
+          g = EvaluateLagrangeScalar(cell, pc, grad);
         }
         EvaluateLagrangePosition(cell, pc, x, J);
-        if (!Solve3x3(J, direction, dpc, 1e-14))
+        for (int k = 0; k < 3; ++k)
+        {
+          r[k] = -(x[k] - origin[k] - t * direction[k]);
+        }
+        if (!Solve3x3(J, r, a, 1e-14) || !Solve3x3(J, direction, b, 1e-14))
         {
           break;
         }
-        const double slope = grad[0] * dpc[0] + grad[1] * dpc[1] + grad[2] * dpc[2];
-        const double next = slope != 0.0 ? t - (g - level) / slope : t;
-        if (!(next >= piece.T0 && next <= piece.T1) || std::abs(next - t) > 1e-6 * h)
+        const double slope = grad[0] * b[0] + grad[1] * b[1] + grad[2] * b[2];
+        const double dt = slope != 0.0
+          ? -(g - level + grad[0] * a[0] + grad[1] * a[1] + grad[2] * a[2]) / slope
+          : 0.0;
+        const double next = t + dt;
+        if (!(next >= piece.T0 && next <= piece.T1) || std::abs(dt) > 1e-6 * h)
         {
           break; // not in the approximant root's neighbourhood: keep it
         }
-        const double step = std::abs(next - t);
         t = next;
-        if (step <= 4.0 * Eps * (std::abs(t) + h))
+        for (int k = 0; k < 3; ++k)
+        {
+          pc[k] += a[k] + b[k] * dt;
+        }
+        if (std::abs(dt) <= 4.0 * Eps * (std::abs(t) + h))
         {
           break; // converged (quadratically: the next step would be rounding)
         }

@@ -9,6 +9,8 @@
 //    (x = r + a s^2, y = s, z = t, so pc(t) and the field along any ray are
 //    polynomials in t): the curved path (Chebyshev pieces, polished
 //    breakpoints) against the same reference;
+//  - breakpoints located on bent cells against bisection roots of the exact
+//    field along the ray;
 //  - empty segments are exactly transparent;
 //  - table nodes outside a segment's range change neither its colour nor
 //    (beyond noise) its cost.
@@ -216,6 +218,123 @@ TEST(CurvedSegment, CurvedHexahedronWithPolynomialInverse)
             << " on the curved path), " << out.Breakpoints << " breakpoints, worst error/estimate "
             << out.WorstOverEstimate << std::endl;
   EXPECT_GT(out.Curved, 0);
+}
+
+/// LocateBreakpoints on bent cells (tetrahedron P4, hexahedron Q3, wedge
+/// (3,3,2); no closed form along the ray): every root of field = level inside
+/// each piece is found once and agrees within 1e-11 of the ray length with the
+/// root by bisection on the exact field (Newton inversion + shape functions at
+/// each probe, independent of the polish).
+TEST(CurvedSegment, LocatedBreakpointsAreTheExactRoots)
+{
+  std::mt19937_64 rng(123);
+  auto field = [](const double* x) {
+    return 0.7 + 0.3 * std::sin(2.0 * x[0] + 0.5) + 0.2 * x[1] * x[2];
+  };
+  double worst = 0.0;
+  int roots = 0, curvedPieces = 0;
+  const hovtest::LagrangeCase cases[] = { { hov::LagrangeShape::Tetra, { 4, 4, 4 }, 0 },
+    { hov::LagrangeShape::Hexahedron, { 3, 3, 3 }, 0 },
+    { hov::LagrangeShape::Wedge, { 3, 3, 2 }, 0 } };
+  for (const hovtest::LagrangeCase& c : cases)
+  {
+    hovtest::LagrangeTestCell cell;
+    ASSERT_TRUE(hovtest::InitBasis(c, cell.Basis));
+    hovtest::PlaceNodes(cell, hovtest::RandomMap(rng, 0.12), 0.0, rng, field);
+    hov::LagrangeCellView v = cell.View();
+    v.Extent = hov::LagrangeCellExtent(v);
+    hov::CellDerivativeBounds bounds;
+    ASSERT_TRUE(hov::ComputeCellDerivativeBounds(v, bounds));
+    hov::CurvedCellFaces faces;
+    ASSERT_TRUE(hov::BuildCurvedFaces(v, faces));
+    std::normal_distribution<double> n01;
+    for (int r = 0; r < 30; ++r)
+    {
+      double pc[3], x[3], o[3], d[3], len = 0.0;
+      hovtest::RandomPC(cell.Basis, rng, 0.05, pc);
+      hov::EvaluateLagrangePosition(v, pc, x);
+      for (double& e : d)
+      {
+        e = n01(rng);
+        len += e * e;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        d[k] /= std::sqrt(len);
+        o[k] = x[k] - 3.0 * d[k];
+      }
+      hov::CurvedRayInterval iv[8];
+      const int count = hov::RayCurvedCellIntervals(v, faces, o, d, 0.0, 6.0, iv, 8);
+      for (int i = 0; i < count; ++i)
+      {
+        std::vector<hov::FieldPiece> pieces;
+        ASSERT_TRUE(hov::RepresentFieldOnSegment(
+          v, bounds, o, d, iv[i].T0, iv[i].T1, iv[i].PC0, hov::CurvedSegmentSettings(), pieces));
+        // The exact field at o + t d (warm-started inversion along the ray).
+        double guess[3] = { iv[i].PC0[0], iv[i].PC0[1], iv[i].PC0[2] };
+        auto f = [&](double t) {
+          const double y[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
+          double q[3] = { guess[0], guess[1], guess[2] };
+          EXPECT_TRUE(hov::InvertLagrangeGeometry(v, y, q).Converged());
+          std::copy(q, q + 3, guess);
+          return hov::EvaluateLagrangeScalar(v, q);
+        };
+        for (const hov::FieldPiece& piece : pieces)
+        {
+          curvedPieces += piece.Exact ? 0 : 1;
+          for (double level : { 0.55, 0.7, 0.85 })
+          {
+            std::vector<double> found;
+            hov::LocateBreakpoints(v, o, d, piece, level, found);
+            // The exact roots: sign changes on a fine grid, then bisection to rounding.
+            std::vector<double> exact;
+            const int steps = 400;
+            const double h = (piece.T1 - piece.T0) / steps;
+            double lo = piece.T0, flo = f(lo) - level;
+            for (int k = 1; k <= steps; ++k)
+            {
+              double hi = k == steps ? piece.T1 : piece.T0 + k * h, fhi = f(hi) - level;
+              const double nextLo = hi, nextF = fhi;
+              if (flo * fhi <= 0 && flo != fhi)
+              {
+                double a = lo, fa = flo, b = hi;
+                for (int it = 0; it < 80 && b - a > 1e-15 * (1.0 + std::abs(a)); ++it)
+                {
+                  const double mid = 0.5 * (a + b), fm = f(mid) - level;
+                  if (fa * fm <= 0)
+                  {
+                    b = mid;
+                  }
+                  else
+                  {
+                    a = mid;
+                    fa = fm;
+                  }
+                }
+                exact.push_back(0.5 * (a + b));
+              }
+              lo = nextLo;
+              flo = nextF;
+            }
+            // Roots where the field only touches the level are not counted;
+            // random cells, rays and levels avoid them with probability 1.
+            ASSERT_EQ(found.size(), exact.size()) << c.Name() << " ray " << r << " level " << level;
+            for (size_t k = 0; k < found.size(); ++k)
+            {
+              const double err = std::abs(found[k] - exact[k]);
+              worst = std::max(worst, err);
+              EXPECT_LE(err, 1e-11) << c.Name() << " ray " << r << " level " << level;
+              ++roots;
+            }
+          }
+        }
+      }
+    }
+  }
+  std::cout << "[measured] LocateBreakpoints: " << roots << " roots in " << curvedPieces
+            << " curved pieces, worst |t - bisection root| " << worst << std::endl;
+  EXPECT_GT(roots, 30);
+  EXPECT_GT(curvedPieces, 30);
 }
 
 TEST(CurvedSegment, EmptySegmentsAreExactlyTransparent)
