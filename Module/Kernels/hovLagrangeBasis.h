@@ -108,8 +108,10 @@ public:
   /**
    * Interpolate @p components values per node (values[node * components + c])
    * at @p pc: @p value[c] and, if @p gradient is given, gradient[3 c + d] =
-   * d value_c / d pc_d. No scratch storage (the weights are formed per node).
-   * components <= 4.
+   * d value_c / d pc_d. Sum-factorised over the node indices (one weight
+   * product per node; hovLagrangeSumFactorisation.cxx), the special cells by
+   * the node loop; no scratch storage. Agrees with the weights of
+   * FunctionsAndDerivatives() to rounding. components <= 4.
    */
   void Interpolate(const double pc[3], const double* values, int components, double* value,
     double* gradient) const;
