@@ -160,11 +160,23 @@ bool SamplePiece(const LagrangeCellView& cell, const double o[3], const double d
     ts[j] = ta + 0.5 * (1.0 + tab.Cos[j]) * (tb - ta);
   }
   // Coarse points, ascending t (j = n, n - 2, ..., 0).
-  for (int i = 0, prev = -1, older = -1; i <= n; i += 2)
+  for (int i = 0, prev = -1, older = -1, oldest = -1; i <= n; i += 2)
   {
     const int j = n - i;
     double guess[3] = { pc[0], pc[1], pc[2] };
-    if (older >= 0)
+    if (oldest >= 0)
+    {
+      // Quadratic extrapolation through the last three points (Lagrange form).
+      const double t = ts[j], a = ts[prev], b = ts[older], c = ts[oldest];
+      const double la = (t - b) * (t - c) / ((a - b) * (a - c));
+      const double lb = (t - a) * (t - c) / ((b - a) * (b - c));
+      const double lc = (t - a) * (t - b) / ((c - a) * (c - b));
+      for (int k = 0; k < 3; ++k)
+      {
+        guess[k] = la * pcs[prev][k] + lb * pcs[older][k] + lc * pcs[oldest][k];
+      }
+    }
+    else if (older >= 0)
     {
       const double w = (ts[j] - ts[prev]) / (ts[prev] - ts[older]);
       for (int k = 0; k < 3; ++k)
@@ -182,6 +194,7 @@ bool SamplePiece(const LagrangeCellView& cell, const double o[3], const double d
     }
     std::copy(guess, guess + 3, pcs[j]);
     std::copy(guess, guess + 3, pc);
+    oldest = older;
     older = prev;
     prev = j;
   }
@@ -196,11 +209,23 @@ bool SamplePiece(const LagrangeCellView& cell, const double o[3], const double d
   // The odd points between them.
   for (int j = n - 1; j >= 1; j -= 2)
   {
-    const double w = (ts[j] - ts[j + 1]) / (ts[j - 1] - ts[j + 1]);
-    double guess[3];
-    for (int k = 0; k < 3; ++k)
+    // Guess: the interpolant through the coarse neighbours j +- 1 and, where
+    // they exist, j +- 3 (cubic inside, linear at the ends).
+    const bool cubic = j + 3 <= n && j - 3 >= 0;
+    const int nodes[4] = { j + 1, j - 1, j + 3, j - 3 };
+    const int count = cubic ? 4 : 2;
+    double guess[3] = { 0.0, 0.0, 0.0 };
+    for (int q = 0; q < count; ++q)
     {
-      guess[k] = pcs[j + 1][k] + w * (pcs[j - 1][k] - pcs[j + 1][k]);
+      double l = 1.0;
+      for (int r = 0; r < count; ++r)
+      {
+        l *= r == q ? 1.0 : (ts[j] - ts[nodes[r]]) / (ts[nodes[q]] - ts[nodes[r]]);
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        guess[k] += l * pcs[nodes[q]][k];
+      }
     }
     if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
     {
