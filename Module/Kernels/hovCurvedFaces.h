@@ -87,6 +87,9 @@ struct CurvedFacePatch
 struct CurvedCellFaces
 {
   std::vector<CurvedFacePatch> Faces;
+  /// The cell's faces as ranges of patches: face k is Faces[FaceFirstPatch[k]]
+  /// .. Faces[FaceFirstPatch[k + 1] - 1] (a triangle 3 patches, a quad 1).
+  std::vector<int> FaceFirstPatch;
   double Extent = 0.0;
   /// Box (xmin, xmax, ymin, ymax, zmin, zmax) of every control point, widened
   /// by NetMargin x extent: it contains the cell (whose boundary lies in the

@@ -136,6 +136,7 @@ int PatchOrientation(const LagrangeCellView& cell, const CurvedFacePatch& p)
 bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
 {
   out.Faces.clear();
+  out.FaceFirstPatch.clear();
   if (!cell.Basis || !cell.Basis->IsInitialized() || !cell.Points)
   {
     return false;
@@ -144,6 +145,15 @@ bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
   FaceDef defs[12];
   const int count = FaceDefinitions(*cell.Basis, defs);
   out.Faces.resize(count);
+  out.FaceFirstPatch.assign(1, 0);
+  for (int f = 0; f < count; ++f)
+  {
+    // A triangle's three patches are consecutive (FaceDefinitions).
+    if (!defs[f].Triangle || f + 1 == count || out.FaceFirstPatch.back() + 3 == f + 1)
+    {
+      out.FaceFirstPatch.push_back(f + 1);
+    }
+  }
   for (int k = 0; k < 3; ++k)
   {
     out.Bounds[2 * k] = 1e300;

@@ -118,6 +118,8 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
       ok = ok && std::isfinite(cell.Scalars[i]);
     }
     cell.BoundsOnce = std::make_unique<std::once_flag>();
+    const int corners = shape == LagrangeShape::Tetra ? 4 : shape == LagrangeShape::Wedge ? 6 : 8;
+    cell.CornerIds.assign(input.Connectivity + begin, input.Connectivity + begin + std::min<std::int64_t>(corners, n));
     if (!ok)
     {
       skip(c, "point id out of range or non-finite point/scalar");
@@ -174,6 +176,20 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
     ++kept;
   }
   this->Cells.resize(kept);
+  this->Links.clear();
+  this->SharedFaces = 0;
+  if (this->ShareFaces)
+  {
+    std::vector<SharedFaceCell> linkCells(this->Cells.size());
+    for (size_t c = 0; c < this->Cells.size(); ++c)
+    {
+      const Cell& cell = this->Cells[c];
+      linkCells[c].View = { &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+      linkCells[c].Faces = &cell.Faces;
+      linkCells[c].CornerIds = cell.CornerIds.data();
+    }
+    this->SharedFaces = LinkSharedFaces(linkCells, this->Links);
+  }
   if (message)
   {
     *message = this->Skipped
@@ -279,6 +295,8 @@ void CurvedRayCaster::CollectSegments(const double origin[3], const double direc
   this->CollectCandidates(origin, direction, tMin, tMax, candidates);
   st.CandidateCells = static_cast<int>(candidates.size());
   std::vector<FaceCrossing> scratch;
+  thread_local FaceCrossingCache cache; // this ray's searched shared faces
+  cache.Clear();
   for (int c : candidates)
   {
     const Cell& cell = this->Cells[c];
@@ -300,8 +318,9 @@ void CurvedRayCaster::CollectSegments(const double origin[3], const double direc
     const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data(),
       cell.Faces.Extent };
     CurvedRayInterval iv[MaxIntervalsPerCell];
-    const int n = RayCurvedCellIntervals(
-      view, cell.Faces, origin, direction, t0, t1, iv, MaxIntervalsPerCell, {}, nullptr, &scratch);
+    const SharedFaceContext shared{ this->Links.empty() ? nullptr : &this->Links[c], &cache, c };
+    const int n = RayCurvedCellIntervals(view, cell.Faces, origin, direction, t0, t1, iv,
+      MaxIntervalsPerCell, {}, nullptr, &scratch, &shared);
     for (int i = 0; i < n; ++i)
     {
       segments.push_back({ iv[i].T0, iv[i].T1, c, { iv[i].PC0[0], iv[i].PC0[1], iv[i].PC0[2] } });

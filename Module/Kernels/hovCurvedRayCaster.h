@@ -72,6 +72,7 @@
 #include "hovCompositing.h"
 #include "hovConfig.h"
 #include "hovCurvedFaces.h"
+#include "hovCurvedSharedFaces.h" // CellFaceLinks
 #include "hovCurvedSegment.h"
 #include "hovEnclosure.h"
 #include "hovLagrangeBasis.h"
@@ -129,6 +130,11 @@ public:
   std::int64_t GetNumberOfSkippedCells() const { return this->Skipped; }
   /// Bounds (xmin, xmax, ymin, ymax, zmin, zmax) of all usable cells.
   const double* GetBounds() const { return this->Bounds; }
+  /// Faces shared by two curved cells, searched once per ray (default on;
+  /// hovCurvedSharedFaces.h). Set before Build().
+  void SetShareFaces(bool share) { this->ShareFaces = share; }
+  /// The number of faces linked by the last Build().
+  int GetNumberOfSharedFaces() const { return this->SharedFaces; }
 
   /**
    * Premultiplied RGBA of the ray o + t d, t in [@p tMin, @p tMax] (t = 0
@@ -170,6 +176,7 @@ private:
     int Basis = 0;
     std::vector<double> Points;
     std::vector<double> Scalars;
+    std::vector<std::int64_t> CornerIds; ///< point ids of the corner nodes
     CurvedCellFaces Faces;
     /// Affine geometry map x = X0 + J pc at every node (straight-sided cell
     /// of a simplex-like shape or a parallelepiped): intervals by clipping
@@ -205,6 +212,9 @@ private:
   std::vector<Cell> Cells;
   std::vector<int> CellOrder;
   std::vector<Node> Nodes;
+  std::vector<CellFaceLinks> Links; ///< per cell (empty: faces not shared)
+  bool ShareFaces = true;
+  int SharedFaces = 0;
   std::int64_t Skipped = 0;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
 };

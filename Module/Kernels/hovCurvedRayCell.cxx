@@ -149,7 +149,7 @@ void CollectStops(const std::vector<FaceCrossing>& crossings, double tMin, doubl
 int RayCurvedCellIntervals(const LagrangeCellView& cell, const CurvedCellFaces& faces,
   const double origin[3], const double direction[3], double tMin, double tMax,
   CurvedRayInterval* out, int maxOut, const CurvedRaySettings& settings,
-  CurvedRayStatus* status, std::vector<FaceCrossing>* scratch)
+  CurvedRayStatus* status, std::vector<FaceCrossing>* scratch, const SharedFaceContext* shared)
 {
   CurvedRayStatus st;
   std::vector<FaceCrossing> local;
@@ -166,9 +166,42 @@ int RayCurvedCellIntervals(const LagrangeCellView& cell, const CurvedCellFaces& 
     return 0;
   }
   FaceSearchStatus search;
-  for (int f = 0; f < static_cast<int>(faces.Faces.size()); ++f)
+  const int numFaces = static_cast<int>(faces.FaceFirstPatch.size()) - 1;
+  if (shared && shared->Links && shared->Cache &&
+    static_cast<int>(shared->Links->FaceIds.size()) == numFaces)
   {
-    FaceRayCrossings(cell, faces, f, origin, direction, crossings, settings.Faces, &search);
+    // Face by face: a face the neighbour has searched for this ray is taken
+    // from the cache; a shared face searched here is stored for it.
+    for (int k = 0; k < numFaces; ++k)
+    {
+      const int id = shared->Links->FaceIds[k];
+      const double* frame = &shared->Links->Frames[9 * static_cast<size_t>(k)];
+      bool complete = true;
+      if (id >= 0 && shared->Cache->Take(id, shared->Cell, frame, crossings, complete))
+      {
+        search.Complete = search.Complete && complete;
+        continue;
+      }
+      const size_t first = crossings.size();
+      FaceSearchStatus one;
+      for (int f = faces.FaceFirstPatch[k]; f < faces.FaceFirstPatch[k + 1]; ++f)
+      {
+        FaceRayCrossings(cell, faces, f, origin, direction, crossings, settings.Faces, &one);
+      }
+      search.Patches += one.Patches;
+      search.Complete = search.Complete && one.Complete;
+      if (id >= 0)
+      {
+        shared->Cache->Store(id, shared->Cell, frame, crossings, first, one.Complete);
+      }
+    }
+  }
+  else
+  {
+    for (int f = 0; f < static_cast<int>(faces.Faces.size()); ++f)
+    {
+      FaceRayCrossings(cell, faces, f, origin, direction, crossings, settings.Faces, &search);
+    }
   }
   st.Patches = search.Patches;
   st.Complete = search.Complete;

@@ -51,6 +51,7 @@
 
 #include "hovConfig.h"
 #include "hovCurvedFaces.h"
+#include "hovCurvedSharedFaces.h" // SharedFaceContext
 #include "hovLagrangeCell.h"
 
 #include <vector> // crossings scratch
@@ -86,12 +87,15 @@ struct CurvedRayStatus
 /**
  * Inside intervals of the ray o + t d, t in [@p tMin, @p tMax], written to
  * @p out (at most @p maxOut, nearest first; see file doc). Returns their
- * number.
+ * number. With @p shared, a face the ray's cache already holds (searched by
+ * the neighbour) is not searched again, and the faces searched here are
+ * stored for the neighbour (hovCurvedSharedFaces.h).
  */
 HOV_EXPORT int RayCurvedCellIntervals(const LagrangeCellView& cell, const CurvedCellFaces& faces,
   const double origin[3], const double direction[3], double tMin, double tMax,
   CurvedRayInterval* out, int maxOut, const CurvedRaySettings& settings = CurvedRaySettings(),
-  CurvedRayStatus* status = nullptr, std::vector<FaceCrossing>* scratch = nullptr);
+  CurvedRayStatus* status = nullptr, std::vector<FaceCrossing>* scratch = nullptr,
+  const SharedFaceContext* shared = nullptr);
 }
 
 #endif

@@ -6,7 +6,8 @@
 // ray is one polynomial); the reference finds where the ray is inside the
 // mesh by bisection on the reference coordinates and integrates each inside
 // interval with hovPolynomialTestSupport's reference. Also: a non-convex
-// mesh (one cell removed: rays leave and re-enter), bad cells skipped.
+// mesh (one cell removed: rays leave and re-enter), bad cells skipped, faces
+// shared by two cells searched once per ray.
 #include "hovCurvedRayCaster.h"
 
 #include "hovKernelTestUtilities.h"
@@ -14,8 +15,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <random>
 
 namespace
@@ -38,7 +41,8 @@ double FieldOfX(const double* X)
 }
 
 /// A mesh of m^3 order-p hexahedra on [0,1]^3 (cell @p removed left out, -1: none), nodes
-/// at x = (X + bend Y^2, Y, Z); points not shared (each cell has its own).
+/// at x = (X + bend Y^2, Y, Z); points not shared (each cell has its own) unless @p merge
+/// (one point per lattice position: neighbours share their face nodes).
 struct TestMesh
 {
   std::vector<double> Points, Scalars;
@@ -58,9 +62,10 @@ struct TestMesh
   }
 };
 
-TestMesh MakeMesh(int m, int p, double bend, int removed)
+TestMesh MakeMesh(int m, int p, double bend, int removed, bool merge = false)
 {
   TestMesh mesh;
+  std::map<std::array<int, 3>, std::int64_t> lattice; // merge: point of each lattice position
   hov::LagrangeBasis b;
   b.Initialize(hov::LagrangeShape::Hexahedron, (p + 1) * (p + 1) * (p + 1));
   for (int c = 0; c < m * m * m; ++c)
@@ -78,6 +83,16 @@ TestMesh MakeMesh(int m, int p, double bend, int removed)
       {
         X[k] = (ci[k] + pc[k]) / m;
       }
+      const std::array<int, 3> key = { ci[0] * p + static_cast<int>(std::lround(pc[0] * p)),
+        ci[1] * p + static_cast<int>(std::lround(pc[1] * p)),
+        ci[2] * p + static_cast<int>(std::lround(pc[2] * p)) };
+      const auto found = lattice.find(key);
+      if (merge && found != lattice.end())
+      {
+        mesh.Connectivity.push_back(found->second);
+        continue;
+      }
+      lattice[key] = static_cast<std::int64_t>(mesh.Scalars.size());
       mesh.Connectivity.push_back(static_cast<std::int64_t>(mesh.Scalars.size()));
       mesh.Points.insert(mesh.Points.end(), { X[0] + bend * X[1] * X[1], X[1], X[2] });
       mesh.Scalars.push_back(FieldOfX(X));
@@ -314,6 +329,70 @@ TEST(CurvedRayCaster, RaysInSharedFacesAndEdgesCountOnce)
     worst = std::max(worst, e);
   }
   hovtest::ReportMeasured("CurvedRayCaster.SharedFaceRayError", worst);
+}
+
+// Faces shared by two cells are searched once per ray (hovCurvedSharedFaces.h):
+// on a curved 3^3 mesh whose cells share their face nodes (a corner cell
+// removed: rays leave and re-enter), every interior face is linked, random
+// rays and rays in shared faces and edges match the whole-ray reference, and
+// the image equals the one without sharing to rounding.
+TEST(CurvedRayCaster, SharedFacesAreSearchedOnce)
+{
+  const int m = 3, removed = 0;
+  const TestMesh mesh = MakeMesh(m, 3, A, removed, true);
+  hov::CurvedRayCaster shared, separate;
+  separate.SetShareFaces(false);
+  ASSERT_TRUE(shared.Build(mesh.Input()));
+  ASSERT_TRUE(separate.Build(mesh.Input()));
+  EXPECT_EQ(shared.GetNumberOfSharedFaces(), 3 * m * m * (m - 1) - 3);
+  EXPECT_EQ(separate.GetNumberOfSharedFaces(), 0);
+  // Without merged points no face is shared.
+  hov::CurvedRayCaster apart;
+  ASSERT_TRUE(apart.Build(MakeMesh(m, 3, A, removed).Input()));
+  EXPECT_EQ(apart.GetNumberOfSharedFaces(), 0);
+  hov::TransferFunction tf;
+  ASSERT_TRUE(tf.Build(Spec()));
+  std::mt19937_64 rng(141);
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  std::normal_distribution<double> n01;
+  double worstRef = 0.0, worstPair = 0.0;
+  auto check = [&](const double o[3], const double d[3], const char* what) {
+    const hov::RGBA a = shared.TraceRay(o, d, 0.0, 6.0, tf, {});
+    const hov::RGBA b = separate.TraceRay(o, d, 0.0, 6.0, tf, {});
+    const double eRef = RGBAError(a, Reference(o, d, 6.0, A, m, removed, Spec()));
+    const double ePair = std::max({ std::abs(a.R - b.R), std::abs(a.G - b.G),
+      std::abs(a.B - b.B), std::abs(a.A - b.A) });
+    EXPECT_LE(eRef, 1e-9) << what;
+    EXPECT_LE(ePair, 1e-12) << what;
+    worstRef = std::max(worstRef, eRef);
+    worstPair = std::max(worstPair, ePair);
+  };
+  for (int r = 0; r < 40; ++r)
+  {
+    double X[3] = { u(rng), u(rng), u(rng) }, d[3], len = 0.0, o[3];
+    for (double& c : d)
+    {
+      c = n01(rng);
+      len += c * c;
+    }
+    const double x[3] = { X[0] + A * X[1] * X[1], X[1], X[2] };
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] /= std::sqrt(len);
+      o[k] = x[k] - 3.0 * d[k];
+    }
+    check(o, d, "random ray");
+  }
+  // Rays in the shared faces y = 1/3 and on the shared edge y = z = 2/3, along x.
+  const double yz[][2] = { { 1.0 / 3, 0.52 }, { 2.0 / 3, 2.0 / 3 } };
+  for (const auto& p : yz)
+  {
+    const double o[3] = { -1.0 + A * p[0] * p[0], p[0], p[1] }, d[3] = { 1.0, 0.0, 0.0 };
+    check(o, d, "ray in a shared face or edge");
+  }
+  std::cout << "[measured] shared faces: " << shared.GetNumberOfSharedFaces()
+            << ", worst RGBA error against the reference " << worstRef
+            << ", against the caster without sharing " << worstPair << std::endl;
 }
 
 // The tolerance is per pixel (per ray), not per segment: on the curved 4^3
