@@ -11,6 +11,7 @@
 #include "hovCurvedRayCaster.h"
 
 #include "hovKernelTestUtilities.h"
+#include "hovLagrangeTestSupport.h"
 #include "hovPolynomialTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -202,18 +203,10 @@ double CompareRays(const TestMesh& mesh, int m, double bend, int removed, int ra
   int segments = 0;
   for (int r = 0; r < rays; ++r)
   {
-    double X[3] = { u(rng), u(rng), u(rng) }, d[3], len = 0.0, o[3];
-    for (double& c : d)
-    {
-      c = n01(rng);
-      len += c * c;
-    }
+    const double X[3] = { u(rng), u(rng), u(rng) };
     const double x[3] = { X[0] + bend * X[1] * X[1], X[1], X[2] };
-    for (int k = 0; k < 3; ++k)
-    {
-      d[k] /= std::sqrt(len);
-      o[k] = x[k] - 3.0 * d[k];
-    }
+    double o[3], d[3];
+    hovtest::RandomRayThrough(x, 3.0, rng, n01, o, d);
     double err = 0.0;
     hov::CurvedRayStats stats;
     const hov::RGBA got = caster.TraceRay(o, d, 0.0, 6.0, tf, {}, &err, &stats);
@@ -369,18 +362,10 @@ TEST(CurvedRayCaster, SharedFacesAreSearchedOnce)
   };
   for (int r = 0; r < 40; ++r)
   {
-    double X[3] = { u(rng), u(rng), u(rng) }, d[3], len = 0.0, o[3];
-    for (double& c : d)
-    {
-      c = n01(rng);
-      len += c * c;
-    }
+    const double X[3] = { u(rng), u(rng), u(rng) };
     const double x[3] = { X[0] + A * X[1] * X[1], X[1], X[2] };
-    for (int k = 0; k < 3; ++k)
-    {
-      d[k] /= std::sqrt(len);
-      o[k] = x[k] - 3.0 * d[k];
-    }
+    double o[3], d[3];
+    hovtest::RandomRayThrough(x, 3.0, rng, n01, o, d);
     check(o, d, "random ray");
   }
   // Rays in the shared faces y = 1/3 and on the shared edge y = z = 2/3, along x.
@@ -418,18 +403,9 @@ TEST(CurvedRayCaster, ToleranceHoldsPerRay)
       double o[3], d[3];
       if (r < 10) // random directions through random inside points
       {
-        double X[3] = { u(rng), u(rng), u(rng) }, len = 0.0;
-        for (double& c : d)
-        {
-          c = n01(rng);
-          len += c * c;
-        }
+        const double X[3] = { u(rng), u(rng), u(rng) };
         const double x[3] = { X[0] + A * X[1] * X[1], X[1], X[2] };
-        for (int k = 0; k < 3; ++k)
-        {
-          d[k] /= std::sqrt(len);
-          o[k] = x[k] - 3.0 * d[k];
-        }
+        hovtest::RandomRayThrough(x, 3.0, rng, n01, o, d);
       }
       else // along x through a whole row: four segments of similar error
       {

@@ -107,20 +107,10 @@ void RunRays(const hovtest::LagrangeTestCell& cell, const hov::TransferFunctionS
   std::normal_distribution<double> n01;
   for (int r = 0; r < rays; ++r)
   {
-    double pc[3], x[3], o[3], d[3], len = 0.0;
+    double pc[3], x[3], o[3], d[3];
     hovtest::RandomPC(cell.Basis, rng, 0.05, pc);
     hov::EvaluateLagrangePosition(v, pc, x);
-    for (double& c : d)
-    {
-      c = n01(rng);
-      len += c * c;
-    }
-    len = std::sqrt(len);
-    for (int k = 0; k < 3; ++k)
-    {
-      d[k] /= len; // unit: t is length
-      o[k] = x[k] - 3.0 * d[k];
-    }
+    hovtest::RandomRayThrough(x, 3.0, rng, n01, o, d); // unit d: t is length
     hov::CurvedRayInterval iv[8];
     const int count = hov::RayCurvedCellIntervals(v, faces, o, d, 0.0, 6.0, iv, 8);
     for (int i = 0; i < count; ++i)
@@ -250,19 +240,10 @@ TEST(CurvedSegment, LocatedBreakpointsAreTheExactRoots)
     std::normal_distribution<double> n01;
     for (int r = 0; r < 30; ++r)
     {
-      double pc[3], x[3], o[3], d[3], len = 0.0;
+      double pc[3], x[3], o[3], d[3];
       hovtest::RandomPC(cell.Basis, rng, 0.05, pc);
       hov::EvaluateLagrangePosition(v, pc, x);
-      for (double& e : d)
-      {
-        e = n01(rng);
-        len += e * e;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        d[k] /= std::sqrt(len);
-        o[k] = x[k] - 3.0 * d[k];
-      }
+      hovtest::RandomRayThrough(x, 3.0, rng, n01, o, d);
       hov::CurvedRayInterval iv[8];
       const int count = hov::RayCurvedCellIntervals(v, faces, o, d, 0.0, 6.0, iv, 8);
       for (int i = 0; i < count; ++i)

@@ -10,6 +10,7 @@
 #include "hovCurvedSharedFaces.h"
 
 #include "hovLagrangeBasis.h"
+#include "hovLagrangeTestSupport.h" // RandomRayThrough
 
 #include <gtest/gtest.h>
 
@@ -118,8 +119,8 @@ void PlaceWedge(int c, const double pc[3], double X[3])
   X[2] = pc[2];
 }
 
-/// Checks the pair: one linked face; cached crossings equal the neighbour's own.
-void CheckPair(const Pair& pair, const char* name, int& compared)
+/// LinkSharedFaces on the pair.
+int Link(const Pair& pair, std::vector<hov::CellFaceLinks>& links)
 {
   std::vector<hov::SharedFaceCell> cells(2);
   for (int c = 0; c < 2; ++c)
@@ -128,8 +129,14 @@ void CheckPair(const Pair& pair, const char* name, int& compared)
     cells[c].Faces = &pair.Faces[c];
     cells[c].CornerIds = pair.Ids[c].data();
   }
+  return hov::LinkSharedFaces(cells, links);
+}
+
+/// Checks the pair: one linked face; cached crossings equal the neighbour's own.
+void CheckPair(const Pair& pair, const char* name, int& compared)
+{
   std::vector<hov::CellFaceLinks> links;
-  ASSERT_EQ(hov::LinkSharedFaces(cells, links), 1) << name;
+  ASSERT_EQ(Link(pair, links), 1) << name;
   int face[2] = { -1, -1 };
   for (int c = 0; c < 2; ++c)
   {
@@ -157,23 +164,14 @@ void CheckPair(const Pair& pair, const char* name, int& compared)
   {
     // A point of the shared face (frame coordinates in a triangle's and a quad's range).
     const double* frame = &links[0].Frames[9 * static_cast<size_t>(face[0])];
-    double pc[3], x[3], d[3], o[3], len = 0.0;
+    double pc[3], x[3], d[3], o[3];
     const double a = u(rng), b = u(rng);
     for (int k = 0; k < 3; ++k)
     {
       pc[k] = frame[k] + a * (frame[3 + k] - frame[k]) + b * (frame[6 + k] - frame[k]);
     }
     hov::EvaluateLagrangePosition(pair.View(0), pc, x);
-    for (double& e : d)
-    {
-      e = n01(rng);
-      len += e * e;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      d[k] /= std::sqrt(len);
-      o[k] = x[k] - 2.0 * d[k];
-    }
+    hovtest::RandomRayThrough(x, 2.0, rng, n01, o, d);
     std::vector<hov::FaceCrossing> first, own, taken;
     search(0, o, d, first);
     search(1, o, d, own);
@@ -226,14 +224,7 @@ TEST(CurvedSharedFaces, NonConformingFacesAreNotLinked)
 {
   Pair hexes;
   MakePair(hexes, hov::LagrangeShape::Hexahedron, 27, PlaceHex, 1e-6);
-  std::vector<hov::SharedFaceCell> cells(2);
-  for (int c = 0; c < 2; ++c)
-  {
-    cells[c].View = hexes.View(c);
-    cells[c].Faces = &hexes.Faces[c];
-    cells[c].CornerIds = hexes.Ids[c].data();
-  }
   std::vector<hov::CellFaceLinks> links;
-  EXPECT_EQ(hov::LinkSharedFaces(cells, links), 0);
+  EXPECT_EQ(Link(hexes, links), 0);
 }
 }

@@ -117,6 +117,25 @@ inline void RandomPC(const hov::LagrangeBasis& b, std::mt19937_64& rng, double m
   } while (b.DistanceOutside(pc) > -margin);
 }
 
+/// A ray through @p x in a random direction (unit, from @p n01): d, and the
+/// origin o = x - back d.
+inline void RandomRayThrough(const double x[3], double back, std::mt19937_64& rng,
+  std::normal_distribution<double>& n01, double o[3], double d[3])
+{
+  double len = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    d[k] = n01(rng);
+    len += d[k] * d[k];
+  }
+  len = std::sqrt(len);
+  for (int k = 0; k < 3; ++k)
+  {
+    d[k] /= len;
+    o[k] = x[k] - back * d[k];
+  }
+}
+
 /// Geometry x = M pc + c + bend * (sin-type bending), the same map for every node.
 struct SmoothMap
 {
