@@ -26,6 +26,9 @@
  * (exact, no face search). The face nets are built on all cores.
  * BVH: binary, split at the median centroid along the
  * longest axis of the centroids' box, leaves of <= 4 cells.
+ * Faces shared by two curved cells are linked (hovCurvedSharedFaces.h):
+ * per ray, such a face is searched by the first of its cells the ray meets
+ * and its crossings handed to the other.
  * TraceRay(): the cells whose boxes the ray meets (slab test, front to back
  * traversal), their inside intervals, sorted by entry, each part of the
  * ray kept once (a ray in a face shared by two cells, or on an edge shared
