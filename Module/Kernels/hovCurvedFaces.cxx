@@ -129,6 +129,75 @@ struct FaceProblem
     }
   }
 
+  /// h(u, v) and its Jacobian from the face's Bernstein net (the cell's map on
+  /// the face, to the net's rounding): a fraction of the cost of Evaluate
+  /// (a (du + 1)(dv + 1) net instead of every node of the cell).
+  void EvaluateNet(double u, double v, double h[2], double jac[4]) const
+  {
+    const CurvedFacePatch& f = *this->Face;
+    const int du = f.DegreeU, dv = f.DegreeV, nv = dv + 1;
+    double bu[MaxFaceDegree + 1], dbu[MaxFaceDegree + 1], bv[MaxFaceDegree + 1],
+      dbv[MaxFaceDegree + 1];
+    BernsteinBasis(du, u, bu, dbu);
+    BernsteinBasis(dv, v, bv, dbv);
+    double x[3] = { 0.0, 0.0, 0.0 }, xu[3] = { 0.0, 0.0, 0.0 }, xv[3] = { 0.0, 0.0, 0.0 };
+    const double* net = f.Net.data();
+    for (int a = 0; a <= du; ++a)
+    {
+      double r[3] = { 0.0, 0.0, 0.0 }, rv[3] = { 0.0, 0.0, 0.0 };
+      for (int b = 0; b <= dv; ++b)
+      {
+        const double* q = net + 3 * (nv * a + b);
+        for (int i = 0; i < 3; ++i)
+        {
+          r[i] += bv[b] * q[i];
+          rv[i] += dbv[b] * q[i];
+        }
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        x[i] += bu[a] * r[i];
+        xu[i] += dbu[a] * r[i];
+        xv[i] += bu[a] * rv[i];
+      }
+    }
+    const double rel[3] = { x[0] - this->O[0], x[1] - this->O[1], x[2] - this->O[2] };
+    h[0] = Dot(this->E1, rel);
+    h[1] = Dot(this->E2, rel);
+    jac[0] = Dot(this->E1, xu);
+    jac[1] = Dot(this->E1, xv);
+    jac[2] = Dot(this->E2, xu);
+    jac[3] = Dot(this->E2, xv);
+  }
+
+  /// The Bernstein basis of degree @p n at @p t and its derivatives.
+  static void BernsteinBasis(int n, double t, double* b, double* db)
+  {
+    const double s = 1.0 - t;
+    b[0] = 1.0;
+    for (int k = 1; k <= n; ++k)
+    {
+      if (k == n)
+      {
+        // Derivatives from the degree n - 1 values: n (B_{i-1} - B_i).
+        for (int i = 0; i <= n; ++i)
+        {
+          db[i] = n * ((i > 0 ? b[i - 1] : 0.0) - (i < n ? b[i] : 0.0));
+        }
+      }
+      b[k] = t * b[k - 1];
+      for (int i = k - 1; i > 0; --i)
+      {
+        b[i] = s * b[i] + t * b[i - 1];
+      }
+      b[0] *= s;
+    }
+    if (n == 0)
+    {
+      db[0] = 0.0;
+    }
+  }
+
   /// FaceCrossing::Side from the normal x_u x x_v at the crossing.
   int Side(const double n[3]) const
   {
@@ -148,7 +217,8 @@ struct FaceProblem
     double h[2], jac[4], x[3], pc[3];
     for (int iter = 0; iter < 40; ++iter)
     {
-      this->Evaluate(u, v, h, jac, x, pc);
+      // The iterations on the net; the crossing itself on the cell's map.
+      this->EvaluateNet(u, v, h, jac);
       const double det = jac[0] * jac[3] - jac[1] * jac[2];
       if (!(std::abs(det) > 0.0))
       {

@@ -21,16 +21,24 @@ constexpr int SampleDegree = 16;
 /// Newton tolerance floor of the sampled values, relative to the field scale.
 constexpr double NewtonFloor = 1e-13;
 
-/// The field at o + t d; @p pc is the warm start in and the coordinates out.
+/// The field at o + t d; @p pc is the warm start in and the coordinates out;
+/// @p rate, if given, receives dpc/dt = J^-1 d (false in @p hasRate if J is
+/// singular there).
 bool FieldAt(const LagrangeCellView& cell, const double o[3], const double d[3], double t,
-  double pc[3], double& value, double* gradient = nullptr)
+  double pc[3], double& value, double* gradient = nullptr, double* rate = nullptr,
+  bool* hasRate = nullptr)
 {
   const double x[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
-  if (!InvertLagrangeGeometry(cell, x, pc).Converged())
+  const LagrangeInversionResult inv = InvertLagrangeGeometry(cell, x, pc);
+  if (!inv.Converged())
   {
     return false;
   }
   value = EvaluateLagrangeScalar(cell, pc, gradient);
+  if (rate)
+  {
+    *hasRate = Solve3x3(inv.Jacobian, d, rate, 1e-14);
+  }
   return true;
 }
 
@@ -142,103 +150,160 @@ void Interpolant(const double* f, int n, double ta, double tb, double scale, Fie
   piece.Exact = false;
 }
 
+/// One computed sample of SamplePiece: coordinates and their rate dpc/dt.
+struct Sample
+{
+  double PC[3];
+  double Rate[3];
+  bool HasRate = false;
+};
+
+/// Newton start at @p t between computed samples @p a (at ta) and @p b (at
+/// tb): the cubic Hermite interpolant of their coordinates and rates (the
+/// linear one where a rate is missing).
+void HermiteGuess(const Sample& a, double ta, const Sample& b, double tb, double t, double pc[3])
+{
+  const double h = tb - ta, u = (t - ta) / h;
+  const bool cubic = a.HasRate && b.HasRate;
+  const double h00 = cubic ? (2.0 * u - 3.0) * u * u + 1.0 : 1.0 - u;
+  const double h01 = 1.0 - h00;
+  const double h10 = cubic ? ((u - 2.0) * u + 1.0) * u * h : 0.0;
+  const double h11 = cubic ? (u - 1.0) * u * u * h : 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    pc[k] = h00 * a.PC[k] + h01 * b.PC[k] + h10 * a.Rate[k] + h11 * b.Rate[k];
+  }
+}
+
 /// Chebyshev interpolant of the field on [ta, tb] with its error estimate (see
 /// hovCurvedSegment.h): degree CoarseDegree first, then SampleDegree on the
 /// nested points (the even ones are the coarse rule's) if the estimate misses
-/// @p tol. Each inversion is warm-started from its neighbours (linear
-/// extrapolation / interpolation of their coordinates in t).
+/// @p tol. The ends are inverted first (from @p pcA / @p pcB, the latter
+/// extrapolated from the first end's rate if null), then every other point
+/// in bisection order from the Hermite interpolant of its computed
+/// neighbours (HermiteGuess), retried from the left neighbour's coordinates.
 bool SamplePiece(const LagrangeCellView& cell, const double o[3], const double d[3], double ta,
-  double tb, double pc[3], double scale, double tol, FieldPiece& piece)
+  double tb, const double pcA[3], const double* pcB, double scale, double tol, FieldPiece& piece)
 {
   const int n = SampleDegree;
   const ChebyshevTables& tab = Tables();
-  double f[SampleDegree + 1];      // f[j] at x_j = cos(pi j / n), y = (1 + x)/2
-  double pcs[SampleDegree + 1][3]; // the samples' parametric coordinates
+  double f[SampleDegree + 1]; // f[j] at x_j = cos(pi j / n), y = (1 + x)/2
+  Sample smp[SampleDegree + 1];
   double ts[SampleDegree + 1];
   for (int j = 0; j <= n; ++j)
   {
     ts[j] = ta + 0.5 * (1.0 + tab.Cos[j]) * (tb - ta);
   }
-  // Coarse points, ascending t (j = n, n - 2, ..., 0).
-  for (int i = 0, prev = -1, older = -1, oldest = -1; i <= n; i += 2)
-  {
-    const int j = n - i;
-    double guess[3] = { pc[0], pc[1], pc[2] };
-    if (oldest >= 0)
+  ts[n] = ta;
+  ts[0] = tb;
+  const auto compute = [&](int j, const double guess[3], const double* retry) {
+    double p[3] = { guess[0], guess[1], guess[2] };
+    if (!FieldAt(cell, o, d, ts[j], p, f[j], nullptr, smp[j].Rate, &smp[j].HasRate))
     {
-      // Quadratic extrapolation through the last three points (Lagrange form).
-      const double t = ts[j], a = ts[prev], b = ts[older], c = ts[oldest];
-      const double la = (t - b) * (t - c) / ((a - b) * (a - c));
-      const double lb = (t - a) * (t - c) / ((b - a) * (b - c));
-      const double lc = (t - a) * (t - b) / ((c - a) * (c - b));
-      for (int k = 0; k < 3; ++k)
+      if (!retry)
       {
-        guess[k] = la * pcs[prev][k] + lb * pcs[older][k] + lc * pcs[oldest][k];
+        return false;
       }
-    }
-    else if (older >= 0)
-    {
-      const double w = (ts[j] - ts[prev]) / (ts[prev] - ts[older]);
-      for (int k = 0; k < 3; ++k)
-      {
-        guess[k] = pcs[prev][k] + w * (pcs[prev][k] - pcs[older][k]);
-      }
-    }
-    if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
-    {
-      std::copy(pc, pc + 3, guess); // retry from the plain warm start
-      if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
+      std::copy(retry, retry + 3, p);
+      if (!FieldAt(cell, o, d, ts[j], p, f[j], nullptr, smp[j].Rate, &smp[j].HasRate))
       {
         return false;
       }
     }
-    std::copy(guess, guess + 3, pcs[j]);
-    std::copy(guess, guess + 3, pc);
-    oldest = older;
-    older = prev;
-    prev = j;
+    std::copy(p, p + 3, smp[j].PC);
+    return true;
+  };
+  // The ends.
+  if (!compute(n, pcA, nullptr))
+  {
+    return false;
   }
+  double guess[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    guess[k] = pcB ? pcB[k]
+                   : smp[n].PC[k] + (smp[n].HasRate ? (tb - ta) * smp[n].Rate[k] : 0.0);
+  }
+  if (!compute(0, guess, smp[n].PC))
+  {
+    return false;
+  }
+  // Coarse interior points in bisection order: {point, left, right}.
+  static constexpr int coarse[7][3] = { { 8, 16, 0 }, { 12, 16, 8 }, { 4, 8, 0 }, { 14, 16, 12 },
+    { 10, 12, 8 }, { 6, 8, 4 }, { 2, 4, 0 } };
+  for (const auto& c : coarse)
+  {
+    HermiteGuess(smp[c[1]], ts[c[1]], smp[c[2]], ts[c[2]], ts[c[0]], guess);
+    if (!compute(c[0], guess, smp[c[1]].PC))
+    {
+      return false;
+    }
+  }
+  const auto store = [&](int degree) {
+    const int stride = SampleDegree / degree;
+    piece.SampleDegree = degree;
+    for (int j = 0; j <= degree; ++j)
+    {
+      std::copy(smp[j * stride].PC, smp[j * stride].PC + 3, piece.SamplePC[j]);
+    }
+  };
   Interpolant(f, CoarseDegree, ta, tb, scale, piece);
-  std::copy(pcs[n], pcs[n] + 3, piece.PC0);
-  std::copy(pcs[0], pcs[0] + 3, piece.PC1);
+  std::copy(smp[n].PC, smp[n].PC + 3, piece.PC0);
+  std::copy(smp[0].PC, smp[0].PC + 3, piece.PC1);
   piece.HasPC = true;
   if (piece.Error <= tol)
   {
+    store(CoarseDegree);
     return true;
   }
   // The odd points between them.
   for (int j = n - 1; j >= 1; j -= 2)
   {
-    // Guess: the interpolant through the coarse neighbours j +- 1 and, where
-    // they exist, j +- 3 (cubic inside, linear at the ends).
-    const bool cubic = j + 3 <= n && j - 3 >= 0;
-    const int nodes[4] = { j + 1, j - 1, j + 3, j - 3 };
-    const int count = cubic ? 4 : 2;
-    double guess[3] = { 0.0, 0.0, 0.0 };
-    for (int q = 0; q < count; ++q)
+    HermiteGuess(smp[j + 1], ts[j + 1], smp[j - 1], ts[j - 1], ts[j], guess);
+    if (!compute(j, guess, smp[j + 1].PC))
     {
-      double l = 1.0;
-      for (int r = 0; r < count; ++r)
-      {
-        l *= r == q ? 1.0 : (ts[j] - ts[nodes[r]]) / (ts[nodes[q]] - ts[nodes[r]]);
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        guess[k] += l * pcs[nodes[q]][k];
-      }
-    }
-    if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
-    {
-      std::copy(pcs[j + 1], pcs[j + 1] + 3, guess);
-      if (!FieldAt(cell, o, d, ts[j], guess, f[j]))
-      {
-        return false;
-      }
+      return false;
     }
   }
   Interpolant(f, n, ta, tb, scale, piece);
+  store(SampleDegree);
   return true;
 }
+}
+
+bool PieceCoordinates(const FieldPiece& piece, double t, double pc[3])
+{
+  const int n = piece.SampleDegree;
+  if (n <= 0 || n > SampleDegree || !(piece.T1 > piece.T0))
+  {
+    return false;
+  }
+  // Barycentric interpolation at the points x_j = cos(pi j / n): weights
+  // (-1)^j, halved at both ends.
+  const ChebyshevTables& tab = Tables();
+  const int stride = SampleDegree / n;
+  const double x = 2.0 * (t - piece.T0) / (piece.T1 - piece.T0) - 1.0;
+  double num[3] = { 0.0, 0.0, 0.0 }, den = 0.0;
+  for (int j = 0; j <= n; ++j)
+  {
+    const double diff = x - tab.Cos[j * stride];
+    if (diff == 0.0)
+    {
+      std::copy(piece.SamplePC[j], piece.SamplePC[j] + 3, pc);
+      return true;
+    }
+    const double w = ((j & 1) ? -1.0 : 1.0) * ((j == 0 || j == n) ? 0.5 : 1.0) / diff;
+    den += w;
+    for (int k = 0; k < 3; ++k)
+    {
+      num[k] += w * piece.SamplePC[j][k];
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    pc[k] = num[k] / den;
+  }
+  return true;
 }
 
 bool RepresentFieldOnSegment(const LagrangeCellView& cell, const CellDerivativeBounds& bounds,
@@ -270,27 +335,35 @@ bool RepresentFieldOnSegment(const LagrangeCellView& cell, const CellDerivativeB
 
 bool detail::RepresentCurvedField(const LagrangeCellView& cell, double scale, double tol,
   const double origin[3], const double direction[3], double t0, double t1, const double* pcGuess,
-  int maxPieces, std::vector<FieldPiece>& out)
+  int maxPieces, std::vector<FieldPiece>& out, const double* pcEndGuess)
 {
   out.clear();
-  // Curved: Chebyshev pieces, bisected (left first) until the estimate meets the tolerance.
-  double pc[3];
-  cell.Basis->ParametricCenter(pc);
-  if (pcGuess)
-  {
-    std::copy(pcGuess, pcGuess + 3, pc);
-  }
+  // Curved: Chebyshev pieces, bisected (left first) until the estimate meets
+  // the tolerance; a half's ends start from the parent's samples.
   struct Span
   {
     double A, B;
+    double PCA[3], PCB[3];
+    bool HasB;
   };
-  std::vector<Span> stack{ { t0, t1 } };
+  Span first{ t0, t1, {}, {}, pcEndGuess != nullptr };
+  cell.Basis->ParametricCenter(first.PCA);
+  if (pcGuess)
+  {
+    std::copy(pcGuess, pcGuess + 3, first.PCA);
+  }
+  if (pcEndGuess)
+  {
+    std::copy(pcEndGuess, pcEndGuess + 3, first.PCB);
+  }
+  std::vector<Span> stack{ first };
   while (!stack.empty())
   {
     const Span s = stack.back();
     stack.pop_back();
     FieldPiece p;
-    if (!SamplePiece(cell, origin, direction, s.A, s.B, pc, scale, tol, p))
+    if (!SamplePiece(
+          cell, origin, direction, s.A, s.B, s.PCA, s.HasB ? s.PCB : nullptr, scale, tol, p))
     {
       return false;
     }
@@ -299,18 +372,90 @@ bool detail::RepresentCurvedField(const LagrangeCellView& cell, double scale, do
     if (p.Error > tol && canSplit)
     {
       const double mid = 0.5 * (s.A + s.B);
-      stack.push_back({ mid, s.B });
-      stack.push_back({ s.A, mid });
-      cell.Basis->ParametricCenter(pc);
-      if (pcGuess)
-      {
-        std::copy(pcGuess, pcGuess + 3, pc);
-      }
+      Span right{ mid, s.B, {}, {}, true }, left{ s.A, mid, {}, {}, true };
+      PieceCoordinates(p, mid, right.PCA);
+      std::copy(right.PCA, right.PCA + 3, left.PCB);
+      std::copy(p.PC0, p.PC0 + 3, left.PCA);
+      std::copy(p.PC1, p.PC1 + 3, right.PCB);
+      stack.push_back(right);
+      stack.push_back(left);
       continue;
     }
     out.push_back(p);
   }
   return true;
+}
+
+namespace
+{
+/**
+ * The coupled Newton of LocateBreakpoints from (@p pc, @p t): true when it
+ * converged (|dt| at rounding). With @p invert the ray point's coordinates
+ * are first inverted exactly; then @p t keeps every accepted step, as it did
+ * before the samples' start (a step leaving the piece or longer than 1e-6 of
+ * it is not taken). Without, @p t is changed only on convergence.
+ */
+bool PolishBreakpoint(const LagrangeCellView& cell, const double origin[3],
+  const double direction[3], const FieldPiece& piece, double level, bool invert, double pc[3],
+  double& t)
+{
+  const double h = piece.T1 - piece.T0;
+  double g = 0.0, grad[3] = { 0.0, 0.0, 0.0 };
+  if (invert)
+  {
+    if (!FieldAt(cell, origin, direction, t, pc, g, grad))
+    {
+      return false;
+    }
+  }
+  else
+  {
+    g = EvaluateLagrangeScalar(cell, pc, grad);
+  }
+  double tt = t;
+  const int iterations = invert ? 4 : 6;
+  for (int iter = 0; iter < iterations; ++iter)
+  {
+    double x[3], J[9], r[3], a[3], b[3];
+    if (iter > 0)
+    {
+      g = EvaluateLagrangeScalar(cell, pc, grad);
+    }
+    EvaluateLagrangePosition(cell, pc, x, J);
+    for (int k = 0; k < 3; ++k)
+    {
+      r[k] = -(x[k] - origin[k] - tt * direction[k]);
+    }
+    if (!Solve3x3(J, r, a, 1e-14) || !Solve3x3(J, direction, b, 1e-14))
+    {
+      return false;
+    }
+    const double slope = grad[0] * b[0] + grad[1] * b[1] + grad[2] * b[2];
+    const double dt = slope != 0.0
+      ? -(g - level + grad[0] * a[0] + grad[1] * a[1] + grad[2] * a[2]) / slope
+      : 0.0;
+    const double next = tt + dt;
+    if (!(next >= piece.T0 && next <= piece.T1) || std::abs(dt) > 1e-6 * h)
+    {
+      return false; // not in the approximant root's neighbourhood
+    }
+    tt = next;
+    for (int k = 0; k < 3; ++k)
+    {
+      pc[k] += a[k] + b[k] * dt;
+    }
+    if (invert)
+    {
+      t = tt;
+    }
+    if (std::abs(dt) <= 4.0 * Eps * (std::abs(tt) + h))
+    {
+      t = tt;
+      return true; // converged (quadratically: the next step would be rounding)
+    }
+  }
+  return false;
+}
 }
 
 int LocateBreakpoints(const LagrangeCellView& cell, const double origin[3],
@@ -332,54 +477,28 @@ int LocateBreakpoints(const LagrangeCellView& cell, const double origin[3],
     {
       // Polish on the exact field: Newton on the coupled system x(pc) = o + t d,
       // f(pc) = level in (pc, t), one geometry and one field evaluation per step,
-      // from the ray point's exact coordinates (one inversion); kept inside the
-      // piece (the approximant's root is within ~Error/|g'|). Each step solves
+      // kept inside the piece (the approximant's root is within ~Error/|g'|).
+      // Each step solves
       //   [J -d; grad^T 0] (dpc, dt) = -(x - o - t d, f - level)
-      // by dpc = a + b dt, a = -J^-1 r, b = J^-1 d. Warm start: the coordinates
-      // interpolated between the piece's ends.
+      // by dpc = a + b dt, a = -J^-1 r, b = J^-1 d. Start: the piece's sampled
+      // coordinates interpolated at the root; if that does not converge, the
+      // ray point's exact coordinates (one inversion from the coordinates
+      // interpolated linearly between the piece's ends).
       double pc[3];
-      cell.Basis->ParametricCenter(pc);
-      for (int k = 0; k < 3 && piece.HasPC; ++k)
+      double tp = t;
+      const bool fromSamples = PieceCoordinates(piece, t, pc) &&
+        PolishBreakpoint(cell, origin, direction, piece, level, false, pc, tp);
+      if (!fromSamples)
       {
-        pc[k] = piece.PC0[k] + ys[i] * (piece.PC1[k] - piece.PC0[k]);
+        tp = t;
+        cell.Basis->ParametricCenter(pc);
+        for (int k = 0; k < 3 && piece.HasPC; ++k)
+        {
+          pc[k] = piece.PC0[k] + ys[i] * (piece.PC1[k] - piece.PC0[k]);
+        }
+        PolishBreakpoint(cell, origin, direction, piece, level, true, pc, tp);
       }
-      double g, grad[3];
-      bool ok = FieldAt(cell, origin, direction, t, pc, g, grad);
-      for (int iter = 0; ok && iter < 4; ++iter)
-      {
-        double x[3], J[9], r[3], a[3], b[3];
-        if (iter > 0)
-        {
-          g = EvaluateLagrangeScalar(cell, pc, grad);
-        }
-        EvaluateLagrangePosition(cell, pc, x, J);
-        for (int k = 0; k < 3; ++k)
-        {
-          r[k] = -(x[k] - origin[k] - t * direction[k]);
-        }
-        if (!Solve3x3(J, r, a, 1e-14) || !Solve3x3(J, direction, b, 1e-14))
-        {
-          break;
-        }
-        const double slope = grad[0] * b[0] + grad[1] * b[1] + grad[2] * b[2];
-        const double dt = slope != 0.0
-          ? -(g - level + grad[0] * a[0] + grad[1] * a[1] + grad[2] * a[2]) / slope
-          : 0.0;
-        const double next = t + dt;
-        if (!(next >= piece.T0 && next <= piece.T1) || std::abs(dt) > 1e-6 * h)
-        {
-          break; // not in the approximant root's neighbourhood: keep it
-        }
-        t = next;
-        for (int k = 0; k < 3; ++k)
-        {
-          pc[k] += a[k] + b[k] * dt;
-        }
-        if (std::abs(dt) <= 4.0 * Eps * (std::abs(t) + h))
-        {
-          break; // converged (quadratically: the next step would be rounding)
-        }
-      }
+      t = tp;
     }
     roots.push_back(t);
   }

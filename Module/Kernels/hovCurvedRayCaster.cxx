@@ -323,7 +323,8 @@ void CurvedRayCaster::CollectSegments(const double origin[3], const double direc
       MaxIntervalsPerCell, {}, nullptr, &scratch, &shared);
     for (int i = 0; i < n; ++i)
     {
-      segments.push_back({ iv[i].T0, iv[i].T1, c, { iv[i].PC0[0], iv[i].PC0[1], iv[i].PC0[2] } });
+      segments.push_back({ iv[i].T0, iv[i].T1, c, { iv[i].PC0[0], iv[i].PC0[1], iv[i].PC0[2] },
+        { iv[i].PC1[0], iv[i].PC1[1], iv[i].PC1[2] } });
     }
   }
   std::sort(segments.begin(), segments.end(),
@@ -412,7 +413,8 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
         std::copy(cell.X0, cell.X0 + 3, info.X0);
         std::copy(cell.InverseJ, cell.InverseJ + 9, info.InverseJ);
         info.Bounds = [this, &cell]() -> const CellDerivativeBounds& { return this->CellBounds(cell); };
-        r = IntegrateCurvedSegment(view, info, tf, origin, direction, s.T0, s.T1, s.PC0, pass);
+        r = IntegrateCurvedSegment(
+          view, info, tf, origin, direction, s.T0, s.T1, s.PC0, pass, s.PC1);
       }
       error += (1.0 - accum.A) * r.ErrorEstimate;
       fieldError += (1.0 - accum.A) * r.FieldErrorEstimate;

@@ -168,7 +168,7 @@ private:
   {
     double T0, T1;
     int Cell;
-    double PC0[3];
+    double PC0[3], PC1[3]; ///< parametric coordinates at T0 and T1
   };
   /// The ray's inside intervals, sorted, each part of the ray once (file doc).
   void CollectSegments(const double origin[3], const double direction[3], double tMin,

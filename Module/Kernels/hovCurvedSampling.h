@@ -53,10 +53,14 @@ HOV_EXPORT void IntegrateSubPieceFixed(const TransferFunction& tf, const Bernste
  * know the one-piece Taylor model misses the field tolerance. Pieces are
  * bisected until their error estimate is <= @p tolerance (absolute), at most
  * @p maxPieces; @p scale is the field scale (CellDerivativeBounds::FieldScale).
+ * @p pcGuess / @p pcEndGuess: the parametric coordinates at @p t0 / @p t1
+ * if known (may be null). Each interior sample starts Newton from the cubic
+ * Hermite interpolant (values and dpc/dt = J^-1 d) of its nearest computed
+ * neighbours on both sides, sampled in bisection order.
  */
 HOV_EXPORT bool RepresentCurvedField(const LagrangeCellView& cell, double scale, double tolerance,
   const double origin[3], const double direction[3], double t0, double t1, const double* pcGuess,
-  int maxPieces, std::vector<FieldPiece>& out);
+  int maxPieces, std::vector<FieldPiece>& out, const double* pcEndGuess = nullptr);
 
 /// Gauss-Legendre nodes and weights on [0, 1] (@p n >= 1; Newton on P_n).
 HOV_EXPORT void GaussLegendreUnit(int n, std::vector<double>& x, std::vector<double>& w);

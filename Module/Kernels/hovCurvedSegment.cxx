@@ -173,7 +173,8 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
 
 CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell, const CurvedCellInfo& info,
   const TransferFunction& tf, const double origin[3], const double direction[3], double t0,
-  double t1, const double* pcGuess, const CurvedSegmentSettings& settings)
+  double t1, const double* pcGuess, const CurvedSegmentSettings& settings,
+  const double* pcEndGuess)
 {
   CurvedSegmentResult result;
   if (!(t1 > t0))
@@ -237,7 +238,7 @@ CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell, const C
     pieces.push_back(p);
   }
   else if (!detail::RepresentCurvedField(cell, info.FieldScale, fieldTarget, origin, direction, t0,
-             t1, pcGuess, settings.MaxPieces, pieces))
+             t1, pcGuess, settings.MaxPieces, pieces, pcEndGuess))
   {
     result.Converged = false;
     return result;

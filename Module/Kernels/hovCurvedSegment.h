@@ -218,11 +218,14 @@ struct CurvedCellInfo
  * the table nodes): affine cells take the exact field on their parametric
  * line, curved ones the Chebyshev pieces; otherwise the call above with
  * info.Bounds(). The same colour to the field target, the same error terms.
+ * @p pcEndGuess: the parametric coordinates at t1 if known (the far end's
+ * face crossing), a warm start for the samples.
  */
 HOV_EXPORT CurvedSegmentResult IntegrateCurvedSegment(const LagrangeCellView& cell,
   const CurvedCellInfo& info, const TransferFunction& tf, const double origin[3],
   const double direction[3], double t0, double t1, const double* pcGuess,
-  const CurvedSegmentSettings& settings = CurvedSegmentSettings());
+  const CurvedSegmentSettings& settings = CurvedSegmentSettings(),
+  const double* pcEndGuess = nullptr);
 
 /// One piece of the field along the ray: g(t) ~ G((t - T0)/(T1 - T0)), |error| <= Error.
 struct FieldPiece
@@ -234,7 +237,20 @@ struct FieldPiece
   /// Parametric coordinates at T0 and T1 (sampled pieces): warm starts.
   bool HasPC = false;
   double PC0[3] = { 0.0, 0.0, 0.0 }, PC1[3] = { 0.0, 0.0, 0.0 };
+  /// Sampled pieces: the parametric coordinates of the ray's points at the
+  /// Chebyshev points of the interpolant, T0 + (1 + cos(pi j / n)) / 2 (T1 - T0),
+  /// j = 0..n, n = SampleDegree (0: none); PieceCoordinates interpolates them.
+  int SampleDegree = 0;
+  double SamplePC[17][3] = {};
 };
+
+/**
+ * The parametric coordinates of the ray point at @p t in a sampled piece
+ * (SampleDegree > 0): the barycentric Chebyshev interpolant of SamplePC (a
+ * warm start for Newton, as accurate as the field's interpolant is). False if
+ * the piece holds no samples.
+ */
+HOV_EXPORT bool PieceCoordinates(const FieldPiece& piece, double t, double pc[3]);
 
 /**
  * The field representation of IntegrateCurvedSegment (see file doc) into

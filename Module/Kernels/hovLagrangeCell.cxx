@@ -68,10 +68,26 @@ InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], 
       // A point where the map is singular (a collapsed vertex, such as a
       // pyramid's apex as a degenerate hexahedron) that already maps to the
       // target to rounding is a solution: no step can improve it.
+      std::copy(J, J + 9, result.Jacobian);
       return fNorm <= floor && iter > 0 ? InversionStatus::Converged
                                         : InversionStatus::SingularJacobian;
     }
     const double length = NormInf(step);
+    // Converged: the step from here is below the tolerance. It is taken
+    // without evaluating the map at its end (the point is the one an
+    // evaluated step would give; that evaluation could only confirm it).
+    if (length <= s.StepTolerance || (fNorm <= floor && length <= s.FloorStepTolerance))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        pc[k] += step[k];
+      }
+      result.LastStep = length;
+      std::copy(J, J + 9, result.Jacobian);
+      return AllFinite(pc, 3) && cell.Basis->DistanceOutside(pc) <= s.AbandonOutside
+        ? InversionStatus::Converged
+        : InversionStatus::NoConvergence;
+    }
     if (!(length <= s.MaxStep))
     {
       const double scale = std::isfinite(length) ? s.MaxStep / length : 0.0;
@@ -115,6 +131,7 @@ InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], 
     if ((used == 1.0 && taken <= s.StepTolerance) ||
       (fNorm <= floor && taken <= s.FloorStepTolerance))
     {
+      std::copy(J, J + 9, result.Jacobian);
       return InversionStatus::Converged;
     }
   }

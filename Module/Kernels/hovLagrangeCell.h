@@ -113,6 +113,10 @@ struct LagrangeInversionResult
   int Starts = 0;          ///< starts tried
   double Residual = 0.0;   ///< |x(pc) - x| / extent at the result
   double LastStep = 0.0;   ///< last accepted step (max norm, parametric)
+  /// Converged: the Jacobian dx/dpc (row-major) of the last evaluation, at
+  /// the result to within the last step (<= StepTolerance, or
+  /// FloorStepTolerance at the residual floor).
+  double Jacobian[9] = {};
   bool Converged() const { return this->Status == InversionStatus::Converged; }
 };
 
