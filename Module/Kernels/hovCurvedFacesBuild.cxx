@@ -144,6 +144,10 @@ bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
   out.Extent = LagrangeCellExtent(cell);
   FaceDef defs[12];
   const int count = FaceDefinitions(*cell.Basis, defs);
+  for (int f = 0; cell.Trilinear && f < count; ++f)
+  {
+    defs[f].DegU = defs[f].DegV = 1; // the faces of a trilinear map are bilinear patches
+  }
   out.Faces.resize(count);
   out.FaceFirstPatch.assign(1, 0);
   for (int f = 0; f < count; ++f)

@@ -77,8 +77,7 @@ void CurvedRayCaster::TraceRayBlend(const double origin[3], const double directi
   for (const Segment& seg : segments)
   {
     const Cell& cell = this->Cells[seg.Cell];
-    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
-      cell.Scalars.data() };
+    const LagrangeCellView view = this->View(cell);
     ++st.Segments;
     double value = 0.0;
     if (ConstantCell(view, value))

@@ -137,8 +137,8 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
       for (size_t j = i; j < std::min(i + FaceBatch, this->Cells.size()); ++j)
       {
         Cell& cell = this->Cells[j];
-        const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
-          cell.Scalars.data() };
+        cell.Trilinear = IsLagrangeGeometryTrilinear(this->View(cell));
+        const LagrangeCellView view = this->View(cell);
         built[j] = BuildCurvedFaces(view, cell.Faces) ? 1 : 0;
         this->FieldHull(cell);
       }
@@ -184,7 +184,7 @@ bool CurvedRayCaster::Build(const CurvedMeshInput& input, std::string* message)
     for (size_t c = 0; c < this->Cells.size(); ++c)
     {
       const Cell& cell = this->Cells[c];
-      linkCells[c].View = { &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+      linkCells[c].View = this->View(cell);
       linkCells[c].Faces = &cell.Faces;
       linkCells[c].CornerIds = cell.CornerIds.data();
     }
@@ -315,8 +315,7 @@ void CurvedRayCaster::CollectSegments(const double origin[3], const double direc
       continue;
     }
     // Finite points and their extent known (Build): inversions skip both checks.
-    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data(),
-      cell.Faces.Extent };
+    const LagrangeCellView view = this->View(cell);
     CurvedRayInterval iv[MaxIntervalsPerCell];
     const SharedFaceContext shared{ this->Links.empty() ? nullptr : &this->Links[c], &cache, c };
     const int n = RayCurvedCellIntervals(view, cell.Faces, origin, direction, t0, t1, iv,
@@ -394,8 +393,7 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
         break;
       }
       const Cell& cell = this->Cells[s.Cell];
-      const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(),
-        cell.Scalars.data(), cell.Faces.Extent };
+      const LagrangeCellView view = this->View(cell);
       const bool shaded = (pass.Shading && pass.Shading->Shade) || pass.GradientOpacity;
       CurvedSegmentResult r;
       if (shaded)

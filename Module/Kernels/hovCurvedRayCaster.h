@@ -138,6 +138,18 @@ public:
   void SetShareFaces(bool share) { this->ShareFaces = share; }
   /// The number of faces linked by the last Build().
   int GetNumberOfSharedFaces() const { return this->SharedFaces; }
+  /// Cells of the last Build whose geometry is the trilinear map of their
+  /// corners (IsLagrangeGeometryTrilinear; not affine): evaluated as that map,
+  /// with bilinear face patches.
+  int GetNumberOfTrilinearCells() const
+  {
+    int n = 0;
+    for (const Cell& cell : this->Cells)
+    {
+      n += cell.Trilinear && !cell.Affine ? 1 : 0;
+    }
+    return n;
+  }
 
   /**
    * Premultiplied RGBA of the ray o + t d, t in [@p tMin, @p tMax] (t = 0
@@ -181,6 +193,9 @@ private:
     std::vector<double> Scalars;
     std::vector<std::int64_t> CornerIds; ///< point ids of the corner nodes
     CurvedCellFaces Faces;
+    /// A hexahedron whose nodes lie on the trilinear map of its corners
+    /// (IsLagrangeGeometryTrilinear): its view evaluates that map.
+    bool Trilinear = false;
     /// Affine geometry map x = X0 + J pc at every node (straight-sided cell
     /// of a simplex-like shape or a parallelepiped): intervals by clipping
     /// pc(t) = X0inv + t Dinv against the reference cell's half-spaces.
@@ -203,6 +218,14 @@ private:
   };
   int BuildNode(int first, int count, std::vector<double>& centroids);
   void DetectAffine(Cell& cell) const;
+  /// The cell bound to its basis (with the extent once the faces are built).
+  LagrangeCellView View(const Cell& cell) const
+  {
+    LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data(),
+      cell.Faces.Extent };
+    view.Trilinear = cell.Trilinear;
+    return view;
+  }
   /// FieldLo, FieldHi, FieldScale of @p cell.
   void FieldHull(Cell& cell) const;
   int AffineInterval(const Cell& cell, const double o[3], const double d[3], double t0, double t1,

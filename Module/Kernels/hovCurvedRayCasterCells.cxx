@@ -156,7 +156,7 @@ void CurvedRayCaster::FieldHull(Cell& cell) const
 const CellDerivativeBounds& CurvedRayCaster::CellBounds(const Cell& cell) const
 {
   std::call_once(*cell.BoundsOnce, [&]() {
-    const LagrangeCellView view{ &this->Bases[cell.Basis], cell.Points.data(), cell.Scalars.data() };
+    const LagrangeCellView view = this->View(cell);
     ComputeCellDerivativeBounds(view, cell.Bounds);
   });
   return cell.Bounds;

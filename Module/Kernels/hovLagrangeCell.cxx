@@ -139,10 +139,83 @@ InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], 
 }
 }
 
+namespace
+{
+/// The trilinear map of the hexahedron corners @p X (VTK order) and its Jacobian.
+void TrilinearPosition(const double* X, const double pc[3], double x[3], double* jacobian)
+{
+  const double r = pc[0], s = pc[1], t = pc[2], r1 = 1.0 - r, s1 = 1.0 - s, t1 = 1.0 - t;
+  const double w[8] = { r1 * s1 * t1, r * s1 * t1, r * s * t1, r1 * s * t1, r1 * s1 * t, r * s1 * t,
+    r * s * t, r1 * s * t };
+  for (int i = 0; i < 3; ++i)
+  {
+    double v = 0.0;
+    for (int k = 0; k < 8; ++k)
+    {
+      v += w[k] * X[3 * k + i];
+    }
+    x[i] = v;
+  }
+  if (!jacobian)
+  {
+    return;
+  }
+  const double wr[8] = { -s1 * t1, s1 * t1, s * t1, -s * t1, -s1 * t, s1 * t, s * t, -s * t };
+  const double ws[8] = { -r1 * t1, -r * t1, r * t1, r1 * t1, -r1 * t, -r * t, r * t, r1 * t };
+  const double wt[8] = { -r1 * s1, -r * s1, -r * s, -r1 * s, r1 * s1, r * s1, r * s, r1 * s };
+  for (int i = 0; i < 3; ++i)
+  {
+    double a = 0.0, b = 0.0, c = 0.0;
+    for (int k = 0; k < 8; ++k)
+    {
+      a += wr[k] * X[3 * k + i];
+      b += ws[k] * X[3 * k + i];
+      c += wt[k] * X[3 * k + i];
+    }
+    jacobian[3 * i] = a;
+    jacobian[3 * i + 1] = b;
+    jacobian[3 * i + 2] = c;
+  }
+}
+}
+
 void EvaluateLagrangePosition(
   const LagrangeCellView& cell, const double pc[3], double x[3], double* jacobian)
 {
+  if (cell.Trilinear)
+  {
+    TrilinearPosition(cell.Points, pc, x, jacobian);
+    return;
+  }
   cell.Basis->Interpolate(pc, cell.Points, 3, x, jacobian);
+}
+
+bool IsLagrangeGeometryTrilinear(const LagrangeCellView& cell, double relativeTolerance)
+{
+  if (!cell.Basis || !cell.Basis->IsInitialized() || !cell.Points ||
+    cell.Basis->GetShape() != LagrangeShape::Hexahedron || cell.Basis->GetNodeCount() < 8)
+  {
+    return false;
+  }
+  const double tol = relativeTolerance * LagrangeCellExtent(cell);
+  if (!(tol > 0.0))
+  {
+    return false;
+  }
+  for (int n = 0; n < cell.Basis->GetNodeCount(); ++n)
+  {
+    double pc[3], x[3];
+    cell.Basis->NodeParametricCoords(n, pc);
+    TrilinearPosition(cell.Points, pc, x, nullptr);
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!(std::abs(x[i] - cell.Points[3 * n + i]) <= tol))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 double EvaluateLagrangeScalar(const LagrangeCellView& cell, const double pc[3], double* gradient)

@@ -58,6 +58,10 @@ struct LagrangeCellView
   /// the points are finite: InvertLagrangeGeometry then checks neither); 0:
   /// computed (and the points checked) on every inversion.
   double Extent = 0.0;
+  /// A hexahedron whose every node lies on the trilinear map of its eight
+  /// corners (Points[0..23], VTK order; see IsLagrangeGeometryTrilinear): the
+  /// geometry is evaluated as that map (8 points instead of every node).
+  bool Trilinear = false;
 };
 
 /// x(pc) and, if @p jacobian is given, J[3 i + j] = dx_i / dpc_j.
@@ -78,6 +82,15 @@ HOV_EXPORT double LagrangeCellExtent(const LagrangeCellView& cell);
  * is then affine. @p affine (if given) receives that map: affine[0..2] the
  * origin, affine[3 + 3 j + i] = dx_i / dpc_j.
  */
+/**
+ * True if @p cell is a hexahedron whose every node lies within
+ * @p relativeTolerance x LagrangeCellExtent of the trilinear map of its eight
+ * corners (straight-edged hexahedra of any order, as meshers write them away
+ * from curved boundaries): the interpolant then IS that map to this tolerance.
+ */
+HOV_EXPORT bool IsLagrangeGeometryTrilinear(
+  const LagrangeCellView& cell, double relativeTolerance = 1e-12);
+
 HOV_EXPORT bool IsLagrangeGeometryAffine(
   const LagrangeCellView& cell, double relativeTolerance = 1e-12, double* affine = nullptr);
 

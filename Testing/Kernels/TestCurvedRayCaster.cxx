@@ -42,8 +42,9 @@ double FieldOfX(const double* X)
 }
 
 /// A mesh of m^3 order-p hexahedra on [0,1]^3 (cell @p removed left out, -1: none), nodes
-/// at x = (X + bend Y^2, Y, Z); points not shared (each cell has its own) unless @p merge
-/// (one point per lattice position: neighbours share their face nodes).
+/// at x = (X + bend Y^2 + shear Y Z, Y, Z) (shear alone: every cell is the trilinear map
+/// of its corners); points not shared (each cell has its own) unless @p merge (one point
+/// per lattice position: neighbours share their face nodes).
 struct TestMesh
 {
   std::vector<double> Points, Scalars;
@@ -63,7 +64,7 @@ struct TestMesh
   }
 };
 
-TestMesh MakeMesh(int m, int p, double bend, int removed, bool merge = false)
+TestMesh MakeMesh(int m, int p, double bend, int removed, bool merge = false, double shear = 0.0)
 {
   TestMesh mesh;
   std::map<std::array<int, 3>, std::int64_t> lattice; // merge: point of each lattice position
@@ -95,7 +96,8 @@ TestMesh MakeMesh(int m, int p, double bend, int removed, bool merge = false)
       }
       lattice[key] = static_cast<std::int64_t>(mesh.Scalars.size());
       mesh.Connectivity.push_back(static_cast<std::int64_t>(mesh.Scalars.size()));
-      mesh.Points.insert(mesh.Points.end(), { X[0] + bend * X[1] * X[1], X[1], X[2] });
+      mesh.Points.insert(
+        mesh.Points.end(), { X[0] + bend * X[1] * X[1] + shear * X[1] * X[2], X[1], X[2] });
       mesh.Scalars.push_back(FieldOfX(X));
     }
     mesh.Types.push_back(72);
@@ -105,21 +107,23 @@ TestMesh MakeMesh(int m, int p, double bend, int removed, bool merge = false)
 }
 
 /// Reference coordinates along the ray as polynomials of tau = t - t0.
-void AlongRay(const double o[3], const double d[3], double t0, double bend, hov::Polynomial X[3])
+void AlongRay(const double o[3], const double d[3], double t0, double bend, hov::Polynomial X[3],
+  double shear = 0.0)
 {
   const double p[3] = { o[0] + t0 * d[0], o[1] + t0 * d[1], o[2] + t0 * d[2] };
   X[1] = hov::Polynomial::FromCoefficients({ p[1], d[1] });
   X[2] = hov::Polynomial::FromCoefficients({ p[2], d[2] });
-  X[0] = hov::Polynomial::FromCoefficients(
-    { p[0] - bend * p[1] * p[1], d[0] - 2 * bend * p[1] * d[1], -bend * d[1] * d[1] });
+  X[0] = hov::Polynomial::FromCoefficients({ p[0] - bend * p[1] * p[1] - shear * p[1] * p[2],
+    d[0] - 2 * bend * p[1] * d[1] - shear * (p[1] * d[2] + p[2] * d[1]),
+    -bend * d[1] * d[1] - shear * d[1] * d[2] });
 }
 
 /// The whole-ray reference on [0, T] (see file doc).
 hovtest::RefRGBA Reference(const double o[3], const double d[3], double T, double bend, int m,
-  int removed, const hov::TransferFunctionSpec& spec)
+  int removed, const hov::TransferFunctionSpec& spec, double shear = 0.0)
 {
   hov::Polynomial X[3];
-  AlongRay(o, d, 0.0, bend, X);
+  AlongRay(o, d, 0.0, bend, X, shear);
   auto inside = [&](long double t) {
     int ci[3];
     for (int k = 0; k < 3; ++k)
@@ -171,7 +175,7 @@ hovtest::RefRGBA Reference(const double o[3], const double d[3], double T, doubl
       continue;
     }
     hov::Polynomial Xa[3];
-    AlongRay(o, d, static_cast<double>(a), bend, Xa);
+    AlongRay(o, d, static_cast<double>(a), bend, Xa, shear);
     hov::Polynomial f; // sum of squares of the three (degree <= 4)
     f.Degree = 4;
     for (int k = 0; k < 3; ++k)
@@ -190,11 +194,16 @@ hovtest::RefRGBA Reference(const double o[3], const double d[3], double T, doubl
 }
 
 /// Random rays through the mesh: caster vs reference; returns the worst error.
-double CompareRays(const TestMesh& mesh, int m, double bend, int removed, int rays, std::mt19937_64& rng)
+double CompareRays(const TestMesh& mesh, int m, double bend, int removed, int rays,
+  std::mt19937_64& rng, double shear = 0.0, int* trilinear = nullptr)
 {
   hov::CurvedRayCaster caster;
   std::string msg;
   EXPECT_TRUE(caster.Build(mesh.Input(), &msg)) << msg;
+  if (trilinear)
+  {
+    *trilinear = caster.GetNumberOfTrilinearCells();
+  }
   hov::TransferFunction tf;
   EXPECT_TRUE(tf.Build(Spec()));
   std::uniform_real_distribution<double> u(0.05, 0.95);
@@ -204,13 +213,13 @@ double CompareRays(const TestMesh& mesh, int m, double bend, int removed, int ra
   for (int r = 0; r < rays; ++r)
   {
     const double X[3] = { u(rng), u(rng), u(rng) };
-    const double x[3] = { X[0] + bend * X[1] * X[1], X[1], X[2] };
+    const double x[3] = { X[0] + bend * X[1] * X[1] + shear * X[1] * X[2], X[1], X[2] };
     double o[3], d[3];
     hovtest::RandomRayThrough(x, 3.0, rng, n01, o, d);
     double err = 0.0;
     hov::CurvedRayStats stats;
     const hov::RGBA got = caster.TraceRay(o, d, 0.0, 6.0, tf, {}, &err, &stats);
-    const hovtest::RefRGBA ref = Reference(o, d, 6.0, bend, m, removed, Spec());
+    const hovtest::RefRGBA ref = Reference(o, d, 6.0, bend, m, removed, Spec(), shear);
     const double e = std::max(std::max(std::abs(got.R - static_cast<double>(ref.R)),
                                 std::abs(got.G - static_cast<double>(ref.G))),
       std::max(std::abs(got.B - static_cast<double>(ref.B)), std::abs(got.A - static_cast<double>(ref.A))));
@@ -236,6 +245,23 @@ TEST(CurvedRayCaster, CurvedMeshMatchesWholeRayReference)
   std::mt19937_64 rng(132);
   const TestMesh mesh = MakeMesh(2, 3, A, -1);
   hovtest::ReportMeasured("CurvedRayCaster.CurvedError", CompareRays(mesh, 2, A, -1, 12, rng));
+}
+
+// Order-3 hexahedra whose nodes lie on the trilinear map of their corners
+// (x = X + a Y Z): detected as trilinear (geometry from the 8 corners, faces
+// as bilinear patches), the same image as the reference.
+TEST(CurvedRayCaster, TrilinearHexahedraMatchWholeRayReference)
+{
+  std::mt19937_64 rng(137);
+  const TestMesh mesh = MakeMesh(2, 3, 0.0, -1, false, A);
+  int trilinear = 0;
+  hovtest::ReportMeasured(
+    "CurvedRayCaster.TrilinearError", CompareRays(mesh, 2, 0.0, -1, 12, rng, A, &trilinear));
+  EXPECT_EQ(trilinear, 8);
+  // The bent map (x = X + a Y^2) is not trilinear: no cell takes that path.
+  hov::CurvedRayCaster bent;
+  ASSERT_TRUE(bent.Build(MakeMesh(2, 3, A, -1).Input()));
+  EXPECT_EQ(bent.GetNumberOfTrilinearCells(), 0);
 }
 
 TEST(CurvedRayCaster, NonConvexMeshRaysReenter)

@@ -193,3 +193,100 @@ TEST(LagrangeInversion, CollapsedTopFaceInvertsAtTheApex)
   }
 }
 }
+
+namespace
+{
+/// The trilinear map of eight corners (VTK order) at @p pc: an independent evaluation.
+void Trilinear(const double corners[8][3], const double pc[3], double x[3])
+{
+  const double r = pc[0], s = pc[1], t = pc[2];
+  const double w[8] = { (1 - r) * (1 - s) * (1 - t), r * (1 - s) * (1 - t), r * s * (1 - t),
+    (1 - r) * s * (1 - t), (1 - r) * (1 - s) * t, r * (1 - s) * t, r * s * t, (1 - r) * s * t };
+  for (int i = 0; i < 3; ++i)
+  {
+    x[i] = 0.0;
+    for (int k = 0; k < 8; ++k)
+    {
+      x[i] += w[k] * corners[k][i];
+    }
+  }
+}
+}
+
+// Hexahedra of every order whose nodes lie on the trilinear map of random
+// (non-parallelepiped) corners: detected, evaluated from the corners as the
+// full interpolant evaluates them (position and Jacobian), inverted as
+// precisely; one node moved by 1e-9 of the size, or another shape: not detected.
+TEST(LagrangeInversion, TrilinearHexahedraAreDetectedAndEvaluatedFromTheirCorners)
+{
+  std::mt19937_64 rng(75);
+  std::uniform_real_distribution<double> u(-0.15, 0.15);
+  hovtest::Worst posErr, pcErr;
+  for (const LagrangeCase& c : hovtest::AllLagrangeCases(6))
+  {
+    hovtest::LagrangeTestCell cell;
+    ASSERT_TRUE(hovtest::InitBasis(c, cell.Basis));
+    if (c.Shape != LagrangeShape::Hexahedron)
+    {
+      MakeCurved(c, cell, rng, 0.0, 0.0); // affine: not a hexahedron, never trilinear
+      EXPECT_FALSE(hov::IsLagrangeGeometryTrilinear(cell.View())) << c.Name();
+      continue;
+    }
+    double corners[8][3];
+    for (int k = 0; k < 8; ++k)
+    {
+      double pc[3];
+      cell.Basis.NodeParametricCoords(k, pc);
+      for (int i = 0; i < 3; ++i)
+      {
+        corners[k][i] = pc[i] + u(rng);
+      }
+    }
+    const int n = cell.Basis.GetNodeCount();
+    cell.Points.resize(3 * n);
+    cell.Scalars.resize(n);
+    for (int k = 0; k < n; ++k)
+    {
+      double pc[3];
+      cell.Basis.NodeParametricCoords(k, pc);
+      Trilinear(corners, pc, &cell.Points[3 * k]);
+      cell.Scalars[k] = Field(&cell.Points[3 * k]);
+    }
+    hov::LagrangeCellView full = cell.View();
+    ASSERT_TRUE(hov::IsLagrangeGeometryTrilinear(full)) << c.Name();
+    EXPECT_FALSE(hov::IsLagrangeGeometryAffine(full)) << c.Name();
+    hov::LagrangeCellView fast = full;
+    fast.Trilinear = true;
+    for (int trial = 0; trial < 20; ++trial)
+    {
+      double pc[3], xa[3], xb[3], ja[9], jb[9];
+      hovtest::RandomPC(cell.Basis, rng, 0.0, pc);
+      hov::EvaluateLagrangePosition(full, pc, xa, ja);
+      hov::EvaluateLagrangePosition(fast, pc, xb, jb);
+      double e = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        e = std::max(e, std::abs(xa[i] - xb[i]));
+      }
+      for (int i = 0; i < 9; ++i)
+      {
+        e = std::max(e, std::abs(ja[i] - jb[i]));
+      }
+      posErr.Add(e, c.Name());
+      EXPECT_LE(e, 1e-12) << c.Name();
+      double found[3] = { 0.5, 0.5, 0.5 };
+      ASSERT_TRUE(hov::InvertLagrangeGeometry(fast, xa, found).Converged()) << c.Name();
+      const double err = std::max(std::max(std::abs(found[0] - pc[0]), std::abs(found[1] - pc[1])),
+        std::abs(found[2] - pc[2]));
+      pcErr.Add(err, c.Name());
+      EXPECT_LE(err, 1e-12) << c.Name();
+    }
+    if (n > 8)
+    {
+      cell.Points[3 * (n - 1)] += 1e-9; // the last node (interior or on a face) off the map
+      EXPECT_FALSE(hov::IsLagrangeGeometryTrilinear(cell.View())) << c.Name();
+    }
+  }
+  hovtest::ReportMeasured("LagrangeInversion.TrilinearVsFullMap", posErr);
+  hovtest::ReportMeasured("LagrangeInversion.TrilinearRoundTripPC", pcErr);
+}
