@@ -29,6 +29,11 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   const bool blend = frame.Settings.Blend != BlendMode::Composite;
   // Average intensity is opaque grey wherever the ray meets the range, even
   // with no opacity; the other blend modes draw no features.
+  // Non-tetrahedral cells integrate every table interval a segment crosses
+  // by quadrature: their frames take the budget of hovBackend.h.
+  tf->SetRefinementBudget(scene.GetCells().GetGeneralCells().GetCells().empty()
+      ? ClosedFormTableBudget
+      : QuadratureTableBudget);
   if (render &&
     !frame.UpdateTransferFunction(tf, frame.Settings.GPUOpacityTolerance, rebuilt) &&
     (blend || frame.Settings.NumberOfIsosurfaces() == 0) &&

@@ -16,12 +16,6 @@
 #include <sstream>   // messages
 #include <string>    // messages
 
-namespace
-{
-/// Most nodes the ray caster's GPU-compatible table may add (see its use).
-constexpr int RayCastTableBudget = 16384;
-}
-
 int hov::RayCastBackend::Render(RenderFrame& frame, vtkImageData*)
 {
   frame.ClearImage();
@@ -95,10 +89,8 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   bool rebuilt = false;
   // Every node in a segment's scalar range is a breakpoint to locate on that
   // segment: a budget keeps a frame finite where the tolerance would need
-  // 10^5 nodes (opacity 1 at a node is a log singularity of the extinction;
-  // GPUOpacityTolerance 1e-8 there): the table then stops at its budget and
-  // says so, with its worst error (hovRobustness seed 7, case 7040481).
-  this->TransferFunction->SetRefinementBudget(RayCastTableBudget);
+  // 10^5 nodes (hovBackend.h; hovRobustness seed 7, case 7040481).
+  this->TransferFunction->SetRefinementBudget(QuadratureTableBudget);
   const bool visible = frame.UpdateTransferFunction(this->TransferFunction,
     std::max(s.GPUOpacityTolerance, 0.1 * s.RayCastTolerance), rebuilt);
   if (frame.Stats.RenderedCells == 0)

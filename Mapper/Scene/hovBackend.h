@@ -26,6 +26,20 @@ namespace hov
 {
 class RenderFrame;
 
+/**
+ * The most nodes the GPU-compatible refinement may add to the table of a
+ * frame whose segments take each table node they cross as a breakpoint to
+ * locate and integrate to (RAY_CAST; CPU_ACCURATE on non-tetrahedral cells,
+ * ~1 us per node against ~30 ns for a tetrahedron's closed form). Opacity 1
+ * at a node is a log singularity of the extinction: GPUOpacityTolerance 1e-8
+ * there asks for 10^5 nodes or more (hovRobustness case 22000865: 265,956
+ * nodes, a 33x33 frame of 70 quadratic cells took 91 s). The table stops at
+ * the budget and says so, with its worst error.
+ */
+constexpr int QuadratureTableBudget = 16384;
+/// The budget of every other frame (vtkHighOrderTransferFunction's default).
+constexpr int ClosedFormTableBudget = 1000000;
+
 class Backend
 {
 public:
