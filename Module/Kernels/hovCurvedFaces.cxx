@@ -318,6 +318,85 @@ void BilinearStart(const double* const net[2], int du, int nv, int n, double& a,
   b = std::min(1.0, std::max(0.0, y));
 }
 
+/// The range of @p v[0 .. n - 1].
+Interval RangeOf(const double* v, int n)
+{
+  double lo = v[0], hi = v[0];
+  for (int k = 1; k < n; ++k)
+  {
+    lo = std::min(lo, v[k]);
+    hi = std::max(hi, v[k]);
+  }
+  return { lo, hi };
+}
+
+/**
+ * The extreme vectors of the cone of the 2D vectors (x[k], y[k]), k < n: the
+ * most clockwise (@p lo) and most counter-clockwise (@p hi) about their sum.
+ * False if some vector is not strictly within 90 degrees of the sum (the
+ * angles relative to it are then not ordered by cross / dot).
+ */
+bool ConeOf(const double* x, const double* y, int n, double lo[2], double hi[2])
+{
+  double sx = 0.0, sy = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    sx += x[k];
+    sy += y[k];
+  }
+  double tLo = 0.0, tHi = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    const double dot = sx * x[k] + sy * y[k];
+    if (!(dot > 0.0))
+    {
+      return false;
+    }
+    const double t = (sx * y[k] - sy * x[k]) / dot; // tan of the angle from the sum
+    if (k == 0 || t < tLo)
+    {
+      tLo = t;
+      lo[0] = x[k];
+      lo[1] = y[k];
+    }
+    if (k == 0 || t > tHi)
+    {
+      tHi = t;
+      hi[0] = x[k];
+      hi[1] = y[k];
+    }
+  }
+  return true;
+}
+
+/**
+ * True if det(u, v) has one strict sign for every u in the cone of the
+ * vectors (ux, uy) and v in the cone of (vx, vy): det is bilinear in the
+ * cones' coefficients, so the four pairs of extreme vectors decide (each
+ * beyond 1e-12 of |u| |v|: rounding).
+ */
+bool ConesSeparated(
+  const double* ux, const double* uy, int nu, const double* vx, const double* vy, int nv)
+{
+  double u[2][2], v[2][2];
+  if (!ConeOf(ux, uy, nu, u[0], u[1]) || !ConeOf(vx, vy, nv, v[0], v[1]))
+  {
+    return false;
+  }
+  int positive = 0, negative = 0;
+  for (const auto& a : u)
+  {
+    for (const auto& b : v)
+    {
+      const double det = a[0] * b[1] - a[1] * b[0];
+      const double tol = 1e-12 * std::sqrt((a[0] * a[0] + a[1] * a[1]) * (b[0] * b[0] + b[1] * b[1]));
+      positive += det > tol ? 1 : 0;
+      negative += det < -tol ? 1 : 0;
+    }
+  }
+  return positive == 4 || negative == 4;
+}
+
 /// Examine one sub-patch: 0 excluded, 1 done (crossing appended if found), 2 split.
 /// @p net: the sub-patch's two projected nets (component c at net + c * n).
 int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
@@ -344,31 +423,35 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
     }
     range[c] = { lo, hi };
   }
-  for (int c = 0; c < 2; ++c)
+  // The difference vectors of the projected net along u and along v: h_u and
+  // h_v are (degree x) convex combinations of them.
+  constexpr int MaxDiffs = MaxFaceDegree * (MaxFaceDegree + 1);
+  double ux[MaxDiffs], uy[MaxDiffs], vx[MaxDiffs], vy[MaxDiffs];
+  int nu = 0, nvd = 0;
+  for (int k = 0; k < du * nv; ++k, ++nu)
   {
-    // Ranges of the differences along u (a) and along v (b).
-    const double* x = net[c];
-    double uLo = 1e300, uHi = -1e300, vLo = 1e300, vHi = -1e300;
-    for (int k = 0; k < du * nv; ++k)
-    {
-      const double g = x[k + nv] - x[k];
-      uLo = std::min(uLo, g);
-      uHi = std::max(uHi, g);
-    }
-    for (int a = 0; a <= du; ++a)
-    {
-      for (int b = 0; b < dv; ++b)
-      {
-        const double g = x[a * nv + b + 1] - x[a * nv + b];
-        vLo = std::min(vLo, g);
-        vHi = std::max(vHi, g);
-      }
-    }
-    deriv[c][0] = { uLo, uHi };
-    deriv[c][1] = { vLo, vHi };
+    ux[nu] = net[0][k + nv] - net[0][k];
+    uy[nu] = net[1][k + nv] - net[1][k];
   }
+  for (int a = 0; a <= du; ++a)
+  {
+    for (int b = 0; b < dv; ++b, ++nvd)
+    {
+      const int k = a * nv + b;
+      vx[nvd] = net[0][k + 1] - net[0][k];
+      vy[nvd] = net[1][k + 1] - net[1][k];
+    }
+  }
+  deriv[0][0] = RangeOf(ux, nu);
+  deriv[1][0] = RangeOf(uy, nu);
+  deriv[0][1] = RangeOf(vx, nvd);
+  deriv[1][1] = RangeOf(vy, nvd);
   const Interval ad = Mul(deriv[0][0], deriv[1][1]), bc = Mul(deriv[0][1], deriv[1][0]);
-  const bool unique = (ad.Lo - bc.Hi > 0.0) || (ad.Hi - bc.Lo < 0.0);
+  // det [h_u h_v] keeps its sign over the sub-patch: by the boxes of the
+  // difference vectors, or else by their cones (tighter where the vectors
+  // turn little but vary in length, as on the thirds of a curved triangle).
+  const bool unique = (ad.Lo - bc.Hi > 0.0) || (ad.Hi - bc.Lo < 0.0) ||
+    ConesSeparated(ux, uy, nu, vx, vy, nvd);
   // Split where h varies most (a face parallel to the ray varies along one
   // direction only: splitting the other would multiply sub-patches for
   // nothing); a direction already at MinSize, or along which h varies by
