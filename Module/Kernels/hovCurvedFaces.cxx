@@ -318,6 +318,34 @@ void BilinearStart(const double* const net[2], int du, int nv, int n, double& a,
   b = std::min(1.0, std::max(0.0, y));
 }
 
+/// True if every v[k], k < n, is > @p margin, or every one is < -@p margin.
+bool OneSide(const double* v, int n, double margin)
+{
+  if (v[0] > margin)
+  {
+    for (int k = 1; k < n; ++k)
+    {
+      if (!(v[k] > margin))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  if (v[0] < -margin)
+  {
+    for (int k = 1; k < n; ++k)
+    {
+      if (!(v[k] < -margin))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  return false;
+}
+
 /// The range of @p v[0 .. n - 1].
 Interval RangeOf(const double* v, int n)
 {
@@ -407,22 +435,17 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
   const double* net[2] = { netIn, netIn + n };
   const double margin = settings.NetMargin * prob.Extent;
   // Exclusion first (most sub-patches the search meets are excluded): the
-  // ranges of the nets, component by component, then the derivative nets.
-  Interval range[2], deriv[2][2];
+  // convex hull of the net misses the ray if one component's control values
+  // all lie beyond the margin on one side (the scan stops at the first value
+  // that is not), then the derivative nets.
   for (int c = 0; c < 2; ++c)
   {
-    double lo = net[c][0], hi = net[c][0];
-    for (int k = 1; k < n; ++k)
+    if (OneSide(net[c], n, margin))
     {
-      lo = std::min(lo, net[c][k]);
-      hi = std::max(hi, net[c][k]);
+      return 0;
     }
-    if (lo > margin || hi < -margin)
-    {
-      return 0; // the convex hull of the net misses the ray
-    }
-    range[c] = { lo, hi };
   }
+  Interval deriv[2][2];
   // The difference vectors of the projected net along u and along v: h_u and
   // h_v are (degree x) convex combinations of them.
   constexpr int MaxDiffs = MaxFaceDegree * (MaxFaceDegree + 1);
@@ -487,6 +510,7 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
     return 2;
   }
   // Resolution limit: a contact if the sub-patch's image hugs the ray.
+  const Interval range[2] = { RangeOf(net[0], n), RangeOf(net[1], n) };
   if (std::max(range[0].Hi - range[0].Lo, range[1].Hi - range[1].Lo) <=
     settings.GrazeTolerance * prob.Extent)
   {
