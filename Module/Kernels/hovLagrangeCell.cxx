@@ -14,6 +14,11 @@ constexpr double Eps = std::numeric_limits<double>::epsilon();
 constexpr double ResidualFloorUlps = 64.0;
 /// Backtracking halvings per Newton step.
 constexpr int MaxHalvings = 12;
+/// Steps (max norm, parametric) short enough to try ending the run with a
+/// chord step: quadratic convergence then leaves ~|step|^2 to correct, below
+/// the step tolerance for well-shaped maps; otherwise the evaluation without
+/// the Jacobian was spent for nothing (and the run goes on as Newton's).
+constexpr double ChordRange = 1e-6;
 
 double NormInf(const double v[3])
 {
@@ -94,6 +99,35 @@ InversionStatus NewtonRun(const LagrangeCellView& cell, const double target[3], 
       for (double& v : step)
       {
         v *= scale;
+      }
+    }
+    // A short full step near the solution: the map alone at its end (no
+    // Jacobian, a fraction of the cost) and the chord step with the current
+    // Jacobian; if that is below the tolerance it is taken and the run has
+    // converged (the chord step differs from Newton's by ~|step| times it).
+    if (length <= ChordRange && AllFinite(step, 3))
+    {
+      double trial[3], Ft[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        trial[k] = pc[k] + step[k];
+      }
+      const double ftNorm = Residual(cell, trial, target, Ft, nullptr);
+      double chord[3];
+      const double minusFt[3] = { -Ft[0], -Ft[1], -Ft[2] };
+      if ((ftNorm < fNorm || fNorm <= floor) && Solve3x3(J, minusFt, chord, s.SingularTolerance) &&
+        NormInf(chord) <= s.StepTolerance)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          pc[k] = trial[k] + chord[k];
+        }
+        result.LastStep = NormInf(chord);
+        result.Residual = ftNorm / extent;
+        std::copy(J, J + 9, result.Jacobian);
+        return AllFinite(pc, 3) && cell.Basis->DistanceOutside(pc) <= s.AbandonOutside
+          ? InversionStatus::Converged
+          : InversionStatus::NoConvergence;
       }
     }
     // Backtracking: halve until |F| decreases (or give up and take the smallest).
