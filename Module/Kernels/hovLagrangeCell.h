@@ -18,11 +18,14 @@
  *    search), so iterates far from the solution cannot run away; a start
  *    is abandoned when no halving decreases |F| (a local minimum of |F|)
  *    or an iterate lies more than AbandonOutside (1) outside the domain;
- *  - convergence when the accepted step is below StepTolerance (1e-13,
- *    max norm), or when |F| is at its rounding floor (<= 64 eps x extent,
+ *  - convergence when the step from the current iterate is below
+ *    StepTolerance (1e-13, max norm; it is taken without evaluating the map
+ *    at its end), or when |F| is at its rounding floor (<= 64 eps x extent,
  *    the extent being the nodes' bounding-box diagonal) and the step is
  *    below FloorStepTolerance (1e-9: the map's conditioning then limits the
- *    accuracy and LastStep reports it);
+ *    accuracy and LastStep reports it); a full step of at most 1e-6 is first
+ *    checked with the map alone at its end and a chord step (the current
+ *    Jacobian): below StepTolerance, that step ends the run;
  *  - starts, in turn, until one converges: the caller's guess, the domain's
  *    centre, and the 27 points {0.2, 0.5, 0.8}^3 that lie in the domain.
  * A point outside the cell converges to parametric coordinates outside the
