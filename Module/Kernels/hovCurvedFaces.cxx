@@ -115,12 +115,7 @@ struct FaceProblem
       xv[i] = J[3 * i] * pv[0] + J[3 * i + 1] * pv[1] + J[3 * i + 2] * pv[2];
       rel[i] = x[i] - this->O[i];
     }
-    h[0] = Dot(this->E1, rel);
-    h[1] = Dot(this->E2, rel);
-    jac[0] = Dot(this->E1, xu);
-    jac[1] = Dot(this->E1, xv);
-    jac[2] = Dot(this->E2, xu);
-    jac[3] = Dot(this->E2, xv);
+    this->Project(rel, xu, xv, h, jac);
     if (normal)
     {
       normal[0] = xu[1] * xv[2] - xu[2] * xv[1];
@@ -162,6 +157,13 @@ struct FaceProblem
       }
     }
     const double rel[3] = { x[0] - this->O[0], x[1] - this->O[1], x[2] - this->O[2] };
+    this->Project(rel, xu, xv, h, jac);
+  }
+
+  /// h = the ray frame's components of @p rel = x - o, and its Jacobian from x_u, x_v.
+  void Project(const double rel[3], const double xu[3], const double xv[3], double h[2],
+    double jac[4]) const
+  {
     h[0] = Dot(this->E1, rel);
     h[1] = Dot(this->E2, rel);
     jac[0] = Dot(this->E1, xu);
