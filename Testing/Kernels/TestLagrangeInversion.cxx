@@ -243,15 +243,9 @@ TEST(LagrangeInversion, TrilinearHexahedraAreDetectedAndEvaluatedFromTheirCorner
       }
     }
     const int n = cell.Basis.GetNodeCount();
-    cell.Points.resize(3 * n);
-    cell.Scalars.resize(n);
-    for (int k = 0; k < n; ++k)
-    {
-      double pc[3];
-      cell.Basis.NodeParametricCoords(k, pc);
-      Trilinear(corners, pc, &cell.Points[3 * k]);
-      cell.Scalars[k] = Field(&cell.Points[3 * k]);
-    }
+    hovtest::PlaceNodes(
+      cell, [&corners](const double* pc, double* x) { Trilinear(corners, pc, x); }, 0.0, rng,
+      Field);
     hov::LagrangeCellView full = cell.View();
     ASSERT_TRUE(hov::IsLagrangeGeometryTrilinear(full)) << c.Name();
     EXPECT_FALSE(hov::IsLagrangeGeometryAffine(full)) << c.Name();

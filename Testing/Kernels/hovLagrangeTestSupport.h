@@ -177,8 +177,9 @@ inline SmoothMap RandomMap(std::mt19937_64& rng, double bend, double size = 1.0)
  * Nodes at map(node pcoords) plus uniform noise of size @p noise on every
  * non-corner node; scalars from @p field at the node positions.
  */
-inline void PlaceNodes(LagrangeTestCell& cell, const SmoothMap& map, double noise,
-  std::mt19937_64& rng, const std::function<double(const double*)>& field)
+inline void PlaceNodes(LagrangeTestCell& cell,
+  const std::function<void(const double*, double*)>& map, double noise, std::mt19937_64& rng,
+  const std::function<double(const double*)>& field)
 {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const int n = cell.Basis.GetNodeCount();
@@ -188,7 +189,7 @@ inline void PlaceNodes(LagrangeTestCell& cell, const SmoothMap& map, double nois
   {
     double pc[3];
     cell.Basis.NodeParametricCoords(i, pc);
-    map.Apply(pc, &cell.Points[3 * i]);
+    map(pc, &cell.Points[3 * i]);
     const bool corner = i < (cell.Basis.GetShape() == hov::LagrangeShape::Tetra
                                 ? 4
                                 : cell.Basis.GetShape() == hov::LagrangeShape::Wedge ? 6 : 8);
@@ -198,6 +199,14 @@ inline void PlaceNodes(LagrangeTestCell& cell, const SmoothMap& map, double nois
     }
     cell.Scalars[i] = field(&cell.Points[3 * i]);
   }
+}
+
+/// PlaceNodes with a SmoothMap.
+inline void PlaceNodes(LagrangeTestCell& cell, const SmoothMap& map, double noise,
+  std::mt19937_64& rng, const std::function<double(const double*)>& field)
+{
+  PlaceNodes(
+    cell, [&map](const double* pc, double* x) { map.Apply(pc, x); }, noise, rng, field);
 }
 }
 
