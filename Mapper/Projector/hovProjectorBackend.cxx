@@ -27,13 +27,14 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   bool rebuilt = false;
   vtkHighOrderTransferFunction* tf = scene.GetTransferFunction();
   const bool blend = frame.Settings.Blend != BlendMode::Composite;
+  // Non-tetrahedral cells integrate every table interval a segment crosses
+  // by quadrature: their frames take the budget of hovBackend.h; tetrahedra
+  // (closed forms) the table's own limit.
+  tf->SetRefinementBudget(scene.GetCells().GetGeneralCells().GetCells().empty()
+      ? TransferFunction::MaxRefinementNodes
+      : QuadratureTableBudget);
   // Average intensity is opaque grey wherever the ray meets the range, even
   // with no opacity; the other blend modes draw no features.
-  // Non-tetrahedral cells integrate every table interval a segment crosses
-  // by quadrature: their frames take the budget of hovBackend.h.
-  tf->SetRefinementBudget(scene.GetCells().GetGeneralCells().GetCells().empty()
-      ? ClosedFormTableBudget
-      : QuadratureTableBudget);
   if (render &&
     !frame.UpdateTransferFunction(tf, frame.Settings.GPUOpacityTolerance, rebuilt) &&
     (blend || frame.Settings.NumberOfIsosurfaces() == 0) &&

@@ -37,8 +37,6 @@ class RenderFrame;
  * the budget and says so, with its worst error.
  */
 constexpr int QuadratureTableBudget = 16384;
-/// The budget of every other frame (vtkHighOrderTransferFunction's default).
-constexpr int ClosedFormTableBudget = 1000000;
 
 class Backend
 {
