@@ -118,6 +118,48 @@ bool OneSide(const double* v, int n, double margin)
   return false;
 }
 
+namespace
+{
+/// All points beyond @p margin along (wx, wy) (not normalised) once oriented
+/// so that the first corner lies on its positive side.
+bool SeparatedAlong(const double* const net[2], int n, double wx, double wy, double cx, double cy,
+  double margin)
+{
+  if (wx * cx + wy * cy < 0.0)
+  {
+    wx = -wx;
+    wy = -wy;
+  }
+  const double limit = margin * std::sqrt(wx * wx + wy * wy); // w = 0: nothing passes
+  for (int k = 0; k < n; ++k)
+  {
+    if (!(wx * net[0][k] + wy * net[1][k] > limit))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+bool SeparatedByCorners(const double* const net[2], int n, const int* corners, int count, double margin)
+{
+  double mx = 0.0, my = 0.0;
+  for (int e = 0; e < count; ++e)
+  {
+    const int a = corners[e], b = corners[(e + 1) % count];
+    const double ax = net[0][a], ay = net[1][a];
+    mx += ax;
+    my += ay;
+    // The edge's normal, oriented away from the origin at its first corner.
+    if (SeparatedAlong(net, n, net[1][b] - ay, ax - net[0][b], ax, ay, margin))
+    {
+      return true;
+    }
+  }
+  return SeparatedAlong(net, n, mx, my, mx, my, margin);
+}
+
 /// The range of @p v[0 .. n - 1].
 Interval RangeOf(const double* v, int n)
 {

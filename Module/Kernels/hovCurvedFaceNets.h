@@ -44,6 +44,16 @@ void BilinearStart(const double* const net[2], int du, int nv, int n, double& a,
 /// True if every v[k], k < n, is > @p margin, or every one is < -@p margin.
 bool OneSide(const double* v, int n, double margin);
 
+/**
+ * True if a line separates the origin from the projected net (components
+ * net[0][k], net[1][k], k < n) by more than @p margin: tried along the normals
+ * of the edges of the corners' polygon (the control points at @p corners, in
+ * cyclic order, @p count of them) and along the corners' mean. Any line
+ * proves the exclusion (convex hull property); these catch the rays that
+ * pass beside a sub-patch diagonally, which the axes of OneSide miss.
+ */
+bool SeparatedByCorners(const double* const net[2], int n, const int* corners, int count, double margin);
+
 /// The range of @p v[0 .. n - 1].
 Interval RangeOf(const double* v, int n);
 

@@ -2,7 +2,8 @@
 // FaceParametricPoint): see hovCurvedFaces.h.
 #include "hovCurvedFaces.h"
 
-#include "hovBernstein.h" // equispaced Lagrange -> Bernstein
+#include "hovBernstein.h"           // equispaced Lagrange -> Bernstein
+#include "hovCurvedTriangleNets.h" // ... on triangles
 
 #include <algorithm> // std::copy, std::min, std::max
 
@@ -17,7 +18,7 @@ struct FaceDef
   int DegU, DegV;
 };
 
-/// The face patches of the cell's shape and their degrees (triangles as 3 quads).
+/// The face patches of the cell's shape and their degrees (one per face).
 int FaceDefinitions(const LagrangeBasis& b, FaceDef* f)
 {
   const int* o = b.GetOrder();
@@ -28,24 +29,18 @@ int FaceDefinitions(const LagrangeBasis& b, FaceDef* f)
     d.DegU = du;
     d.DegV = dv;
   };
-  // A triangle as 3 non-degenerate quads: corner, edge midpoint, centroid,
-  // other edge midpoint (a collapsed quad would be singular at its apex).
-  auto tri = [](FaceDef* d, const double (&c)[3][3], int n) {
-    for (int k = 0; k < 3; ++k)
+  // A triangle as one triangular patch: P00, P10, P01 its corners and P11 =
+  // P10 + P01 - P00, so that the bilinear map is the affine one.
+  auto tri = [](FaceDef& d, const double (&c)[3][3], int n) {
+    for (int i = 0; i < 3; ++i)
     {
-      const double* a = c[k];
-      const double* b = c[(k + 1) % 3];
-      const double* z = c[(k + 2) % 3];
-      for (int i = 0; i < 3; ++i)
-      {
-        d[k].C[0][i] = a[i];
-        d[k].C[1][i] = 0.5 * (a[i] + b[i]);
-        d[k].C[2][i] = (a[i] + b[i] + z[i]) / 3.0;
-        d[k].C[3][i] = 0.5 * (a[i] + z[i]);
-      }
-      d[k].Triangle = true;
-      d[k].DegU = d[k].DegV = n;
+      d.C[0][i] = c[0][i];
+      d.C[1][i] = c[1][i];
+      d.C[2][i] = c[1][i] + c[2][i] - c[0][i];
+      d.C[3][i] = c[2][i];
     }
+    d.Triangle = true;
+    d.DegU = d.DegV = n;
   };
   switch (b.GetShape())
   {
@@ -70,21 +65,21 @@ int FaceDefinitions(const LagrangeBasis& b, FaceDef* f)
     case LagrangeShape::Wedge:
     {
       const int p = special ? 3 : o[0], q = o[2];
-      tri(f, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, p);
-      tri(f + 3, { { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } }, p);
-      quad(f[6], { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 1 }, { 0, 0, 1 } }, p, q);
-      quad(f[7], { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 } }, p, q);
-      quad(f[8], { { 0, 1, 0 }, { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 1 } }, p, q);
-      return 9;
+      tri(f[0], { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, p);
+      tri(f[1], { { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } }, p);
+      quad(f[2], { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 1 }, { 0, 0, 1 } }, p, q);
+      quad(f[3], { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 } }, p, q);
+      quad(f[4], { { 0, 1, 0 }, { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 1 } }, p, q);
+      return 5;
     }
     default:
     {
       const int n = special ? 4 : o[0];
-      tri(f, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, n);
-      tri(f + 3, { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 } }, n);
-      tri(f + 6, { { 0, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
-      tri(f + 9, { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
-      return 12;
+      tri(f[0], { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, n);
+      tri(f[1], { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 } }, n);
+      tri(f[2], { { 0, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
+      tri(f[3], { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, n);
+      return 4;
     }
   }
 }
@@ -111,6 +106,60 @@ void FaceParametricPoint(
 
 namespace
 {
+/// The tensor net of a quadrilateral patch: x at the equispaced grid, then
+/// Lagrange -> Bernstein along u, then v.
+bool TensorNet(const LagrangeCellView& cell, CurvedFacePatch& p)
+{
+  const int nu = p.DegreeU + 1, nv = p.DegreeV + 1;
+  std::vector<double> x(3 * nu * nv), y(3 * nu * nv, 0.0);
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      double pc[3];
+      FaceParametricPoint(p, static_cast<double>(i) / p.DegreeU, static_cast<double>(j) / p.DegreeV, pc);
+      EvaluateLagrangePosition(cell, pc, &x[3 * (nv * i + j)]);
+    }
+  }
+  for (int i = 0; i < nu; ++i)
+  {
+    const BernsteinPolynomial l = EquispacedLagrangeBernstein(p.DegreeU, i);
+    for (int a = 0; a < nu; ++a)
+      for (int j = 0; j < nv; ++j)
+        for (int c = 0; c < 3; ++c)
+          y[3 * (nv * a + j) + c] += l.B[a] * x[3 * (nv * i + j) + c];
+  }
+  p.Net.assign(3 * nu * nv, 0.0);
+  for (int j = 0; j < nv; ++j)
+  {
+    const BernsteinPolynomial l = EquispacedLagrangeBernstein(p.DegreeV, j);
+    for (int a = 0; a < nu; ++a)
+      for (int b = 0; b < nv; ++b)
+        for (int c = 0; c < 3; ++c)
+          p.Net[3 * (nv * a + b) + c] += l.B[b] * y[3 * (nv * a + j) + c];
+  }
+  return true;
+}
+
+/// The triangular net of a triangular patch (total degree n): x at the
+/// equispaced points (j / n, k / n), converted by EquispacedTriangleBernstein.
+bool TriangleNet(const LagrangeCellView& cell, CurvedFacePatch& p)
+{
+  const int n = p.DegreeU, size = detail::TriangleNetSize(n);
+  std::vector<double> x(3 * size);
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int k = 0; j + k <= n; ++k)
+    {
+      double pc[3];
+      FaceParametricPoint(p, static_cast<double>(j) / n, static_cast<double>(k) / n, pc);
+      EvaluateLagrangePosition(cell, pc, &x[3 * detail::TriangleNetIndex(n, j, k)]);
+    }
+  }
+  p.Net.assign(3 * size, 0.0);
+  return detail::EquispacedTriangleBernstein(n, x.data(), 3, 3, p.Net.data());
+}
+
 /// CurvedFacePatch::Orientation: the parametric normal (P10 - P00) x (P01 -
 /// P00) against the direction from the domain's centre to the (planar, in
 /// parametric space) face, times the sign of det J at the patch's centre.
@@ -118,7 +167,8 @@ int PatchOrientation(const LagrangeCellView& cell, const CurvedFacePatch& p)
 {
   double centre[3], pc[3], du[3], dv[3], x[3], J[9];
   cell.Basis->ParametricCenter(centre);
-  FaceParametricPoint(p, 0.5, 0.5, pc, du, dv);
+  const double mid = p.Triangle ? 1.0 / 3.0 : 0.5; // the patch's centre
+  FaceParametricPoint(p, mid, mid, pc, du, dv);
   const double n[3] = { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2],
     du[0] * dv[1] - du[1] * dv[0] };
   const double out = n[0] * (pc[0] - centre[0]) + n[1] * (pc[1] - centre[1]) + n[2] * (pc[2] - centre[2]);
@@ -142,21 +192,17 @@ bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
     return false;
   }
   out.Extent = LagrangeCellExtent(cell);
-  FaceDef defs[12];
+  FaceDef defs[6];
   const int count = FaceDefinitions(*cell.Basis, defs);
   for (int f = 0; cell.Trilinear && f < count; ++f)
   {
     defs[f].DegU = defs[f].DegV = 1; // the faces of a trilinear map are bilinear patches
   }
   out.Faces.resize(count);
-  out.FaceFirstPatch.assign(1, 0);
-  for (int f = 0; f < count; ++f)
+  out.FaceFirstPatch.resize(count + 1);
+  for (int f = 0; f <= count; ++f)
   {
-    // A triangle's three patches are consecutive (FaceDefinitions).
-    if (!defs[f].Triangle || f + 1 == count || out.FaceFirstPatch.back() + 3 == f + 1)
-    {
-      out.FaceFirstPatch.push_back(f + 1);
-    }
+    out.FaceFirstPatch[f] = f; // one patch per face
   }
   for (int k = 0; k < 3; ++k)
   {
@@ -174,34 +220,9 @@ bool BuildCurvedFaces(const LagrangeCellView& cell, CurvedCellFaces& out)
     p.Triangle = d.Triangle;
     p.DegreeU = d.DegU;
     p.DegreeV = d.DegV;
-    const int nu = d.DegU + 1, nv = d.DegV + 1;
-    // Samples at the equispaced grid, then Lagrange -> Bernstein along u, then v.
-    std::vector<double> x(3 * nu * nv), y(3 * nu * nv, 0.0);
-    for (int i = 0; i < nu; ++i)
+    if (d.Triangle ? !TriangleNet(cell, p) : !TensorNet(cell, p))
     {
-      for (int j = 0; j < nv; ++j)
-      {
-        double pc[3];
-        FaceParametricPoint(p, static_cast<double>(i) / d.DegU, static_cast<double>(j) / d.DegV, pc);
-        EvaluateLagrangePosition(cell, pc, &x[3 * (nv * i + j)]);
-      }
-    }
-    for (int i = 0; i < nu; ++i)
-    {
-      const BernsteinPolynomial l = EquispacedLagrangeBernstein(d.DegU, i);
-      for (int a = 0; a < nu; ++a)
-        for (int j = 0; j < nv; ++j)
-          for (int c = 0; c < 3; ++c)
-            y[3 * (nv * a + j) + c] += l.B[a] * x[3 * (nv * i + j) + c];
-    }
-    p.Net.assign(3 * nu * nv, 0.0);
-    for (int j = 0; j < nv; ++j)
-    {
-      const BernsteinPolynomial l = EquispacedLagrangeBernstein(d.DegV, j);
-      for (int a = 0; a < nu; ++a)
-        for (int b = 0; b < nv; ++b)
-          for (int c = 0; c < 3; ++c)
-            p.Net[3 * (nv * a + b) + c] += l.B[b] * y[3 * (nv * a + j) + c];
+      return false;
     }
     const double margin = FaceSearchSettings().NetMargin * out.Extent;
     for (int k = 0; k < 3; ++k)

@@ -33,16 +33,14 @@ int CornerNode(const LagrangeBasis& b, const double pc[3])
 /// The corners of face @p k in cyclic order (reference points): 3 or 4.
 int FaceCorners(const CurvedCellFaces& f, int k, double pc[4][3])
 {
-  const int first = f.FaceFirstPatch[k], count = f.FaceFirstPatch[k + 1] - first;
-  if (count == 3)
+  const CurvedFacePatch& p = f.Faces[f.FaceFirstPatch[k]];
+  if (p.Triangle)
   {
-    for (int m = 0; m < 3; ++m)
-    {
-      std::copy(f.Faces[first + m].P00, f.Faces[first + m].P00 + 3, pc[m]); // corner of patch m
-    }
+    std::copy(p.P00, p.P00 + 3, pc[0]);
+    std::copy(p.P10, p.P10 + 3, pc[1]);
+    std::copy(p.P01, p.P01 + 3, pc[2]);
     return 3;
   }
-  const CurvedFacePatch& p = f.Faces[first];
   std::copy(p.P00, p.P00 + 3, pc[0]);
   std::copy(p.P10, p.P10 + 3, pc[1]);
   std::copy(p.P11, p.P11 + 3, pc[2]);

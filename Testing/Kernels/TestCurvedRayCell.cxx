@@ -295,3 +295,68 @@ TEST(CurvedRayCell, ReentryAndGrazingOnAnArch)
   }
 }
 }
+
+namespace
+{
+// A quadratic tetrahedron x = (r, s, t + a r s): its bottom face t = 0 is the
+// saddle z = a x y (one triangular patch of total degree 2), its slanted face
+// z = 1 - x - y + a x y; the other two are planes x = 0, y = 0.
+TEST(CurvedRayCell, TriangularFacesCrossAndGrazeAsTheQuadraticSays)
+{
+  const double a = 0.8;
+  hovtest::LagrangeTestCell cell;
+  ASSERT_TRUE(cell.Basis.Initialize(LagrangeShape::Tetra, 10));
+  PlaceByMap(cell, [a](const double* pc, double* x) {
+    x[0] = pc[0];
+    x[1] = pc[1];
+    x[2] = pc[2] + a * pc[0] * pc[1];
+  });
+  const hov::LagrangeCellView view = cell.View();
+  hov::CurvedCellFaces faces;
+  ASSERT_TRUE(hov::BuildCurvedFaces(view, faces));
+  EXPECT_EQ(faces.Faces.size(), 4u) << "one triangular patch per face";
+  hov::CurvedRayInterval got[8];
+  hov::CurvedRayStatus status;
+  // Oblique rays from below: o = (x0, y0, -1), d = (dx, dy, 1). Entry where
+  // -1 + t = a (x0 + t dx)(y0 + t dy), exit where -1 + t = 1 - x - y + a x y.
+  std::mt19937_64 rng(305);
+  std::uniform_real_distribution<double> p(0.15, 0.35), q(-0.05, 0.05);
+  double worst = 0.0;
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const double o[3] = { p(rng), p(rng), -1.0 }, d[3] = { q(rng), q(rng), 1.0 };
+    // The root in [0.5, 3] of A t^2 + B t + C = 0 (A is small: the stable pair
+    // q / A, C / q with q = -(B + sign(B) sqrt(B^2 - 4 A C)) / 2).
+    auto root = [](double A, double B, double C) {
+      const double q = -0.5 * (B + std::copysign(std::sqrt(B * B - 4 * A * C), B));
+      const double r1 = C / q, r2 = A != 0.0 ? q / A : 1e300;
+      return (r1 >= 0.5 && r1 <= 3.0) ? r1 : r2;
+    };
+    const double A = a * d[0] * d[1], B = a * (o[0] * d[1] + o[1] * d[0]), C = a * o[0] * o[1];
+    const double tIn = root(A, B - 1.0, C + 1.0);
+    const double tOut = root(A, B - 1.0 - d[0] - d[1], C + 2.0 - o[0] - o[1]);
+    const int n = hov::RayCurvedCellIntervals(view, faces, o, d, 0.0, 4.0, got, 8, {}, &status);
+    ASSERT_EQ(n, 1) << "trial " << trial;
+    EXPECT_TRUE(status.Complete);
+    const double e = std::max(std::abs(got[0].T0 - tIn), std::abs(got[0].T1 - tOut));
+    EXPECT_LE(e, 1e-12) << "trial " << trial;
+    worst = std::max(worst, e);
+  }
+  hovtest::ReportMeasured("CurvedRayCell.TriangularFaceAnalytic", worst);
+  // Along x + y = k at height z0 = a k^2 / 4 the ray touches the saddle's
+  // ridge at x = k / 2 from inside: one interval x in [0, k].
+  const double k = 0.5, z0 = a * k * k / 4, d[3] = { 1.0, -1.0, 0.0 };
+  const double o1[3] = { -1.0, k + 1.0, z0 };
+  int n = hov::RayCurvedCellIntervals(view, faces, o1, d, 0.0, 4.0, got, 8, {}, &status);
+  ASSERT_EQ(n, 1) << "grazing from inside";
+  EXPECT_NEAR(got[0].T0, 1.0, 1e-12);
+  EXPECT_NEAR(got[0].T1, 1.0 + k, 1e-12);
+  // 1e-8 lower: it crosses the saddle twice, at x = k / 2 -+ sqrt(1e-8 / a).
+  const double o2[3] = { -1.0, k + 1.0, z0 - 1e-8 };
+  n = hov::RayCurvedCellIntervals(view, faces, o2, d, 0.0, 4.0, got, 8, {}, &status);
+  ASSERT_EQ(n, 2) << "just below the ridge";
+  EXPECT_NEAR(got[0].T1, 1.0 + k / 2 - std::sqrt(1e-8 / a), 1e-9);
+  EXPECT_NEAR(got[1].T0, 1.0 + k / 2 + std::sqrt(1e-8 / a), 1e-9);
+  EXPECT_EQ(BruteForceDisagreements(view, o2, d, 0.0, 4.0, got, n), 0);
+}
+}
