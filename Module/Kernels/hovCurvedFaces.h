@@ -4,38 +4,42 @@
  * every crossing of a straight ray with such a patch, found robustly
  * (Bernstein exclusion + interval uniqueness test + Newton on the exact map).
  *
- * The boundary of a cell is covered by quadrilateral patches (hexahedron 6;
- * wedge 3 quads + 2 triangles; tetrahedron 4 triangles; each triangle split
- * into 3 quads corner - edge midpoint - centroid - edge midpoint, so that no
- * patch is degenerate, as a collapsed quad would be at its apex). Patch k is
- * parametrised by (u, v) in [0, 1]^2 through a bilinear map into the cell's
- * parametric space,
+ * The boundary of a cell is covered by one polynomial patch per face
+ * (hexahedron 6 quadrilaterals; wedge 3 quadrilaterals + 2 triangles;
+ * tetrahedron 4 triangles). Patch k is parametrised by (u, v) through a
+ * bilinear map into the cell's parametric space,
  *   pc(u, v) = P00 (1-u)(1-v) + P10 u (1-v) + P01 (1-u) v + P11 u v,
- * so x(u, v) = x(pc(u, v)) is a tensor polynomial of degree
- * (DegreeU, DegreeV) (quads: the cell's orders along the face; triangle
- * parts: (n, n), n the triangle's total degree). Its tensor Bernstein control net
- * is computed from x at the equispaced grid u_i = i/DegreeU, v_j = j/DegreeV
- * with the equispaced-Lagrange-to-Bernstein coefficients
- * (EquispacedLagrangeBernstein) in each direction; this conversion
- * amplifies rounding by <= ~4e3 at degree 10, so the exclusion test below
- * uses a margin of NetMargin = 1e-9 x extent.
+ * on [0, 1]^2 for a quadrilateral; a triangle has P11 = P10 + P01 - P00 (the
+ * map is affine) and its domain is u, v >= 0, u + v <= 1. So x(u, v) =
+ * x(pc(u, v)) is a tensor polynomial of degree (DegreeU, DegreeV) on a
+ * quadrilateral (the cell's orders along the face) and a polynomial of total
+ * degree n = DegreeU = DegreeV on a triangle. Its Bernstein control net (tensor,
+ * or triangular: hovCurvedTriangleNets.h) is computed from x at the
+ * equispaced points (i / DegreeU, j / DegreeV), or (j / n, k / n) with j + k <=
+ * n; the conversion amplifies rounding by <= ~4e3 at degree 10, so the
+ * exclusion test below uses a margin of NetMargin = 1e-9 x extent.
  *
  * Ray-patch crossings (FaceRayCrossings): with e1, e2 orthonormal and
  * perpendicular to d, the ray is the zero set of
  *   h(u, v) = (e1 . (x(u,v) - o), e2 . (x(u,v) - o)).
- * Sub-patches [u0,u1] x [v0,v1] (the net restricted by de Casteljau) are
- * examined depth first:
+ * Sub-patches ([u0,u1] x [v0,v1], or sub-triangles; the net restricted by
+ * de Casteljau) are examined depth first:
  *  - exclusion: 0 outside the bounding box of either component's net
- *    (widened by the margin) => no crossing (convex hull property);
+ *    (widened by the margin), or beyond a line along the normal of an edge of
+ *    the corner control points' polygon or along their mean => no crossing
+ *    (convex hull property);
  *  - uniqueness: the interval 2x2 Jacobian of h over the sub-patch (ranges
- *    of the derivative nets) has a determinant interval excluding 0 => at
- *    most one zero (interval mean value theorem); Newton on the EXACT face
- *    map (shape functions, not the net) from the sub-patch centre must
- *    converge inside the sub-patch widened by 1e-9 (else split);
- *  - otherwise split at the middle of the side along which h varies most
- *    (range of the derivative nets: a face parallel to the ray, e.g. the
- *    side of an extruded mesh seen along the extrusion, varies along one
- *    direction only and is split along it only), down to MinSize = 2^-22
+ *    of the derivative nets; on a sub-triangle, the derivatives along two of
+ *    its edges), or the cones of the derivative nets, give a determinant that
+ *    keeps its sign => at most one zero (interval mean value theorem); Newton
+ *    on the net from the zero of the corners' interpolant must converge
+ *    inside the sub-patch widened by 1e-9 (else split), and the crossing is
+ *    then evaluated on the EXACT map (shape functions, not the net);
+ *  - otherwise split at the middle of the side (a sub-triangle: the edge)
+ *    along which h varies most (range of the derivative nets: a face
+ *    parallel to the ray, e.g. the side of an extruded mesh seen along the
+ *    extrusion, varies along one direction only and is split along it
+ *    only), down to MinSize = 2^-22
  *    or until h varies by less than the margin along the side (the
  *    uniqueness test fails only near a tangency, where the ray grazes the
  *    face, or on faces parallel to the ray): a sub-patch that cannot be
@@ -70,7 +74,7 @@ constexpr int MaxFaceDegree = MaxLagrangeOrder;
 struct CurvedFacePatch
 {
   double P00[3], P10[3], P01[3], P11[3]; ///< bilinear map (u,v) -> pc
-  bool Triangle = false;                  ///< one third of a triangular face
+  bool Triangle = false;                  ///< a triangular face (see file doc)
   int DegreeU = 1, DegreeV = 1;
   /// +1 if x_u x x_v points out of the cell, -1 if into it (the patch's
   /// orientation in parametric space times the sign of det J at its centre;
@@ -79,7 +83,9 @@ struct CurvedFacePatch
   /// Box (xmin, xmax, ymin, ymax, zmin, zmax) of the net widened by
   /// NetMargin x extent: a ray missing it misses the patch.
   double Box[6] = { 0, 0, 0, 0, 0, 0 };
-  /// Control net of x: Net[3 * ((DegreeV + 1) * a + b) + c], a along u, b along v.
+  /// Control net of x: Net[3 * ((DegreeV + 1) * a + b) + c], a along u, b
+  /// along v; a triangle's: Net[3 * TriangleNetIndex(n, j, k) + c], j the
+  /// power of u, k of v (hovCurvedTriangleNets.h).
   std::vector<double> Net;
 };
 
@@ -88,7 +94,7 @@ struct CurvedCellFaces
 {
   std::vector<CurvedFacePatch> Faces;
   /// The cell's faces as ranges of patches: face k is Faces[FaceFirstPatch[k]]
-  /// .. Faces[FaceFirstPatch[k + 1] - 1] (a triangle 3 patches, a quad 1).
+  /// .. Faces[FaceFirstPatch[k + 1] - 1] (one patch per face at present).
   std::vector<int> FaceFirstPatch;
   double Extent = 0.0;
   /// Box (xmin, xmax, ymin, ymax, zmin, zmax) of every control point, widened
