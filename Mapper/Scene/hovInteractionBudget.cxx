@@ -54,7 +54,7 @@ hov::InteractionBudget::Choice hov::InteractionBudget::Choose(
     choice.Subsampling = fixed;
     return choice;
   }
-  const double available = budget - c.Fixed;
+  const double available = Headroom * budget - c.Fixed;
   int f = MaximumSubsampling;
   if (available > 0.0)
   {
