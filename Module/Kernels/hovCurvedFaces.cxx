@@ -80,7 +80,7 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
   const Interval ad = Mul(deriv[0][0], deriv[1][1]), bc = Mul(deriv[0][1], deriv[1][0]);
   // det [h_u h_v] keeps its sign over the sub-patch: by the boxes of the
   // difference vectors, or else by their cones (tighter where the vectors
-  // turn little but vary in length, as on the thirds of a curved triangle).
+  // turn little but vary in length).
   const bool unique = (ad.Lo - bc.Hi > 0.0) || (ad.Hi - bc.Lo < 0.0) ||
     ConesSeparated(ux, uy, nu, vx, vy, nvd);
   // Split where h varies most (a face parallel to the ray varies along one
