@@ -18,13 +18,38 @@ constexpr int MaxShadedPanels = 128;
 constexpr int MaxShadedDepth = 16;
 
 /// Field and world gradient along the ray, by Newton inversion from the last sample.
+/// The field is interpolated from the node scalars minus the first one (Field,
+/// Offset added back): the same polynomial, but a constant field then has
+/// the gradient (0, 0, 0) exactly instead of the rounding of sum_i dN_i s_i,
+/// ~1e-16 in a random direction, whose normal is noise (and the adaptive
+/// quadrature never converges on noise).
 struct RaySampler
 {
   const LagrangeCellView* Cell;
+  LagrangeCellView Field; ///< Cell with the shifted scalars
+  std::vector<double> Shifted;
+  double Offset = 0.0;
   double Origin[3]; ///< the point at the segment's start
   double Direction[3];
   double PC[3];
   bool Failed = false;
+
+  void SetCell(const LagrangeCellView& cell)
+  {
+    this->Cell = &cell;
+    this->Field = cell;
+    const int n = cell.Basis->GetNodeCount();
+    if (cell.Scalars && n > 0)
+    {
+      this->Offset = cell.Scalars[0];
+      this->Shifted.resize(n);
+      for (int i = 0; i < n; ++i)
+      {
+        this->Shifted[i] = cell.Scalars[i] - this->Offset;
+      }
+      this->Field.Scalars = this->Shifted.data();
+    }
+  }
 
   void At(double t, double& value, double gradient[3])
   {
@@ -41,7 +66,7 @@ struct RaySampler
       this->Failed = true;
     }
     double dfdpc[3], xx[3], jac[9];
-    value = EvaluateLagrangeScalar(*this->Cell, pc, dfdpc);
+    value = EvaluateLagrangeScalar(this->Field, pc, dfdpc) + this->Offset;
     EvaluateLagrangePosition(*this->Cell, pc, xx, jac);
     // J^T g = df/dpc (J[3 i + j] = dx_i / dpc_j).
     const double jt[9] = { jac[0], jac[3], jac[6], jac[1], jac[4], jac[7], jac[2], jac[5], jac[8] };
@@ -73,7 +98,7 @@ CurvedSegmentResult IntegrateCurvedShadedSegment(const LagrangeCellView& cell,
   const VolumeShadingSettings& vs = settings.Shading ? *settings.Shading : unshaded;
   const GradientOpacityFunction* go = settings.GradientOpacity;
   RaySampler sampler;
-  sampler.Cell = &cell;
+  sampler.SetCell(cell);
   for (int k = 0; k < 3; ++k)
   {
     sampler.Origin[k] = origin[k] + t0 * direction[k];

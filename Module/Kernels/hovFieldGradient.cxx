@@ -4,6 +4,7 @@
 
 #include <algorithm> // max
 #include <cmath>     // fabs, isfinite
+#include <limits>    // epsilon
 
 namespace hov
 {
@@ -130,8 +131,15 @@ bool AffineGradientAlongRay(CellShape shape, const double* points, const double*
       return false; // the documented refusal: no NaN coefficient reaches the caller
     }
   }
+  // The gradient of s - s_0 (the same polynomial's): a constant field then
+  // has the zero gradient exactly, not rounding noise in a random direction.
+  double shifted[MaxCellNodes];
+  for (int i = 0; i < nodes; ++i)
+  {
+    shifted[i] = scalars[i] - scalars[0];
+  }
   double c[AffineFieldTerms];
-  AffineFieldCoefficients(basis, nodes, scalars, c);
+  AffineFieldCoefficients(basis, nodes, shifted, c);
   Polynomial dpc[3];
   for (int axis = 0; axis < 3; ++axis)
   {
@@ -166,7 +174,7 @@ bool CellFieldAndGradient(CellShape shape, const double* points, const double* s
   double w[MaxCellNodes], derivs[3 * MaxCellNodes];
   CellShapeFunctions(shape, pc, w);
   CellShapeDerivatives(shape, pc, derivs);
-  double dpc[3] = { 0.0, 0.0, 0.0 };
+  double dpc[3] = { 0.0, 0.0, 0.0 }, size[3] = { 0.0, 0.0, 0.0 };
   value = 0.0;
   for (int i = 0; i < n; ++i)
   {
@@ -174,7 +182,19 @@ bool CellFieldAndGradient(CellShape shape, const double* points, const double* s
     for (int b = 0; b < 3; ++b)
     {
       dpc[b] += derivs[b * n + i] * scalars[i];
+      size[b] += std::fabs(derivs[b * n + i] * scalars[i]);
     }
+  }
+  // A field constant along pc_b has a zero derivative, but its computed sum is
+  // the rounding of sum_i ds_i/dpc_b s_i (~1e-16 in a random direction): a
+  // normal from it is noise, and the shaded segment's adaptive quadrature
+  // never converges on noise (256 panels per segment). A derivative within
+  // the sum's rounding bound (4 n eps sum |terms|) is zero.
+  for (int b = 0; b < 3; ++b)
+  {
+    dpc[b] = std::fabs(dpc[b]) <= 4.0 * n * std::numeric_limits<double>::epsilon() * size[b]
+      ? 0.0
+      : dpc[b];
   }
   double xc[3], jac[9], inv[9];
   EvaluateGeometry(shape, points, pc, xc, jac);

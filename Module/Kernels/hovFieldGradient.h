@@ -23,11 +23,16 @@
  *    J^-T. Same base point and inverse Jacobian as RestrictCellScalar's
  *    affine path (corner 0, J at the centre), so S'(tau) = d . grad s(tau) up
  *    to rounding (TestFieldGradient: measured 2.4e-15 relative to the
- *    gradient's scale against analytic gradients, 1.6e-15 for S').
+ *    gradient's scale against analytic gradients, 1.6e-15 for S'). The
+ *    coefficients are those of s - s_0 (node 0): a constant field has zero
+ *    gradient polynomials exactly.
  *  - CellFieldAndGradient: any supported straight-edged cell at a point x:
  *    pc by InvertGeometry (warm start from @p pc), then the shape-function
  *    derivatives (exact, dual numbers) and J^-T. The pointwise sampler for
- *    non-affine cells (distorted hexahedra, pyramids).
+ *    non-affine cells (distorted hexahedra, pyramids). A parametric
+ *    derivative within the rounding bound of its sum (4 n eps sum_i
+ *    |dN_i/dpc_b s_i|) is zero: a constant field has the gradient (0, 0, 0),
+ *    not rounding noise in a random direction.
  *
  * Thread safety: stateless, re-entrant; no allocation.
  * @sa hovCellShapes.h, hovCellRestriction.h
