@@ -1,6 +1,7 @@
 // The ray problem on one curved face: see hovCurvedFaceProblem.h.
 #include "hovCurvedFaceProblem.h"
 
+#include "hovCurvedFaceNets.h"     // RangeOf
 #include "hovCurvedTriangleNets.h" // EvaluateTriangleNet
 
 #include <algorithm> // std::copy, std::max
@@ -213,6 +214,32 @@ void FaceProblem::Contact(double u, double v, FaceCrossing& out) const
   this->Evaluate(u, v, h, jac, x, out.PC);
   const double rel[3] = { x[0] - this->O[0], x[1] - this->O[1], x[2] - this->O[2] };
   out.T = Dot(this->D, rel) / Dot(this->D, this->D);
+}
+
+int FinishSubPatch(const FaceProblem& prob, bool accepted, bool small, double u, double v,
+  double cu, double cv, const double* const net[2], int n, const FaceSearchSettings& settings,
+  FaceCrossing& c, std::vector<FaceCrossing>& out)
+{
+  if (accepted)
+  {
+    prob.Crossing(u, v, c);
+    c.Side = c.Grazing ? 0 : c.Side;
+    out.push_back(c);
+    return 1;
+  }
+  if (!small)
+  {
+    return 2;
+  }
+  // Resolution limit: a contact if the sub-patch's image hugs the ray.
+  const Interval range[2] = { RangeOf(net[0], n), RangeOf(net[1], n) };
+  if (std::max(range[0].Hi - range[0].Lo, range[1].Hi - range[1].Lo) <=
+    settings.GrazeTolerance * prob.Extent)
+  {
+    prob.Contact(cu, cv, c);
+    out.push_back(c);
+  }
+  return 1;
 }
 }
 }

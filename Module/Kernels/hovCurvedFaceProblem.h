@@ -71,6 +71,17 @@ struct FaceProblem
   void Contact(double u, double v, FaceCrossing& out) const;
 };
 
+/**
+ * The end of examining a sub-patch (tensor or triangular) once it is unique or
+ * too small to split: @p accepted (Newton converged inside it): the crossing
+ * at (u, v) is appended (Side 0 if @p c is Grazing), 1. Otherwise 2 (split)
+ * unless @p small; then a contact at (cu, cv) is appended if the projected net
+ * (n values per component) lies within GrazeTolerance x extent of the ray, 1.
+ */
+int FinishSubPatch(const FaceProblem& prob, bool accepted, bool small, double u, double v,
+  double cu, double cv, const double* const net[2], int n, const FaceSearchSettings& settings,
+  FaceCrossing& c, std::vector<FaceCrossing>& out);
+
 /// Depth-first search of a triangular patch (CurvedFacePatch::Triangle): the
 /// projected net (2 components of TriangleNetSize(n) values) at @p work, which
 /// must hold TriangleWorkspaceSize(n) values. Appends crossings (unmerged) to

@@ -106,27 +106,10 @@ int Examine(const FaceProblem& prob, const double* netIn, const SubPatch& s,
   BilinearStart(net, du, nv, n, a, b);
   double u = s.U0 + a * (s.U1 - s.U0), v = s.V0 + b * (s.V1 - s.V0);
   const double box[4] = { s.U0, s.U1, s.V0, s.V1 };
-  if (prob.Newton(u, v, box) && u >= s.U0 - AcceptSlack && u <= s.U1 + AcceptSlack &&
-    v >= s.V0 - AcceptSlack && v <= s.V1 + AcceptSlack)
-  {
-    prob.Crossing(u, v, c);
-    c.Side = c.Grazing ? 0 : c.Side;
-    out.push_back(c);
-    return 1;
-  }
-  if (!small)
-  {
-    return 2;
-  }
-  // Resolution limit: a contact if the sub-patch's image hugs the ray.
-  const Interval range[2] = { RangeOf(net[0], n), RangeOf(net[1], n) };
-  if (std::max(range[0].Hi - range[0].Lo, range[1].Hi - range[1].Lo) <=
-    settings.GrazeTolerance * prob.Extent)
-  {
-    prob.Contact(0.5 * (s.U0 + s.U1), 0.5 * (s.V0 + s.V1), c);
-    out.push_back(c);
-  }
-  return 1;
+  const bool accepted = prob.Newton(u, v, box) && u >= s.U0 - AcceptSlack &&
+    u <= s.U1 + AcceptSlack && v >= s.V0 - AcceptSlack && v <= s.V1 + AcceptSlack;
+  return FinishSubPatch(prob, accepted, small, u, v, 0.5 * (s.U0 + s.U1), 0.5 * (s.V0 + s.V1),
+    net, n, settings, c, out);
 }
 }
 

@@ -152,27 +152,9 @@ int ExamineTriangle(const FaceProblem& prob, const double* netIn, const SubTrian
   const double box[4] = { std::min({ s.P[0][0], s.P[1][0], s.P[2][0] }),
     std::max({ s.P[0][0], s.P[1][0], s.P[2][0] }), std::min({ s.P[0][1], s.P[1][1], s.P[2][1] }),
     std::max({ s.P[0][1], s.P[1][1], s.P[2][1] }) };
-  if (prob.Newton(u, v, box) && InsideWithin(s, u, v, AcceptSlack))
-  {
-    prob.Crossing(u, v, c);
-    c.Side = c.Grazing ? 0 : c.Side;
-    out.push_back(c);
-    return 1;
-  }
-  if (!small)
-  {
-    return 2;
-  }
-  // Resolution limit: a contact if the sub-triangle's image hugs the ray.
-  const Interval range[2] = { RangeOf(net[0], size), RangeOf(net[1], size) };
-  if (std::max(range[0].Hi - range[0].Lo, range[1].Hi - range[1].Lo) <=
-    settings.GrazeTolerance * prob.Extent)
-  {
-    prob.Contact((s.P[0][0] + s.P[1][0] + s.P[2][0]) / 3.0,
-      (s.P[0][1] + s.P[1][1] + s.P[2][1]) / 3.0, c);
-    out.push_back(c);
-  }
-  return 1;
+  const bool accepted = prob.Newton(u, v, box) && InsideWithin(s, u, v, AcceptSlack);
+  return FinishSubPatch(prob, accepted, small, u, v, (s.P[0][0] + s.P[1][0] + s.P[2][0]) / 3.0,
+    (s.P[0][1] + s.P[1][1] + s.P[2][1]) / 3.0, net, size, settings, c, out);
 }
 
 /// Depth first over sub-triangles; slot (depth, child) of the workspace holds
