@@ -44,7 +44,7 @@ hov::InteractionBudget::Choice hov::InteractionBudget::Choose(
     choice.Subsampling = fixed > 0 ? fixed : 4;
     return choice;
   }
-  if (choice.Estimate <= budget)
+  if (choice.Estimate <= Headroom * budget)
   {
     return choice;
   }
@@ -54,7 +54,10 @@ hov::InteractionBudget::Choice hov::InteractionBudget::Choose(
     choice.Subsampling = fixed;
     return choice;
   }
-  const double available = Headroom * budget - c.Fixed;
+  // The headroom's share of the budget, or the whole of it when the fixed
+  // part alone exceeds the share (the rays must then fit in what is left).
+  const double available =
+    Headroom * budget > c.Fixed ? Headroom * budget - c.Fixed : budget - c.Fixed;
   int f = MaximumSubsampling;
   if (available > 0.0)
   {

@@ -13,16 +13,18 @@
  * visibility order, the regions of OPENGL_PROJECTION, the display) plus a
  * cost per pixel ray (from exact frames; a reduced frame updates the fixed
  * part, so the next factor follows what the last frame cost). A frame whose
- * estimated exact cost fits the budget is exact (f = 1, the image of a
+ * estimated exact cost fits Headroom x budget is exact (f = 1, the image of a
  * non-interactive render bit for bit). Otherwise it is an interactive frame:
  * one ray per f x f block of pixels (hovReducedImage.h),
  * f = ceil(sqrt(cost per ray x pixels / (Headroom x budget - fixed))) in
- * [2, 16], or the fixed factor the user set. Headroom = 0.85: the budget is
- * the volume's, but the window's frame also draws the image, swaps and serves
- * the interactor; aimed at the whole budget, the frames' median landed 3%
- * over it (14.5 fps at DesiredUpdateRate 15, hovBenchHighOrder, T-junction
- * 256x256; 19-21 fps with the headroom). Before any measurement a budget
- * under 1 s gives f = 4 (VTK's "half the maximum").
+ * [2, 16] (budget - fixed when the fixed part exceeds Headroom x budget; 16
+ * when it exceeds the budget), or the fixed factor the user set.
+ * Headroom = 0.85: the budget is the volume's, but the window's frame also
+ * draws the image, swaps and serves the interactor; aimed at the whole
+ * budget, the frames' median landed 3% over it (14.5 fps at DesiredUpdateRate
+ * 15, hovBenchHighOrder, T-junction 256x256; 19-21 fps with the headroom).
+ * Before any measurement a budget under 1 s gives f = 4 (VTK's "half the
+ * maximum").
  *
  * Thread safety: rendering thread only.
  * @sa hovReducedImage.h, vtkHighOrderVolumeMapper (interaction)

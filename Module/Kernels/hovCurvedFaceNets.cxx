@@ -48,7 +48,8 @@ void SplitStrided(const double* net, double* left, double* right, int du, int dv
  * bilinear interpolant of h at its corners (the corner control points are h's
  * values there), by a few Newton steps on that interpolant from the centre;
  * the centre if they do not converge inside. Only the start: the crossing is
- * still Newton's on the exact map, under the same stopping rules.
+ * still Newton's on the face's net, under the same stopping rules, evaluated
+ * on the exact map once accepted (FaceProblem::Newton, Crossing).
  */
 void BilinearStart(const double* const net[2], int du, int nv, int n, double& a, double& b)
 {

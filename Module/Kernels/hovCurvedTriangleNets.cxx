@@ -1,6 +1,8 @@
 // Triangular Bernstein nets of the curved face search: see hovCurvedTriangleNets.h.
 #include "hovCurvedTriangleNets.h"
 
+#include "hovLagrangeBasis.h" // MaxLagrangeOrder
+
 #include <array>   // the per-degree tables
 #include <cmath>   // std::abs, std::pow
 #include <utility> // std::swap
@@ -13,6 +15,7 @@ namespace detail
 namespace
 {
 constexpr int MaxDegree = 10;
+static_assert(MaxDegree >= MaxLagrangeOrder, "triangular nets up to the largest Lagrange order");
 constexpr int MaxSize = TriangleNetSize(MaxDegree);
 
 /// B^n_{ijk}(l0, l1, l2) for every i + j + k = n, at TriangleNetIndex(n, j, k)

@@ -4,7 +4,6 @@
 
 #include <algorithm> // max
 #include <cmath>     // fabs, isfinite
-#include <limits>    // epsilon
 
 namespace hov
 {
@@ -174,28 +173,23 @@ bool CellFieldAndGradient(CellShape shape, const double* points, const double* s
   double w[MaxCellNodes], derivs[3 * MaxCellNodes];
   CellShapeFunctions(shape, pc, w);
   CellShapeDerivatives(shape, pc, derivs);
-  double dpc[3] = { 0.0, 0.0, 0.0 }, size[3] = { 0.0, 0.0, 0.0 };
+  // The derivatives of s - s_0 (the same polynomial's): a constant field then
+  // has the zero gradient exactly, not the rounding of sum_i dN_i/dpc s_i
+  // (~1e-16 in a random direction), whose normal is noise; the shaded
+  // segment's adaptive quadrature never converges on noise (256 panels per
+  // segment).
+  double dpc[3] = { 0.0, 0.0, 0.0 };
   value = 0.0;
   for (int i = 0; i < n; ++i)
   {
-    value += w[i] * scalars[i];
+    const double si = scalars[i] - scalars[0];
+    value += w[i] * si;
     for (int b = 0; b < 3; ++b)
     {
-      dpc[b] += derivs[b * n + i] * scalars[i];
-      size[b] += std::fabs(derivs[b * n + i] * scalars[i]);
+      dpc[b] += derivs[b * n + i] * si;
     }
   }
-  // A field constant along pc_b has a zero derivative, but its computed sum is
-  // the rounding of sum_i ds_i/dpc_b s_i (~1e-16 in a random direction): a
-  // normal from it is noise, and the shaded segment's adaptive quadrature
-  // never converges on noise (256 panels per segment). A derivative within
-  // the sum's rounding bound (4 n eps sum |terms|) is zero.
-  for (int b = 0; b < 3; ++b)
-  {
-    dpc[b] = std::fabs(dpc[b]) <= 4.0 * n * std::numeric_limits<double>::epsilon() * size[b]
-      ? 0.0
-      : dpc[b];
-  }
+  value += scalars[0];
   double xc[3], jac[9], inv[9];
   EvaluateGeometry(shape, points, pc, xc, jac);
   gradient[0] = gradient[1] = gradient[2] = 0.0;

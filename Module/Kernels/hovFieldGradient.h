@@ -29,10 +29,9 @@
  *  - CellFieldAndGradient: any supported straight-edged cell at a point x:
  *    pc by InvertGeometry (warm start from @p pc), then the shape-function
  *    derivatives (exact, dual numbers) and J^-T. The pointwise sampler for
- *    non-affine cells (distorted hexahedra, pyramids). A parametric
- *    derivative within the rounding bound of its sum (4 n eps sum_i
- *    |dN_i/dpc_b s_i|) is zero: a constant field has the gradient (0, 0, 0),
- *    not rounding noise in a random direction.
+ *    non-affine cells (distorted hexahedra, pyramids). The value and
+ *    derivatives are those of s - s_0 (plus s_0): a constant field has the
+ *    gradient (0, 0, 0), not rounding noise in a random direction.
  *
  * Thread safety: stateless, re-entrant; no allocation.
  * @sa hovCellShapes.h, hovCellRestriction.h
