@@ -16,6 +16,7 @@
 #include <cmath>     // std::isfinite
 #include <map>       // basis cache
 #include <tuple>     // basis cache key
+#include <utility>   // std::move
 
 namespace
 {
@@ -44,14 +45,47 @@ bool ConversionTarget(int type, int& lagrangeType, int& order)
   }
 }
 
+/// Largest node count whose derivative table BasisEntry keeps (3 n (n + 1)
+/// doubles: 2.9 MB at 343 nodes, an order-6 hexahedron); larger bases compute
+/// the derivatives per cell, as before.
+constexpr int MaxTabulatedNodes = 343;
+
+/// A basis and the derivatives of its functions at its nodes and centre
+/// (CheckJacobian's points, the same for every cell of the basis: computed
+/// once per basis instead of once per cell).
+struct BasisEntry
+{
+  hov::LagrangeBasis Basis;
+  /// Block k (k <= n, k = n the centre) of 3 n values: dN_i / dpc_d at 3 k n + d n + i.
+  std::vector<double> NodeDerivatives;
+
+  void Prepare()
+  {
+    const int n = this->Basis.IsInitialized() ? this->Basis.GetNodeCount() : 0;
+    if (n > MaxTabulatedNodes)
+    {
+      return;
+    }
+    this->NodeDerivatives.assign(3 * static_cast<size_t>(n) * (n + 1), 0.0);
+    for (int k = 0; k < n + 1 && n > 0; ++k)
+    {
+      double pc[3];
+      k < n ? this->Basis.NodeParametricCoords(k, pc) : this->Basis.ParametricCenter(pc);
+      this->Basis.FunctionsAndDerivatives(
+        pc, nullptr, &this->NodeDerivatives[3 * static_cast<size_t>(k) * n]);
+    }
+  }
+};
+
 /**
  * det J at every node and the centre: 1 all of the expected sign (wedges:
  * either uniform sign, VTK's wedge orientation convention varies between
  * writers), 0 degenerate or tangled (|det| <= 1e-12 size^3 or mixed signs),
  * -1 uniformly inverted (tetrahedra, hexahedra).
  */
-int CheckJacobian(const hov::LagrangeBasis& basis, const double* x, bool collapsedTop = false)
+int CheckJacobian(const BasisEntry& entry, const double* x, bool collapsedTop = false)
 {
+  const hov::LagrangeBasis& basis = entry.Basis;
   const int n = basis.GetNodeCount();
   double lo[3] = { x[0], x[1], x[2] }, hi[3] = { x[0], x[1], x[2] };
   for (int i = 1; i < n; ++i)
@@ -64,8 +98,9 @@ int CheckJacobian(const hov::LagrangeBasis& basis, const double* x, bool collaps
   }
   const double size = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
   const double floor = 1e-12 * size * size * size;
-  std::vector<double> derivs(3 * static_cast<size_t>(n));
   int positive = 0, negative = 0;
+  const bool tabulated = !entry.NodeDerivatives.empty();
+  std::vector<double> local(tabulated ? 0 : 3 * static_cast<size_t>(n));
   for (int k = 0; k <= n; ++k)
   {
     double pc[3];
@@ -74,7 +109,12 @@ int CheckJacobian(const hov::LagrangeBasis& basis, const double* x, bool collaps
     {
       continue; // a pyramid's apex (the collapsed top face): the Jacobian vanishes there
     }
-    basis.FunctionsAndDerivatives(pc, nullptr, derivs.data());
+    if (!tabulated)
+    {
+      basis.FunctionsAndDerivatives(pc, nullptr, local.data());
+    }
+    const double* derivs =
+      tabulated ? &entry.NodeDerivatives[3 * static_cast<size_t>(k) * n] : local.data();
     double j[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 }; // j[3 r + d] = dx_r / dpc_d
     for (int i = 0; i < n; ++i)
     {
@@ -151,7 +191,7 @@ vtkIdType hov::RayCastCells::Convert(
   vtkDataArray* weights = grid->GetPointData()->GetRationalWeights();
   const bool useDegrees = degreesArray && degreesArray->GetNumberOfComponents() == 3 &&
     degreesArray->GetNumberOfTuples() == this->Cells;
-  std::map<std::tuple<int, int, int, int, int>, hov::LagrangeBasis> bases;
+  std::map<std::tuple<int, int, int, int, int>, BasisEntry> bases;
   vtkNew<vtkGenericCell> source;
   std::vector<double> x, s, w;
   for (vtkIdType c = 0; c < this->Cells; ++c)
@@ -197,12 +237,16 @@ vtkIdType hov::RayCastCells::Convert(
     auto it = bases.find(key);
     if (it == bases.end())
     {
-      hov::LagrangeBasis basis;
-      const bool ok = basis.Initialize(static_cast<hov::LagrangeShape>(lagrangeType), nodes,
-        ((native || bezier) && !useDegrees) ? nullptr : deg);
-      it = bases.emplace(key, ok ? basis : hov::LagrangeBasis()).first;
+      BasisEntry entry;
+      if (!entry.Basis.Initialize(static_cast<hov::LagrangeShape>(lagrangeType), nodes,
+            ((native || bezier) && !useDegrees) ? nullptr : deg))
+      {
+        entry.Basis = hov::LagrangeBasis();
+      }
+      entry.Prepare();
+      it = bases.emplace(key, std::move(entry)).first;
     }
-    const hov::LagrangeBasis& basis = it->second;
+    const hov::LagrangeBasis& basis = it->second.Basis;
     // Cell scalars: the cell's value at each of its own (copied) nodes.
     const double cellValue = cellScalars ? PointValue(scalars, c, component) : 0.0;
     bool ok = basis.IsInitialized() && std::isfinite(cellValue);
@@ -249,7 +293,8 @@ vtkIdType hov::RayCastCells::Convert(
         s[k] = cellScalars ? cellValue : s[k];
       }
     }
-    if (CheckJacobian(basis, x.data(), type == VTK_PYRAMID || type == VTK_QUADRATIC_PYRAMID) <= 0)
+    const bool collapsed = type == VTK_PYRAMID || type == VTK_QUADRATIC_PYRAMID;
+    if (CheckJacobian(it->second, x.data(), collapsed) <= 0)
     {
       ++this->Inverted;
       continue;
