@@ -206,16 +206,6 @@ void FaceProblem::Crossing(double u, double v, FaceCrossing& out) const
   out.T = Dot(this->D, rel) / Dot(this->D, this->D);
 }
 
-void FaceProblem::Contact(double u, double v, FaceCrossing& out) const
-{
-  double h[2], jac[4], x[3];
-  out.U = u;
-  out.V = v;
-  this->Evaluate(u, v, h, jac, x, out.PC);
-  const double rel[3] = { x[0] - this->O[0], x[1] - this->O[1], x[2] - this->O[2] };
-  out.T = Dot(this->D, rel) / Dot(this->D, this->D);
-}
-
 int FinishSubPatch(const FaceProblem& prob, bool accepted, bool small, double u, double v,
   double cu, double cv, const double* const net[2], int n, const FaceSearchSettings& settings,
   FaceCrossing& c, std::vector<FaceCrossing>& out)
@@ -236,7 +226,8 @@ int FinishSubPatch(const FaceProblem& prob, bool accepted, bool small, double u,
   if (std::max(range[0].Hi - range[0].Lo, range[1].Hi - range[1].Lo) <=
     settings.GrazeTolerance * prob.Extent)
   {
-    prob.Contact(cu, cv, c);
+    prob.Crossing(cu, cv, c);
+    c.Side = 0; // a contact: no side
     out.push_back(c);
   }
   return 1;

@@ -66,9 +66,6 @@ struct FaceProblem
 
   /// The crossing at a converged (u, v): point, T, coordinates and Side on the exact map.
   void Crossing(double u, double v, FaceCrossing& out) const;
-
-  /// A contact at the resolution limit: the crossing at (u, v) on the exact map.
-  void Contact(double u, double v, FaceCrossing& out) const;
 };
 
 /**

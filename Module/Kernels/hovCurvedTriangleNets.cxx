@@ -1,11 +1,10 @@
 // Triangular Bernstein nets of the curved face search: see hovCurvedTriangleNets.h.
 #include "hovCurvedTriangleNets.h"
 
-#include "hovLagrangeBasis.h" // MaxLagrangeOrder
+#include "hovBernsteinFactors.h" // the triangle factor's conversion
+#include "hovLagrangeBasis.h"     // MaxLagrangeOrder
 
 #include <array>   // the per-degree tables
-#include <cmath>   // std::abs, std::pow
-#include <utility> // std::swap
 #include <vector>  // the tables
 
 namespace hov
@@ -18,43 +17,6 @@ constexpr int MaxDegree = 10;
 static_assert(MaxDegree >= MaxLagrangeOrder, "triangular nets up to the largest Lagrange order");
 constexpr int MaxSize = TriangleNetSize(MaxDegree);
 
-/// B^n_{ijk}(l0, l1, l2) for every i + j + k = n, at TriangleNetIndex(n, j, k)
-/// (the triangular recursion B^m_{ijk} = l0 B^{m-1}_{i-1,j,k} + l1 B^{m-1}_{i,j-1,k}
-/// + l2 B^{m-1}_{i,j,k-1}: no factorials, no cancellation for l in [0, 1]).
-void TriangleBasis(int n, double l0, double l1, double l2, double* b)
-{
-  double prev[MaxSize];
-  b[0] = 1.0;
-  for (int m = 1; m <= n; ++m)
-  {
-    const int size = TriangleNetSize(m - 1);
-    for (int q = 0; q < size; ++q)
-    {
-      prev[q] = b[q];
-    }
-    for (int j = 0; j <= m; ++j)
-    {
-      for (int k = 0; j + k <= m; ++k)
-      {
-        double s = 0.0;
-        if (j + k <= m - 1)
-        {
-          s += l0 * prev[TriangleNetIndex(m - 1, j, k)];
-        }
-        if (j > 0)
-        {
-          s += l1 * prev[TriangleNetIndex(m - 1, j - 1, k)];
-        }
-        if (k > 0)
-        {
-          s += l2 * prev[TriangleNetIndex(m - 1, j, k - 1)];
-        }
-        b[TriangleNetIndex(m, j, k)] = s;
-      }
-    }
-  }
-}
-
 /// m! / (i! j! k!) at TriangleNetIndex(m, j, k), i = m - j - k (built once).
 const double* Multinomials(int m)
 {
@@ -62,80 +24,35 @@ const double* Multinomials(int m)
     std::array<std::array<double, MaxSize>, MaxDegree + 1> t{};
     for (int d = 0; d <= MaxDegree; ++d)
     {
-      // B^d at l = (1, 1, 1) is the multinomial coefficient.
-      TriangleBasis(d, 1.0, 1.0, 1.0, t[d].data());
+      for (int j = 0; j <= d; ++j)
+      {
+        for (int k = 0; j + k <= d; ++k)
+        {
+          t[d][TriangleNetIndex(d, j, k)] =
+            Factorial(d) / (Factorial(d - j - k) * Factorial(j) * Factorial(k));
+        }
+      }
     }
     return t;
   }();
   return tables[m].data();
 }
 
-/// The inverse of the collocation matrix V[p][q] = B^n_q(point p) at the
-/// equispaced points, row-major (N x N, N = TriangleNetSize(n)); empty if singular.
-std::vector<double> ConversionMatrix(int n)
-{
-  const int size = TriangleNetSize(n);
-  std::vector<double> a(static_cast<size_t>(size) * size), inv(a.size(), 0.0);
-  for (int j = 0; j <= n; ++j)
-  {
-    for (int k = 0; j + k <= n; ++k)
-    {
-      const int p = TriangleNetIndex(n, j, k);
-      const double u = static_cast<double>(j) / n, v = static_cast<double>(k) / n;
-      TriangleBasis(n, 1.0 - u - v, u, v, &a[static_cast<size_t>(p) * size]);
-      inv[static_cast<size_t>(p) * size + p] = 1.0;
-    }
-  }
-  // Gauss-Jordan with partial pivoting: [V | I] -> [I | V^-1].
-  for (int c = 0; c < size; ++c)
-  {
-    int pivot = c;
-    for (int r = c + 1; r < size; ++r)
-    {
-      pivot = std::abs(a[static_cast<size_t>(r) * size + c]) >
-          std::abs(a[static_cast<size_t>(pivot) * size + c])
-        ? r
-        : pivot;
-    }
-    if (!(std::abs(a[static_cast<size_t>(pivot) * size + c]) > 0.0))
-    {
-      return {};
-    }
-    for (int q = 0; q < size; ++q)
-    {
-      std::swap(a[static_cast<size_t>(c) * size + q], a[static_cast<size_t>(pivot) * size + q]);
-      std::swap(inv[static_cast<size_t>(c) * size + q], inv[static_cast<size_t>(pivot) * size + q]);
-    }
-    const double d = a[static_cast<size_t>(c) * size + c];
-    for (int q = 0; q < size; ++q)
-    {
-      a[static_cast<size_t>(c) * size + q] /= d;
-      inv[static_cast<size_t>(c) * size + q] /= d;
-    }
-    for (int r = 0; r < size; ++r)
-    {
-      const double f = a[static_cast<size_t>(r) * size + c];
-      if (r == c || f == 0.0)
-      {
-        continue;
-      }
-      for (int q = 0; q < size; ++q)
-      {
-        a[static_cast<size_t>(r) * size + q] -= f * a[static_cast<size_t>(c) * size + q];
-        inv[static_cast<size_t>(r) * size + q] -= f * inv[static_cast<size_t>(c) * size + q];
-      }
-    }
-  }
-  return inv;
-}
-
+/// The triangle factor's conversion from equispaced values (hovBernsteinFactors.h:
+/// its multi-indices (a, b) are the powers of u and v in TriangleNetIndex
+/// order), per degree, in double; empty if singular. Built once.
 const std::vector<double>& Conversion(int n)
 {
   static const std::array<std::vector<double>, MaxDegree + 1> tables = [] {
     std::array<std::vector<double>, MaxDegree + 1> t;
     for (int d = 1; d <= MaxDegree; ++d)
     {
-      t[d] = ConversionMatrix(d);
+      std::vector<std::array<int, 3>> indices;
+      std::vector<long double> m, inverse;
+      if (EquispacedFactorMatrices(FactorShape{ 2, d }, indices, m, inverse))
+      {
+        t[d].assign(inverse.begin(), inverse.end());
+      }
     }
     return t;
   }();

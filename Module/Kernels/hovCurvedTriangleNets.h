@@ -36,8 +36,9 @@ constexpr int TriangleNetIndex(int n, int j, int k)
  * whose values at the equispaced points (u, v) = (j / n, k / n) are
  * values[stride * TriangleNetIndex(n, j, k) + c], c < @p dim, into
  * out[dim * TriangleNetIndex(n, j, k) + c] (out and values distinct). The
- * conversion is the inverse of the collocation matrix, computed once per degree
- * by Gaussian elimination with partial pivoting. False for n outside [1, 10].
+ * conversion is the triangle factor's inverse collocation matrix of
+ * hovBernsteinFactors.h (the field hull's), computed once per degree. False
+ * for n outside [1, 10].
  */
 bool EquispacedTriangleBernstein(int n, const double* values, int stride, int dim, double* out);
 

@@ -1,6 +1,8 @@
 // Bernstein-Bezier hull of a Lagrange cell's field: see hovLagrangeHull.h.
 #include "hovLagrangeHull.h"
 
+#include "hovBernsteinFactors.h" // the factors' bases and conversions
+
 #include <algorithm> // std::max, std::min, std::swap, std::find
 #include <array>     // factor multi-indices
 #include <cmath>     // std::abs
@@ -8,118 +10,10 @@
 
 namespace hov
 {
+using namespace detail;
 namespace
 {
 constexpr double Eps = std::numeric_limits<double>::epsilon();
-
-double Factorial(int n)
-{
-  double f = 1.0;
-  for (int k = 2; k <= n; ++k)
-  {
-    f *= k;
-  }
-  return f;
-}
-
-double Power(double x, int k)
-{
-  double p = 1.0;
-  for (int i = 0; i < k; ++i)
-  {
-    p *= x;
-  }
-  return p;
-}
-
-/// Inverts the n x n row-major @p m in place (Gauss-Jordan, partial pivoting,
-/// long double); false if singular.
-bool Invert(std::vector<long double>& m, int n)
-{
-  const auto at = [n](int r, int c) { return static_cast<size_t>(r) * n + c; };
-  std::vector<long double> inv(static_cast<size_t>(n) * n, 0.0L);
-  for (int i = 0; i < n; ++i)
-  {
-    inv[at(i, i)] = 1.0L;
-  }
-  for (int c = 0; c < n; ++c)
-  {
-    int pivot = c;
-    for (int r = c + 1; r < n; ++r)
-    {
-      pivot = std::abs(m[at(r, c)]) > std::abs(m[at(pivot, c)]) ? r : pivot;
-    }
-    const long double p = m[at(pivot, c)];
-    if (p == 0.0L)
-    {
-      return false;
-    }
-    for (int k = 0; k < n && pivot != c; ++k)
-    {
-      std::swap(m[at(pivot, k)], m[at(c, k)]);
-      std::swap(inv[at(pivot, k)], inv[at(c, k)]);
-    }
-    for (int k = 0; k < n; ++k)
-    {
-      m[at(c, k)] /= p;
-      inv[at(c, k)] /= p;
-    }
-    for (int r = 0; r < n; ++r)
-    {
-      const long double f = m[at(r, c)];
-      for (int k = 0; r != c && f != 0.0L && k < n; ++k)
-      {
-        m[at(r, k)] -= f * m[at(c, k)];
-        inv[at(r, k)] -= f * inv[at(c, k)];
-      }
-    }
-  }
-  m.swap(inv);
-  return true;
-}
-
-/// The factors of a shape: kind (3: tetrahedron, 2: triangle, 1: line) and order.
-struct FactorShape
-{
-  int Kind, Order;
-  int Size() const
-  {
-    const int p = this->Order;
-    return this->Kind == 3 ? (p + 1) * (p + 2) * (p + 3) / 6
-      : this->Kind == 2    ? (p + 1) * (p + 2) / 2
-                           : p + 1;
-  }
-  /// The multi-indices of the factor's basis, in a fixed order.
-  void Indices(std::vector<std::array<int, 3>>& out) const
-  {
-    out.clear();
-    const int p = this->Order;
-    for (int a = 0; a <= p; ++a)
-      for (int b = 0; b <= (this->Kind >= 2 ? p - a : 0); ++b)
-        for (int c = 0; c <= (this->Kind == 3 ? p - a - b : 0); ++c)
-          out.push_back({ a, b, c });
-  }
-  /// Bernstein function with multi-index @p m at coordinates @p x.
-  double Function(const std::array<int, 3>& m, const double* x) const
-  {
-    const int p = this->Order;
-    if (this->Kind == 1)
-    {
-      return Factorial(p) / (Factorial(m[0]) * Factorial(p - m[0])) * Power(x[0], m[0]) *
-        Power(1.0 - x[0], p - m[0]);
-    }
-    const int dims = this->Kind;
-    double last = 1.0, v = Factorial(p);
-    int rest = p;
-    for (int d = 0; d < dims; ++d)
-    {
-      last -= x[d];
-      rest -= m[d];
-      v *= Power(x[d], m[d]) / Factorial(m[d]);
-    }
-    return v * Power(last, rest) / Factorial(rest);
-  }
-};
 
 /// Factors of @p basis, the parametric coordinates each reads (first index), and
 /// the factor multi-index of every node.
@@ -182,23 +76,9 @@ bool LagrangeHull::Initialize(const LagrangeBasis& basis)
   for (int d = 0; d < nf; ++d)
   {
     const int n = shapes[d].Size();
-    shapes[d].Indices(indices[d]);
     // M[j][a] = B_a(x_j), x_j the factor's equispaced nodes (multi-index j / order).
-    std::vector<long double> m(static_cast<size_t>(n) * n);
-    for (int j = 0; j < n; ++j)
-    {
-      double x[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        x[k] = static_cast<double>(indices[d][j][k]) / shapes[d].Order;
-      }
-      for (int a = 0; a < n; ++a)
-      {
-        m[static_cast<size_t>(j) * n + a] = shapes[d].Function(indices[d][a], x);
-      }
-    }
-    const std::vector<long double> original = m;
-    if (!Invert(m, n))
+    std::vector<long double> original, m;
+    if (!EquispacedFactorMatrices(shapes[d], indices[d], original, m))
     {
       return false;
     }
