@@ -195,11 +195,12 @@ SegmentBatch::ThinArrays SegmentBatch::ThinLanes(int n)
   {
     this->ThinTerms.resize(stride);
     this->Order.resize(stride);
+    this->Pending.resize(stride);
   }
   double* f = this->ThinStore.data();
   return ThinArrays{ f, f + stride, f + 2 * stride, f + 3 * stride, f + 4 * stride,
     f + 5 * stride, f + 6 * stride, f + 7 * stride, f + 8 * stride, f + 9 * stride,
-    this->ThinTerms.data() };
+    this->ThinTerms.data(), this->Pending.data(), &this->NumPending };
 }
 
 /// EvaluateSegments() (lane i for segment i), then EvaluatePiece() for the
@@ -210,6 +211,7 @@ void SegmentBatch::EvaluateLanes(const TransferFunction& tf,
   (void)settings; // Williams-Max, exact (see Integrate())
   const ThinArrays t = this->ThinLanes(count + this->NumPieces);
   const detail::ThinTermByExponent& thinTerms = detail::ThinTerms();
+  this->NumPending = 0;
   EvaluateSegments(tf, this->Resolved.data(), Skip, jobs, count, t, out);
   const Piece* __restrict pieces = this->Pieces.data();
   for (int m = 0; m < this->NumPieces; ++m)
@@ -220,21 +222,24 @@ void SegmentBatch::EvaluateLanes(const TransferFunction& tf,
 }
 
 /**
- * The thin lanes of the @p n pieces grouped by number of terms (counting
- * sort), their depths contiguous, then each group Lanes at a time (lanes are
- * independent: the grouping does not change any result). The weights W and
- * alpha, in that order, overwrite A and D1 (copied before).
+ * The pending thin lanes (ThinArrays::Pending, of the @p n pieces) grouped by
+ * number of terms (counting sort, stable), their depths contiguous, then each
+ * group Lanes at a time (lanes are independent: the grouping does not change
+ * any result). The weights W and alpha, in that order, overwrite A and D1
+ * (copied before).
  */
 void SegmentBatch::ThinSeries(int n)
 {
   constexpr int maxOrder = detail::MaxThinOrder;
   const ThinArrays t = this->ThinLanes(n);
+  const int* __restrict pending = t.Pending;
+  const int numPending = this->NumPending;
   // Counts per number of terms, in two interleaved tables (no chain of
   // increments of one counter through memory).
   int counts[2][maxOrder + 2] = {};
-  for (int m = 0; m < n; ++m)
+  for (int i = 0; i < numPending; ++i)
   {
-    ++counts[m & 1][t.Terms[m]];
+    ++counts[i & 1][t.Terms[pending[i]]];
   }
   int* __restrict start = this->GroupStart;
   start[0] = 0;
@@ -247,16 +252,13 @@ void SegmentBatch::ThinSeries(int n)
   double* __restrict sa = t.SortedA;
   double* __restrict sd = t.SortedD1;
   int* __restrict order = this->Order.data();
-  for (int m = 0; m < n; ++m)
+  for (int i = 0; i < numPending; ++i)
   {
-    const int terms = t.Terms[m];
-    if (terms > 0)
-    {
-      const int pos = next[terms]++;
-      order[pos] = m;
-      sa[pos] = t.A[m];
-      sd[pos] = t.D1[m];
-    }
+    const int m = pending[i];
+    const int pos = next[t.Terms[m]]++;
+    order[pos] = m;
+    sa[pos] = t.A[m];
+    sd[pos] = t.D1[m];
   }
   const int numThin = start[maxOrder + 1];
   for (int l = 0; l < Lanes; ++l)

@@ -7,11 +7,15 @@
  * Why: the thin-segment series of hovSegmentIntegral (the common case for fine
  * meshes) is a chain of dependent multiply-adds; one segment at a time the CPU
  * waits on each step's latency. Segments of different pixels are independent,
- * so SegmentBatch evaluates them side by side: thin Williams-Max segments are
- * grouped by their number of series terms (hov::detail::ThinTerms, the count
- * the scalar kernel uses) and evaluated four at a time, lane by lane with
- * exactly the scalar kernel's operations in the scalar kernel's order, so the
- * result does not change in any bit (no fused multiply-add is introduced: the
+ * so SegmentBatch evaluates them side by side, four at a time, lane by lane
+ * with exactly the scalar kernel's operations in the scalar kernel's order, so
+ * the result does not change in any bit. Four consecutive thin segments of one
+ * interior interval (the common case: neighbouring pixels of one cell) are
+ * finished in registers, transfer function to RGBA, with the largest number of
+ * series terms among them (hov::detail::ThinTerms, the count the scalar kernel
+ * uses) and each lane's extra terms replaced by exact zeros, which leaves every
+ * lane's bits unchanged; the other thin segments are grouped by their number of
+ * terms and evaluated four at a time (no fused multiply-add is introduced: the
  * module targets baseline x86-64 and the extra AVX2 clone does not enable FMA;
  * note that GCC contracts a*b+c even under -std=c++17 wherever FMA is enabled,
  * e.g. with -march=native).
@@ -88,12 +92,16 @@ public:
 
   /// The pieces as lanes for the thin series (index = lane: segment i, then
   /// the pieces of split segments): depths, colours at both ends, number of
-  /// terms (0: not thin); and the thin ones sorted by number of terms
-  /// (index = position in Order).
+  /// terms; the thin lanes left for the sorted series, in increasing order
+  /// (Pending[0, *NumPending): the lane kernels finish most blocks of four
+  /// themselves); and those sorted by number of terms (index = position in
+  /// Order).
   struct ThinArrays
   {
     double *A, *D1, *FrontR, *FrontG, *FrontB, *BackR, *BackG, *BackB, *SortedA, *SortedD1;
     int* Terms;
+    int* Pending;
+    int* NumPending;
   };
 
 private:
@@ -139,6 +147,8 @@ private:
   std::vector<RGBA> SplitOut;    ///< per piece: its RGBA
   std::vector<double> ThinStore; ///< the ThinArrays' doubles, one array after the other
   std::vector<int> ThinTerms;    ///< their Terms
+  std::vector<int> Pending;      ///< ThinArrays::Pending
+  int NumPending = 0;
   int GroupStart[24] = {};       ///< first position in Order per number of terms
   std::vector<int> Order;        ///< thin lanes grouped by number of terms
   std::vector<double> JobS, JobL;        ///< SegmentJob input as arrays

@@ -62,17 +62,74 @@ inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const d
 }
 
 /**
- * EvaluatePiece() for the Lanes segments from @p i, all in the same
- * interior interval @p k (0 <= k < n - 1), side by side: per lane
+ * ThinWilliamsMaxSeries<N>() (hovThinSeries.h) of four lanes that need
+ * different numbers of terms, @p terms[l] <= N for lane l: term n of a lane
+ * with fewer than n terms is replaced by an exact zero, so its chains stay
+ * +0 (+0 * d2 + 0, with d2 >= 0) until its own first term, where they become
+ * exactly what the scalar kernel's chains start with (0 * d2 + h). Each lane
+ * therefore equals the scalar kernel with its own number of terms, bit for
+ * bit, and a block of mixed term counts needs no sorting.
+ */
+template <int N>
+inline __attribute__((always_inline)) void ThinWilliamsMaxMasked(
+  const V4& a, const V4& d1, const V4& terms, V4& w, V4& alpha)
+{
+  const V4 zero = {};
+  const V4 r = a / d1;
+  const V4 d2 = d1 * d1;
+  V4 wOdd = zero, wEven = zero, aOdd = zero, aEven = zero;
+#pragma GCC unroll 16
+  for (int n = N; n >= 1; --n)
+  {
+    const double* p = Thin.P0[n];
+    V4 h = zero + p[0];
+#pragma GCC unroll 16
+    for (int j = 1; j <= n; ++j)
+    {
+      h = h * r + p[j];
+    }
+    const auto use = static_cast<double>(n) <= terms;
+    h = use ? h : zero;
+    const V4 f = use ? zero + Thin.InvFactorial[n] : zero;
+    if (n % 2)
+    {
+      wOdd = wOdd * d2 + h;
+      aOdd = aOdd * d2 + f;
+    }
+    else
+    {
+      wEven = wEven * d2 + h;
+      aEven = aEven * d2 + f;
+    }
+  }
+  w = d1 * wOdd - d2 * wEven;
+  alpha = d1 * aOdd - d2 * aEven;
+}
+
+/// ThinWilliamsMaxMasked<N>() for the run-time N = @p most (1..MaxThinOrder).
+template <int... N>
+inline __attribute__((always_inline)) void ThinMaskedDispatch(int most, const V4& a,
+  const V4& d1, const V4& terms, V4& w, V4& alpha, std::integer_sequence<int, N...>)
+{
+  (void)((most == N + 1 ? (ThinWilliamsMaxMasked<N + 1>(a, d1, terms, w, alpha), true)
+                        : false) ||
+    ...);
+}
+
+/**
+ * EvaluatePiece() and the thin series for the Lanes segments from @p i, all
+ * in the same interior interval @p k (0 <= k < n - 1), side by side: per lane
  * TransferFunction::Evaluate()'s operations on node k, then the depths and
  * the thin test (std::min/max as (b < a ? b : a)/(a < b ? b : a), isfinite as
- * x - x == 0), so each lane's values are the scalar code's. Writes the lanes
- * and returns true only if every segment is valid and thin (the caller takes
- * the others one by one).
+ * x - x == 0), the series with each lane's own number of terms
+ * (ThinWilliamsMaxMasked) and WriteThin()'s weights and colours, so each
+ * lane's RGBA is the scalar code's. Writes @p out and returns true only if
+ * every segment is valid and thin (the caller takes the others one by one):
+ * nothing of these lanes is left for the sorted series.
  */
 inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction& tf, int k,
   const SegmentBatch::Arrays& jobs, int i, const ThinTermByExponent& thinTerms,
-  const SegmentBatch::ThinArrays& t)
+  const SegmentBatch::ThinArrays& t, RGBA* out)
 {
   const double* x = tf.GetNodes().data();
   const double x0 = x[k], width = x[k + 1] - x[k];
@@ -101,22 +158,32 @@ inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction&
   {
     return false;
   }
-  std::memcpy(t.A + i, &a, sizeof(V4));
-  std::memcpy(t.D1 + i, &d1, sizeof(V4));
+  int most = 0;
+  V4 terms;
+  for (int l = 0; l < Lanes; ++l)
+  {
+    const int n = thinTerms(d1[l]);
+    terms[l] = n;
+    most = std::max(most, n);
+  }
+  V4 w, alpha;
+  ThinMaskedDispatch(most, a, d1, terms, w, alpha, std::make_integer_sequence<int, MaxThinOrder>());
+  // WriteThin(): wf = std::max(0.0, w), wb = std::max(0.0, alpha - w).
+  const V4 back = alpha - w;
+  const V4 wf = 0.0 < w ? w : zero;
+  const V4 wb = 0.0 < back ? back : zero;
   const double base[3] = { node.R, node.G, node.B };
   const double slope[3] = { node.DR, node.DG, node.DB };
-  double* front[3] = { t.FrontR, t.FrontG, t.FrontB };
-  double* back[3] = { t.BackR, t.BackG, t.BackB };
+  V4 rgb[3];
   for (int ch = 0; ch < 3; ++ch)
   {
     const V4 f = base[ch] + slope[ch] * ds0;
     const V4 b = base[ch] + slope[ch] * ds1;
-    std::memcpy(front[ch] + i, &f, sizeof(V4));
-    std::memcpy(back[ch] + i, &b, sizeof(V4));
+    rgb[ch] = wf * f + wb * b;
   }
   for (int l = 0; l < Lanes; ++l)
   {
-    t.Terms[i + l] = thinTerms(d1[l]);
+    out[i + l] = RGBA{ rgb[0][l], rgb[1][l], rgb[2][l], alpha[l] };
   }
   return true;
 }
@@ -147,7 +214,6 @@ inline __attribute__((always_inline)) void EvaluateSegment(const TransferFunctio
     {
       out[i] = RGBA();
     }
-    t.Terms[i] = 0;
     return;
   }
   EvaluatePiece(tf, resolved[i], s0, s1, length, thinTerms, t, i, out[i]);
@@ -166,7 +232,7 @@ void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
   {
     const int k = resolved[i];
     const bool same = (resolved[i + 1] == k) & (resolved[i + 2] == k) & (resolved[i + 3] == k);
-    if (same && k >= 0 && k <= last && EvaluateBlock(tf, k, jobs, i, thinTerms, t))
+    if (same && k >= 0 && k <= last && EvaluateBlock(tf, k, jobs, i, thinTerms, t, out))
     {
       continue;
     }

@@ -34,8 +34,8 @@ constexpr int Lanes = 4;
  * IntegrateLinearScalarInInterval() -> IntegrateSegment() ->
  * ExactSegmentWeights() for one piece (valid: length > 0, finite ends),
  * taking the thin branch aside for the lanes: a thin piece's depths, colours
- * and number of terms go to lane @p m of @p t, any other piece is integrated
- * here by the scalar kernel into @p dest (its Terms 0).
+ * and number of terms go to lane @p m of @p t (appended to its Pending lanes),
+ * any other piece is integrated here by the scalar kernel into @p dest.
  */
 inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction& tf, int k,
   double s0, double s1, double length, const ThinTermByExponent& thinTerms,
@@ -55,12 +55,12 @@ inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction&
     // Copies: the ends above stay in registers (their address would escape).
     const SegmentEnd front = f, back = b;
     dest = IntegrateSegment(length, front, back, EmissionModel::WilliamsMax, SegmentMethod::Exact);
-    t.Terms[m] = 0;
     return;
   }
   t.A[m] = a;
   t.D1[m] = d1;
   t.Terms[m] = thinTerms(d1);
+  t.Pending[(*t.NumPending)++] = m;
   t.FrontR[m] = f.Color[0];
   t.FrontG[m] = f.Color[1];
   t.FrontB[m] = f.Color[2];

@@ -155,3 +155,32 @@ TEST(SegmentBatch, ThinSegmentsOfEveryTermCount)
   hov::SegmentBatch batch;
   ExpectSameAsScalar(tf, hov::IntegrationSettings(), jobs, batch);
 }
+
+TEST(SegmentBatch, BlocksMixingFarApartTermCounts)
+{
+  // The lane kernel evaluates a block of four thin segments with the largest
+  // number of terms among them, each lane's extra terms replaced by exact
+  // zeros: a lane of one term beside one of thirteen must still equal the
+  // scalar kernel with its own count. Depths drawn independently, log-uniform
+  // over [1e-20, 0.25], so blocks span far-apart counts; one interval known.
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = hov::OpacitySemantics::RawExtinction;
+  spec.Color = { { 0.0, 0.0, 0.5, 1.0 }, { 1.0, 1.0, 0.5, 0.0 } };
+  spec.Opacity = { { 0.0, 0.2 }, { 1.0, 1.0 } };
+  hov::TransferFunction tf;
+  tf.Build(spec);
+  std::mt19937_64 rng(20261203);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<hov::SegmentJob> jobs;
+  for (int i = 0; i < 4000; ++i)
+  {
+    hov::SegmentJob job;
+    job.SFront = u(rng);
+    job.SBack = u(rng);
+    job.Length = std::pow(10.0, -20.0 + 19.4 * u(rng)); // tau in [0.2, 1]
+    job.Interval = 0;
+    jobs.push_back(job);
+  }
+  hov::SegmentBatch batch;
+  ExpectSameAsScalar(tf, hov::IntegrationSettings(), jobs, batch);
+}
