@@ -46,6 +46,7 @@ inline int FindInterval(const TransferFunction& tf, double s, bool up, int inter
   }
   return k;
 }
+
 }
 
 long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,
@@ -135,10 +136,28 @@ long long SegmentBatch::ResolveIntervals(
   const std::vector<double>& nodes = tf.GetNodes();
   const int n = static_cast<int>(nodes.size());
   long long total = count;
+  // Blocks of four unknown ones at once where the function is small
+  // (CountIntervals(): the interval, or NeedsSplit and where the split starts).
+  if (this->SplitStart.size() < static_cast<size_t>(count))
+  {
+    this->SplitStart.resize(count); // grows only
+  }
+  if (n > 0 && n <= detail::MaxCountedNodes)
+  {
+    detail::CountIntervals(nodes.data(), n, jobs, count, resolved, this->SplitStart.data());
+  }
   for (int i = 0; i < count; ++i)
   {
     if (resolved[i] >= -1)
     {
+      continue;
+    }
+    if (resolved[i] == detail::NeedsSplit)
+    {
+      resolved[i] = Skip;
+      this->SplitSegment(
+        tf, i, this->SplitStart[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i]);
+      --total; // counted when composited
       continue;
     }
     const double sFront = jobs.SFront[i], sBack = jobs.SBack[i], length = jobs.Length[i];

@@ -78,6 +78,24 @@ inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction&
 HOV_LANES_HIDDEN void ThinWilliamsMaxBlocks(
   int terms, const double* a, const double* d1, int blocks, double* w, double* alpha);
 
+/// Transfer functions of at most this many nodes take CountIntervals().
+constexpr int MaxCountedNodes = 16;
+/// CountIntervals()' mark of a segment that crosses a node.
+constexpr int NeedsSplit = -2000000;
+
+/**
+ * The start interval of every block of Lanes segments from a multiple of
+ * Lanes that are all of unknown interval (< -1 in @p resolved) and valid
+ * (length > 0, finite ends), for a function of @p n <= MaxCountedNodes nodes
+ * @p x: resolved[i] becomes that interval if the segment stays in it, else
+ * NeedsSplit with the interval in @p splitStart[i]; other segments are left
+ * as they are. The same intervals as the search from any start
+ * (FindIntervalUpward / Downward) and the same one-piece test, by counting
+ * nodes (see the definition).
+ */
+HOV_LANES_HIDDEN void CountIntervals(const double* x, int n, const SegmentBatch::Arrays& jobs,
+  int count, int* resolved, int* splitStart);
+
 /**
  * EvaluatePiece() for the resolved segments (lane i for segment i;
  * resolved[i] == @p skip: none), Lanes at a time where they share an
