@@ -57,11 +57,13 @@ __attribute__((always_inline)) inline void ClipPixelLanes(const CellRecord& cell
   std::memcpy(out.Length + q, &vLength, sizeof(V));
   if (out.Pixel)
   {
-    for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
-    {
-      out.Pixel[q + l] = static_cast<int>(p) + l;
-      out.Interval[q + l] = cell.Interval;
-    }
+    // Four ints per store (a V2 block writes two lanes more: the arrays are
+    // padded, and the next block or span overwrites them).
+    typedef int I4 __attribute__((vector_size(4 * sizeof(int))));
+    const I4 pixel = I4{ 0, 1, 2, 3 } + static_cast<int>(p);
+    const I4 interval = I4{} + cell.Interval;
+    std::memcpy(out.Pixel + q, &pixel, sizeof(I4));
+    std::memcpy(out.Interval + q, &interval, sizeof(I4));
   }
   all &= ((vIn < vOut) & ~parallel) | pastEnd;
 }

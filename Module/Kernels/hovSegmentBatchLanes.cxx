@@ -63,8 +63,9 @@ inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const d
 
 /**
  * ThinWilliamsMaxSeries<N>() (hovThinSeries.h) of four lanes that need
- * different numbers of terms, @p terms[l] <= N for lane l: term n of a lane
- * with fewer than n terms is replaced by an exact zero, so its chains stay
+ * different numbers of terms, at most N: lane l takes term n iff
+ * @p atLeast[n] <= d1[l] (ThinTermByExponent::AtLeast: iff it has n terms or
+ * more). Term n of a lane with fewer than n terms is replaced by an exact zero, so its chains stay
  * +0 (+0 * d2 + 0, with d2 >= 0) until its own first term, where they become
  * exactly what the scalar kernel's chains start with (0 * d2 + h). Each lane
  * therefore equals the scalar kernel with its own number of terms, bit for
@@ -72,7 +73,7 @@ inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const d
  */
 template <int N>
 inline __attribute__((always_inline)) void ThinWilliamsMaxMasked(
-  const V4& a, const V4& d1, const V4& terms, V4& w, V4& alpha)
+  const V4& a, const V4& d1, const double* atLeast, V4& w, V4& alpha)
 {
   const V4 zero = {};
   const V4 r = a / d1;
@@ -88,7 +89,7 @@ inline __attribute__((always_inline)) void ThinWilliamsMaxMasked(
     {
       h = h * r + p[j];
     }
-    const auto use = static_cast<double>(n) <= terms;
+    const auto use = atLeast[n] <= d1;
     h = use ? h : zero;
     const V4 f = use ? zero + Thin.InvFactorial[n] : zero;
     if (n % 2)
@@ -109,9 +110,9 @@ inline __attribute__((always_inline)) void ThinWilliamsMaxMasked(
 /// ThinWilliamsMaxMasked<N>() for the run-time N = @p most (1..MaxThinOrder).
 template <int... N>
 inline __attribute__((always_inline)) void ThinMaskedDispatch(int most, const V4& a,
-  const V4& d1, const V4& terms, V4& w, V4& alpha, std::integer_sequence<int, N...>)
+  const V4& d1, const double* atLeast, V4& w, V4& alpha, std::integer_sequence<int, N...>)
 {
-  (void)((most == N + 1 ? (ThinWilliamsMaxMasked<N + 1>(a, d1, terms, w, alpha), true)
+  (void)((most == N + 1 ? (ThinWilliamsMaxMasked<N + 1>(a, d1, atLeast, w, alpha), true)
                         : false) ||
     ...);
 }
@@ -158,16 +159,11 @@ inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction&
   {
     return false;
   }
-  int most = 0;
-  V4 terms;
-  for (int l = 0; l < Lanes; ++l)
-  {
-    const int n = thinTerms(d1[l]);
-    terms[l] = n;
-    most = std::max(most, n);
-  }
+  // The block's number of terms: that of its deepest lane (the count grows with d1).
+  const double deepest = std::max(std::max(d1[0], d1[1]), std::max(d1[2], d1[3]));
   V4 w, alpha;
-  ThinMaskedDispatch(most, a, d1, terms, w, alpha, std::make_integer_sequence<int, MaxThinOrder>());
+  ThinMaskedDispatch(thinTerms(deepest), a, d1, thinTerms.AtLeast, w, alpha,
+    std::make_integer_sequence<int, MaxThinOrder>());
   // WriteThin(): wf = std::max(0.0, w), wb = std::max(0.0, alpha - w).
   const V4 back = alpha - w;
   const V4 wf = 0.0 < w ? w : zero;

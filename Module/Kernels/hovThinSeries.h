@@ -164,12 +164,27 @@ struct ThinTermByExponent
 {
   static constexpr int Lowest = 1023 - 80; // below 2^-80 one term is exact
   int Terms[1023 - Lowest] = {};
+  /// AtLeast[n]: the smallest d1 with at least n terms (a power of two, the
+  /// first with its exponent), so n <= operator()(d1) iff AtLeast[n] <= d1 for
+  /// 2 <= n <= MaxThinOrder and 0 < d1 <= ThinDepth (+inf if no such d1).
+  double AtLeast[MaxThinOrder + 1] = {};
   ThinTermByExponent()
   {
     const ThinTermTable table;
     for (int e = Lowest; e < 1023; ++e)
     {
       this->Terms[e - Lowest] = table.Terms(std::ldexp(1.0, e - 1023 + 1));
+    }
+    for (int n = 0; n <= MaxThinOrder; ++n)
+    {
+      this->AtLeast[n] = n <= 1 ? 0.0 : 1e300 * 1e300;
+      for (int e = 1022; e >= Lowest && n > 1; --e)
+      {
+        if (this->Terms[e - Lowest] >= n)
+        {
+          this->AtLeast[n] = std::ldexp(1.0, e - 1023); // the binade's first value
+        }
+      }
     }
   }
   int operator()(double d1) const

@@ -8,6 +8,7 @@
 #include "hovSegmentBatch.h"
 
 #include "hovRayIntegrator.h"
+#include "hovThinSeries.h" // ThinTerms, AtLeast
 #include "hovTransferFunction.h"
 
 #include <gtest/gtest.h>
@@ -183,4 +184,40 @@ TEST(SegmentBatch, BlocksMixingFarApartTermCounts)
   }
   hov::SegmentBatch batch;
   ExpectSameAsScalar(tf, hov::IntegrationSettings(), jobs, batch);
+}
+
+TEST(SegmentBatch, TermThresholdsMatchTermCounts)
+{
+  // The lane kernel decides "lane takes term n" by d1 >= AtLeast[n] instead
+  // of looking up each lane's count: both must agree for every depth a thin
+  // segment can have, binade edges included.
+  const hov::detail::ThinTermByExponent& terms = hov::detail::ThinTerms();
+  std::vector<double> depths{ std::numeric_limits<double>::denorm_min(), 1e-300, 0.25 };
+  for (int e = -90; e <= -2; ++e)
+  {
+    const double p = std::ldexp(1.0, e);
+    depths.insert(depths.end(), { std::nextafter(p, 0.0), p, std::nextafter(p, 1.0), 1.5 * p });
+  }
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-25.0, std::log10(0.25));
+  for (int i = 0; i < 20000; ++i)
+  {
+    depths.push_back(std::pow(10.0, u(rng)));
+  }
+  int checked = 0;
+  for (const double d1 : depths)
+  {
+    if (!(d1 > 0.0 && d1 <= hov::detail::ThinDepth))
+    {
+      continue;
+    }
+    const int count = terms(d1);
+    ASSERT_GE(count, 1);
+    for (int n = 1; n <= hov::detail::MaxThinOrder; ++n)
+    {
+      ASSERT_EQ(n <= count, terms.AtLeast[n] <= d1) << "d1 " << d1 << ", n " << n;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 300000);
 }
