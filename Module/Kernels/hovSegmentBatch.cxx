@@ -121,14 +121,16 @@ long long SegmentBatch::ResolveIntervals(
   this->NumPieces = 0;
   this->Splits.clear();
   this->SplitOut.clear();
+  // Known intervals as they are (EvaluateSegments() checks those segments);
+  // blocks of four unknown ones counted (CountIntervals(): the interval, or
+  // NeedsSplit and where the split starts); the others searched here.
   if (this->Resolved.size() < static_cast<size_t>(count))
   {
     this->Resolved.resize(count); // grows only: none in steady state
+    this->SplitStart.resize(count);
+    this->Left.resize(count);
   }
-  // Known intervals as they are (EvaluateSegments() checks those segments);
-  // the others searched here.
   int* __restrict resolved = this->Resolved.data();
-  std::copy(jobs.Interval, jobs.Interval + count, resolved);
   if (pieces)
   {
     std::fill(pieces, pieces + count, 1);
@@ -136,22 +138,12 @@ long long SegmentBatch::ResolveIntervals(
   const std::vector<double>& nodes = tf.GetNodes();
   const int n = static_cast<int>(nodes.size());
   long long total = count;
-  // Blocks of four unknown ones at once where the function is small
-  // (CountIntervals(): the interval, or NeedsSplit and where the split starts).
-  if (this->SplitStart.size() < static_cast<size_t>(count))
+  const int* left = this->Left.data();
+  const int numLeft = detail::CountIntervals(
+    nodes.data(), n, jobs, count, resolved, this->SplitStart.data(), this->Left.data());
+  for (int j = 0; j < numLeft; ++j)
   {
-    this->SplitStart.resize(count); // grows only
-  }
-  if (n > 0 && n <= detail::MaxCountedNodes)
-  {
-    detail::CountIntervals(nodes.data(), n, jobs, count, resolved, this->SplitStart.data());
-  }
-  for (int i = 0; i < count; ++i)
-  {
-    if (resolved[i] >= -1)
-    {
-      continue;
-    }
+    const int i = left[j];
     if (resolved[i] == detail::NeedsSplit)
     {
       resolved[i] = Skip;

@@ -142,6 +142,7 @@ private:
 
   std::vector<int> Resolved; ///< per segment: its interval, or Skip
   std::vector<int> SplitStart; ///< per segment to split: the interval it starts in
+  std::vector<int> Left;       ///< the segments whose interval is still to be found
   std::vector<Piece> Pieces;
   int NumPieces = 0;
   std::vector<Split> Splits;

@@ -206,23 +206,34 @@ void ThinWilliamsMaxBlocks(
  * branch per segment. Compiled also for AVX2.
  */
 HOV_LANES_TARGET_CLONES
-void CountIntervals(const double* x, int n, const SegmentBatch::Arrays& jobs, int count,
-  int* resolved, int* splitStart)
+int CountIntervals(const double* x, int n, const SegmentBatch::Arrays& jobs, int count,
+  int* resolved, int* splitStart, int* left)
 {
-  for (int i = 0; i + Lanes <= count; i += Lanes)
+  int numLeft = 0;
+  int i = 0;
+  for (; i + Lanes <= count; i += Lanes)
   {
-    const int* r = resolved + i;
-    if (!((r[0] < -1) & (r[1] < -1) & (r[2] < -1) & (r[3] < -1)))
+    const int* interval = jobs.Interval + i;
+    std::memcpy(resolved + i, interval, Lanes * sizeof(int));
+    const int unknown = (interval[0] < -1) + (interval[1] < -1) + (interval[2] < -1) +
+      (interval[3] < -1);
+    if (unknown == 0)
     {
-      continue;
+      continue; // the common case: a cell inside one interval
     }
     V4 front, back, length;
     std::memcpy(&front, jobs.SFront + i, sizeof(V4));
     std::memcpy(&back, jobs.SBack + i, sizeof(V4));
     std::memcpy(&length, jobs.Length + i, sizeof(V4));
     const auto valid = (length > 0.0) & (front - front == 0.0) & (back - back == 0.0);
-    if (!(valid[0] & valid[1] & valid[2] & valid[3]))
+    if (unknown < Lanes || !(valid[0] & valid[1] & valid[2] & valid[3]) || n == 0 ||
+      n > MaxCountedNodes)
     {
+      for (int l = i; l < i + Lanes; ++l)
+      {
+        left[numLeft] = l;
+        numLeft += resolved[l] < -1;
+      }
       continue;
     }
     const auto up = back - front >= 0.0;
@@ -241,8 +252,17 @@ void CountIntervals(const double* x, int n, const SegmentBatch::Arrays& jobs, in
       const int k = static_cast<int>(start[l]);
       resolved[i + l] = stays[l] ? k : NeedsSplit;
       splitStart[i + l] = k;
+      left[numLeft] = i + l;
+      numLeft += stays[l] ? 0 : 1;
     }
   }
+  for (; i < count; ++i)
+  {
+    resolved[i] = jobs.Interval[i];
+    left[numLeft] = i;
+    numLeft += resolved[i] < -1;
+  }
+  return numLeft;
 }
 
 namespace

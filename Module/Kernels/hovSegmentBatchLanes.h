@@ -78,23 +78,25 @@ inline __attribute__((always_inline)) void EvaluatePiece(const TransferFunction&
 HOV_LANES_HIDDEN void ThinWilliamsMaxBlocks(
   int terms, const double* a, const double* d1, int blocks, double* w, double* alpha);
 
-/// Transfer functions of at most this many nodes take CountIntervals().
+/// Transfer functions of at most this many nodes are counted by CountIntervals().
 constexpr int MaxCountedNodes = 16;
 /// CountIntervals()' mark of a segment that crosses a node.
 constexpr int NeedsSplit = -2000000;
 
 /**
- * The start interval of every block of Lanes segments from a multiple of
- * Lanes that are all of unknown interval (< -1 in @p resolved) and valid
- * (length > 0, finite ends), for a function of @p n <= MaxCountedNodes nodes
- * @p x: resolved[i] becomes that interval if the segment stays in it, else
- * NeedsSplit with the interval in @p splitStart[i]; other segments are left
- * as they are. The same intervals as the search from any start
- * (FindIntervalUpward / Downward) and the same one-piece test, by counting
- * nodes (see the definition).
+ * The segments' intervals into @p resolved: each segment's known one
+ * (Interval >= -1) as it is; for every block of Lanes segments from a
+ * multiple of Lanes that are all of unknown interval (< -1) and valid
+ * (length > 0, finite ends), with a function of 1 <= @p n <= MaxCountedNodes nodes
+ * @p x, the interval each starts in, by counting nodes (see the definition):
+ * the same as the search from any start (FindIntervalUpward / Downward) with
+ * the same one-piece test. A counted segment that crosses a node is marked
+ * NeedsSplit, its start interval in @p splitStart. The indices of those and
+ * of all segments still of unknown interval go to @p left, in increasing
+ * order; returns how many.
  */
-HOV_LANES_HIDDEN void CountIntervals(const double* x, int n, const SegmentBatch::Arrays& jobs,
-  int count, int* resolved, int* splitStart);
+HOV_LANES_HIDDEN int CountIntervals(const double* x, int n, const SegmentBatch::Arrays& jobs,
+  int count, int* resolved, int* splitStart, int* left);
 
 /**
  * EvaluatePiece() for the resolved segments (lane i for segment i;

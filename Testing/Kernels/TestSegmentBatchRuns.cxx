@@ -145,3 +145,48 @@ TEST(SegmentBatch, RunsOfCellsBitIdenticalToScalarKernels)
     }
   }
 }
+
+TEST(SegmentBatch, RunsOfCellsWithManyNodesAndEndsOnNodes)
+{
+  // Tables of up to 16 nodes take the counted interval search, larger ones
+  // the walk: both must give the scalar kernels' intervals and pieces, also
+  // for ends exactly on a node (where walking up and down differ).
+  std::mt19937_64 rng(20261203);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  hov::SegmentBatch batch;
+  for (const int numNodes : { 2, 15, 16, 17, 40 })
+  {
+    hov::TransferFunctionSpec spec;
+    spec.Semantics = hov::OpacitySemantics::VTKUnstructured;
+    spec.UnitDistance = 0.5;
+    for (int k = 0; k < numNodes; ++k)
+    {
+      const double s = static_cast<double>(k) / (numNodes - 1);
+      spec.Color.push_back({ s, 0.5 + 0.5 * std::sin(7.0 * s), s, 1.0 - s });
+      spec.Opacity.push_back({ s, 0.05 + 0.9 * u(rng) });
+    }
+    hov::TransferFunction tf;
+    tf.Build(spec);
+    ASSERT_EQ(static_cast<int>(tf.GetNodes().size()), numNodes);
+    const std::vector<double>& x = tf.GetNodes();
+    std::vector<hov::SegmentJob> jobs;
+    while (jobs.size() < 1500)
+    {
+      const double length = std::pow(10.0, u(rng) < 0.8 ? -4.0 + 3.0 * u(rng) : 1.0 * u(rng));
+      AddRun(tf, rng, 1 + static_cast<int>(12 * u(rng)), length, jobs);
+    }
+    int onNode = 0;
+    for (hov::SegmentJob& job : jobs)
+    {
+      if (job.Interval < -1 && u(rng) < 0.6)
+      {
+        // An end exactly on a node inside the cell's range (or the other end's).
+        const int k = static_cast<int>(u(rng) * x.size());
+        (u(rng) < 0.5 ? job.SFront : job.SBack) = x[k];
+        ++onNode;
+      }
+    }
+    EXPECT_GT(onNode, 10) << numNodes << " nodes";
+    ExpectSameAsScalar(tf, jobs, batch);
+  }
+}
