@@ -479,7 +479,7 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     return;
   }
-  if (this->UseDepthBuffer)
+  if (this->UseDepthBuffer && hov::ImageDisplay::MayHoldDepth(ren))
   {
     impl.Depth.resize(static_cast<size_t>(width) * height);
     if (hov::ImageDisplay::ReadDepth(ren, width, height, x0, y0, impl.Depth.data()))

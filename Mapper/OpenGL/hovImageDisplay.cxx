@@ -9,9 +9,11 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
 #include "vtk_glew.h"
 
 hov::ImageDisplay::ImageDisplay() = default;
@@ -112,4 +114,27 @@ bool hov::ImageDisplay::ReadDepth(
   const int ok = renWin->GetZbufferData(x0, y0, x0 + width - 1, y0 + height - 1, depth);
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
   return ok == VTK_OK;
+}
+
+bool hov::ImageDisplay::MayHoldDepth(vtkRenderer* ren)
+{
+  if (!ren || ren->GetPreserveDepthBuffer())
+  {
+    return true;
+  }
+  vtkPropCollection* props = ren->GetViewProps();
+  if (!props)
+  {
+    return true;
+  }
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop))
+    {
+      return true; // geometry (or anything else) may write depth
+    }
+  }
+  return false;
 }

@@ -61,6 +61,15 @@ public:
    */
   static bool ReadDepth(vtkRenderer* ren, int width, int height, int x0, int y0, float* depth);
 
+  /**
+   * False if the depth buffer of @p ren's viewport can only hold the far
+   * plane: it is cleared for this renderer (no preserved depth) and no
+   * visible prop but volumes (which write no depth) is drawn in it; then
+   * reading it back (a few milliseconds per frame at 1024x1024) is skipped.
+   * True in every other case, and whenever unsure.
+   */
+  static bool MayHoldDepth(vtkRenderer* ren);
+
 private:
   ImageDisplay(const hov::ImageDisplay&) = delete;
   void operator=(const ImageDisplay&) = delete;

@@ -77,6 +77,10 @@ void ViewSettings(const hov::RenderFrame& frame, hov::ProjectionRegions::Setting
  */
 const float* SceneDepth(const hov::RenderFrame& frame, std::vector<float>& depth)
 {
+  if (!hov::ImageDisplay::MayHoldDepth(frame.Renderer))
+  {
+    return nullptr; // only the far plane there
+  }
   depth.resize(static_cast<size_t>(frame.Width) * frame.Height);
   if (!hov::ImageDisplay::ReadDepth(
         frame.Renderer, frame.Width, frame.Height, frame.X0, frame.Y0, depth.data()))
