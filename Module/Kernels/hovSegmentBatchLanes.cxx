@@ -62,49 +62,25 @@ inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const d
 }
 
 /**
- * ThinWilliamsMaxSeries<N>() (hovThinSeries.h) of four lanes that need
- * different numbers of terms, at most N: lane l takes term n iff
- * @p atLeast[n] <= d1[l] (ThinTermByExponent::AtLeast: iff it has n terms or
- * more). Term n of a lane with fewer than n terms is replaced by an exact zero, so its chains stay
- * +0 (+0 * d2 + 0, with d2 >= 0) until its own first term, where they become
- * exactly what the scalar kernel's chains start with (0 * d2 + h). Each lane
- * therefore equals the scalar kernel with its own number of terms, bit for
- * bit, and a block of mixed term counts needs no sorting.
+ * ThinWilliamsMaxSeries()'s keep for four lanes that need different numbers
+ * of terms: lane l takes term n iff @p AtLeast[n] <= d1[l]
+ * (ThinTermByExponent::AtLeast: iff it has n terms or more), else an exact
+ * zero. So each lane equals the scalar kernel with its own number of terms,
+ * bit for bit, and a block of mixed term counts needs no sorting.
  */
+struct KeepOwnTerms
+{
+  const V4& D1;
+  const double* AtLeast;
+  void operator()(int n, V4& c) const { c = this->AtLeast[n] <= this->D1 ? c : V4{}; }
+};
+
+/// ThinWilliamsMaxSeries<N>() with each lane's own number of terms (KeepOwnTerms).
 template <int N>
 inline __attribute__((always_inline)) void ThinWilliamsMaxMasked(
   const V4& a, const V4& d1, const double* atLeast, V4& w, V4& alpha)
 {
-  const V4 zero = {};
-  const V4 r = a / d1;
-  const V4 d2 = d1 * d1;
-  V4 wOdd = zero, wEven = zero, aOdd = zero, aEven = zero;
-#pragma GCC unroll 16
-  for (int n = N; n >= 1; --n)
-  {
-    const double* p = Thin.P0[n];
-    V4 h = zero + p[0];
-#pragma GCC unroll 16
-    for (int j = 1; j <= n; ++j)
-    {
-      h = h * r + p[j];
-    }
-    const auto use = atLeast[n] <= d1;
-    h = use ? h : zero;
-    const V4 f = use ? zero + Thin.InvFactorial[n] : zero;
-    if (n % 2)
-    {
-      wOdd = wOdd * d2 + h;
-      aOdd = aOdd * d2 + f;
-    }
-    else
-    {
-      wEven = wEven * d2 + h;
-      aEven = aEven * d2 + f;
-    }
-  }
-  w = d1 * wOdd - d2 * wEven;
-  alpha = d1 * aOdd - d2 * aEven;
+  ThinWilliamsMaxSeries<N>(a, d1, w, alpha, KeepOwnTerms{ d1, atLeast });
 }
 
 /// ThinWilliamsMaxMasked<N>() for the run-time N = @p most (1..MaxThinOrder).

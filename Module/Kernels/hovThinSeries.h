@@ -93,10 +93,24 @@ inline constexpr ThinTables Thin = MakeThinTables();
  * independent chains of half the length: the chain latency dominates).
  * Outputs @p w = WFront before clamping and @p alpha (WBack = alpha - w).
  * N is a compile-time constant so that both loops unroll completely.
+ *
+ * @p keep(n, c) sets term n's coefficient c as it enters the outer sums:
+ * c as it is (AllTerms, the default), or an exact zero for lanes that need
+ * fewer than n terms (the lane kernels' blocks of mixed term counts: a lane's
+ * chains then stay +0 until its own first term, where they become exactly
+ * what N = its own count starts with, 0 * d2 + c).
  */
-template <int N, typename T>
+struct AllTerms
+{
+  template <typename T>
+  void operator()(int, T&) const
+  {
+  }
+};
+
+template <int N, typename T, typename Keep = AllTerms>
 HOV_THIN_INLINE void ThinWilliamsMaxSeries(
-  const T& a, const T& d1, T& w, T& alpha)
+  const T& a, const T& d1, T& w, T& alpha, const Keep& keep = Keep())
 {
   const T r = a / d1;
   const T d2 = d1 * d1;
@@ -111,7 +125,9 @@ HOV_THIN_INLINE void ThinWilliamsMaxSeries(
     {
       h = h * r + p[j];
     }
-    const double f = Thin.InvFactorial[n];
+    T f = T{} + Thin.InvFactorial[n]; // 0 + f is f
+    keep(n, h);
+    keep(n, f);
     if (n % 2)
     {
       wOdd = wOdd * d2 + h;

@@ -108,6 +108,21 @@ void ExpectSameAsScalar(const hov::TransferFunction& tf, const hov::IntegrationS
 }
 }
 
+namespace
+{
+/// One interval, raw extinction 0.2 to 1 over [0, 1]: depth D(1) in [0.2 L, L].
+hov::TransferFunction RawRampTable()
+{
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = hov::OpacitySemantics::RawExtinction;
+  spec.Color = { { 0.0, 0.0, 0.5, 1.0 }, { 1.0, 1.0, 0.5, 0.0 } };
+  spec.Opacity = { { 0.0, 0.2 }, { 1.0, 1.0 } };
+  hov::TransferFunction tf;
+  tf.Build(spec);
+  return tf;
+}
+}
+
 TEST(SegmentBatch, BitIdenticalToScalarKernels)
 {
   std::mt19937_64 rng(20240611);
@@ -137,12 +152,7 @@ TEST(SegmentBatch, ThinSegmentsOfEveryTermCount)
 {
   // Depths D(1) from 1e-20 to 0.25 (every number of series terms), each block
   // of four mixing neighbouring term counts.
-  hov::TransferFunctionSpec spec;
-  spec.Semantics = hov::OpacitySemantics::RawExtinction;
-  spec.Color = { { 0.0, 0.0, 0.5, 1.0 }, { 1.0, 1.0, 0.5, 0.0 } };
-  spec.Opacity = { { 0.0, 0.2 }, { 1.0, 1.0 } };
-  hov::TransferFunction tf;
-  tf.Build(spec);
+  const hov::TransferFunction tf = RawRampTable();
   std::vector<hov::SegmentJob> jobs;
   for (double depth = 1e-20; depth < 0.25; depth *= 1.37)
   {
@@ -164,12 +174,7 @@ TEST(SegmentBatch, BlocksMixingFarApartTermCounts)
   // zeros: a lane of one term beside one of thirteen must still equal the
   // scalar kernel with its own count. Depths drawn independently, log-uniform
   // over [1e-20, 0.25], so blocks span far-apart counts; one interval known.
-  hov::TransferFunctionSpec spec;
-  spec.Semantics = hov::OpacitySemantics::RawExtinction;
-  spec.Color = { { 0.0, 0.0, 0.5, 1.0 }, { 1.0, 1.0, 0.5, 0.0 } };
-  spec.Opacity = { { 0.0, 0.2 }, { 1.0, 1.0 } };
-  hov::TransferFunction tf;
-  tf.Build(spec);
+  const hov::TransferFunction tf = RawRampTable();
   std::mt19937_64 rng(20261203);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<hov::SegmentJob> jobs;
