@@ -2,7 +2,9 @@
 
 #include "hovImageDisplayFS.h" // encoded fragment shader
 
+#include "vtkInformation.h"
 #include "vtkObject.h" // vtkOpenGLError.h uses vtkObject in builds without NDEBUG
+#include "vtkOpenGLActor.h" // GLDepthMaskOverride
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
@@ -10,6 +12,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkPropCollection.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -118,7 +121,12 @@ bool hov::ImageDisplay::ReadDepth(
 
 bool hov::ImageDisplay::MayHoldDepth(vtkRenderer* ren)
 {
-  if (!ren || ren->GetPreserveDepthBuffer())
+  // The camera clears the depth only if both erase flags are on and depth is
+  // not preserved; a render pass (ParaView's, a composite) may draw or keep
+  // depth that no view prop drew.
+  vtkRenderWindow* renWin = ren ? ren->GetRenderWindow() : nullptr;
+  if (!ren || !renWin || ren->GetPreserveDepthBuffer() || !ren->GetErase() ||
+    !renWin->GetErase() || ren->GetPass())
   {
     return true;
   }
@@ -131,9 +139,15 @@ bool hov::ImageDisplay::MayHoldDepth(vtkRenderer* ren)
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    if (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop))
+    if (!prop->GetVisibility())
     {
-      return true; // geometry (or anything else) may write depth
+      continue;
+    }
+    vtkInformation* keys = prop->GetPropertyKeys();
+    if (!vtkVolume::SafeDownCast(prop) ||
+      (keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride())))
+    {
+      return true; // geometry (or anything else, or a volume told to) may write depth
     }
   }
   return false;

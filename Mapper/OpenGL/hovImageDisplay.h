@@ -63,10 +63,12 @@ public:
 
   /**
    * False if the depth buffer of @p ren's viewport can only hold the far
-   * plane: it is cleared for this renderer (no preserved depth) and no
-   * visible prop but volumes (which write no depth) is drawn in it; then
-   * reading it back (a few milliseconds per frame at 1024x1024) is skipped.
-   * True in every other case, and whenever unsure.
+   * plane: the camera clears it for this renderer (renderer and window erase
+   * on, no preserved depth, no render pass of its own) and no visible prop
+   * but volumes (which write no depth unless told to by
+   * vtkOpenGLActor::GLDepthMaskOverride) is drawn in it; then reading it back
+   * (a few milliseconds per frame at 1024x1024) is skipped. True in every
+   * other case, and whenever unsure.
    */
   static bool MayHoldDepth(vtkRenderer* ren);
 

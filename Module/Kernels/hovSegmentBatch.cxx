@@ -144,8 +144,10 @@ long long SegmentBatch::ResolveIntervals(
   for (int j = 0; j < numLeft; ++j)
   {
     const int i = left[j];
-    if (resolved[i] == detail::NeedsSplit)
+    if (resolved[i] == detail::NeedsSplit && jobs.Interval[i] != detail::NeedsSplit)
     {
+      // (A hint equal to the mark, from a table of about two million nodes,
+      // takes the search below.)
       resolved[i] = Skip;
       this->SplitSegment(
         tf, i, this->SplitStart[i], jobs.SFront[i], jobs.SBack[i], jobs.Length[i]);

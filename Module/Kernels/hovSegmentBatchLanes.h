@@ -100,8 +100,10 @@ HOV_LANES_HIDDEN int CountIntervals(const double* x, int n, const SegmentBatch::
 
 /**
  * EvaluatePiece() for the resolved segments (lane i for segment i;
- * resolved[i] == @p skip: none), Lanes at a time where they share an
- * interior interval.
+ * resolved[i] == @p skip: none). Four consecutive valid thin segments of one
+ * interior interval are finished in registers, their RGBA written to @p out;
+ * any other thin segment goes to the lanes of @p t and its Pending list (the
+ * sorted series finishes it), a thick or opaque one to the scalar kernel.
  */
 HOV_LANES_HIDDEN void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
   const SegmentBatch::Arrays& jobs, int count, const SegmentBatch::ThinArrays& t, RGBA* out);

@@ -167,9 +167,15 @@ inline int TransferFunction::FindIntervalUpward(double s) const
   int k = 0;
   if (!this->Buckets.empty())
   {
-    // The bucket's interval starts at or before s: walk to the last X[k] <= s.
+    // The bucket of s, up to rounding: its position and the buckets' starts
+    // round differently, so s just below a node may land in the bucket that
+    // starts with that node. Walk down, then up, to the last X[k] <= s.
     const double pos = (s - this->X[0]) * this->BucketScale;
     k = this->Buckets[std::min(static_cast<size_t>(pos), this->Buckets.size() - 1)];
+    while (k > 0 && this->X[k] > s)
+    {
+      --k;
+    }
   }
   while (k + 1 < n && this->X[k + 1] <= s)
   {

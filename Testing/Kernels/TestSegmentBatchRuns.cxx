@@ -180,7 +180,7 @@ TEST(SegmentBatch, RunsOfCellsWithManyNodesAndEndsOnNodes)
     {
       if (job.Interval < -1 && u(rng) < 0.6)
       {
-        // An end exactly on a node inside the cell's range (or the other end's).
+        // One end exactly on a node (any node: inside or outside the run's range).
         const int k = static_cast<int>(u(rng) * x.size());
         (u(rng) < 0.5 ? job.SFront : job.SBack) = x[k];
         ++onNode;

@@ -220,3 +220,61 @@ TEST(TransferFunction, RawExtinctionKeepsValuesAboveOne)
   tf.Evaluate(tf.FindIntervalUpward(0.0), 0.0, false, end);
   EXPECT_EQ(end.Tau, 1.0) << "an opacity is clamped to 1 (u = 1)";
 }
+
+TEST(TransferFunction, IntervalSearchIsExactNextToNodes)
+{
+  // FindIntervalUpward / Downward must be the largest k with X[k] <= s (< s)
+  // for every s, in particular one ulp either side of a node, where the
+  // bucket lookup's rounding can land one interval too high (nodes
+  // {0, 0.2, 0.5, 0.6, 0.8}, s = 0.2 - ulp: bucket 5 starts in interval 1).
+  std::mt19937_64 rng(20261203);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::vector<double>> tables{ { 0.0, 0.2, 0.5, 0.6, 0.8 } };
+  for (int t = 0; t < 40; ++t)
+  {
+    std::vector<double> x{ 0.0 };
+    const int n = 2 + static_cast<int>(30 * u(rng));
+    for (int k = 1; k < n; ++k)
+    {
+      x.push_back(x.back() + (u(rng) < 0.3 ? 0.1 : 1e-3 + u(rng)));
+    }
+    tables.push_back(x);
+  }
+  int checked = 0;
+  for (const std::vector<double>& nodes : tables)
+  {
+    hov::TransferFunctionSpec spec;
+    spec.Semantics = hov::OpacitySemantics::RawExtinction;
+    for (const double s : nodes)
+    {
+      spec.Color.push_back({ s, 0.5, 0.5, 0.5 });
+      spec.Opacity.push_back({ s, 0.5 });
+    }
+    hov::TransferFunction tf;
+    tf.Build(spec);
+    const std::vector<double>& x = tf.GetNodes();
+    ASSERT_EQ(x.size(), nodes.size());
+    std::vector<double> probes;
+    for (const double node : x)
+    {
+      probes.insert(probes.end(), { std::nextafter(node, -1e300), node, std::nextafter(node, 1e300) });
+    }
+    for (int i = 0; i < 200; ++i)
+    {
+      probes.push_back(x.front() - 0.1 + (x.back() - x.front() + 0.2) * u(rng));
+    }
+    for (const double s : probes)
+    {
+      int atOrBelow = -1, below = -1;
+      for (size_t k = 0; k < x.size(); ++k)
+      {
+        atOrBelow += x[k] <= s ? 1 : 0;
+        below += x[k] < s ? 1 : 0;
+      }
+      ASSERT_EQ(tf.FindIntervalUpward(s), atOrBelow) << "s " << s << ", " << x.size() << " nodes";
+      ASSERT_EQ(tf.FindIntervalDownward(s), below) << "s " << s << ", " << x.size() << " nodes";
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 5000);
+}
