@@ -150,7 +150,8 @@ TEST(SegmentBatch, RunsOfCellsWithManyNodesAndEndsOnNodes)
 {
   // Tables of up to 16 nodes take the counted interval search, larger ones
   // the walk: both must give the scalar kernels' intervals and pieces, also
-  // for ends exactly on a node (where walking up and down differ).
+  // for ends exactly on a node (where walking up and down differ) or one ulp
+  // beside it (where the scalar search's bucket lookup rounds).
   std::mt19937_64 rng(20261203);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   hov::SegmentBatch batch;
@@ -180,9 +181,12 @@ TEST(SegmentBatch, RunsOfCellsWithManyNodesAndEndsOnNodes)
     {
       if (job.Interval < -1 && u(rng) < 0.6)
       {
-        // One end exactly on a node (any node: inside or outside the run's range).
+        // One end on a node or one ulp either side of it (any node: inside or
+        // outside the run's range).
         const int k = static_cast<int>(u(rng) * x.size());
-        (u(rng) < 0.5 ? job.SFront : job.SBack) = x[k];
+        const double side = u(rng);
+        const double s = side < 0.4 ? x[k] : std::nextafter(x[k], side < 0.7 ? -1e300 : 1e300);
+        (u(rng) < 0.5 ? job.SFront : job.SBack) = s;
         ++onNode;
       }
     }
