@@ -46,7 +46,6 @@ inline int FindInterval(const TransferFunction& tf, double s, bool up, int inter
   }
   return k;
 }
-
 }
 
 long long SegmentBatch::Integrate(const TransferFunction& tf, const IntegrationSettings& settings,

@@ -1,7 +1,8 @@
 #include "hovSegmentBatchLanes.h"
 
 #include <cstring> // memcpy into vector registers
-#include <utility> // integer_sequence (one unrolled series per term count)
+#include <type_traits> // integral_constant
+#include <utility>     // integer_sequence (one unrolled series per term count)
 
 namespace hov
 {
@@ -51,14 +52,21 @@ inline __attribute__((always_inline)) void ThinBlocks(
   }
 }
 
-/// ThinBlocks<N>() for the run-time N = @p terms (one call per group of
-/// equal term counts: one dispatch per group, not per block).
-template <int... N>
-inline __attribute__((always_inline)) void ThinBlocksDispatch(int terms, const double* a,
-  const double* d1, int blocks, double* w, double* alpha, std::integer_sequence<int, N...>)
+/// @p f(std::integral_constant<int, terms>()) for the run-time number of
+/// series terms 1 <= @p terms <= MaxThinOrder: each count is its own fully
+/// unrolled series, chosen once per call (a group of lanes, or a block).
+template <typename F, int... N>
+inline __attribute__((always_inline)) void ForTermCount(
+  int terms, const F& f, std::integer_sequence<int, N...>)
 {
-  // Exactly one N + 1 equals terms (1 <= terms <= MaxThinOrder).
-  (void)((terms == N + 1 ? (ThinBlocks<N + 1>(a, d1, blocks, w, alpha), true) : false) || ...);
+  // Exactly one N + 1 equals terms.
+  (void)((terms == N + 1 ? (f(std::integral_constant<int, N + 1>()), true) : false) || ...);
+}
+
+template <typename F>
+inline __attribute__((always_inline)) void ForTermCount(int terms, const F& f)
+{
+  ForTermCount(terms, f, std::make_integer_sequence<int, MaxThinOrder>());
 }
 
 /**
@@ -75,31 +83,13 @@ struct KeepOwnTerms
   void operator()(int n, V4& c) const { c = this->AtLeast[n] <= this->D1 ? c : V4{}; }
 };
 
-/// ThinWilliamsMaxSeries<N>() with each lane's own number of terms (KeepOwnTerms).
-template <int N>
-inline __attribute__((always_inline)) void ThinWilliamsMaxMasked(
-  const V4& a, const V4& d1, const double* atLeast, V4& w, V4& alpha)
-{
-  ThinWilliamsMaxSeries<N>(a, d1, w, alpha, KeepOwnTerms{ d1, atLeast });
-}
-
-/// ThinWilliamsMaxMasked<N>() for the run-time N = @p most (1..MaxThinOrder).
-template <int... N>
-inline __attribute__((always_inline)) void ThinMaskedDispatch(int most, const V4& a,
-  const V4& d1, const double* atLeast, V4& w, V4& alpha, std::integer_sequence<int, N...>)
-{
-  (void)((most == N + 1 ? (ThinWilliamsMaxMasked<N + 1>(a, d1, atLeast, w, alpha), true)
-                        : false) ||
-    ...);
-}
-
 /**
  * EvaluatePiece() and the thin series for the Lanes segments from @p i, all
  * in the same interior interval @p k (0 <= k < n - 1), side by side: per lane
  * TransferFunction::Evaluate()'s operations on node k, then the depths and
  * the thin test (std::min/max as (b < a ? b : a)/(a < b ? b : a), isfinite as
  * x - x == 0), the series with each lane's own number of terms
- * (ThinWilliamsMaxMasked) and WriteThin()'s weights and colours, so each
+ * (KeepOwnTerms) and WriteThin()'s weights and colours, so each
  * lane's RGBA is the scalar code's. Writes @p out and returns true only if
  * every segment is valid and thin (the caller takes the others one by one):
  * nothing of these lanes is left for the sorted series.
@@ -138,8 +128,10 @@ inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction&
   // The block's number of terms: that of its deepest lane (the count grows with d1).
   const double deepest = std::max(std::max(d1[0], d1[1]), std::max(d1[2], d1[3]));
   V4 w, alpha;
-  ThinMaskedDispatch(thinTerms(deepest), a, d1, thinTerms.AtLeast, w, alpha,
-    std::make_integer_sequence<int, MaxThinOrder>());
+  const KeepOwnTerms keep{ d1, thinTerms.AtLeast };
+  ForTermCount(thinTerms(deepest), [&](auto n) __attribute__((always_inline)) {
+    ThinWilliamsMaxSeries<decltype(n)::value>(a, d1, w, alpha, keep);
+  });
   // WriteThin(): wf = std::max(0.0, w), wb = std::max(0.0, alpha - w).
   const V4 back = alpha - w;
   const V4 wf = 0.0 < w ? w : zero;
@@ -167,8 +159,9 @@ HOV_LANES_TARGET_CLONES
 void ThinWilliamsMaxBlocks(
   int terms, const double* a, const double* d1, int blocks, double* w, double* alpha)
 {
-  ThinBlocksDispatch(
-    terms, a, d1, blocks, w, alpha, std::make_integer_sequence<int, MaxThinOrder>());
+  ForTermCount(terms, [&](auto n) __attribute__((always_inline)) {
+    ThinBlocks<decltype(n)::value>(a, d1, blocks, w, alpha);
+  });
 }
 
 /**

@@ -16,6 +16,7 @@
 #include <cmath>     // std::ldexp, std::pow
 #include <cstdint>   // exponent bits
 #include <cstring>   // memcpy
+#include <limits>    // infinity
 
 #if defined(__GNUC__)
 #define HOV_THIN_INLINE inline __attribute__((always_inline))
@@ -193,7 +194,7 @@ struct ThinTermByExponent
     }
     for (int n = 0; n <= MaxThinOrder; ++n)
     {
-      this->AtLeast[n] = n <= 1 ? 0.0 : 1e300 * 1e300;
+      this->AtLeast[n] = n <= 1 ? 0.0 : std::numeric_limits<double>::infinity();
       for (int e = 1022; e >= Lowest && n > 1; --e)
       {
         if (this->Terms[e - Lowest] >= n)
