@@ -65,6 +65,8 @@ void Usage(const char* argv0)
        "  --mesh M              bracket, rt or all (default all)\n"
        "  --skip-raycast-large  skip vtkUnstructuredGridVolumeRayCastMapper on the generated mesh\n"
        "  --out DIR             write the last frame of every run as PNG into DIR\n"
+       "  --only KEYS           run only these mappers (comma-separated: hov_vis, hov_pix, pt, rc;\n"
+       "                        e.g. to profile one of them)\n"
        "Run under xvfb-run -a -s \"-screen 0 1280x1024x24 -noreset\".\n";
 }
 } // namespace
@@ -110,6 +112,10 @@ int main(int argc, char* argv[])
     else if (a == "--skip-raycast-large")
     {
       opt.SkipRayCastLarge = true;
+    }
+    else if (a == "--only")
+    {
+      opt.Only = next("mapper keys");
     }
     else if (a == "--out")
     {
@@ -202,6 +208,15 @@ int main(int argc, char* argv[])
       m->SetAutoAdjustSampleDistances(0); // one ray per pixel, no LOD
       m->SetImageSampleDistance(1.0);
       runs.push_back(Prepare(opt, mesh, "rc", rcLabel, m, errors));
+    }
+    if (!opt.Only.empty())
+    {
+      const std::string only = "," + opt.Only + ",";
+      runs.erase(std::remove_if(runs.begin(), runs.end(),
+                   [&](const std::unique_ptr<Run>& r) {
+                     return only.find("," + r->Result.Key + ",") == std::string::npos;
+                   }),
+        runs.end());
     }
     TimeInterleaved(opt, runs);
     for (auto& run : runs)

@@ -41,6 +41,7 @@ struct Options
   int Extent = 24;
   double AzimuthStep = 7.0;
   bool SkipRayCastLarge = false;
+  std::string Only; // comma-separated row keys to run (empty: all)
 };
 
 struct Mesh
