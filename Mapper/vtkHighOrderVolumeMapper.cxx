@@ -393,10 +393,14 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
     this->Impl->Check.Check(windowPixels, pixels, frame, this->GetMTime());
     return;
   }
-  this->Impl->RGBA.swap(frame.RGBA);
-  this->Impl->Check.Check(this->Impl->RGBA.data(), this->Impl->RGBA.size() / 4, frame, this->GetMTime());
-  hov::PublishFloatImage(
-    this->Impl->FloatImage, "RGBA", 4, frame.Width, frame.Height, this->Impl->RGBA.data());
+  std::vector<double>& rgba = this->Impl->RGBA;
+  rgba.swap(frame.RGBA);
+  rgba.resize(4 * pixels, 0.0); // (every backend writes the whole image)
+  // Checked and converted to float in one parallel pass, into the published
+  // array itself unless somebody else holds it.
+  float* out =
+    hov::FloatImagePixels(this->Impl->FloatImage, "RGBA", 4, frame.Width, frame.Height, true);
+  this->Impl->Check.Check(rgba.data(), pixels, frame, this->GetMTime(), out);
 }
 
 int vtkHighOrderVolumeMapper::ComputeImage(hov::RenderFrame& frame, hov::Backend& backend)

@@ -2,20 +2,31 @@
 
 #include "hovRenderFrame.h" // settings, statistics, messages
 
-#include <cfloat>  // FLT_MAX
-#include <cmath>   // std::isfinite, std::abs
-#include <sstream> // messages
-#include <string>  // messages
+#include "vtkSMPTools.h" // the parallel pass
+
+#include <algorithm> // std::min
+#include <atomic>    // the blocks' counts
+#include <cfloat>    // FLT_MAX
+#include <cmath>     // std::isfinite, std::abs
+#include <sstream>   // messages
+#include <string>    // messages
 
 namespace
 {
-/// Zeroes the pixels (4 values each) with a value that float cannot hold;
-/// returns how many.
+/// Pixels per block of the parallel pass (a block's values stay in cache).
+constexpr size_t BlockPixels = 16384;
+
+/**
+ * One pass over the pixels [b, e) (4 values each): zeroes a pixel with a
+ * value that float cannot hold (NaN, Inf, beyond FLT_MAX) and counts it,
+ * writes the values as float into @p out if it is not null, and tells
+ * whether any value is non-zero as a float (a double below float's smallest
+ * denormal, e.g. from a unit distance of 1e300, is published as 0).
+ */
 template <typename T>
-size_t ZeroOverflowingPixels(T* rgba, size_t pixels)
+void CheckPixels(T* rgba, size_t b, size_t e, float* out, size_t& bad, bool& nonZero)
 {
-  size_t bad = 0;
-  for (size_t p = 0; p < pixels; ++p)
+  for (size_t p = b; p < e; ++p)
   {
     T* v = rgba + 4 * p;
     bool ok = true;
@@ -28,23 +39,16 @@ size_t ZeroOverflowingPixels(T* rgba, size_t pixels)
       v[0] = v[1] = v[2] = v[3] = T(0);
       ++bad;
     }
-  }
-  return bad;
-}
-
-/// True if the float image of these values is zero: a double value below
-/// float's smallest denormal (e.g. a unit distance of 1e300) is published as 0.
-template <typename T>
-bool AllZero(const T* rgba, size_t pixels)
-{
-  for (size_t i = 0; i < 4 * pixels; ++i)
-  {
-    if (static_cast<float>(rgba[i]) != 0.0f)
+    for (int c = 0; c < 4; ++c)
     {
-      return false;
+      const float f = static_cast<float>(v[c]);
+      nonZero = nonZero || f != 0.0f;
+      if (out)
+      {
+        out[4 * p + c] = f;
+      }
     }
   }
-  return true;
 }
 
 /// Why an image of @p frame is empty.
@@ -67,9 +71,25 @@ std::string WhyEmpty(const hov::FrameSettings& s)
 
 template <typename T>
 void hov::ImageCheck::Check(
-  T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime)
+  T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime, float* out)
 {
-  const size_t bad = ZeroOverflowingPixels(rgba, pixels);
+  // Blocks in parallel: a 1024x1024 image is 32 MB of doubles, a serial pass
+  // over it several milliseconds of every frame.
+  std::atomic<size_t> badPixels{ 0 };
+  std::atomic<bool> anyNonZero{ false };
+  const vtkIdType blocks = static_cast<vtkIdType>((pixels + BlockPixels - 1) / BlockPixels);
+  vtkSMPTools::For(0, blocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    size_t bad = 0;
+    bool nonZero = false;
+    CheckPixels(rgba, static_cast<size_t>(b0) * BlockPixels,
+      std::min(pixels, static_cast<size_t>(b1) * BlockPixels), out, bad, nonZero);
+    badPixels += bad;
+    if (nonZero)
+    {
+      anyNonZero = true;
+    }
+  });
+  const size_t bad = badPixels;
   if (bad > 0)
   {
     std::ostringstream text;
@@ -78,7 +98,7 @@ void hov::ImageCheck::Check(
          << ", the colours and the unit distance set the glow); they are drawn transparent.";
     frame.Warning(text.str());
   }
-  const bool empty = frame.Drawn && !frame.Stats.Aborted && AllZero(rgba, pixels);
+  const bool empty = frame.Drawn && !frame.Stats.Aborted && !anyNonZero;
   if (empty && (!this->WarnedEmptyImage || this->WarnedTime != settingsTime))
   {
     std::ostringstream text;
@@ -90,5 +110,7 @@ void hov::ImageCheck::Check(
   this->WarnedTime = settingsTime;
 }
 
-template void hov::ImageCheck::Check<double>(double*, size_t, const hov::RenderFrame&, vtkMTimeType);
-template void hov::ImageCheck::Check<float>(float*, size_t, const hov::RenderFrame&, vtkMTimeType);
+template void hov::ImageCheck::Check<double>(
+  double*, size_t, const hov::RenderFrame&, vtkMTimeType, float*);
+template void hov::ImageCheck::Check<float>(
+  float*, size_t, const hov::RenderFrame&, vtkMTimeType, float*);

@@ -30,10 +30,13 @@ public:
   /**
    * Check @p pixels RGBA values of @p rgba (4 per pixel) of @p frame (see the
    * class doc); @p settingsTime is the mapper's modification time (a changed
-   * setting warns about an empty image again).
+   * setting warns about an empty image again). If @p out is not null, the
+   * checked values are also written there as float (4 per pixel), in the same
+   * parallel pass.
    */
   template <typename T>
-  void Check(T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime);
+  void Check(T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime,
+    float* out = nullptr);
 
 private:
   bool WarnedEmptyImage = false;
