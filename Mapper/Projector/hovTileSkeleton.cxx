@@ -93,6 +93,20 @@ void hov::TilePixels::InitPixels(
   this->MaxExit.assign(n, -1e300);
   this->Violated.assign(n, 0);
   this->Done.assign(n, 0);
+  if (!depth && !rays.HasClipping())
+  {
+    // The common case: TracedPixelRay() is PixelRay(), a row at a time.
+    for (int j = 0; j < this->H; ++j)
+    {
+      const size_t p = static_cast<size_t>(j) * this->W;
+      rays.RowRays(this->X0, this->Y0 + j, this->W, this->Rays.data() + p);
+      for (int i = 0; i < this->W; ++i)
+      {
+        this->TMax[p + i] = this->Rays[p + i].TFar;
+      }
+    }
+    return;
+  }
   for (int j = 0; j < this->H; ++j)
   {
     for (int i = 0; i < this->W; ++i)

@@ -7,7 +7,7 @@
 #include "vtkNew.h"
 
 #include <algorithm> // std::min, std::max
-#include <cmath>     // std::isfinite
+#include <cmath>     // std::isfinite, std::sqrt
 
 namespace
 {
@@ -73,6 +73,77 @@ hov::ViewRays::Ray hov::ViewRays::PixelRay(int i, int j) const
   ray.Direction = delta / ray.TFar;
   return ray;
 }
+
+#if defined(__GNUC__) // GCC and Clang: vector extensions
+namespace
+{
+typedef double V4 __attribute__((vector_size(4 * sizeof(double))));
+
+/// glm's mat4 * vec4 (x, y, z, 1) and the division by w, one pixel per lane
+/// (y and z shared): ((m0 x + m1 y) + (m2 z + m3 1)) per component.
+inline void UnprojectLanes(const glm::dmat4& m, const V4& x, double y, double z, V4 out[3])
+{
+  V4 h[4];
+  for (int c = 0; c < 4; ++c)
+  {
+    h[c] = (m[0][c] * x + m[1][c] * y) + (m[2][c] * z + m[3][c] * 1.0);
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    out[c] = h[c] / h[3];
+  }
+}
+}
+
+void hov::ViewRays::RowRays(int i0, int j, int count, Ray* rays) const
+{
+  const double y = 2.0 * (j + 0.5) / this->Height - 1.0;
+  int k = 0;
+  for (; k + 4 <= count; k += 4)
+  {
+    const double base = i0 + k;
+    const V4 i = V4{ 0.0, 1.0, 2.0, 3.0 } + base; // exact: small integers
+    const V4 x = 2.0 * (i + 0.5) / this->Width - 1.0;
+    V4 o[3], f[3], d[3];
+    UnprojectLanes(this->ClipToData, x, y, -1.0, o);
+    UnprojectLanes(this->ClipToData, x, y, 1.0, f);
+    for (int c = 0; c < 3; ++c)
+    {
+      d[c] = f[c] - o[c];
+    }
+    // glm::length: sqrt((x x + y y) + z z).
+    const V4 squared = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
+    V4 tFar;
+    for (int l = 0; l < 4; ++l)
+    {
+      tFar[l] = std::sqrt(squared[l]);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      d[c] = d[c] / tFar;
+    }
+    for (int l = 0; l < 4; ++l)
+    {
+      Ray& ray = rays[k + l];
+      ray.Origin = glm::dvec3(o[0][l], o[1][l], o[2][l]);
+      ray.Direction = glm::dvec3(d[0][l], d[1][l], d[2][l]);
+      ray.TFar = tFar[l];
+    }
+  }
+  for (; k < count; ++k)
+  {
+    rays[k] = this->PixelRay(i0 + k, j);
+  }
+}
+#else
+void hov::ViewRays::RowRays(int i0, int j, int count, Ray* rays) const
+{
+  for (int k = 0; k < count; ++k)
+  {
+    rays[k] = this->PixelRay(i0 + k, j);
+  }
+}
+#endif
 
 double hov::ViewRays::DepthToT(int i, int j, const Ray& ray, double windowDepth) const
 {
