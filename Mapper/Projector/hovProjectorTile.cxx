@@ -185,42 +185,13 @@ void hov::ProjectorTile::Flush(const Frame& frame, Statistics& st)
     this->QInterval.data() };
   this->Batch.Integrate(*frame.TF, frame.Settings->Integration, jobs, n, this->Results.data(),
     this->Pieces.data());
-  // In queue order, skipping pixels that turned opaque meanwhile: exactly
-  // what compositing one segment at a time does (Witness(), Composite()).
-  // Everything through locals: byte stores (Done) may alias any member.
-  vtkIdType segments = 0, pieces = 0;
-  const int* pixel = this->QPixel.data();
-  const double* tIn = this->QTIn;
-  const double* tOut = this->QTOut;
-  const hov::RGBA* results = this->Results.data();
-  const int* piecesOf = this->Pieces.data();
-  hov::RGBA* accum = this->Accum.data();
-  double* maxExit = this->MaxExit.data();
-  unsigned char* violated = this->Violated.data();
-  unsigned char* done = this->Done.data();
-  const double tol = frame.WitnessTol;
-  const double termination = frame.Settings->TerminationTransmittance;
-  for (int m = 0; m < n; ++m)
-  {
-    const int p = pixel[m];
-    if (done[p])
-    {
-      continue;
-    }
-    if (tIn[m] < maxExit[p] - tol)
-    {
-      violated[p] = 1;
-    }
-    maxExit[p] = std::max(maxExit[p], tOut[m]);
-    hov::CompositeBehind(accum[p], results[m]);
-    if (1.0 - accum[p].A <= termination)
-    {
-      done[p] = 1;
-      ++this->DoneInRow[p / this->W];
-    }
-    ++segments;
-    pieces += piecesOf[m];
-  }
+  // In queue order, skipping pixels that turned opaque meanwhile.
+  const CompositeTarget target{ this->Accum.data(), this->MaxExit.data(), this->Violated.data(),
+    this->Done.data(), this->DoneInRow.data(), this->W, frame.WitnessTol,
+    frame.Settings->TerminationTransmittance };
+  vtkIdType pieces = 0;
+  const vtkIdType segments = CompositeQueue(this->QPixel.data(), this->QTIn, this->QTOut,
+    this->Results.data(), this->Pieces.data(), n, target, pieces);
   st.Segments += segments;
   st.Pieces += pieces;
   this->NumQueued = 0;

@@ -7,7 +7,10 @@
 
 #include "hovRayClip.h" // ClipFourPlanes, the lanes' clip
 
-#include <cstring> // memcpy into vector registers
+#include "hovCompositing.h" // CompositeBehind
+
+#include <algorithm> // std::max
+#include <cstring>   // memcpy into vector registers
 
 namespace hov::tile
 {
@@ -251,3 +254,41 @@ bool hov::tile::ClipRows(const CellRecord& cell, const TileRays& rays, const int
   return all;
 }
 
+
+HOV_SPAN_TARGET_CLONES
+vtkIdType hov::tile::CompositeQueue(const int* pixel, const double* tIn, const double* tOut,
+  const hov::RGBA* results, const int* piecesOf, int n, const CompositeTarget& target,
+  vtkIdType& pieces)
+{
+  // Everything through locals: byte stores (Done) may alias any member.
+  hov::RGBA* accum = target.Accum;
+  double* maxExit = target.MaxExit;
+  unsigned char* violated = target.Violated;
+  unsigned char* done = target.Done;
+  const double tol = target.Tolerance;
+  const double termination = target.Termination;
+  vtkIdType segments = 0, added = 0;
+  for (int m = 0; m < n; ++m)
+  {
+    const int p = pixel[m];
+    if (done[p])
+    {
+      continue;
+    }
+    if (tIn[m] < maxExit[p] - tol)
+    {
+      violated[p] = 1;
+    }
+    maxExit[p] = std::max(maxExit[p], tOut[m]);
+    hov::CompositeBehind(accum[p], results[m]);
+    if (1.0 - accum[p].A <= termination)
+    {
+      done[p] = 1;
+      ++target.DoneInRow[p / target.Width];
+    }
+    ++segments;
+    added += piecesOf[m];
+  }
+  pieces += added;
+  return segments;
+}

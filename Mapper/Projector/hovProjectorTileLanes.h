@@ -55,6 +55,34 @@ __attribute__((visibility("hidden")))
 bool ClipRows(const CellRecord& cell, const TileRays& rays, const int* start, const int* count,
   int rows, const LaneOut& out, size_t q);
 
+/// The tile's pixels that CompositeQueue() composites into.
+struct CompositeTarget
+{
+  hov::RGBA* Accum;
+  double* MaxExit;
+  unsigned char* Violated;
+  unsigned char* Done;
+  int* DoneInRow;     ///< per tile row: pixels done
+  int Width;          ///< of the tile
+  double Tolerance;   ///< the witness tolerance
+  double Termination; ///< transmittance at which a pixel is done
+};
+
+/**
+ * Composite the @p n queued segments (pixel, ends, RGBA, pieces) in queue
+ * order, skipping pixels that turned opaque meanwhile: exactly what
+ * compositing one segment at a time does (TilePixels::Witness(),
+ * CompositeBehind()). Returns the number composited and adds their pieces
+ * to @p pieces. In hovProjectorTileLanes.cxx (also compiled for AVX2: one
+ * instruction per RGBA operation, the same results).
+ */
+#if defined(__GNUC__)
+__attribute__((visibility("hidden")))
+#endif
+vtkIdType CompositeQueue(const int* pixel, const double* tIn, const double* tOut,
+  const hov::RGBA* results, const int* piecesOf, int n, const CompositeTarget& target,
+  vtkIdType& pieces);
+
 /**
  * The case of one pixel of a span that did not simply hit, from what the
  * lanes wrote (@p tIn, @p tOut) and the ray: 1 hit, 0 miss, -1 undecided.
