@@ -406,7 +406,13 @@ public:
    */
   int RenderImage(vtkCamera* camera, vtkVolume* volume, int width, int height);
 
-  /// The last image: float premultiplied RGBA (array "RGBA"), row 0 at the bottom.
+  /**
+   * The last image: float premultiplied RGBA (array "RGBA"), row 0 at the
+   * bottom. The same vtkImageData every frame; its array is rewritten in
+   * place by the next frame of the same size unless something else holds a
+   * reference to it (then the next frame publishes a new array and the held
+   * one keeps its values): to keep a frame, hold its array or DeepCopy it.
+   */
   vtkImageData* GetFloatImage();
 
   /// The last CPU image in the double precision it is computed in (4

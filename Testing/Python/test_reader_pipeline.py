@@ -150,6 +150,17 @@ def main():
     screen_err = np.abs(screen - rgba[:, :, :3]).max()
     check(screen_err <= 1.5 / 255.0, "screen = float image over black (max err %.4f)" % screen_err)
 
+    # A numpy view of the published array keeps its frame: the next frame
+    # (rewritten in place only when nobody holds the array) publishes a new one.
+    view = vtk_to_numpy(image.GetPointData().GetScalars())
+    kept = view.copy()
+    cam.Azimuth(25)
+    win.Render()
+    after = vtk_to_numpy(mapper.GetFloatImage().GetPointData().GetScalars())
+    check(np.array_equal(view, kept), "a held numpy view keeps the previous frame")
+    check(not np.array_equal(after, kept) and np.isfinite(after).all(),
+          "the next frame is a new, finite image")
+
     if FAILURES:
         print("%d check(s) failed" % len(FAILURES))
         return 1
