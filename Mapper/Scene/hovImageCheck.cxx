@@ -98,7 +98,9 @@ void hov::ImageCheck::Check(
          << ", the colours and the unit distance set the glow); they are drawn transparent.";
     frame.Warning(text.str());
   }
-  const bool empty = frame.Drawn && !frame.Stats.Aborted && !anyNonZero;
+  // An image emptied by the overflow has had its warning: not "empty" too
+  // (with the reasons of an image that shows nothing of the volume).
+  const bool empty = frame.Drawn && !frame.Stats.Aborted && !anyNonZero && bad == 0;
   if (empty && (!this->WarnedEmptyImage || this->WarnedTime != settingsTime))
   {
     std::ostringstream text;

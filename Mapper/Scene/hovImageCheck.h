@@ -7,7 +7,8 @@
  *   beyond float's range is drawn transparent and counted in one warning per
  *   frame.
  * - An empty image comes with a warning saying why, once until an image is
- *   not empty again or a setting changes; a frame that was aborted or had
+ *   not empty again or a setting changes (not when the overflow above is what
+ *   emptied it: that has its own warning); a frame that was aborted or had
  *   nothing to draw (RenderFrame::Drawn false) has had its own message.
  *
  * Thread safety: rendering thread only (it keeps the warned state between frames).

@@ -3,6 +3,7 @@
 #include "vtkHighOrderVolumeMapper.h"
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
@@ -25,6 +26,25 @@ std::string Fmt(double v)
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%.6g", v);
   return buf;
+}
+
+Image DoubleImage(vtkHighOrderVolumeMapper* mapper)
+{
+  Image img;
+  int dims[3];
+  mapper->GetFloatImage()->GetDimensions(dims);
+  vtkNew<vtkDoubleArray> rgba;
+  mapper->GetDoubleImage(rgba);
+  if (rgba->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1])
+  {
+    std::cout << "  (double image of " << rgba->GetNumberOfTuples() << " pixels for "
+              << dims[0] << "x" << dims[1] << ")\n";
+    return img;
+  }
+  img.W = dims[0];
+  img.H = dims[1];
+  img.V.assign(rgba->GetPointer(0), rgba->GetPointer(0) + 4 * img.Pixels());
+  return img;
 }
 
 double MaxRayCastError(vtkHighOrderVolumeMapper* mapper)

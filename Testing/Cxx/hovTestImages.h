@@ -34,6 +34,10 @@ struct Image
 /// The mapper's float image (empty, with a note, if it is missing or malformed).
 Image FloatImage(vtkHighOrderVolumeMapper* mapper);
 
+/// The mapper's last CPU image in double precision (GetDoubleImage), with the
+/// float image's size (empty, with a note, if the sizes disagree).
+Image DoubleImage(vtkHighOrderVolumeMapper* mapper);
+
 /// Largest value of the mapper's RAY_CAST error image (-1 if it has none).
 double MaxRayCastError(vtkHighOrderVolumeMapper* mapper);
 
