@@ -395,7 +395,15 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
   }
   std::vector<double>& rgba = this->Impl->RGBA;
   rgba.swap(frame.RGBA);
-  rgba.resize(4 * pixels, 0.0); // (every backend writes the whole image)
+  if (rgba.size() != 4 * pixels)
+  {
+    // Every backend writes the whole image (a reduced one expanded): a
+    // mismatch is a defect, never shown as a garbled image.
+    vtkErrorMacro("Internal error: the image has " << rgba.size() / 4 << " pixels for "
+                                                  << frame.Width << " x " << frame.Height
+                                                  << "; it is drawn transparent.");
+    rgba.assign(4 * pixels, 0.0);
+  }
   // Checked and converted to float in one parallel pass, into the published
   // array itself unless somebody else holds it.
   float* out =

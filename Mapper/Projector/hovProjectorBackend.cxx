@@ -60,8 +60,22 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
     ProjectorSettings settings;
     settings.TileSize = frame.Settings.TileSize;
     settings.Progress = frame.Progress;
+    // A reduced frame (f > 1) is rendered at its size and expanded, as below.
+    const float* depth = frame.Depth;
+    if (depth && f > 1)
+    {
+      ReduceDepth(frame.Depth, frame.Width, frame.Height, rw, rh, this->Depth);
+      depth = this->Depth.data();
+    }
+    std::vector<double>& image = f > 1 ? this->Reduced : frame.RGBA;
     const ProjectorStatistics st = this->Blend.Render(scene.GetCells(), rays,
-      tf->GetBlendTable(), BlendSettingsOf(frame), settings, frame.Depth, frame.RGBA);
+      tf->GetBlendTable(), BlendSettingsOf(frame), settings, depth, image);
+    if (f > 1)
+    {
+      frame.ClearImage();
+      ExpandImage(this->Reduced.data(), rw, rh, 4, frame.RGBA.data(), frame.Width, frame.Height);
+    }
+    frame.Stats.Rays = static_cast<vtkIdType>(rw) * rh;
     frame.Drawn = true;
     frame.Stats.Aborted = st.Aborted;
     frame.Stats.Segments = st.Segments;
