@@ -1,6 +1,7 @@
 // The pixel lanes of hov::ProjectorTile (declared in
 // hovProjectorTileLanes.h): ray clipping of rows of pixels and row
-// ranges of projected cells, several pixels or rows per vector instruction
+// ranges of projected cells, several pixels or rows per vector instruction,
+// and the compositing of the segment queue,
 // with exactly the scalar code's operations, compiled for baseline x86-64
 // and for AVX2 (chosen at load time; the same IEEE operations, no FMA).
 #include "hovProjectorTileLanes.h"

@@ -2,7 +2,8 @@
  * @file    hovProjectorTileLanes.h
  * @brief   Private to hov::ProjectorTile: exact ray clipping of a row
  *          of pixels against a cell, several pixels per vector instruction,
- *          written straight into the tile's segment queue.
+ *          written straight into the tile's segment queue, and the
+ *          compositing of the queue (CompositeQueue).
  *
  * Declarations and small inline helpers, in namespace hov::tile; the
  * vector code is in hovProjectorTileLanes.cxx.

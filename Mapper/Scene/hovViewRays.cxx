@@ -9,6 +9,14 @@
 #include <algorithm> // std::min, std::max
 #include <cmath>     // std::isfinite, std::sqrt
 
+// No contraction into fused multiply-adds in this file (whatever -march a
+// build uses): RowRays() and PixelRay() must round every operation alike.
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
 namespace
 {
 /// VTK matrices are row-major with column vectors; glm is column-major.

@@ -61,7 +61,8 @@ public:
   Ray PixelRay(int i, int j) const;
 
   /// PixelRay() of the @p count pixels (i0 + k, j), k < count, into @p rays:
-  /// four pixels per vector with PixelRay()'s operations, so bit-identical.
+  /// four pixels per vector with PixelRay()'s operations, so bit-identical
+  /// (this file is compiled without contraction into fused multiply-adds).
   void RowRays(int i0, int j, int count, Ray* rays) const;
 
   /**
