@@ -69,6 +69,11 @@ void Usage(const char* argv0)
        "                        e.g. to profile one of them)\n"
        "Run under xvfb-run -a -s \"-screen 0 1280x1024x24 -noreset\".\n";
 }
+/// True if --only is not given or lists @p key.
+bool Wanted(const Options& opt, const std::string& key)
+{
+  return opt.Only.empty() || ("," + opt.Only + ",").find("," + key + ",") != std::string::npos;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -116,6 +121,17 @@ int main(int argc, char* argv[])
     else if (a == "--only")
     {
       opt.Only = next("mapper keys");
+      opt.Only.erase(std::remove(opt.Only.begin(), opt.Only.end(), ' '), opt.Only.end());
+      std::string list = opt.Only + ",";
+      for (size_t at; (at = list.find(',')) != std::string::npos; list.erase(0, at + 1))
+      {
+        const std::string key = list.substr(0, at);
+        if (key != "hov_vis" && key != "hov_pix" && key != "pt" && key != "rc")
+        {
+          std::cerr << "--only: unknown mapper key '" << key << "' (hov_vis, hov_pix, pt, rc)\n";
+          return 2;
+        }
+      }
     }
     else if (a == "--out")
     {
@@ -178,6 +194,10 @@ int main(int argc, char* argv[])
     std::vector<std::unique_ptr<Run>> runs;
     for (const bool perPixel : { false, true })
     {
+      if (!Wanted(opt, perPixel ? "hov_pix" : "hov_vis"))
+      {
+        continue;
+      }
       auto m = vtkSmartPointer<vtkHighOrderVolumeMapper>::New();
       m->SetIntegrationMethodToExact();
       m->SetOpacitySemanticsToVTKUnstructured();
@@ -188,19 +208,23 @@ int main(int argc, char* argv[])
           (perPixel ? "per-pixel" : "visibility") + " sort)",
         m, errors));
     }
-    runs.push_back(Prepare(opt, mesh, "pt", "vtkProjectedTetrahedraMapper",
-      vtkSmartPointer<vtkProjectedTetrahedraMapper>::New(), errors));
+    if (Wanted(opt, "pt"))
+    {
+      runs.push_back(Prepare(opt, mesh, "pt", "vtkProjectedTetrahedraMapper",
+        vtkSmartPointer<vtkProjectedTetrahedraMapper>::New(), errors));
+    }
     const std::string rcLabel = "vtkUnstructuredGridVolumeRayCastMapper + linear integrator";
     Row skipped;
     const bool large = mesh.Name != "bracket";
-    if (large && opt.SkipRayCastLarge)
+    const bool rc = Wanted(opt, "rc");
+    if (rc && large && opt.SkipRayCastLarge)
     {
       skipped.Mesh = mesh.Name;
       skipped.Key = "rc";
       skipped.Mapper = rcLabel;
       skipped.Problem = "skipped (--skip-raycast-large)";
     }
-    else
+    else if (rc)
     {
       auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
       vtkNew<vtkUnstructuredGridLinearRayIntegrator> integrator;
@@ -208,15 +232,6 @@ int main(int argc, char* argv[])
       m->SetAutoAdjustSampleDistances(0); // one ray per pixel, no LOD
       m->SetImageSampleDistance(1.0);
       runs.push_back(Prepare(opt, mesh, "rc", rcLabel, m, errors));
-    }
-    if (!opt.Only.empty())
-    {
-      const std::string only = "," + opt.Only + ",";
-      runs.erase(std::remove_if(runs.begin(), runs.end(),
-                   [&](const std::unique_ptr<Run>& r) {
-                     return only.find("," + r->Result.Key + ",") == std::string::npos;
-                   }),
-        runs.end());
     }
     TimeInterleaved(opt, runs);
     for (auto& run : runs)
