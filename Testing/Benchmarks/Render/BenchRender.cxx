@@ -65,8 +65,8 @@ void Usage(const char* argv0)
        "  --mesh M              bracket, rt or all (default all)\n"
        "  --skip-raycast-large  skip vtkUnstructuredGridVolumeRayCastMapper on the generated mesh\n"
        "  --out DIR             write the last frame of every run as PNG into DIR\n"
-       "  --only KEYS           run only these mappers (comma-separated: hov_vis, hov_pix, pt, rc;\n"
-       "                        e.g. to profile one of them)\n"
+       "  --only KEYS           run only these mappers (comma-separated: hov_vis, hov_pix,\n"
+       "                        pt, rc; e.g. to profile one of them)\n"
        "Run under xvfb-run -a -s \"-screen 0 1280x1024x24 -noreset\".\n";
 }
 /// True if --only is not given or lists @p key.
