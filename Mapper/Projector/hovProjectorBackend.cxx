@@ -54,28 +54,33 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   {
     render = ok = false;
   }
-  if (render && blend)
+  // Every path below renders the rw x rh rays into `image` with `depth` (for
+  // f > 1: the reduced image with the nearest opaque depth of each block) and
+  // then calls expand() (the reduced image onto every pixel of its block).
+  const float* depth = frame.Depth;
+  if (render && depth && f > 1)
   {
-    // No order needed: max, min and sums commute (hov::BlendProjector).
-    ProjectorSettings settings;
-    settings.TileSize = frame.Settings.TileSize;
-    settings.Progress = frame.Progress;
-    // A reduced frame (f > 1) is rendered at its size and expanded, as below.
-    const float* depth = frame.Depth;
-    if (depth && f > 1)
-    {
-      ReduceDepth(frame.Depth, frame.Width, frame.Height, rw, rh, this->Depth);
-      depth = this->Depth.data();
-    }
-    std::vector<double>& image = f > 1 ? this->Reduced : frame.RGBA;
-    const ProjectorStatistics st = this->Blend.Render(scene.GetCells(), rays,
-      tf->GetBlendTable(), BlendSettingsOf(frame), settings, depth, image);
+    ReduceDepth(frame.Depth, frame.Width, frame.Height, rw, rh, this->Depth);
+    depth = this->Depth.data();
+  }
+  std::vector<double>& image = f > 1 ? this->Reduced : frame.RGBA;
+  auto expand = [&]() {
     if (f > 1)
     {
       frame.ClearImage();
       ExpandImage(this->Reduced.data(), rw, rh, 4, frame.RGBA.data(), frame.Width, frame.Height);
     }
     frame.Stats.Rays = static_cast<vtkIdType>(rw) * rh;
+  };
+  if (render && blend)
+  {
+    // No order needed: max, min and sums commute (hov::BlendProjector).
+    ProjectorSettings settings;
+    settings.TileSize = frame.Settings.TileSize;
+    settings.Progress = frame.Progress;
+    const ProjectorStatistics st = this->Blend.Render(scene.GetCells(), rays,
+      tf->GetBlendTable(), BlendSettingsOf(frame), settings, depth, image);
+    expand();
     frame.Drawn = true;
     frame.Stats.Aborted = st.Aborted;
     frame.Stats.Segments = st.Segments;
@@ -100,13 +105,6 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   settings.TileSize = frame.Settings.TileSize;
   settings.Progress = frame.Progress;
   const int features = this->PrepareFeatures(frame);
-  const float* depth = frame.Depth;
-  if (depth && f > 1)
-  {
-    ReduceDepth(frame.Depth, frame.Width, frame.Height, rw, rh, this->Depth);
-    depth = this->Depth.data();
-  }
-  std::vector<double>& image = f > 1 ? this->Reduced : frame.RGBA;
   frame.Stats.FixedSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   CellProjector::Statistics st;
@@ -121,16 +119,15 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
     st = this->Projector.Render(
       scene.GetCells(), scene.GetFrontToBack(), rays, tf->GetTable(), settings, depth, image);
   }
+  if (features >= 0)
+  {
+    expand();
+  }
   else
   {
     frame.ClearImage();
+    frame.Stats.Rays = static_cast<vtkIdType>(rw) * rh;
   }
-  if (features >= 0 && f > 1)
-  {
-    frame.ClearImage();
-    ExpandImage(this->Reduced.data(), rw, rh, 4, frame.RGBA.data(), frame.Width, frame.Height);
-  }
-  frame.Stats.Rays = static_cast<vtkIdType>(rw) * rh;
   frame.Stats.Aborted = st.Aborted;
   frame.Stats.WitnessViolations = st.WitnessViolations;
   frame.Stats.Segments = st.Segments;
