@@ -108,13 +108,8 @@ private:
       return;
     }
     const CellSetup::Tetra& tet = frame.Setup->GetTetras()[c];
-    double nx[4], ny[4], nz[4];
-    for (int f = 0; f < 4; ++f)
-    {
-      nx[f] = tet.Normal[f].x;
-      ny[f] = tet.Normal[f].y;
-      nz[f] = tet.Normal[f].z;
-    }
+    double nx[4], ny[4], nz[4], offset[4];
+    frame.Setup->FacePlanes(tet, nx, ny, nz, offset);
     const glm::dvec3& px = frame.Rays->GetPerturbX();
     const glm::dvec3& py = frame.Rays->GetPerturbY();
     for (int j = j0; j <= j1; ++j)
@@ -125,7 +120,7 @@ private:
         const ViewRays::Ray& ray = this->Rays[p];
         double tIn, tOut;
         if (!(this->TMax[p] > 0.0) ||
-          !tile::ClipRayFaces(nx, ny, nz, tet.Offset, ray, this->TMax[p], px, py, tIn, tOut))
+          !tile::ClipRayFaces(nx, ny, nz, offset, ray, this->TMax[p], px, py, tIn, tOut))
         {
           continue;
         }

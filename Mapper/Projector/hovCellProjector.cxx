@@ -85,16 +85,10 @@ void GeneralRecord(const hov::GeneralCellTile::FrameData& general, int g, int wi
   cell.Interval = -2;
 }
 /// The record of ordered tetrahedron @p tet (see hov::ProjectorTile::CellRecord).
-void TetraRecord(const Tetra& tet, const hov::ProjectedPoints& points,
+void TetraRecord(const hov::CellSetup& setup, const Tetra& tet, const hov::ProjectedPoints& points,
   const hov::TransferFunction& tf, int width, int height, CellRecord& cell)
 {
-  for (int f = 0; f < 4; ++f)
-  {
-    cell.NX[f] = tet.Normal[f].x;
-    cell.NY[f] = tet.Normal[f].y;
-    cell.NZ[f] = tet.Normal[f].z;
-    cell.Offset[f] = tet.Offset[f];
-  }
+  setup.FacePlanes(tet, cell.NX, cell.NY, cell.NZ, cell.Offset);
   cell.Gradient = tet.Gradient;
   cell.RefPoint = tet.RefPoint;
   cell.RefScalar = tet.RefScalar;
@@ -217,7 +211,7 @@ void hov::CellProjector::BuildRecords(const CellSetup& setup, const std::vector<
           __builtin_prefetch(ahead + offset);
         }
       }
-      TetraRecord(tets[order[k]], buf.Points, tf, width, height, buf.Cells[k]);
+      TetraRecord(setup, tets[order[k]], buf.Points, tf, width, height, buf.Cells[k]);
       buf.Boxes[k] = buf.Cells[k].PixelBox;
     }
   });

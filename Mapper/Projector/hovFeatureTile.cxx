@@ -16,23 +16,6 @@ using Ray = hov::ViewRays::Ray;
 using Tetra = hov::CellSetup::Tetra;
 using hov::BoxMargin;
 
-/// Exact clip of a ray against a tetrahedron's four canonical face planes:
-/// the arithmetic of the fast path's ClipRay (hovTileGeometry.h),
-/// so shared faces give bit-identical exit/entry times, and the same
-/// symbolic perturbation for rays lying in a face.
-bool ClipTetra(const Tetra& tet, const Ray& ray, double tMax, const glm::dvec3& px,
-  const glm::dvec3& py, double& tIn, double& tOut)
-{
-  double nx[4], ny[4], nz[4];
-  for (int k = 0; k < 4; ++k)
-  {
-    nx[k] = tet.Normal[k].x;
-    ny[k] = tet.Normal[k].y;
-    nz[k] = tet.Normal[k].z;
-  }
-  return hov::tile::ClipRayFaces(nx, ny, nz, tet.Offset, ray, tMax, px, py, tIn, tOut);
-}
-
 /// Window-x span of the convex hull of the 4 projected vertices on the row at
 /// height @p y (the span of the row's crossings with all 6 edges); false if
 /// the row misses it.
@@ -94,6 +77,12 @@ void hov::FeatureTile::ForIntervals(
     return;
   }
   const Tetra& tet = frame.Setup->GetTetras()[cell];
+  // The exact clip against the cell's canonical face planes: the arithmetic
+  // of the fast path's ClipRay (hovTileGeometry.h), so shared faces give
+  // bit-identical exit/entry times, and the same symbolic perturbation for
+  // rays lying in a face.
+  double nx[4], ny[4], nz[4], offset[4];
+  frame.Setup->FacePlanes(tet, nx, ny, nz, offset);
   const int i0 = std::max(box[0], this->X0) - this->X0;
   const int i1 = std::min(box[1], this->X0 + this->W - 1) - this->X0;
   const int j0 = std::max(box[2], this->Y0) - this->Y0;
@@ -127,7 +116,8 @@ void hov::FeatureTile::ForIntervals(
       const size_t p = static_cast<size_t>(j) * this->W + i;
       double tIn, tOut;
       if ((skipDone && this->Done[p]) ||
-        !ClipTetra(tet, this->Rays[p], this->TMax[p], frame.PerturbX, frame.PerturbY, tIn, tOut))
+        !tile::ClipRayFaces(nx, ny, nz, offset, this->Rays[p], this->TMax[p], frame.PerturbX,
+          frame.PerturbY, tIn, tOut))
       {
         continue;
       }

@@ -53,36 +53,8 @@ double ScalarOf(vtkDataArray* array, vtkIdType id, int component, double* tuple)
 
 using Tetra = hov::CellSetup::Tetra;
 
-/// The canonical face planes of @p tet (corners @p x): from the face's three
-/// global point ids in ascending order, then oriented outward by negation
-/// (see the class doc).
-void FacePlanes(Tetra& tet, const glm::dvec3 x[4])
-{
-  for (int k = 0; k < 4; ++k)
-  {
-    int f[3], m = 0;
-    for (int v = 0; v < 4; ++v)
-    {
-      if (v != k)
-      {
-        f[m++] = v;
-      }
-    }
-    std::sort(f, f + 3, [&](int p, int q) { return tet.Points[p] < tet.Points[q]; });
-    glm::dvec3 n = glm::cross(x[f[1]] - x[f[0]], x[f[2]] - x[f[0]]);
-    double h = glm::dot(n, x[f[0]]);
-    if (glm::dot(n, x[k]) > h)
-    {
-      n = -n;
-      h = -h;
-    }
-    tet.Normal[k] = n;
-    tet.Offset[k] = h;
-  }
-}
-
 /**
- * Tetrahedron @p cellId with point ids @p ids into @p tet (face planes, linear
+ * Tetrahedron @p cellId with point ids @p ids into @p tet (point ids, linear
  * field); its status, and whether it is @p inverted (negative VTK orientation).
  */
 Status PrepareTetra(vtkIdList* ids, vtkIdType cellId, const std::vector<glm::dvec3>& points,
@@ -133,7 +105,6 @@ Status PrepareTetra(vtkIdList* ids, vtkIdType cellId, const std::vector<glm::dve
     return Degenerate;
   }
   inverted = det < 0.0;
-  FacePlanes(tet, x);
   // Linear field: solve [e1 e2 e3]^T g = (s1 - s0, s2 - s0, s3 - s0) by Cramer.
   tet.RefPoint = x[0];
   tet.RefScalar = s[0];
@@ -283,6 +254,42 @@ bool hov::CellSetup::Build(vtkUnstructuredGridBase* grid, vtkDataArray* scalars,
   this->BuildSortGrid(grid);
   this->Stats.Rendered = this->GetNumberOfRenderedCells();
   return this->Stats.Rendered > 0;
+}
+
+void hov::CellSetup::FacePlanes(
+  const Tetra& tet, double nx[4], double ny[4], double nz[4], double offset[4]) const
+{
+  // The vertices by ascending point id (distinct: a cell that repeats a
+  // point is degenerate and not kept); face k's are these without vertex k.
+  int byId[4] = { 0, 1, 2, 3 };
+  std::sort(byId, byId + 4, [&](int p, int q) { return tet.Points[p] < tet.Points[q]; });
+  glm::dvec3 x[4];
+  for (int v = 0; v < 4; ++v)
+  {
+    x[v] = this->Points[tet.Points[v]];
+  }
+  for (int k = 0; k < 4; ++k)
+  {
+    int f[3], m = 0;
+    for (int v : byId)
+    {
+      if (v != k)
+      {
+        f[m++] = v;
+      }
+    }
+    glm::dvec3 n = glm::cross(x[f[1]] - x[f[0]], x[f[2]] - x[f[0]]);
+    double h = glm::dot(n, x[f[0]]);
+    if (glm::dot(n, x[k]) > h)
+    {
+      n = -n;
+      h = -h;
+    }
+    nx[k] = n.x;
+    ny[k] = n.y;
+    nz[k] = n.z;
+    offset[k] = h;
+  }
 }
 
 void hov::CellSetup::BuildSortGrid(vtkUnstructuredGridBase* grid)

@@ -4,9 +4,12 @@
  *          path: linear tetrahedra for exact ray clipping (the fast path),
  *          the other supported types in hov::GeneralCells.
  *
- * For every valid tetrahedron of the input: its four face planes n.x <= h
- * (outward normals) and its linear scalar field s(x) = s0 + g.(x - x0). Built
- * once per input/array change and reused for every view.
+ * For every valid tetrahedron of the input: its point ids and its linear
+ * scalar field s(x) = s0 + g.(x - x0). Built once per input/array change and
+ * reused for every view. Its four face planes n.x <= h (outward normals) are
+ * computed from the points when a frame needs them (FacePlanes(): 128 bytes a
+ * tetrahedron not kept, 256 MB for 2M tetrahedra; the CPU projector copies
+ * them into its per-frame cell records anyway).
  *
  * Face planes are computed canonically: from the face's three global point ids
  * in ascending order, then oriented outward by negation. Two tetrahedra that
@@ -56,8 +59,6 @@ class CellSetup
 public:
   struct Tetra
   {
-    glm::dvec3 Normal[4]; ///< outward face normals (not normalised)
-    double Offset[4];     ///< inside iff dot(Normal[k], x) <= Offset[k]
     glm::dvec3 Gradient;  ///< scalar gradient (0 for cell scalars)
     glm::dvec3 RefPoint;  ///< vertex 0
     double RefScalar;     ///< scalar at vertex 0 (the cell value for cell scalars)
@@ -109,6 +110,13 @@ public:
   {
     return static_cast<vtkIdType>(this->Tetras.size() + this->General.GetCells().size());
   }
+  /**
+   * The canonical face planes of @p tet (see the class doc), face k opposite
+   * vertex k: inside iff nx[k] x + ny[k] y + nz[k] z <= offset[k], the normals
+   * outward and not normalised. The same bits on every call.
+   */
+  void FacePlanes(const Tetra& tet, double nx[4], double ny[4], double nz[4], double offset[4]) const;
+
   /// All input points (dataset coordinates), indexed by point id.
   const std::vector<glm::dvec3>& GetPoints() const { return this->Points; }
   const Statistics& GetStatistics() const { return this->Stats; }
