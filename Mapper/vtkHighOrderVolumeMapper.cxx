@@ -265,6 +265,7 @@ void vtkHighOrderVolumeMapper::InitFrame(hov::RenderFrame& frame, vtkCamera* cam
   s.VectorComponent = this->VectorComponent;
   s.TerminationTransmittance = this->TerminationTransmittance;
   s.TileSize = this->TileSize;
+  s.CellRecordMemory = this->CellRecordMemory;
   s.UseDepthBuffer = this->UseDepthBuffer;
   s.ViewDepthClipping = this->ViewDepthClipping;
   s.ViewDepthRange[0] = this->ViewDepthRange[0];
@@ -554,6 +555,7 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TerminationTransmittance: " << this->TerminationTransmittance << "\n";
   os << indent << "UseDepthBuffer: " << this->UseDepthBuffer << "\n";
   os << indent << "TileSize: " << this->TileSize << "\n";
+  os << indent << "CellRecordMemory: " << this->CellRecordMemory << " MiB\n";
   os << indent << "ViewDepthClipping: " << this->ViewDepthClipping << " ["
      << this->ViewDepthRange[0] << ", " << this->ViewDepthRange[1] << "]\n";
   os << indent << "VisibilitySort: " << this->VisibilitySort << "\n";

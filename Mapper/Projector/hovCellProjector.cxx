@@ -1,5 +1,6 @@
 #include "hovCellProjector.h"
 
+#include "hovCellRecords.h"   // the records the tiles read
 #include "hovCellSetup.h"     // the cells
 #include "hovProjectorTile.h" // the per-tile work
 #include "hovViewRays.h"      // pixel rays
@@ -17,12 +18,10 @@
 struct hov::CellProjector::Buffers
 {
   ProjectedPoints Points;
-  std::vector<ProjectorTile::CellRecord> Cells;
-  std::vector<CellBox> Boxes; ///< the records' pixel boxes, for binning
+  CellRecords Records; ///< and the pixel boxes, for binning
   std::vector<std::pair<float, vtkIdType>> DepthOrder; ///< per-pixel mode: (depth, tetra)
   std::vector<vtkIdType> Order;                        ///< per-pixel mode: tetras by depth
   std::vector<unsigned char> Covers; ///< per-pixel mode: the cell covers a pixel centre
-  std::vector<int> GeneralOf; ///< per ordered cell: general cell index, or -1
   TileBins Bins;
   vtkSMPThreadLocal<ProjectorTile> Tiles;
 };
@@ -30,33 +29,7 @@ struct hov::CellProjector::Buffers
 namespace
 {
 using Box = hov::CellBox;
-using CellRecord = hov::ProjectorTile::CellRecord;
 using Tetra = hov::CellSetup::Tetra;
-
-/// Distance, in ordered cells, at which a tetrahedron is prefetched while the
-/// cell records are built.
-constexpr vtkIdType RecordPrefetch = 8;
-
-/// Pixel box of a tetrahedron: the pixel centres inside its projected
-/// bounding box, widened by BoxMargin pixels against round-off in the
-/// projection (the per-pixel ray test that follows is exact).
-Box PixelBox(const Tetra& tet, const std::vector<glm::dvec2>& window,
-  const std::vector<unsigned char>& projectable, int width, int height)
-{
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (vtkIdType id : tet.Points)
-  {
-    if (!projectable[id])
-    {
-      return Box{ 0, width - 1, 0, height - 1 }; // crosses the eye plane
-    }
-    x0 = std::min(x0, window[id].x);
-    x1 = std::max(x1, window[id].x);
-    y0 = std::min(y0, window[id].y);
-    y1 = std::max(y1, window[id].y);
-  }
-  return hov::PixelBoxOf(x0, x1, y0, y1, width, height, hov::BoxMargin);
-}
 
 /// Centroid of the corners of general cell @p g (per-pixel mode's depth key).
 glm::dvec3 GeneralCentroid(const hov::CellSetup& setup, vtkIdType g)
@@ -71,40 +44,6 @@ glm::dvec3 GeneralCentroid(const hov::CellSetup& setup, vtkIdType g)
     c += glm::dvec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
   }
   return c / static_cast<double>(n);
-}
-
-/// The record of general cell @p g: only its pixel box and projectability
-/// are read by the tile loop (binning, band test); the rest is zero.
-void GeneralRecord(const hov::GeneralCellTile::FrameData& general, int g, int width,
-  int height, CellRecord& cell)
-{
-  cell = CellRecord();
-  bool projectable = true;
-  cell.PixelBox = hov::GeneralCellTile::PixelBox(general, g, width, height, projectable);
-  cell.Projectable = projectable;
-  cell.Interval = -2;
-}
-/// The record of ordered tetrahedron @p tet (see hov::ProjectorTile::CellRecord).
-void TetraRecord(const hov::CellSetup& setup, const Tetra& tet, const hov::ProjectedPoints& points,
-  const hov::TransferFunction& tf, int width, int height, CellRecord& cell)
-{
-  setup.FacePlanes(tet, cell.NX, cell.NY, cell.NZ, cell.Offset);
-  cell.Gradient = tet.Gradient;
-  cell.RefPoint = tet.RefPoint;
-  cell.RefScalar = tet.RefScalar;
-  cell.PixelBox = PixelBox(tet, points.Window, points.Projectable, width, height);
-  cell.Projectable = true;
-  for (int v = 0; v < 4; ++v)
-  {
-    cell.Vertex[v] = points.Window[tet.Points[v]];
-    cell.Projectable = cell.Projectable && points.Projectable[tet.Points[v]];
-  }
-  cell.Interval = hov::IntervalOfRange(tf, tet.ScalarMin, tet.ScalarMax);
-  if (cell.Interval == -2)
-  {
-    // Across nodes: a hint for the search of each segment's interval.
-    cell.Interval = -3 - tf.FindIntervalUpward(tet.ScalarMin);
-  }
 }
 }
 
@@ -136,8 +75,7 @@ const std::vector<vtkIdType>& hov::CellProjector::DepthOrder(const CellSetup& se
       const vtkIdType id = frontToBack[k];
       if (id < numTets)
       {
-        const Box box =
-          PixelBox(tets[id], buf.Points.Window, buf.Points.Projectable, width, height);
+        const Box box = CellRecords::TetraBox(tets[id].Points, buf.Points, width, height);
         buf.Covers[k] = box[0] <= box[1] && box[2] <= box[3];
         if (!buf.Covers[k])
         {
@@ -174,49 +112,6 @@ const std::vector<vtkIdType>& hov::CellProjector::DepthOrder(const CellSetup& se
   return buf.Order;
 }
 
-void hov::CellProjector::BuildRecords(const CellSetup& setup, const std::vector<vtkIdType>& order,
-  const TransferFunction& tf, int width, int height, GeneralCellTile::FrameData& general) const
-{
-  // Per cell, in that order and in one pass, its record for the tile loop:
-  // face planes and field, projected vertices, pixel box, and the
-  // transfer-function interval holding its whole scalar range (most cells of
-  // a fine mesh: their segments skip the search).
-  Buffers& buf = *this->Scratch;
-  const auto& tets = setup.GetTetras();
-  const vtkIdType numTets = static_cast<vtkIdType>(tets.size());
-  const bool hasGeneral = !setup.GetGeneralCells().GetCells().empty();
-  const size_t numCells = order.size();
-  buf.Cells.resize(numCells);
-  buf.Boxes.resize(numCells);
-  buf.GeneralOf.resize(hasGeneral ? numCells : 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType k = b; k < e; ++k)
-    {
-      if (hasGeneral)
-      {
-        buf.GeneralOf[k] = order[k] < numTets ? -1 : static_cast<int>(order[k] - numTets);
-        if (buf.GeneralOf[k] >= 0)
-        {
-          GeneralRecord(general, buf.GeneralOf[k], width, height, buf.Cells[k]);
-          buf.Boxes[k] = buf.Cells[k].PixelBox;
-          continue;
-        }
-      }
-      // The order scatters the tetrahedra in memory: fetch a few ahead.
-      if (k + RecordPrefetch < e && order[k + RecordPrefetch] < numTets)
-      {
-        const char* ahead = reinterpret_cast<const char*>(&tets[order[k + RecordPrefetch]]);
-        for (size_t offset = 0; offset < sizeof(Tetra); offset += 64)
-        {
-          __builtin_prefetch(ahead + offset);
-        }
-      }
-      TetraRecord(setup, tets[order[k]], buf.Points, tf, width, height, buf.Cells[k]);
-      buf.Boxes[k] = buf.Cells[k].PixelBox;
-    }
-  });
-}
-
 hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup,
   const std::vector<vtkIdType>& frontToBack, const ViewRays& rays, const TransferFunction& tf,
   const Settings& settings, const float* depth, std::vector<double>& rgba) const
@@ -241,19 +136,19 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   // The general cells' frame data (their records only carry the pixel box).
   GeneralCellTile::FrameData general;
   general.Cells = &setup.GetGeneralCells();
-  general.GeneralOf = &buf.GeneralOf;
   general.Window = buf.Points.Window.data();
   general.Perturbation = GeneralCellTile::PerturbationOf(rays);
   general.Projectable = buf.Points.Projectable.data();
   general.TF = &tf;
   general.Segment.Emission = settings.Integration.Emission;
-  this->BuildRecords(setup, order, tf, width, height, general);
-  buf.Bins.Build(buf.Boxes, width, height, TileSizeOf(settings));
+  buf.Records.Build(setup, order, buf.Points, tf, width, height, general, settings.RecordBudget);
+  buf.Bins.Build(buf.Records.GetBoxes(), width, height, TileSizeOf(settings));
 
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
   ProjectorTile::Frame frame;
   frame.Bins = &buf.Bins;
-  frame.Cells = &buf.Cells;
+  frame.Cells = buf.Records.IsWhole() ? &buf.Records.GetRecords() : nullptr;
+  frame.Records = &buf.Records;
   frame.TF = &tf;
   frame.Settings = &settings;
   frame.Rays = &rays;

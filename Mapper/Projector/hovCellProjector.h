@@ -97,9 +97,6 @@ private:
   /// Per-pixel mode: @p frontToBack by centroid depth along the central ray.
   const std::vector<vtkIdType>& DepthOrder(const CellSetup& setup,
     const std::vector<vtkIdType>& frontToBack, const ViewRays& rays) const;
-  /// The cell records and pixel boxes of the ordered cells @p order.
-  void BuildRecords(const CellSetup& setup, const std::vector<vtkIdType>& order,
-    const TransferFunction& tf, int width, int height, GeneralCellTile::FrameData& general) const;
 
   struct Buffers; // per-frame arrays kept across frames (see the .cxx)
   mutable std::shared_ptr<Buffers> Scratch;

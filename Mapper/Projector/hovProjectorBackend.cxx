@@ -103,6 +103,7 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   settings.PerPixelSort =
     frame.Settings.Ordering == CellOrdering::PerPixelSort || scene.OrderHasCycles();
   settings.TileSize = frame.Settings.TileSize;
+  settings.RecordBudget = static_cast<size_t>(std::max(frame.Settings.CellRecordMemory, 0)) << 20;
   settings.Progress = frame.Progress;
   const int features = this->PrepareFeatures(frame);
   frame.Stats.FixedSeconds =

@@ -1,5 +1,6 @@
 #include "hovProjectorTile.h"
 
+#include "hovCellRecords.h"         // per-tile records
 #include "hovProjectorTileLanes.h" // pixel lanes
 #include "hovTileGeometry.h"        // ray clipping, row spans
 
@@ -235,6 +236,52 @@ void hov::ProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<d
     WriteEmptyTile(bins, frame.Rays->GetWidth(), frame.Rays->GetHeight(), tileIndex, rgba);
     return;
   }
+  if (!frame.Cells)
+  {
+    // No records for the whole order (over the memory budget): this tile's
+    // cells' records, bit for bit what CellRecords::Build makes, indexed in
+    // the tile's order (which keeps the cell order and its ties).
+    const CellRecords& records = *frame.Records;
+    const bool general = frame.General != nullptr;
+    this->LocalRecords.resize(count);
+    this->LocalCells.resize(count);
+    this->LocalGeneralOf.resize(general ? count : 0);
+    constexpr vtkIdType cellAhead = 16, pointsAhead = 8;
+    for (vtkIdType c = 0; c < count; ++c)
+    {
+      if (c + cellAhead < count)
+      {
+        records.PrefetchCell(cells[c + cellAhead]);
+      }
+      if (c + pointsAhead < count)
+      {
+        records.PrefetchPoints(cells[c + pointsAhead]);
+      }
+      records.Make(cells[c], this->LocalRecords[c]);
+      this->LocalCells[c] = c;
+      if (general)
+      {
+        this->LocalGeneralOf[c] = records.GetGeneralOf()[cells[c]];
+      }
+    }
+    Frame local = frame;
+    local.Cells = &this->LocalRecords;
+    GeneralCellTile::FrameData localGeneral;
+    if (general)
+    {
+      localGeneral = *frame.General;
+      localGeneral.GeneralOf = &this->LocalGeneralOf;
+      local.General = &localGeneral;
+    }
+    this->RenderCells(local, tileIndex, this->LocalCells.data(), count, rgba, stats);
+    return;
+  }
+  this->RenderCells(frame, tileIndex, cells, count, rgba, stats);
+}
+
+void hov::ProjectorTile::RenderCells(const Frame& frame, int tileIndex, const vtkIdType* cells,
+  vtkIdType count, std::vector<double>& rgba, Statistics& stats)
+{
   this->Init(frame, tileIndex);
   if (frame.Settings->PerPixelSort)
   {

@@ -58,6 +58,8 @@ struct ProjectedEdges;
 
 namespace hov
 {
+class CellRecords;
+
 class ProjectorTile : public TilePixels
 {
 public:
@@ -93,7 +95,9 @@ public:
   struct Frame
   {
     const TileBins* Bins;
-    const std::vector<CellRecord>* Cells; ///< per ordered cell
+    /// Per ordered cell; null: each tile builds its cells' records from Records.
+    const std::vector<CellRecord>* Cells;
+    const CellRecords* Records = nullptr;
     const hov::TransferFunction* TF;
     const ProjectorSettings* Settings;
     const hov::ViewRays* Rays;
@@ -109,6 +113,9 @@ public:
     Statistics& stats);
 
 private:
+  /// Render() with the records of the tile's cells @p cells (@p count) in frame.Cells.
+  void RenderCells(const Frame& frame, int tileIndex, const vtkIdType* cells, vtkIdType count,
+    std::vector<double>& rgba, Statistics& stats);
   void Init(const Frame& frame, int tileIndex);
   void RenderInCellOrder(const Frame& frame, const vtkIdType* cells, vtkIdType count,
     Statistics& st);
@@ -195,6 +202,11 @@ private:
   std::vector<int> Pieces;
   hov::SegmentBatch Batch;
   hov::GeneralCellTile General; ///< scratch of the general-cell path
+  /// Per-tile records (Frame::Cells null): the tile's cells' records, their
+  /// indices 0 .. n-1 and their general-cell indices.
+  std::vector<CellRecord> LocalRecords;
+  std::vector<vtkIdType> LocalCells;
+  std::vector<int> LocalGeneralOf;
 };
 }
 

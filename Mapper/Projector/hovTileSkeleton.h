@@ -44,6 +44,9 @@ struct ProjectorSettings
   IntegrationSettings Integration;
   double TerminationTransmittance = 1e-9;
   int TileSize = 16;
+  /// Largest memory of the per-frame cell records of the whole order
+  /// (hov::CellRecords); beyond it each tile builds its own cells' records.
+  size_t RecordBudget = size_t(256) << 20;
   /// Order each pixel's segments by entry distance instead of trusting the
   /// cell order (exact for any set of non-overlapping cells).
   bool PerPixelSort = false;

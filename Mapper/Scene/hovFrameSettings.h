@@ -90,6 +90,7 @@ struct FrameSettings
   int VectorComponent = 0;
   double TerminationTransmittance = 1e-9;
   int TileSize = 16;
+  int CellRecordMemory = 256; ///< MiB (vtkHighOrderVolumeMapper::SetCellRecordMemory)
   bool UseDepthBuffer = true;
   bool ViewDepthClipping = false;
   double ViewDepthRange[2] = { 0.0, 1.0 };

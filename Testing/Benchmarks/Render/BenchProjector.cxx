@@ -12,7 +12,8 @@
 //
 // Usage: hovBenchProjector [--data DIR] [--frames N] [--size S] [--extent E]
 //                          [--mesh bracket|rt|all] [--order vis|pix|all]
-//                          [--tile PIXELS] [--threads N] [--dump DIR | --compare DIR]
+//                          [--tile PIXELS] [--record-memory MIB] [--threads N]
+//                          [--dump DIR | --compare DIR]
 //
 // --threads 1 gives the CPU time of the work alone (idle TBB workers spin, which
 // adds CPU time that depends on the machine's load).
@@ -55,6 +56,7 @@ struct Args
   std::string Order = "all";
   std::string Dump, Compare;
   int TileSize = 0; // 0: the mapper's default
+  int RecordMemory = -1; // MiB; -1: the mapper's default
   int Threads = 0;  // 0: vtkSMPTools' default
 };
 
@@ -83,6 +85,10 @@ void RunMesh(const Args& args, const Mesh& mesh, bool perPixel)
   mapper->SetOpacitySemanticsToVTKUnstructured();
   mapper->SetCellOrdering(
     perPixel ? vtkHighOrderVolumeMapper::PER_PIXEL_SORT : vtkHighOrderVolumeMapper::VISIBILITY_SORT);
+  if (args.RecordMemory >= 0)
+  {
+    mapper->SetCellRecordMemory(args.RecordMemory);
+  }
   if (args.TileSize > 0)
   {
     mapper->SetTileSize(args.TileSize);
@@ -157,12 +163,13 @@ int main(int argc, char* argv[])
     else if (a == "--dump") args.Dump = argv[++i];
     else if (a == "--compare") args.Compare = argv[++i];
     else if (a == "--tile") args.TileSize = std::atoi(argv[++i]);
+    else if (a == "--record-memory") args.RecordMemory = std::atoi(argv[++i]);
     else if (a == "--threads") args.Threads = std::max(1, std::atoi(argv[++i]));
     else
     {
       std::cout << "Usage: " << argv[0]
                 << " [--data DIR] [--frames N] [--size S] [--extent E] [--mesh bracket|rt|all]\n"
-                   "          [--order vis|pix|all] [--tile PIXELS] [--threads N]\n"
+                   "          [--order vis|pix|all] [--tile PIXELS] [--record-memory MIB] [--threads N]\n"
                    "          [--dump DIR | --compare DIR]\n";
       return a == "--help" ? 0 : 2;
     }

@@ -1,0 +1,89 @@
+/**
+ * @class   hov::CellRecords
+ * @brief   The per-frame records of the CPU projector's ordered cells
+ *          (hov::ProjectorTile::CellRecord: face planes and field, projected
+ *          vertices, pixel box, transfer-function interval): what the tile
+ *          loop reads of a cell, in processing order.
+ *
+ * Build() computes every ordered cell's pixel box (for binning) and, while
+ * the records of all cells fit in the budget, every record too, in one
+ * parallel pass (IsWhole()): each record is then built once per frame and
+ * the tiles read them in order. Beyond the budget (meshes of about a million
+ * cells and more with the default 256 MiB: a 2M-tetrahedron frame's records
+ * take 551 MB), no record is kept: each tile builds the records of its own
+ * cells with Make() into a buffer the size of its cell list (a cell
+ * overlapping several tiles is built by each of them; 1.5-2.3 tiles a cell at
+ * 2M tetrahedra). Both give the same records bit for bit, so the image does
+ * not depend on the budget.
+ *
+ * Thread safety: Build() runs vtkSMPTools loops; Make() and the getters are
+ * const and may run on any thread.
+ * @sa hov::CellProjector, hov::ProjectorTile
+ */
+#ifndef hovCellRecords_h
+#define hovCellRecords_h
+
+#include "hovGeneralCellTile.h" // FrameData
+#include "hovProjectorTile.h"   // CellRecord
+
+#include "vtkType.h" // vtkIdType
+
+#include <cstddef> // size_t
+#include <vector>  // records, boxes
+
+namespace hov
+{
+class CellSetup;
+class TransferFunction;
+
+class CellRecords
+{
+public:
+  using CellRecord = ProjectorTile::CellRecord;
+
+  /**
+   * The pixel boxes (and general-cell indices) of the cells @p order (rendered
+   * cell ids of @p setup) for a @p width x @p height image with the projected
+   * points @p points, and their records if they take at most @p budgetBytes.
+   * @p general's GeneralOf is pointed at this object's general-cell indices.
+   * The arguments must outlive the frame (Make() reads them).
+   */
+  void Build(const CellSetup& setup, const std::vector<vtkIdType>& order,
+    const ProjectedPoints& points, const TransferFunction& tf, int width, int height,
+    GeneralCellTile::FrameData& general, size_t budgetBytes);
+
+  /// True if every record was built (GetRecords()); false: tiles use Make().
+  bool IsWhole() const { return this->Whole; }
+  /// The records of the ordered cells (IsWhole() only; empty otherwise).
+  const std::vector<CellRecord>& GetRecords() const { return this->Records; }
+  /// The pixel boxes of the ordered cells.
+  const std::vector<CellBox>& GetBoxes() const { return this->Boxes; }
+  /// Per ordered cell: its general cell index, or -1 (empty without general cells).
+  const std::vector<int>& GetGeneralOf() const { return this->GeneralOf; }
+  /// The record of ordered cell @p k, as Build() would have made it.
+  void Make(vtkIdType k, CellRecord& record) const;
+  /// Make() reads scattered memory: fetch ordered cell @p k's cell, then (a
+  /// few cells later, once the cell has arrived) its points.
+  void PrefetchCell(vtkIdType k) const;
+  void PrefetchPoints(vtkIdType k) const;
+
+  /// The pixel box of the tetrahedron with points @p ids (in front of the eye
+  /// or the whole image), widened by BoxMargin.
+  static CellBox TetraBox(const vtkIdType ids[4], const ProjectedPoints& points, int width,
+    int height);
+
+private:
+  const CellSetup* Setup = nullptr;
+  const std::vector<vtkIdType>* Order = nullptr;
+  const ProjectedPoints* Points = nullptr;
+  const TransferFunction* TF = nullptr;
+  const GeneralCellTile::FrameData* General = nullptr;
+  int Width = 0, Height = 0;
+  bool Whole = true;
+  std::vector<CellRecord> Records;
+  std::vector<CellBox> Boxes;
+  std::vector<int> GeneralOf;
+};
+}
+
+#endif
