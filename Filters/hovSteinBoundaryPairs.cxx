@@ -386,6 +386,11 @@ BoundaryPairs::BoundaryPairs()
 
 BoundaryPairs::~BoundaryPairs() = default;
 
+void BoundaryPairs::ReleaseBuffers()
+{
+  this->B.reset(new Buffers);
+}
+
 void BoundaryPairs::Edges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
   CellPairs& edges, PairStats& stats)
 {

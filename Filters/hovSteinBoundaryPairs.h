@@ -74,6 +74,9 @@ public:
   void Edges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
     std::vector<std::pair<vtkIdType, vtkIdType>>& edges, PairStats& stats);
 
+  /// Frees the per-view buffers (the next view allocates them again).
+  void ReleaseBuffers();
+
   struct Buffers; ///< opaque: the per-view buffers
 
 private:

@@ -420,4 +420,18 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   this->Graph.AddExtraEdges(this->Extra, n);
   TopologicalOrder(this->Graph, g, v, numOrdered, order, stats);
 }
+
+void GraphSort::ReleaseBuffers()
+{
+  // Swapped with empty vectors: clear() would keep the capacity.
+  std::vector<std::int8_t>().swap(this->Directions);
+  std::vector<std::uint8_t>().swap(this->Roles);
+  std::vector<vtkIdType>().swap(this->RoleStart);
+  std::vector<BlockCounts>().swap(this->Counts);
+  std::vector<std::vector<ViewFace>>().swap(this->Undecided);
+  std::vector<ViewFace>().swap(this->Faces);
+  this->Graph = Digraph();
+  std::vector<std::pair<vtkIdType, vtkIdType>>().swap(this->Extra);
+  this->Boundary.ReleaseBuffers();
+}
 }

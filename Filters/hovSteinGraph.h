@@ -109,6 +109,9 @@ public:
   /// Back-to-front order of all cells of @p g for the view @p v.
   void Sort(const Geometry& g, const Topology& t, const View& v, std::vector<vtkIdType>& order,
     GraphStats& stats);
+  /// Frees the per-view buffers (the boundary faces' planes, made once per
+  /// topology, are kept).
+  void ReleaseBuffers();
 
 private:
   /// Counters of one block of cells in CellPass.

@@ -129,6 +129,13 @@ void vtkSteinVisibilitySort::InitTraversal()
   {
     this->SortMerge();
   }
+  if (im.Geometry.NumberOfCells > this->ViewBufferCellLimit)
+  {
+    // The order is all that outlives the sort: the per-view buffers (190 MB
+    // for 2M tetrahedra) are freed before the frame allocates its own.
+    im.View = hovStein::View();
+    im.GraphSorter.ReleaseBuffers();
+  }
   if (static_cast<vtkIdType>(im.Order.size()) != im.Geometry.NumberOfCells)
   {
     vtkErrorMacro("Internal error: " << im.Order.size() << " cells ordered out of "
@@ -229,6 +236,7 @@ void vtkSteinVisibilitySort::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Algorithm: "
      << (this->Algorithm == ADJACENCY_GRAPH ? "ADJACENCY_GRAPH" : "MULTITILED_MERGE") << "\n";
+  os << indent << "ViewBufferCellLimit: " << this->ViewBufferCellLimit << "\n";
   os << indent << "NumberOfGraphEdges: " << this->NumberOfGraphEdges << "\n";
   os << indent << "NumberOfBoundaryCells: " << this->NumberOfBoundaryCells << "\n";
   os << indent << "NumberOfTiles: " << this->NumberOfTilesX << " x " << this->NumberOfTilesY

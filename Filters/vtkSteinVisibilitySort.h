@@ -188,6 +188,20 @@ public:
   }
   ///@}
 
+  ///@{
+  /**
+   * Largest input (in cells, default 1,000,000) whose per-view buffers are
+   * kept from one sort to the next. Above it they are freed once a sort is
+   * done and only the order and the view-independent data (adjacency, face
+   * planes) stay, so that a renderer's frame does not add its memory to
+   * theirs (190 MB for 2M tetrahedra); each sort then allocates them again,
+   * which made re-sorts of a 0.5M-cell heatsink about 20% slower. 0: always
+   * freed. The order does not depend on it.
+   */
+  vtkSetClampMacro(ViewBufferCellLimit, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(ViewBufferCellLimit, vtkIdType);
+  ///@}
+
   /**
    * The whole order of the last sort (cell ids of the input, in the current
    * Direction). Sorts first if needed. The array is owned by this object.
@@ -232,6 +246,7 @@ protected:
   int Algorithm = ADJACENCY_GRAPH;
   int NumberOfTilesX = 0;
   int NumberOfTilesY = 0;
+  vtkIdType ViewBufferCellLimit = 1000000;
   vtkIdType NumberOfCycles = 0;
   vtkIdType NumberOfUnorderedCells = 0;
   vtkIdType NumberOfObstructsTests = 0;

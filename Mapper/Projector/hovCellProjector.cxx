@@ -157,5 +157,17 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   frame.PerturbX = rays.GetPerturbX();
   frame.PerturbY = rays.GetPerturbY();
   frame.General = setup.GetGeneralCells().GetCells().empty() ? nullptr : &general;
-  return RunTiles(buf.Bins, width, height, settings.Progress, buf.Tiles, frame, rgba);
+  const Statistics stats =
+    RunTiles(buf.Bins, width, height, settings.Progress, buf.Tiles, frame, rgba);
+  if (!buf.Records.IsWhole())
+  {
+    // A mesh beyond the record budget: its per-frame arrays (boxes, bins,
+    // projected points: 80 MB for 2M tetrahedra) are freed rather than kept
+    // for the next frame, whose sort then does not add its buffers to them.
+    // Allocating them again costs about 1% of such a frame.
+    buf.Records.Release();
+    buf.Bins = TileBins();
+    buf.Points = ProjectedPoints();
+  }
+  return stats;
 }

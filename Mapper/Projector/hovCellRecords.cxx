@@ -142,6 +142,13 @@ void hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkIdType
   });
 }
 
+void hov::CellRecords::Release()
+{
+  std::vector<CellRecord>().swap(this->Records);
+  std::vector<CellBox>().swap(this->Boxes);
+  std::vector<int>().swap(this->GeneralOf);
+}
+
 void hov::CellRecords::PrefetchCell(vtkIdType k) const
 {
   const vtkIdType id = (*this->Order)[k];

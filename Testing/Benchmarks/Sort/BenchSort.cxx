@@ -116,6 +116,9 @@ struct SteinRun
 /// One first sort and @p resorts re-sorts of the view turned by 5 degrees (the
 /// camera turns back between them); re-sort times appended to @p times, the
 /// counters are those of the first re-sort.
+/// --view-buffer-cell-limit N: vtkSteinVisibilitySort::SetViewBufferCellLimit (-1: its default).
+vtkIdType ViewBufferCellLimit = -1;
+
 SteinRun RunSteinOnce(vtkDataSet* d, int algorithm, int tiles, int resorts, std::vector<double>& times)
 {
   vtkNew<vtkCamera> cam;
@@ -126,6 +129,10 @@ SteinRun RunSteinOnce(vtkDataSet* d, int algorithm, int tiles, int resorts, std:
   s->SetMaxCellsReturned(1000);
   s->SetAlgorithm(algorithm);
   s->SetNumberOfTiles(tiles, tiles);
+  if (ViewBufferCellLimit >= 0)
+  {
+    s->SetViewBufferCellLimit(ViewBufferCellLimit);
+  }
   SteinRun r;
   const double before = ResetPeak();
   r.First = Traverse(s);
@@ -207,6 +214,8 @@ int main(int argc, char* argv[])
       bracketOnly = true;
     else if (!std::strcmp(argv[i], "--heatsink"))
       heatsink = true;
+    else if (i + 1 < argc && !std::strcmp(argv[i], "--view-buffer-cell-limit"))
+      ViewBufferCellLimit = std::max<vtkIdType>(0, std::atoll(argv[++i]));
     else if (!std::strcmp(argv[i], "--heatsink-only"))
       heatsink = heatsinkOnly = true;
     else
@@ -217,8 +226,9 @@ int main(int argc, char* argv[])
       (help ? std::cout : std::cerr)
         << (help ? "" : std::string("unknown argument: ") + argv[i] + "\n")
         << "hovBenchSort [--data DIR] [--repeat N] [--bracket-only] [--heatsink] "
-           "[--heatsink-only] [--published] [--max-cells N] [--published-max-cells N] "
-           "[--tiles N]\n";
+           "[--heatsink-only]\n"
+           "             [--published] [--max-cells N] [--published-max-cells N] [--tiles N]\n"
+           "             [--view-buffer-cell-limit N]\n";
       return help ? 0 : 1;
     }
   }
