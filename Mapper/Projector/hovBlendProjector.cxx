@@ -125,7 +125,8 @@ private:
           continue;
         }
         // The composite path's field along the ray (hov::ProjectorTile).
-        const double sAtOrigin = tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - tet.RefPoint);
+        const double sAtOrigin =
+          tet.RefScalar + glm::dot(tet.Gradient, ray.Origin - frame.Setup->RefPoint(tet));
         const double slope = glm::dot(tet.Gradient, ray.Direction);
         AccumulateLinearSegment(this->States[p], frame.Blend, *frame.Table, tIn, tOut - tIn,
           sAtOrigin + tIn * slope, sAtOrigin + tOut * slope);

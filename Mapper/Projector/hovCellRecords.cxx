@@ -38,7 +38,7 @@ void TetraRecord(const hov::CellSetup& setup, const Tetra& tet, const hov::CellB
 {
   setup.FacePlanes(tet, cell.NX, cell.NY, cell.NZ, cell.Offset);
   cell.Gradient = tet.Gradient;
-  cell.RefPoint = tet.RefPoint;
+  cell.RefPoint = setup.RefPoint(tet);
   cell.RefScalar = tet.RefScalar;
   cell.PixelBox = box;
   cell.Projectable = true;

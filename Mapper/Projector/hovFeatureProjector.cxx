@@ -197,12 +197,12 @@ void hov::FeatureProjector::PrepareCells(const hov::CellSetup& setup,
         sc.Volume = std::abs(glm::dot(points[tet.Points[1]] - p0,
                       glm::cross(points[tet.Points[2]] - p0, points[tet.Points[3]] - p0))) / 6.0;
         // HIAC: extinction and colour at the centroid (exact mean of a linear field).
-        s1 = tet.RefScalar + glm::dot(tet.Gradient, c - tet.RefPoint);
+        s1 = tet.RefScalar + glm::dot(tet.Gradient, c - p0);
         s2 = s1;
         if (!this->TetColor.empty())
         {
           const auto& field = this->TetColor[cell];
-          s2 = field.RefScalar + glm::dot(field.Gradient, c - tet.RefPoint);
+          s2 = field.RefScalar + glm::dot(field.Gradient, c - p0);
         }
       }
       else

@@ -80,7 +80,7 @@ void hov::FeatureSegment::RestrictTetra(
   const auto& cell = frame.Setup->GetTetras()[tet];
   auto restrict = [&](const glm::dvec3& g, double ref) {
     // As the fast path: s at the ray origin, then along the ray.
-    const double sAtOrigin = ref + glm::dot(g, ray.Origin - cell.RefPoint);
+    const double sAtOrigin = ref + glm::dot(g, ray.Origin - frame.Setup->RefPoint(cell));
     const double slope = glm::dot(g, ray.Direction);
     return Linear(sAtOrigin + t0 * slope, slope);
   };

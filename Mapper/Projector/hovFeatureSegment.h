@@ -61,7 +61,7 @@ namespace hov
 class FeatureSegment
 {
 public:
-  /// A linear field over a tetrahedron: s(x) = RefScalar + Gradient . (x - tet.RefPoint).
+  /// A linear field over a tetrahedron: s(x) = RefScalar + Gradient . (x - x0), x0 its vertex 0.
   struct LinearField
   {
     glm::dvec3 Gradient{ 0.0 };

@@ -104,10 +104,10 @@ bool hov::ProjectionPolyhedron::SetTetra(
       return false;
     }
     this->Gid[i] = t.Points[i];
-    this->S[i] = t.RefScalar + glm::dot(t.Gradient, x - t.RefPoint);
+    this->S[i] = t.RefScalar + glm::dot(t.Gradient, x - points[t.Points[0]]);
   }
   this->Gradient = t.Gradient;
-  this->RefPoint = t.RefPoint;
+  this->RefPoint = points[t.Points[0]];
   this->RefScalar = t.RefScalar;
   this->SMin = t.ScalarMin;
   this->SMax = t.ScalarMax;

@@ -13,6 +13,7 @@ struct Projected
   glm::dvec3 Ndc[4];
   double S[4];
   const hov::CellSetup::Tetra* T;
+  glm::dvec3 Ref; ///< the field's reference point (vertex 0)
   const hov::ProjectionFrame* F;
   int K;
   double Lo, Hi;
@@ -26,7 +27,7 @@ struct Projected
   /// The cell's affine field at @p x, clamped to the slab.
   double Field(const glm::dvec3& x) const
   {
-    const double s = this->T->RefScalar + glm::dot(this->T->Gradient, x - this->T->RefPoint);
+    const double s = this->T->RefScalar + glm::dot(this->T->Gradient, x - this->Ref);
     return std::min(std::max(s, this->Lo), this->Hi);
   }
 };
@@ -105,6 +106,7 @@ int hov::ProjectionTetra::Emit(const hov::CellSetup::Tetra& t,
 {
   Projected p{};
   p.T = &t;
+  p.Ref = points[t.Points[0]];
   p.F = &f;
   p.K = k;
   p.Lo = lo;

@@ -106,7 +106,6 @@ Status PrepareTetra(vtkIdList* ids, vtkIdType cellId, const std::vector<glm::dve
   }
   inverted = det < 0.0;
   // Linear field: solve [e1 e2 e3]^T g = (s1 - s0, s2 - s0, s3 - s0) by Cramer.
-  tet.RefPoint = x[0];
   tet.RefScalar = s[0];
   tet.ScalarMin = std::min(std::min(s[0], s[1]), std::min(s[2], s[3]));
   tet.ScalarMax = std::max(std::max(s[0], s[1]), std::max(s[2], s[3]));
