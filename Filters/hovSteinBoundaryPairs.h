@@ -62,7 +62,8 @@ struct PairStats
 
 /**
  * Finds the edges of step 3 for one view after another, keeping its buffers
- * between views (no allocation once the first view has sized them).
+ * between views (no allocation once the first view has sized them) unless
+ * ReleaseBuffers() frees them.
  */
 class BoundaryPairs
 {

@@ -162,12 +162,20 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   if (!buf.Records.IsWhole())
   {
     // A mesh beyond the record budget: its per-frame arrays (boxes, bins,
-    // projected points: 80 MB for 2M tetrahedra) are freed rather than kept
-    // for the next frame, whose sort then does not add its buffers to them.
-    // Allocating them again costs about 1% of such a frame.
-    buf.Records.Release();
+    // projected points: 80 MB for 2M tetrahedra; the per-pixel order) and
+    // the tiles' record buffers are freed rather than kept for the next
+    // frame, whose sort then does not add its buffers to them. Allocating
+    // them again costs about 1% of such a frame.
     buf.Bins = TileBins();
     buf.Points = ProjectedPoints();
+    std::vector<std::pair<float, vtkIdType>>().swap(buf.DepthOrder);
+    std::vector<vtkIdType>().swap(buf.Order);
+    std::vector<unsigned char>().swap(buf.Covers);
+    for (ProjectorTile& tile : buf.Tiles)
+    {
+      tile.ReleaseLocalRecords();
+    }
   }
+  buf.Records.EndFrame();
   return stats;
 }

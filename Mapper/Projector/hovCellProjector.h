@@ -30,7 +30,10 @@
  * starts), so the tile loop reads memory in order; the cells are binned from
  * a compact array of their pixel boxes; segments are integrated in batches
  * (hov::SegmentBatch, bit-identical to the scalar kernels); per-frame arrays
- * are kept across frames. None of this changes a bit of the image.
+ * are kept across frames. Beyond Settings::RecordBudget (about a million
+ * cells) each tile builds its own cells' records instead and the mesh-sized
+ * per-frame arrays are freed after each frame (hov::CellRecords: memory
+ * before speed). None of this changes a bit of the image.
  *
  * General cells (hexahedra, wedges, pyramids, voxels, quadratic cells:
  * hov::GeneralCells) take their place in the same order; their pixel

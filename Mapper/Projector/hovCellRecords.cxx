@@ -142,11 +142,18 @@ void hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkIdType
   });
 }
 
-void hov::CellRecords::Release()
+void hov::CellRecords::EndFrame()
 {
-  std::vector<CellRecord>().swap(this->Records);
-  std::vector<CellBox>().swap(this->Boxes);
-  std::vector<int>().swap(this->GeneralOf);
+  this->Setup = nullptr;
+  this->Order = nullptr;
+  this->Points = nullptr;
+  this->TF = nullptr;
+  this->General = nullptr;
+  if (!this->Whole)
+  {
+    std::vector<CellBox>().swap(this->Boxes);
+    std::vector<int>().swap(this->GeneralOf);
+  }
 }
 
 void hov::CellRecords::PrefetchCell(vtkIdType k) const

@@ -60,8 +60,12 @@ public:
   const std::vector<CellBox>& GetBoxes() const { return this->Boxes; }
   /// Per ordered cell: its general cell index, or -1 (empty without general cells).
   const std::vector<int>& GetGeneralOf() const { return this->GeneralOf; }
-  /// Frees the pixel boxes and general-cell indices (the frame is done).
-  void Release();
+  /**
+   * The frame is done: forgets Build()'s arguments (Make() may no longer be
+   * called) and, unless every record was built (kept for the next frame, as
+   * the boxes), frees the boxes and general-cell indices.
+   */
+  void EndFrame();
   /// The record of ordered cell @p k, as Build() would have made it.
   void Make(vtkIdType k, CellRecord& record) const;
   /// Make() reads scattered memory: fetch ordered cell @p k's cell, then (a

@@ -279,6 +279,13 @@ void hov::ProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<d
   this->RenderCells(frame, tileIndex, cells, count, rgba, stats);
 }
 
+void hov::ProjectorTile::ReleaseLocalRecords()
+{
+  std::vector<CellRecord>().swap(this->LocalRecords);
+  std::vector<vtkIdType>().swap(this->LocalCells);
+  std::vector<int>().swap(this->LocalGeneralOf);
+}
+
 void hov::ProjectorTile::RenderCells(const Frame& frame, int tileIndex, const vtkIdType* cells,
   vtkIdType count, std::vector<double>& rgba, Statistics& stats)
 {

@@ -67,10 +67,11 @@ public:
   using Statistics = ProjectorStatistics;
 
   /**
-   * Everything the tile loop reads of a cell, stored per ordered cell (built
-   * each frame by the projector in one parallel pass): the tile loop then
-   * reads a few consecutive cache lines per cell instead of a scattered
-   * tetrahedron, four scattered points and several per-cell arrays.
+   * Everything the tile loop reads of a cell, per ordered cell (built each
+   * frame by hov::CellRecords in one parallel pass, or by each tile for its
+   * own cells beyond the memory budget): the tile loop then reads a few
+   * consecutive cache lines per cell instead of a scattered tetrahedron, four
+   * scattered points and several per-cell arrays.
    */
   struct CellRecord
   {
@@ -111,6 +112,9 @@ public:
   /// Render tile @p tileIndex of @p frame and write it into @p rgba.
   void Render(const Frame& frame, int tileIndex, std::vector<double>& rgba,
     Statistics& stats);
+
+  /// Frees the buffers of the per-tile records (see Frame::Cells).
+  void ReleaseLocalRecords();
 
 private:
   /// Render() with the records of the tile's cells @p cells (@p count) in frame.Cells.

@@ -59,7 +59,8 @@ class CellSetup
 public:
   struct Tetra
   {
-    glm::dvec3 Gradient;  ///< scalar gradient (0 for cell scalars); s(x) = RefScalar + Gradient . (x - RefPoint())
+    /// Scalar gradient (0 for cell scalars): s(x) = RefScalar + Gradient . (x - RefPoint(tet)).
+    glm::dvec3 Gradient;
     double RefScalar;     ///< scalar at vertex 0 (the cell value for cell scalars)
     double ScalarMin;     ///< smallest vertex scalar
     double ScalarMax;     ///< largest vertex scalar

@@ -36,27 +36,6 @@ using namespace hovTest;
 
 namespace
 {
-/// What one configuration produced for one case (first sort and re-sort).
-struct Outcome
-{
-  std::vector<vtkIdType> Order[2];
-  std::vector<vtkIdType> CycleCells[2];
-  vtkIdType Cycles[2] = { 0, 0 }, Tests[2] = { 0, 0 }, Edges[2] = { 0, 0 };
-  bool operator==(const Outcome& o) const
-  {
-    for (int k = 0; k < 2; ++k)
-    {
-      if (this->Order[k] != o.Order[k] || this->CycleCells[k] != o.CycleCells[k] ||
-        this->Cycles[k] != o.Cycles[k] || this->Tests[k] != o.Tests[k] ||
-        this->Edges[k] != o.Edges[k])
-      {
-        return false;
-      }
-    }
-    return true;
-  }
-};
-
 /// Distinct threads running the pieces of a small vtkSMPTools::For whose
 /// pieces sleep (so an idle worker always gets some).
 int ProbeThreads()
@@ -75,27 +54,12 @@ int ProbeThreads()
 }
 
 /// First sort and re-sort of @p grid for @p view with a fresh sort object.
-Outcome SortTwice(vtkUnstructuredGrid* grid, const SortView& view)
+SteinSeries SortTwice(vtkUnstructuredGrid* grid, const SortView& view)
 {
-  Outcome out;
   vtkNew<vtkCamera> cam;
   view.Apply(cam);
   vtkNew<vtkSteinVisibilitySort> sort;
-  for (int k = 0; k < 2; ++k)
-  {
-    if (k == 1)
-    {
-      cam->Azimuth(5);
-    }
-    out.Order[k] = FullOrder(sort, grid, cam, nullptr, vtkVisibilitySort::BACK_TO_FRONT);
-    vtkNew<vtkIdList> cycle;
-    sort->GetCycleCells(cycle);
-    out.CycleCells[k].assign(cycle->GetPointer(0), cycle->GetPointer(0) + cycle->GetNumberOfIds());
-    out.Cycles[k] = sort->GetNumberOfCycles();
-    out.Tests[k] = sort->GetNumberOfObstructsTests();
-    out.Edges[k] = sort->GetNumberOfGraphEdges();
-  }
-  return out;
+  return SortSeries(sort, grid, cam, 2);
 }
 
 /// Every cell exactly once.
@@ -127,11 +91,11 @@ void RunCase(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, co
   const Config configs[] = { { "TBB", 2 }, { "TBB", 4 }, { "TBB", 1 }, { "Sequential", 1 },
     { "STDThread", 2 }, { "STDThread", 3 } };
   const bool multicore = std::thread::hardware_concurrency() > 1;
-  Outcome reference;
+  SteinSeries reference;
   bool first = true;
   for (const Config& c : configs)
   {
-    Outcome out;
+    SteinSeries out;
     int running = 0;
     vtkSMPTools::LocalScope(vtkSMPTools::Config{ c.Threads, c.Backend, false }, [&]() {
       running = c.Threads > 1 && multicore ? ProbeThreads() : 1;

@@ -26,50 +26,15 @@ namespace
 {
 constexpr int Sorts = 3;
 
-struct Outcome
-{
-  std::vector<vtkIdType> Order[Sorts];
-  std::vector<vtkIdType> CycleCells[Sorts];
-  vtkIdType Cycles[Sorts] = {}, Tests[Sorts] = {}, Edges[Sorts] = {};
-  bool operator==(const Outcome& o) const
-  {
-    for (int k = 0; k < Sorts; ++k)
-    {
-      if (this->Order[k] != o.Order[k] || this->CycleCells[k] != o.CycleCells[k] ||
-        this->Cycles[k] != o.Cycles[k] || this->Tests[k] != o.Tests[k] ||
-        this->Edges[k] != o.Edges[k])
-      {
-        return false;
-      }
-    }
-    return true;
-  }
-};
-
 /// A first sort and two re-sorts of @p grid by one object with @p limit.
-Outcome SortThrice(vtkUnstructuredGrid* grid, const SortView& view, int algorithm, vtkIdType limit)
+SteinSeries SortThrice(vtkUnstructuredGrid* grid, const SortView& view, int algorithm, vtkIdType limit)
 {
-  Outcome out;
   vtkNew<vtkCamera> cam;
   view.Apply(cam);
   vtkNew<vtkSteinVisibilitySort> sort;
   sort->SetAlgorithm(algorithm);
   sort->SetViewBufferCellLimit(limit);
-  for (int k = 0; k < Sorts; ++k)
-  {
-    if (k > 0)
-    {
-      cam->Azimuth(5);
-    }
-    out.Order[k] = FullOrder(sort, grid, cam, nullptr, vtkVisibilitySort::BACK_TO_FRONT);
-    vtkNew<vtkIdList> cycle;
-    sort->GetCycleCells(cycle);
-    out.CycleCells[k].assign(cycle->GetPointer(0), cycle->GetPointer(0) + cycle->GetNumberOfIds());
-    out.Cycles[k] = sort->GetNumberOfCycles();
-    out.Tests[k] = sort->GetNumberOfObstructsTests();
-    out.Edges[k] = sort->GetNumberOfGraphEdges();
-  }
-  return out;
+  return SortSeries(sort, grid, cam, Sorts);
 }
 
 void RunCase(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, const SortView& view)
@@ -80,8 +45,8 @@ void RunCase(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, co
   {
     const std::string what = mesh + " / " + view.Name +
       (algorithm == vtkSteinVisibilitySort::ADJACENCY_GRAPH ? " / graph" : " / merge");
-    const Outcome kept = SortThrice(grid, view, algorithm, VTK_ID_MAX);
-    const Outcome freed = SortThrice(grid, view, algorithm, 0);
+    const SteinSeries kept = SortThrice(grid, view, algorithm, VTK_ID_MAX);
+    const SteinSeries freed = SortThrice(grid, view, algorithm, 0);
     bool complete = true;
     for (int k = 0; k < Sorts; ++k)
     {

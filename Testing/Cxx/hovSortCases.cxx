@@ -46,6 +46,28 @@ std::vector<vtkIdType> FullOrder(vtkVisibilitySort* sort, vtkUnstructuredGrid* g
   return order;
 }
 
+SteinSeries SortSeries(vtkSteinVisibilitySort* sort, vtkUnstructuredGrid* grid, vtkCamera* cam,
+  int sorts)
+{
+  SteinSeries out;
+  for (int k = 0; k < sorts; ++k)
+  {
+    if (k > 0)
+    {
+      cam->Azimuth(5);
+    }
+    out.Order.push_back(FullOrder(sort, grid, cam, nullptr, vtkVisibilitySort::BACK_TO_FRONT));
+    vtkNew<vtkIdList> cycle;
+    sort->GetCycleCells(cycle);
+    out.CycleCells.emplace_back(
+      cycle->GetPointer(0), cycle->GetPointer(0) + cycle->GetNumberOfIds());
+    out.Cycles.push_back(sort->GetNumberOfCycles());
+    out.Tests.push_back(sort->GetNumberOfObstructsTests());
+    out.Edges.push_back(sort->GetNumberOfGraphEdges());
+  }
+  return out;
+}
+
 namespace
 {
 vtkIdType FilterViolations(

@@ -18,6 +18,7 @@
 
 class vtkCamera;
 class vtkMatrix4x4;
+class vtkSteinVisibilitySort;
 class vtkUnstructuredGrid;
 class vtkVisibilitySort;
 
@@ -28,6 +29,24 @@ struct Checker;
 /// The whole order of @p sort (input ids) in @p direction (vtkVisibilitySort's enum).
 std::vector<vtkIdType> FullOrder(vtkVisibilitySort* sort, vtkUnstructuredGrid* grid,
   vtkCamera* cam, vtkMatrix4x4* model, int direction);
+
+/// What one vtkSteinVisibilitySort reported for each sort of a series:
+/// back-to-front order, cycles and their cells, Obstructs() tests, graph edges.
+struct SteinSeries
+{
+  std::vector<std::vector<vtkIdType>> Order, CycleCells;
+  std::vector<vtkIdType> Cycles, Tests, Edges;
+  bool operator==(const SteinSeries& o) const
+  {
+    return this->Order == o.Order && this->CycleCells == o.CycleCells &&
+      this->Cycles == o.Cycles && this->Tests == o.Tests && this->Edges == o.Edges;
+  }
+};
+
+/// @p sorts sorts of @p grid by @p sort: @p cam's view, then each after a
+/// further 5 degree azimuth of @p cam.
+SteinSeries SortSeries(vtkSteinVisibilitySort* sort, vtkUnstructuredGrid* grid, vtkCamera* cam,
+  int sorts);
 
 struct SortCase
 {

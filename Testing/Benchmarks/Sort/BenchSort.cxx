@@ -113,12 +113,12 @@ struct SteinRun
   double HeldMB = 0, PeakMB = 0; ///< after / during the first sort, above the start
 };
 
-/// One first sort and @p resorts re-sorts of the view turned by 5 degrees (the
-/// camera turns back between them); re-sort times appended to @p times, the
-/// counters are those of the first re-sort.
 /// --view-buffer-cell-limit N: vtkSteinVisibilitySort::SetViewBufferCellLimit (-1: its default).
 vtkIdType ViewBufferCellLimit = -1;
 
+/// One first sort and @p resorts re-sorts of the view turned by 5 degrees (the
+/// camera turns back between them); re-sort times appended to @p times, the
+/// counters are those of the first re-sort.
 SteinRun RunSteinOnce(vtkDataSet* d, int algorithm, int tiles, int resorts, std::vector<double>& times)
 {
   vtkNew<vtkCamera> cam;
