@@ -374,6 +374,7 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
   this->NumberOfSkippedCells = st.SkippedCells;
   this->NumberOfSegments = st.Segments;
   this->NumberOfPieces = st.Pieces;
+  this->NumberOfCellRecords = st.CellRecords;
   this->NumberOfRays = st.Rays;
   this->NumberOfSplattedCells = st.SplattedCells;
   this->LastRenderAborted = st.Aborted;
@@ -582,6 +583,7 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSkippedCells: " << this->NumberOfSkippedCells << "\n";
   os << indent << "NumberOfSegments: " << this->NumberOfSegments << "\n";
   os << indent << "NumberOfPieces: " << this->NumberOfPieces << "\n";
+  os << indent << "NumberOfCellRecords: " << this->NumberOfCellRecords << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "NumberOfSplattedCells: " << this->NumberOfSplattedCells << "\n";
   os << indent << "NumberOfProjectedTriangles: " << this->NumberOfProjectedTriangles << "\n";

@@ -434,12 +434,16 @@ public:
   /// Diagnostics of the last render. NumberOfRays: the pixel rays (fewer in an
   /// interactive frame; RAY_CAST: those traced). RAY_CAST:
   /// NumberOfSegments cell intervals, NumberOfPieces those plus the
-  /// breakpoints located in them. LastImageTime: wall-clock seconds of the image.
+  /// breakpoints located in them. NumberOfCellRecords (CPU_ACCURATE's
+  /// composite path): the cell records built, one per cell while they fit in
+  /// CellRecordMemory, else one per tile a cell overlaps. LastImageTime:
+  /// wall-clock seconds of the image.
   vtkGetMacro(WitnessViolations, vtkIdType);
   vtkGetMacro(NumberOfRenderedCells, vtkIdType);
   vtkGetMacro(NumberOfSkippedCells, vtkIdType);
   vtkGetMacro(NumberOfSegments, vtkIdType);
   vtkGetMacro(NumberOfPieces, vtkIdType);
+  vtkGetMacro(NumberOfCellRecords, vtkIdType);
   vtkGetMacro(NumberOfRays, vtkIdType);
   vtkGetMacro(LastImageTime, double);
   /// Worst error estimate of a shaded segment integrated by quadrature (README,
@@ -513,6 +517,7 @@ protected:
   vtkIdType NumberOfRenderedCells = 0;
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfSegments = 0;
+  vtkIdType NumberOfCellRecords = 0;
   vtkIdType NumberOfPieces = 0;
   vtkIdType NumberOfRays = 0;
   double LastImageTime = 0.0;

@@ -157,8 +157,11 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   frame.PerturbX = rays.GetPerturbX();
   frame.PerturbY = rays.GetPerturbY();
   frame.General = setup.GetGeneralCells().GetCells().empty() ? nullptr : &general;
-  const Statistics stats =
-    RunTiles(buf.Bins, width, height, settings.Progress, buf.Tiles, frame, rgba);
+  Statistics stats = RunTiles(buf.Bins, width, height, settings.Progress, buf.Tiles, frame, rgba);
+  if (buf.Records.IsWhole())
+  {
+    stats.Records = static_cast<vtkIdType>(buf.Records.GetRecords().size());
+  }
   if (!buf.Records.IsWhole())
   {
     // A mesh beyond the record budget: its per-frame arrays (boxes, bins,

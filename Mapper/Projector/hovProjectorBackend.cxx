@@ -133,6 +133,7 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   frame.Stats.WitnessViolations = st.WitnessViolations;
   frame.Stats.Segments = st.Segments;
   frame.Stats.Pieces = st.Pieces;
+  frame.Stats.CellRecords = st.Records;
   frame.Stats.ShadingErrorEstimate = st.ShadingErrorEstimate;
   return ok ? 1 : 0;
 }

@@ -264,6 +264,7 @@ void hov::ProjectorTile::Render(const Frame& frame, int tileIndex, std::vector<d
         this->LocalGeneralOf[c] = records.GetGeneralOf()[cells[c]];
       }
     }
+    stats.Records += count;
     Frame local = frame;
     local.Cells = &this->LocalRecords;
     GeneralCellTile::FrameData localGeneral;

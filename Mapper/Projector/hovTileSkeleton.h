@@ -60,6 +60,7 @@ struct ProjectorStatistics
   vtkIdType WitnessViolations = 0; ///< pixels where the order was wrong
   vtkIdType Segments = 0;          ///< ray-cell segments integrated
   vtkIdType Pieces = 0;            ///< pieces integrated (>= Segments)
+  vtkIdType Records = 0;           ///< cell records built (hov::CellRecords)
   double ShadingErrorEstimate = 0.0; ///< worst estimate of a shaded quadrature segment
   bool Aborted = false;            ///< Progress returned true: unrendered tiles are zero
 };
@@ -169,6 +170,7 @@ ProjectorStatistics RunTiles(const TileBins& bins, int width, int height,
     stats.WitnessViolations += st.WitnessViolations;
     stats.Segments += st.Segments;
     stats.Pieces += st.Pieces;
+    stats.Records += st.Records;
     stats.ShadingErrorEstimate = std::max(stats.ShadingErrorEstimate, st.ShadingErrorEstimate);
   }
   return stats;

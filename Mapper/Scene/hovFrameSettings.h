@@ -131,6 +131,7 @@ struct FrameStatistics
   vtkIdType Pieces = 0;
   vtkIdType Rays = 0;
   vtkIdType SplattedCells = 0;
+  vtkIdType CellRecords = 0;
   bool Aborted = false;
   /// Set by the mode they belong to only (-1 / 0: not reported by this frame).
   vtkIdType ProjectedTriangles = -1;

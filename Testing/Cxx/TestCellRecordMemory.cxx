@@ -7,7 +7,8 @@
 //    hexahedra, wedges, pyramids and quadratic tetrahedra (general cells
 //    between tetrahedra in the order: their indices in a tile's list differ
 //    from their indices in the order).
-// The setting clamps to [0, 2^20] MiB.
+// GetNumberOfCellRecords tells which way the records were built. The setting
+// clamps to [0, 2^20] MiB.
 #include "hovTestAnalytic.h"
 #include "hovTestImages.h"
 #include "hovTestMixed.h"
@@ -76,8 +77,19 @@ void Compare(Checker& ck, VolumeScene& scene, vtkCamera* camera, int w, int h,
     mapper->SetCellRecordMemory(256);
     int status[2] = { 0, 0 };
     const Image whole = RenderDouble(mapper, camera, scene.Volume, w, h, &status[0]);
+    const vtkIdType wholeRecords = mapper->GetNumberOfCellRecords();
     mapper->SetCellRecordMemory(0);
     const Image perTile = RenderDouble(mapper, camera, scene.Volume, w, h, &status[1]);
+    const vtkIdType tileRecords = mapper->GetNumberOfCellRecords();
+    // Whole: one record per ordered cell (visibility order: every rendered
+    // cell; per-pixel: those covering a pixel centre); per tile: one per
+    // (tile, cell) pair, so the budget did reach the tiles.
+    const vtkIdType cells = mapper->GetNumberOfRenderedCells();
+    ck.Check(wholeRecords > 0 && wholeRecords <= cells &&
+        (order != vtkHighOrderVolumeMapper::VISIBILITY_SORT || wholeRecords == cells) &&
+        tileRecords > 0,
+      what + ": records built " + std::to_string(wholeRecords) + " (whole), " +
+        std::to_string(tileRecords) + " (per tile), " + std::to_string(cells) + " cells");
     const Sanity sane = CheckImage(whole);
     ck.Check(status[0] == 1 && status[1] == 1 && sane.NonFinite == 0 &&
         sane.Covered >= minCovered,
