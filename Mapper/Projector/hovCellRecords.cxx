@@ -124,13 +124,9 @@ void hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkIdType
         }
       }
       // The order scatters the tetrahedra in memory: fetch a few ahead.
-      if (k + RecordPrefetch < e && order[k + RecordPrefetch] < numTets)
+      if (k + RecordPrefetch < e)
       {
-        const char* ahead = reinterpret_cast<const char*>(&tets[order[k + RecordPrefetch]]);
-        for (size_t offset = 0; offset < sizeof(Tetra); offset += 64)
-        {
-          __builtin_prefetch(ahead + offset);
-        }
+        this->PrefetchCell(k + RecordPrefetch);
       }
       const Tetra& tet = tets[order[k]];
       this->Boxes[k] = TetraBox(tet.Points, points, width, height);
