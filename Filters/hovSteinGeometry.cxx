@@ -303,17 +303,29 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   {
     pass1(0, n);
   }
-  this->PlaneOffsets.assign(n, -1);
+  // Newell planes for the faces of the cells other than tetrahedra (none, and
+  // no per-cell offsets, for a tetrahedral mesh).
   vtkIdType planes = 0;
   for (vtkIdType c = 0; c < n; ++c)
   {
     this->CornerOffsets[c + 1] += this->CornerOffsets[c];
-    if (this->Kinds[c] != KindBad && this->Kinds[c] != KindTet)
+    planes += this->Kinds[c] != KindBad && this->Kinds[c] != KindTet ? MaxFaces : 0;
+  }
+  this->PlaneOffsets.clear();
+  if (planes > 0)
+  {
+    this->PlaneOffsets.assign(n, -1);
+    planes = 0;
+    for (vtkIdType c = 0; c < n; ++c)
     {
-      this->PlaneOffsets[c] = planes;
-      planes += MaxFaces;
+      if (this->Kinds[c] != KindBad && this->Kinds[c] != KindTet)
+      {
+        this->PlaneOffsets[c] = planes;
+        planes += MaxFaces;
+      }
     }
   }
+  this->PlaneOffsets.shrink_to_fit();
   this->Corners.assign(this->CornerOffsets[n], 0);
   this->FaceCodes.assign(MaxFaces * n, FaceSkip);
   this->Planes.assign(planes, Plane{});

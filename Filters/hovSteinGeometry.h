@@ -80,7 +80,7 @@ struct Geometry
   std::vector<vtkIdType> Corners;      ///< corner point ids (bad cells: all their points)
   std::vector<std::uint8_t> FaceCodes; ///< MaxFaces per cell
   std::vector<Plane> Planes;           ///< MaxFaces per cell with a Newell face
-  std::vector<vtkIdType> PlaneOffsets; ///< per cell: first plane, or -1
+  std::vector<vtkIdType> PlaneOffsets; ///< per cell: first plane, or -1 (empty without planes)
   vtkIdType NumberOfBadCells = 0;
   vtkIdType FirstBadCell = -1;
   double Diagonal = 0; ///< of the world bounding box of the points

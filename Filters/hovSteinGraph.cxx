@@ -154,8 +154,6 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
 {
   std::vector<std::int8_t>& dir = this->Directions;
   const ViewFrame& f = v.Frame;
-  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
-  const double* x = f.Parallel ? back : f.Eye; // the eye, or the direction towards it
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
   const bool allOrdered = v.AllOrdered; // skips two random reads per face
@@ -167,20 +165,7 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
         dir[i] = 0;
         continue;
       }
-      // EyeSide(g, v.Frame, t.A[i], t.FaceA[i]), exact faces from the topology's record.
-      int side;
-      if (t.ModeA[i] == FaceExact)
-      {
-        side = t.PlaneA[i].Side(x, f.Parallel);
-        if (side == 0) // not decided by the filter: the exact predicate
-        {
-          side = ExactSide(g, f, t.A[i], t.FaceA[i], nullptr);
-        }
-      }
-      else
-      {
-        side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
-      }
+      const int side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
       // Eye on B's side (outside A's face, EyeOutside = -1): B is nearer, A
       // comes first (1); EyeInside (1): -1; EyeOn: 0 (no branch on the side).
       dir[i] = static_cast<std::int8_t>(side == EyeUndecided ? 2 : -side);

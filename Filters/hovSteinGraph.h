@@ -129,7 +129,8 @@ private:
   /// The filtered planes (hovSteinPlaneFilter.h) of the exact boundary faces
   /// of the topology of generation PlanesGeneration: made during the first
   /// view from the points its exact predicates read anyway, by the threads
-  /// that use them (not zeroed on allocation). Interior faces: Topology::PlaneA.
+  /// that use them (not zeroed on allocation). Interior faces keep no plane:
+  /// FaceDirections tests their corners each view.
   std::unique_ptr<FilteredPlane[]> BoundaryPlanes;
   unsigned long PlanesGeneration = 0;
   std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided

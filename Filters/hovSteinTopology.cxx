@@ -145,13 +145,6 @@ void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
         t.A[k] = static_cast<CellIndex>(a);
         t.B[k] = static_cast<CellIndex>(b);
         t.FaceA[k] = static_cast<std::uint8_t>(fa);
-        t.ModeA[k] = mode;
-        if (mode == FaceExact)
-        {
-          vtkIdType c[3];
-          g.ExactTriple(a, fa, c);
-          t.PlaneA[k].Set(g.Point(c[0]), g.Point(c[1]), g.Point(c[2]));
-        }
       }
     }
     for (vtkIdType k = i; !interior && k < j; ++k)
@@ -223,8 +216,6 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
   t.A.resize(bound);
   t.B.resize(bound);
   t.FaceA.resize(bound);
-  t.ModeA.resize(bound);
-  t.PlaneA.reset(new FilteredPlane[bound]); // default-initialised: touched by the matching threads
   vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
     std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
     for (vtkIdType k = k0; k < k1; ++k)
@@ -268,15 +259,12 @@ void Topology::Collect(const Geometry& g, const std::vector<ChunkMatches>& chunk
       std::copy(this->A.begin() + f, this->A.begin() + f + c, this->A.begin() + m);
       std::copy(this->B.begin() + f, this->B.begin() + f + c, this->B.begin() + m);
       std::copy(this->FaceA.begin() + f, this->FaceA.begin() + f + c, this->FaceA.begin() + m);
-      std::copy(this->ModeA.begin() + f, this->ModeA.begin() + f + c, this->ModeA.begin() + m);
-      std::copy(this->PlaneA.get() + f, this->PlaneA.get() + f + c, this->PlaneA.get() + m);
     }
     m += chunk.Count;
   }
   this->A.resize(m);
   this->B.resize(m);
   this->FaceA.resize(m);
-  this->ModeA.resize(m);
   const vtkIdType n = g.NumberOfCells;
   this->BoundaryFaces.assign(n, 0);
   for (const ChunkMatches& chunk : chunks)

@@ -20,10 +20,8 @@
 #define hovSteinTopology_h
 
 #include "hovSteinGeometry.h"    // Geometry
-#include "hovSteinPlaneFilter.h" // FilteredPlane
 
 #include <cstdint> // std::int32_t, std::uint8_t
-#include <memory>  // std::unique_ptr
 #include <vector>  // storage
 
 namespace hovStein
@@ -42,13 +40,9 @@ struct Topology
   /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
   std::vector<CellIndex> A, B;
   std::vector<std::uint8_t> FaceA;
-  /// Per interior face: the mode of A's face (FaceCode & 3) and, for exact
-  /// faces, the filtered plane of its corners as Geometry::ExactTriple gives
-  /// them (hovSteinPlaneFilter.h: the per-view side test reads one contiguous
-  /// record instead of the cell's tables and points). The planes are made
-  /// while the faces are matched (the cells' data in cache).
-  std::vector<std::uint8_t> ModeA;
-  std::unique_ptr<FilteredPlane[]> PlaneA;
+  /// No plane is kept per interior face: each view tests the eye against A's
+  /// corners (a filtered plane per face cost 48 bytes a face, 190 MB for 2M
+  /// tetrahedra).
   /// Per cell: its interior faces (CSR, in increasing interior face index) as
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
   std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
