@@ -2,7 +2,7 @@
  * @file hovSteinPlaneFilter.h
  * @brief A precomputed floating-point filter for the exact side of the eye with
  *        respect to a fixed triangle plane (vtkSteinVisibilitySort, per view and
- *        interior face).
+ *        exact boundary face).
  *
  * hov::Orient3d(a, b, c, e) is the sign of det[a-e; b-e; c-e] = n.(a - e) with
  * n = (b - a) x (c - a) exactly, and hov::Orient3dDirection(a, b, c, w) is the

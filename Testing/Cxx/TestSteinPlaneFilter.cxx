@@ -1,5 +1,5 @@
 // hovStein::FilteredPlane (Filters/hovSteinPlaneFilter.h), the precomputed
-// filter of the Stein sort for the side of the eye with respect to an interior
+// filter of the Stein sort for the side of the eye with respect to a boundary
 // face: whenever it decides, its answer must equal the exact predicates
 // hov::Orient3d(a, b, c, eye) (perspective) and hov::Orient3dDirection(a, b,
 // c, w) (parallel), and it must decide almost every generic case (else it
