@@ -329,6 +329,7 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   this->Corners.assign(this->CornerOffsets[n], 0);
   this->FaceCodes.assign(MaxFaces * n, FaceSkip);
   this->Planes.assign(planes, Plane{});
+  this->Planes.shrink_to_fit(); // a tetrahedral mesh after a hexahedral one keeps nothing
 
   // Pass 2: corners, face orientation and planes.
   auto pass2 = [&](vtkIdType begin, vtkIdType end) {

@@ -153,7 +153,6 @@ vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdTyp
 void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v)
 {
   std::vector<std::int8_t>& dir = this->Directions;
-  const ViewFrame& f = v.Frame;
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
   const bool allOrdered = v.AllOrdered; // skips two random reads per face

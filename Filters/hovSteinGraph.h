@@ -8,8 +8,8 @@
  * they are output first, back to front by rearmost depth):
  * 1. Interior faces (hovSteinTopology): the exact side of the eye (Orient3d of
  *    the eye against the face triangle; parallel projection: Orient3dDirection
- *    with the direction towards the eye; both through the face's precomputed
- *    filtered plane, hovSteinPlaneFilter.h) gives the edge far cell -> near cell;
+ *    with the direction towards the eye; from the face's corners, nothing kept
+ *    per face between views) gives the edge far cell -> near cell;
  *    the eye on the plane gives no edge. Non-planar (Newell) faces decide only
  *    when the eye is clearly off the face (margin below); otherwise the face is
  *    UNDECIDED and its two cells take part in step 2 in both roles. In

@@ -110,8 +110,7 @@ bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
 
 /**
  * Matches the faces of one bucket (entries c*8+f with the same smallest id)
- * by their sorted corner ids: writes the interior faces (with their filtered
- * planes, while the cells' data are in cache) to @p t's arrays at
+ * by their sorted corner ids: writes the interior faces to @p t's arrays at
  * out.First + out.Count on, and lists the boundary entries.
  */
 void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,

@@ -38,11 +38,11 @@ struct ChunkMatches; // what Build's face matching finds in a chunk of buckets
 struct Topology
 {
   /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
-  std::vector<CellIndex> A, B;
-  std::vector<std::uint8_t> FaceA;
   /// No plane is kept per interior face: each view tests the eye against A's
   /// corners (a filtered plane per face cost 48 bytes a face, 190 MB for 2M
   /// tetrahedra).
+  std::vector<CellIndex> A, B;
+  std::vector<std::uint8_t> FaceA;
   /// Per cell: its interior faces (CSR, in increasing interior face index) as
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
   std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
