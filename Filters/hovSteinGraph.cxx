@@ -153,9 +153,12 @@ vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdTyp
 void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v)
 {
   std::vector<std::int8_t>& dir = this->Directions;
+  const ViewFrame& f = v.Frame;
+  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
   const bool allOrdered = v.AllOrdered; // skips two random reads per face
+  const std::uint32_t* triples = t.TripleA.empty() ? nullptr : t.TripleA.data();
   vtkSMPTools::For(0, m, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -164,7 +167,18 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
         dir[i] = 0;
         continue;
       }
-      const int side = EyeSide(g, v.Frame, t.A[i], t.FaceA[i]);
+      // EyeSide(g, f, t.A[i], t.FaceA[i]); exact faces from the topology's triple.
+      const std::uint32_t* triple = triples ? triples + 3 * i : nullptr;
+      int side;
+      if (triple && triple[0] != Topology::NoTriple)
+      {
+        const double *a = g.Point(triple[0]), *b = g.Point(triple[1]), *c = g.Point(triple[2]);
+        side = f.Parallel ? hov::Orient3dDirection(a, b, c, back) : hov::Orient3d(a, b, c, f.Eye);
+      }
+      else
+      {
+        side = EyeSide(g, f, t.A[i], t.FaceA[i]);
+      }
       // Eye on B's side (outside A's face, EyeOutside = -1): B is nearer, A
       // comes first (1); EyeInside (1): -1; EyeOn: 0 (no branch on the side).
       dir[i] = static_cast<std::int8_t>(side == EyeUndecided ? 2 : -side);

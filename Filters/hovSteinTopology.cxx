@@ -144,6 +144,20 @@ void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
         t.A[k] = static_cast<CellIndex>(a);
         t.B[k] = static_cast<CellIndex>(b);
         t.FaceA[k] = static_cast<std::uint8_t>(fa);
+        if (!t.TripleA.empty())
+        {
+          std::uint32_t* triple = t.TripleA.data() + 3 * k;
+          triple[0] = Topology::NoTriple;
+          if (mode == FaceExact)
+          {
+            vtkIdType ids[3];
+            g.ExactTriple(a, fa, ids);
+            for (int i = 0; i < 3; ++i)
+            {
+              triple[i] = static_cast<std::uint32_t>(ids[i]);
+            }
+          }
+        }
       }
     }
     for (vtkIdType k = i; !interior && k < j; ++k)
@@ -215,6 +229,8 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
   t.A.resize(bound);
   t.B.resize(bound);
   t.FaceA.resize(bound);
+  const bool triples = static_cast<vtkIdType>(g.Points.size() / 3) < static_cast<vtkIdType>(Topology::NoTriple);
+  t.TripleA.assign(triples ? 3 * bound : 0, 0);
   vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
     std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
     for (vtkIdType k = k0; k < k1; ++k)
@@ -258,12 +274,18 @@ void Topology::Collect(const Geometry& g, const std::vector<ChunkMatches>& chunk
       std::copy(this->A.begin() + f, this->A.begin() + f + c, this->A.begin() + m);
       std::copy(this->B.begin() + f, this->B.begin() + f + c, this->B.begin() + m);
       std::copy(this->FaceA.begin() + f, this->FaceA.begin() + f + c, this->FaceA.begin() + m);
+      if (!this->TripleA.empty())
+      {
+        std::copy(this->TripleA.begin() + 3 * f, this->TripleA.begin() + 3 * (f + c),
+          this->TripleA.begin() + 3 * m);
+      }
     }
     m += chunk.Count;
   }
   this->A.resize(m);
   this->B.resize(m);
   this->FaceA.resize(m);
+  this->TripleA.resize(this->TripleA.empty() ? 0 : 3 * m);
   const vtkIdType n = g.NumberOfCells;
   this->BoundaryFaces.assign(n, 0);
   for (const ChunkMatches& chunk : chunks)

@@ -38,11 +38,15 @@ struct ChunkMatches; // what Build's face matching finds in a chunk of buckets
 struct Topology
 {
   /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
-  /// No plane is kept per interior face: each view tests the eye against A's
-  /// corners (a filtered plane per face cost 48 bytes a face, 190 MB for 2M
-  /// tetrahedra).
   std::vector<CellIndex> A, B;
   std::vector<std::uint8_t> FaceA;
+  /// Per interior face, 3 entries: for an exact face of A, the point ids of
+  /// Geometry::ExactTriple(A, FaceA), so that each view's side test reads them
+  /// and the points instead of A's tables at random; NoTriple first for
+  /// other faces. 12 bytes a face (a filtered plane per face was 48: 190 MB for
+  /// 2M tetrahedra). Empty when the point ids do not fit in 32 bits.
+  std::vector<std::uint32_t> TripleA;
+  static constexpr std::uint32_t NoTriple = 0xffffffffu;
   /// Per cell: its interior faces (CSR, in increasing interior face index) as
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
   std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
