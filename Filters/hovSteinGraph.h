@@ -8,8 +8,8 @@
  * they are output first, back to front by rearmost depth):
  * 1. Interior faces (hovSteinTopology): the exact side of the eye (Orient3d of
  *    the eye against the face triangle; parallel projection: Orient3dDirection
- *    with the direction towards the eye; from the face's corners, nothing kept
- *    per face between views) gives the edge far cell -> near cell;
+ *    with the direction towards the eye; the triangle's point ids kept per
+ *    face, Topology::TripleA) gives the edge far cell -> near cell;
  *    the eye on the plane gives no edge. Non-planar (Newell) faces decide only
  *    when the eye is clearly off the face (margin below); otherwise the face is
  *    UNDECIDED and its two cells take part in step 2 in both roles. In
@@ -130,7 +130,7 @@ private:
   /// of the topology of generation PlanesGeneration: made during the first
   /// view from the points its exact predicates read anyway, by the threads
   /// that use them (not zeroed on allocation). Interior faces keep no plane:
-  /// FaceDirections tests their corners each view.
+  /// FaceDirections tests their corners (Topology::TripleA) each view.
   std::unique_ptr<FilteredPlane[]> BoundaryPlanes;
   unsigned long PlanesGeneration = 0;
   std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
