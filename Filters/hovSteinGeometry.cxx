@@ -305,27 +305,25 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   }
   // Newell planes for the faces of the cells other than tetrahedra (none, and
   // no per-cell offsets, for a tetrahedral mesh).
+  auto hasPlanes = [this](vtkIdType c) {
+    return this->Kinds[c] != KindBad && this->Kinds[c] != KindTet;
+  };
   vtkIdType planes = 0;
   for (vtkIdType c = 0; c < n; ++c)
   {
     this->CornerOffsets[c + 1] += this->CornerOffsets[c];
-    planes += this->Kinds[c] != KindBad && this->Kinds[c] != KindTet ? MaxFaces : 0;
+    planes += hasPlanes(c) ? MaxFaces : 0;
   }
-  this->PlaneOffsets.clear();
-  if (planes > 0)
+  this->PlaneOffsets.assign(planes > 0 ? n : 0, -1);
+  this->PlaneOffsets.shrink_to_fit();
+  for (vtkIdType c = 0, first = 0; planes > 0 && c < n; ++c)
   {
-    this->PlaneOffsets.assign(n, -1);
-    planes = 0;
-    for (vtkIdType c = 0; c < n; ++c)
+    if (hasPlanes(c))
     {
-      if (this->Kinds[c] != KindBad && this->Kinds[c] != KindTet)
-      {
-        this->PlaneOffsets[c] = planes;
-        planes += MaxFaces;
-      }
+      this->PlaneOffsets[c] = first;
+      first += MaxFaces;
     }
   }
-  this->PlaneOffsets.shrink_to_fit();
   this->Corners.assign(this->CornerOffsets[n], 0);
   this->FaceCodes.assign(MaxFaces * n, FaceSkip);
   this->Planes.assign(planes, Plane{});

@@ -1,7 +1,6 @@
 // Visibility DAG of vtkSteinVisibilitySort's ADJACENCY_GRAPH algorithm (see hovSteinGraph.h).
 #include "hovSteinGraph.h"
 
-#include "hovGeometricPredicates.h" // exact Orient3d, Orient3dDirection
 #include "hovSteinBoundaryPairs.h"  // BoundaryEdges
 #include "hovSteinMerge.h"          // RadixSortDescending
 
@@ -79,9 +78,7 @@ int EyeSide(const Geometry& g, const ViewFrame& f, vtkIdType c, int face)
   {
     vtkIdType t[3];
     g.ExactTriple(c, face, t);
-    const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
-    const double *a = g.Point(t[0]), *b = g.Point(t[1]), *cc = g.Point(t[2]);
-    return f.Parallel ? hov::Orient3dDirection(a, b, cc, back) : hov::Orient3d(a, b, cc, f.Eye);
+    return f.TriangleSide(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]));
   }
   return mode == FaceNewell ? NewellSide(g, f, c, face) : EyeUndecided;
 }
@@ -99,8 +96,7 @@ int ExactSide(const Geometry& g, const ViewFrame& f, vtkIdType c, int face, Filt
   {
     plane->Set(a, b, cc);
   }
-  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
-  return f.Parallel ? hov::Orient3dDirection(a, b, cc, back) : hov::Orient3d(a, b, cc, f.Eye);
+  return f.TriangleSide(a, b, cc);
 }
 
 /// Face @p of cell @p c whose corners are those of face @p fa of cell @p a, or -1.
@@ -154,7 +150,6 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
 {
   std::vector<std::int8_t>& dir = this->Directions;
   const ViewFrame& f = v.Frame;
-  const double back[3] = { -f.Dop[0], -f.Dop[1], -f.Dop[2] };
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
   const bool allOrdered = v.AllOrdered; // skips two random reads per face
@@ -172,8 +167,7 @@ void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View&
       int side;
       if (triple && triple[0] != Topology::NoTriple)
       {
-        const double *a = g.Point(triple[0]), *b = g.Point(triple[1]), *c = g.Point(triple[2]);
-        side = f.Parallel ? hov::Orient3dDirection(a, b, c, back) : hov::Orient3d(a, b, c, f.Eye);
+        side = f.TriangleSide(g.Point(triple[0]), g.Point(triple[1]), g.Point(triple[2]));
       }
       else
       {

@@ -116,7 +116,7 @@ int Obstruction::FaceSeparates(vtkIdType x, int f, vtkIdType y, double tol) cons
         return NotSeparated;
       }
     }
-    const int eye = fr.Parallel ? hov::Orient3dDirection(a, b, c, back) : hov::Orient3d(a, b, c, fr.Eye);
+    const int eye = fr.TriangleSide(a, b, c);
     return eye; // < 0: eye outside, y in front; > 0: x in front; 0: edge-on, no common ray
   }
   // Tolerant: y outside up to tol (rounding of touching cells), the eye clearly on one side.

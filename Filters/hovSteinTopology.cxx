@@ -229,8 +229,8 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
   t.A.resize(bound);
   t.B.resize(bound);
   t.FaceA.resize(bound);
-  const bool triples = static_cast<vtkIdType>(g.Points.size() / 3) < static_cast<vtkIdType>(Topology::NoTriple);
-  t.TripleA.assign(triples ? 3 * bound : 0, 0);
+  // Point ids as uint32 (NoTriple reserved), else no triples (EyeSide instead).
+  t.TripleA.assign(numPoints < static_cast<vtkIdType>(Topology::NoTriple) ? 3 * bound : 0, 0);
   vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
     std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
     for (vtkIdType k = k0; k < k1; ++k)

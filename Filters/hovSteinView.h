@@ -16,7 +16,8 @@
 #ifndef hovSteinView_h
 #define hovSteinView_h
 
-#include "hovSteinGeometry.h" // Geometry
+#include "hovGeometricPredicates.h" // Orient3d, Orient3dDirection
+#include "hovSteinGeometry.h"        // Geometry
 
 #include <cstdint> // std::uint8_t
 #include <vector>  // storage
@@ -41,6 +42,18 @@ struct ViewFrame
   double Near = 0;        ///< perspective only
   double Window[4] = {};  ///< sane screen region for tiling: xmin, xmax, ymin, ymax
   void FromCamera(vtkCamera* camera, double diagonal);
+  /// The exact side of the eye with respect to the plane of the triangle
+  /// (a, b, c): hov::Orient3d(a, b, c, Eye), or for parallel projection
+  /// hov::Orient3dDirection(a, b, c, -Dop) (the direction towards the eye).
+  int TriangleSide(const double* a, const double* b, const double* c) const
+  {
+    if (this->Parallel)
+    {
+      const double back[3] = { -this->Dop[0], -this->Dop[1], -this->Dop[2] };
+      return hov::Orient3dDirection(a, b, c, back);
+    }
+    return hov::Orient3d(a, b, c, this->Eye);
+  }
 };
 
 struct View
