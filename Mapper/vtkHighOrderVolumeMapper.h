@@ -170,7 +170,7 @@ public:
 
   ///@{
   /// Side in pixels of the square tiles the CPU path distributes over threads
-  /// (default 16). A performance knob only: the image does not depend on it.
+  /// (default 32). A performance knob only: the image does not depend on it.
   vtkSetClampMacro(TileSize, int, 4, 256);
   vtkGetMacro(TileSize, int);
   ///@}
@@ -501,7 +501,7 @@ protected:
   bool UseDepthBuffer = true;
   bool ViewDepthClipping = false;
   double ViewDepthRange[2] = { 0.0, 1.0 };
-  int TileSize = 16;
+  int TileSize = 32;
   int CellRecordMemory = 256;
   vtkVisibilitySort* VisibilitySort = nullptr;
   std::vector<double> Isosurfaces; ///< value, r, g, b, opacity per surface

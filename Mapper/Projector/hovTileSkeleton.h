@@ -43,7 +43,7 @@ struct ProjectorSettings
 {
   IntegrationSettings Integration;
   double TerminationTransmittance = 1e-9;
-  int TileSize = 16;
+  int TileSize = 32;
   /// Largest memory of the per-frame cell records of the whole order
   /// (hov::CellRecords); beyond it each tile builds its own cells' records.
   size_t RecordBudget = size_t(256) << 20;

@@ -89,7 +89,7 @@ struct FrameSettings
   VectorMode Vectors = VectorMode::Magnitude;
   int VectorComponent = 0;
   double TerminationTransmittance = 1e-9;
-  int TileSize = 16;
+  int TileSize = 32;
   int CellRecordMemory = 256; ///< MiB (vtkHighOrderVolumeMapper::SetCellRecordMemory)
   bool UseDepthBuffer = true;
   bool ViewDepthClipping = false;
