@@ -182,6 +182,29 @@ namespace hovStein
 {
 namespace
 {
+/// Sets the axis-plane bits (see FaceMode) of the exact faces of cell @p c.
+void MarkAxisPlanes(Geometry& g, vtkIdType c)
+{
+  const Shape& s = GetShape(g.Kinds[c]);
+  std::uint8_t* codes = g.FaceCodes.data() + MaxFaces * c;
+  for (int f = 0; f < s.NumFaces; ++f)
+  {
+    if ((codes[f] & 3) != FaceExact)
+    {
+      continue;
+    }
+    vtkIdType t[3];
+    g.ExactTriple(c, f, t);
+    int axis, sigma;
+    if (hov::AxisAlignedPlane(g.Point(t[0]), g.Point(t[1]), g.Point(t[2]), axis, sigma) &&
+      sigma != 0)
+    {
+      codes[f] =
+        static_cast<std::uint8_t>((codes[f] & 31) | ((axis + 1) << 5) | (sigma < 0 ? 128 : 0));
+    }
+  }
+}
+
 /// Corners and faces of one supported cell; false if it is invalid.
 bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, vtkIdList* ids, vtkIdType numPoints)
 {
@@ -337,6 +360,7 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       const Kind kind = static_cast<Kind>(this->Kinds[c]);
       if (kind != KindBad && FillCell(*this, c, kind, source.Type(c), ids, numPoints))
       {
+        MarkAxisPlanes(*this, c);
         continue;
       }
       this->Kinds[c] = KindBad;

@@ -56,7 +56,9 @@ inline const Shape& GetShape(int kind)
   return *ShapeTable[kind];
 }
 
-/// Face codes: bits 0-1 mode, bit 2 reversed orientation, bits 3-4 omitted quad corner.
+/// Face codes: bits 0-1 mode, bit 2 reversed orientation, bits 3-4 omitted quad
+/// corner; exact faces in an axis-aligned plane (hov::AxisAlignedPlane of
+/// their ExactTriple): bits 5-6 the axis + 1, bit 7 set if sigma is -1.
 enum FaceMode : std::uint8_t
 {
   FaceSkip = 0,
@@ -113,6 +115,16 @@ struct Geometry
     ids[0] = corners[t0];
     ids[1] = corners[(code & 4) ? t2 : t1];
     ids[2] = corners[(code & 4) ? t1 : t2];
+  }
+  /// True if the exact face @p f of @p c lies in an axis-aligned plane; then
+  /// hov::AxisOrient3d(axis, sigma, a, d) is hov::Orient3d(a, b, c, d) for its
+  /// ExactTriple (a, b, c) and every d.
+  bool AxisPlane(vtkIdType c, int f, int& axis, int& sigma) const
+  {
+    const std::uint8_t code = this->FaceCode(c, f);
+    axis = ((code >> 5) & 3) - 1;
+    sigma = (code & 128) ? -1 : 1;
+    return axis >= 0;
   }
   /// The corners of face f in outward counterclockwise order; returns their number.
   int OrientedFace(vtkIdType c, int f, vtkIdType ids[4]) const;

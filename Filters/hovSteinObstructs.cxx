@@ -107,11 +107,20 @@ int Obstruction::FaceSeparates(vtkIdType x, int f, vtkIdType y, double tol) cons
   const double *a = this->G.Point(t[0]), *b = this->G.Point(t[1]), *c = this->G.Point(t[2]);
   if (tol == 0)
   {
-    // Exact: every corner of y on the closed outer side of the plane.
+    // Exact: every corner of y on the closed outer side of the plane. On an
+    // axis-aligned plane (grid-aligned meshes, whose corners often lie exactly
+    // on other cells' face planes, where Orient3d's filter fails) the same
+    // exact sign from two comparisons.
+    int axis, sigma;
+    const bool aligned = this->G.AxisPlane(x, f, axis, sigma);
     for (int i = 0; i < n; ++i)
     {
-      if (ids[i] != t[0] && ids[i] != t[1] && ids[i] != t[2] &&
-        hov::Orient3d(a, b, c, this->G.Point(ids[i])) > 0)
+      if (ids[i] == t[0] || ids[i] == t[1] || ids[i] == t[2])
+      {
+        continue;
+      }
+      const double* p = this->G.Point(ids[i]);
+      if ((aligned ? hov::AxisOrient3d(axis, sigma, a, p) : hov::Orient3d(a, b, c, p)) > 0)
       {
         return NotSeparated;
       }

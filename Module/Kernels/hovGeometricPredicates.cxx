@@ -268,6 +268,31 @@ inline void Det3(const double ad[3], const double bd[3], const double cd[3], dou
 }
 }
 
+bool AxisAlignedPlane(const double a[3], const double b[3], const double c[3], int& k, int& sigma)
+{
+  for (int j = 0; j < 3; ++j)
+  {
+    if (!(a[j] - a[j] == 0 && b[j] - b[j] == 0 && c[j] - c[j] == 0))
+    {
+      return false; // not finite
+    }
+  }
+  for (k = 0; k < 3; ++k)
+  {
+    if (a[k] == b[k] && a[k] == c[k])
+    {
+      // det[a-d; b-d; c-d] = ((b-a)x(c-a)).(a-d) and the cross product's
+      // other components vanish; its k-th is the 2D orientation in the
+      // cyclically next two coordinates.
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double pa[2] = { a[i], a[j] }, pb[2] = { b[i], b[j] }, pc[2] = { c[i], c[j] };
+      sigma = Orient2d(pa, pb, pc);
+      return true;
+    }
+  }
+  return false;
+}
+
 int Orient3d(const double a[3], const double b[3], const double c[3], const double d[3])
 {
   const double ad[3] = { a[0] - d[0], a[1] - d[1], a[2] - d[2] };

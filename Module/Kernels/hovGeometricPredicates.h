@@ -44,6 +44,30 @@ HOV_EXPORT int Orient3d(const double a[3], const double b[3], const double c[3],
 HOV_EXPORT int Orient3dDirection(
   const double a[3], const double b[3], const double c[3], const double w[3]);
 
+/**
+ * Orient3d against an axis-aligned plane without the determinant. If a, b, c
+ * are finite and share their coordinate k exactly, sets @p k and @p sigma,
+ * the exact sign of ((b-a)x(c-a))_k (Orient2d of the two other coordinates,
+ * cyclically: 0 when the triangle is degenerate), and returns true. Then
+ * (b-a)x(c-a) = (0, ..., n_k, ..., 0) exactly, so for every d
+ * Orient3d(a, b, c, d) == AxisOrient3d(k, sigma, a, d): two comparisons
+ * instead of a determinant that points on the plane (grid-aligned meshes)
+ * make the filter fail on. False otherwise (call Orient3d).
+ */
+HOV_EXPORT bool AxisAlignedPlane(
+  const double a[3], const double b[3], const double c[3], int& k, int& sigma);
+
+/// Orient3d(a, b, c, d) for the plane of AxisAlignedPlane(a, b, c, k, sigma).
+inline int AxisOrient3d(int k, int sigma, const double a[3], const double d[3])
+{
+  // Non-finite d: 0, as Orient3d (NaN - NaN is not 0; inf - inf is NaN).
+  if (!(d[0] - d[0] == 0 && d[1] - d[1] == 0 && d[2] - d[2] == 0))
+  {
+    return 0;
+  }
+  return sigma * (static_cast<int>(a[k] > d[k]) - static_cast<int>(a[k] < d[k]));
+}
+
 ///@{
 /// The exact (rational) evaluations alone, bypassing the floating-point filter.
 HOV_EXPORT int Orient2dExact(const double a[2], const double b[2], const double c[2]);

@@ -27,7 +27,10 @@ namespace
 {
 /// 4 x 4 x 4 small blocks of 2 x 2 x 2 jittered Kuhn cubes, gaps between
 /// them, alternate rows shifted by half a block so blocks hide each other.
-vtkSmartPointer<vtkUnstructuredGrid> BlockLattice(unsigned seed)
+/// Jitter 0: every boundary face in an axis-aligned plane shared with other
+/// blocks' faces and corners (the exact zeros of grid-aligned meshes such as
+/// the benchmark's heatsink, decided by hov::AxisOrient3d).
+vtkSmartPointer<vtkUnstructuredGrid> BlockLattice(unsigned seed, double jitter)
 {
   MeshBuilder all;
   for (int k = 0; k < 4; ++k)
@@ -39,7 +42,7 @@ vtkSmartPointer<vtkUnstructuredGrid> BlockLattice(unsigned seed)
         const double o[3] = { 1.3 * i + 0.55 * ((j + k) & 1), 1.3 * j + 0.4 * (k & 1), 1.3 * k };
         const double size[3] = { 0.9, 0.8, 0.7 + 0.1 * (i & 1) };
         const unsigned s = seed + 31u * static_cast<unsigned>(i + 4 * (j + 4 * k));
-        MeshBuilder m = JitteredTetBlock(2, 2, 2, o, size, 0.3, s);
+        MeshBuilder m = JitteredTetBlock(2, 2, 2, o, size, jitter, s);
         all.Append(m);
       }
     }
@@ -72,8 +75,10 @@ void Run(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, const 
 int TestSteinSortBoundary(int argc, char* argv[])
 {
   Checker ck;
+  for (const double jitter : { 0.3, 0.0 })
   {
-    vtkSmartPointer<vtkUnstructuredGrid> lattice = BlockLattice(41);
+    const std::string name = jitter > 0 ? "block lattice" : "aligned lattice";
+    vtkSmartPointer<vtkUnstructuredGrid> lattice = BlockLattice(41, jitter);
     double b[6];
     lattice->GetBounds(b);
     OracleOptions options;
@@ -81,7 +86,7 @@ int TestSteinSortBoundary(int argc, char* argv[])
     options.RandomRays = 4000;
     for (const SortView& view : RandomViews(b, 4, 910))
     {
-      Run(ck, "block lattice", lattice, view, options);
+      Run(ck, name, lattice, view, options);
     }
     // Along the lattice's x rows and from inside it (blocks on all sides).
     SortView along;
@@ -95,10 +100,10 @@ int TestSteinSortBoundary(int argc, char* argv[])
     along.ViewUp[0] = 0;
     along.ViewUp[1] = 0;
     along.ViewUp[2] = 1;
-    Run(ck, "block lattice", lattice, along, options);
+    Run(ck, name, lattice, along, options);
     const double eye[3] = { b[0] + 1.2, b[2] + 1.2, b[4] + 1.2 }; // in the gap of 4 blocks
     const double focal[3] = { b[1], b[3], b[5] };
-    Run(ck, "block lattice", lattice, InsideView("inside", eye, focal), options);
+    Run(ck, name, lattice, InsideView("inside", eye, focal), options);
   }
   {
     vtkSmartPointer<vtkUnstructuredGrid> bracket = LoadBracket(argc, argv);

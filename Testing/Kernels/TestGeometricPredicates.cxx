@@ -240,3 +240,71 @@ TEST(GeometricPredicates, LargeIntegerNearDegenerate)
   EXPECT_GT(zero, 300);
   EXPECT_GT(nonzero, 1000);
 }
+
+TEST(GeometricPredicates, AxisAlignedPlanes)
+{
+  // Triangles in a plane x_k = const (random, grid-aligned or degenerate), and
+  // points on the plane, one ulp off it, or anywhere: AxisOrient3d must be
+  // Orient3d's exact sign; non-aligned and non-finite triangles are refused.
+  std::mt19937_64 rng(31337);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> grid(-4, 4);
+  const double scales[] = { 1e-150, 1e-3, 1.0, 2.5e4, 1e150 };
+  int counts[3] = { 0, 0, 0 }; // results -1, 0, 1
+  for (double s : scales)
+  {
+    for (int n = 0; n < 2000; ++n)
+    {
+      const int k = n % 3;
+      const bool onGrid = n % 4 == 0;
+      double p[4][3];
+      for (auto& q : p)
+        for (double& v : q)
+          v = onGrid ? s * 0.25 * grid(rng) : s * u(rng);
+      p[1][k] = p[2][k] = p[0][k];
+      if (n % 5 == 0)
+      {
+        p[3][k] = p[0][k]; // on the plane
+      }
+      else if (n % 5 == 1)
+      {
+        p[3][k] = Ulp(p[0][k], n % 2 ? 1 : -1);
+      }
+      if (n % 11 == 0)
+      {
+        // Degenerate: c on the line ab (sigma 0, every point "on" the plane).
+        for (int j = 0; j < 3; ++j)
+          p[2][j] = p[1][j];
+      }
+      int axis = -1, sigma = 2;
+      ASSERT_TRUE(hov::AxisAlignedPlane(p[0], p[1], p[2], axis, sigma));
+      const bool unique = !(p[0][(k + 1) % 3] == p[1][(k + 1) % 3] &&
+        p[0][(k + 1) % 3] == p[2][(k + 1) % 3]) && !(p[0][(k + 2) % 3] == p[1][(k + 2) % 3] &&
+        p[0][(k + 2) % 3] == p[2][(k + 2) % 3]);
+      if (unique)
+      {
+        ASSERT_EQ(axis, k);
+      }
+      const int ref = Ref3(p[0], p[1], p[2], p[3]);
+      ASSERT_EQ(hov::AxisOrient3d(axis, sigma, p[0], p[3]), ref) << "n " << n << " scale " << s;
+      ASSERT_EQ(hov::Orient3d(p[0], p[1], p[2], p[3]), ref);
+      ++counts[ref + 1];
+    }
+  }
+  EXPECT_GT(counts[0], 1000); // all three outcomes occur
+  EXPECT_GT(counts[1], 1000);
+  EXPECT_GT(counts[2], 1000);
+  // Not aligned, non-finite triangle, non-finite point.
+  const double a[3] = { 0, 0, 0 }, b[3] = { 1, 0, 1 }, c[3] = { 0, 1, 0 };
+  int axis = -1, sigma = 0;
+  EXPECT_FALSE(hov::AxisAlignedPlane(a, b, c, axis, sigma));
+  const double inf[3] = { 0, HUGE_VAL, 0 }, flat[3] = { 1, 0, 0 };
+  EXPECT_FALSE(hov::AxisAlignedPlane(a, flat, inf, axis, sigma));
+  ASSERT_TRUE(hov::AxisAlignedPlane(a, flat, c, axis, sigma));
+  EXPECT_EQ(axis, 2);
+  EXPECT_EQ(sigma, 1);
+  const double nan[3] = { 0, std::nan(""), 1 }, infPoint[3] = { HUGE_VAL, 0, 1 };
+  EXPECT_EQ(hov::AxisOrient3d(axis, sigma, a, nan), 0);
+  EXPECT_EQ(hov::AxisOrient3d(axis, sigma, a, infPoint), 0);
+  EXPECT_EQ(hov::Orient3d(a, flat, c, infPoint), 0);
+}
