@@ -270,17 +270,17 @@ inline void Det3(const double ad[3], const double bd[3], const double cd[3], dou
 
 bool AxisAlignedPlane(const double a[3], const double b[3], const double c[3], int& k, int& sigma)
 {
-  for (int j = 0; j < 3; ++j)
-  {
-    if (!(a[j] - a[j] == 0 && b[j] - b[j] == 0 && c[j] - c[j] == 0))
-    {
-      return false; // not finite
-    }
-  }
   for (k = 0; k < 3; ++k)
   {
     if (a[k] == b[k] && a[k] == c[k])
     {
+      for (int j = 0; j < 3; ++j)
+      {
+        if (!(a[j] - a[j] == 0 && b[j] - b[j] == 0 && c[j] - c[j] == 0))
+        {
+          return false; // not finite
+        }
+      }
       // det[a-d; b-d; c-d] = ((b-a)x(c-a)).(a-d) and the cross product's
       // other components vanish; its k-th is the 2D orientation in the
       // cyclically next two coordinates.
