@@ -395,6 +395,12 @@ void SortUniquePairs(BoundaryPairs::Buffers& b)
       b.Kept[i] = static_cast<std::uint32_t>(std::unique(first, last) - first);
     }
   });
+  vtkIdType kept = 0;
+  for (vtkIdType i = 0; i < nb; ++i)
+  {
+    kept += b.Kept[i];
+  }
+  b.Pairs.reserve(kept);
   for (vtkIdType i = 0; i < nb; ++i)
   {
     const vtkIdType* first = b.Second.data() + (i == 0 ? 0 : start[i - 1]);

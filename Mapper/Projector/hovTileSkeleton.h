@@ -97,7 +97,7 @@ struct ProjectedPoints
 /// Cells binned into image tiles, each tile's list in the order given.
 struct TileBins
 {
-  int Size = 16, TilesX = 0, TilesY = 0;
+  int Size = 32, TilesX = 0, TilesY = 0;
   std::vector<vtkIdType> Start; ///< per tile, into Cells
   std::vector<vtkIdType> Cells; ///< ordered-cell indices
   std::vector<vtkIdType> Fill;  ///< scratch: per chunk and tile

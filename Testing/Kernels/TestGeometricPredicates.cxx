@@ -249,7 +249,7 @@ TEST(GeometricPredicates, AxisAlignedPlanes)
   std::mt19937_64 rng(31337);
   std::uniform_real_distribution<double> u(-1, 1);
   std::uniform_int_distribution<int> grid(-4, 4);
-  const double scales[] = { 1e-150, 1e-3, 1.0, 2.5e4, 1e150 };
+  const double scales[] = { 1e-150, 1e-3, 1.0, 2.5e4, 1e150, 1e200 }; // 1e200: products overflow
   int counts[3] = { 0, 0, 0 }; // results -1, 0, 1
   for (double s : scales)
   {
@@ -269,6 +269,14 @@ TEST(GeometricPredicates, AxisAlignedPlanes)
       else if (n % 5 == 1)
       {
         p[3][k] = Ulp(p[0][k], n % 2 ? 1 : -1);
+      }
+      if (n % 13 == 0)
+      {
+        // The plane x_k = 0 given with signed zeros (-0.0 == 0.0).
+        p[0][k] = 0.0;
+        p[1][k] = -0.0;
+        p[2][k] = n % 2 ? -0.0 : 0.0;
+        p[3][k] = n % 3 == 0 ? -0.0 : p[3][k];
       }
       if (n % 11 == 0)
       {
