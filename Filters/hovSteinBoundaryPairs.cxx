@@ -271,9 +271,11 @@ struct BoundaryPairs::Buffers
   TileLists Lists;
   std::vector<CellPairs> BlockPairs;
   std::vector<vtkIdType> BlockCount;
+  std::vector<vtkIdType> BlockLo, BlockHi; ///< per block: least and greatest first cell
   CellPairs Pairs;
   std::vector<vtkIdType> PairStart, Second; ///< FindCellPairs' pairs bucketed by first cell
-  std::vector<std::uint32_t> Kept;          ///< per bucket: distinct second cells
+  std::vector<vtkIdType> ChunkCursor;       ///< per chunk of blocks and bucket
+  std::vector<vtkIdType> Kept;              ///< per bucket: distinct second cells, then offsets
   std::vector<std::uint8_t> Used, Hit;
   std::vector<vtkIdType> Cells;
   HullCache Hulls;
@@ -294,6 +296,8 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, BoundaryPairs::Buffe
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
   b.BlockPairs.resize(numBlocks);
   b.BlockCount.resize(numBlocks);
+  b.BlockLo.resize(numBlocks);
+  b.BlockHi.resize(numBlocks);
   const vtkIdType* exitStart = b.Lists.Start[0].data();
   const vtkIdType* entryStart = b.Lists.Start[1].data();
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
@@ -329,8 +333,16 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, BoundaryPairs::Buffe
           }
         }
       }
+      vtkIdType lo = VTK_ID_MAX, hi = -1;
+      for (const auto& p : found)
+      {
+        lo = std::min(lo, p.first);
+        hi = std::max(hi, p.first);
+      }
       b.BlockPairs[blk].swap(found);
       b.BlockCount[blk] = count;
+      b.BlockLo[blk] = lo;
+      b.BlockHi[blk] = hi;
     }
   });
   for (vtkIdType blk = 0; blk < numBlocks; ++blk)
@@ -342,21 +354,21 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, BoundaryPairs::Buffe
 /**
  * The distinct cell pairs of the blocks of FindCellPairs() into b.Pairs, in
  * increasing (first, second) order: bucketed by first cell (a counting sort
- * over the range of first cells), each bucket sorted and made unique on its
- * own, in parallel. The same pairs in the same order as sorting all of them
- * and removing repeats, in about a tenth of the time (most buckets hold a few
- * cells).
+ * over the range of first cells, in parallel over fixed chunks of blocks, each
+ * chunk counting and scattering its own pairs), then each bucket sorted and
+ * made unique on its own, in parallel. The same pairs in the same order as
+ * sorting all of them and removing repeats, whatever the number of threads
+ * (a bucket's contents are sorted after the scatter); on the heatsink 0.5M
+ * about half the time of vtkSMPTools::Sort + std::unique.
  */
 void SortUniquePairs(BoundaryPairs::Buffers& b)
 {
+  const vtkIdType numBlocks = static_cast<vtkIdType>(b.BlockPairs.size());
   vtkIdType lo = VTK_ID_MAX, hi = -1;
-  for (const CellPairs& block : b.BlockPairs)
+  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
   {
-    for (const auto& p : block)
-    {
-      lo = std::min(lo, p.first);
-      hi = std::max(hi, p.first);
-    }
+    lo = std::min(lo, b.BlockLo[blk]);
+    hi = std::max(hi, b.BlockHi[blk]);
   }
   b.Pairs.clear();
   if (hi < lo)
@@ -364,51 +376,87 @@ void SortUniquePairs(BoundaryPairs::Buffers& b)
     return;
   }
   const vtkIdType nb = hi - lo + 1;
-  std::vector<vtkIdType>& start = b.PairStart;
-  start.assign(nb + 1, 0);
-  for (const CellPairs& block : b.BlockPairs)
-  {
-    for (const auto& p : block)
+  const vtkIdType threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const vtkIdType chunks = std::max<vtkIdType>(1, std::min(numBlocks, threads));
+  auto chunkBlocks = [&](vtkIdType c) {
+    return std::make_pair(c * numBlocks / chunks, (c + 1) * numBlocks / chunks);
+  };
+  std::vector<vtkIdType>& cursor = b.ChunkCursor; // [c * nb + bucket]
+  cursor.assign(chunks * nb, 0);
+  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
+    for (vtkIdType c = c0; c < c1; ++c)
     {
-      ++start[p.first - lo + 1];
+      vtkIdType* count = cursor.data() + c * nb;
+      const auto range = chunkBlocks(c);
+      for (vtkIdType blk = range.first; blk < range.second; ++blk)
+      {
+        for (const auto& p : b.BlockPairs[blk])
+        {
+          ++count[p.first - lo];
+        }
+      }
     }
-  }
+  });
+  // Bucket i holds [start[i], start[i + 1]); chunk c writes its part of it
+  // from cursor[c * nb + i] on.
+  std::vector<vtkIdType>& start = b.PairStart;
+  start.resize(nb + 1);
+  vtkIdType total = 0;
   for (vtkIdType i = 0; i < nb; ++i)
   {
-    start[i + 1] += start[i];
-  }
-  b.Second.resize(start[nb]);
-  for (const CellPairs& block : b.BlockPairs) // start[i] becomes the end of bucket i
-  {
-    for (const auto& p : block)
+    start[i] = total;
+    for (vtkIdType c = 0; c < chunks; ++c)
     {
-      b.Second[start[p.first - lo]++] = p.second;
+      const vtkIdType n = cursor[c * nb + i];
+      cursor[c * nb + i] = total;
+      total += n;
     }
   }
-  b.Kept.resize(nb);
+  start[nb] = total;
+  b.Second.resize(total);
+  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
+    for (vtkIdType c = c0; c < c1; ++c)
+    {
+      vtkIdType* next = cursor.data() + c * nb;
+      const auto range = chunkBlocks(c);
+      for (vtkIdType blk = range.first; blk < range.second; ++blk)
+      {
+        for (const auto& p : b.BlockPairs[blk])
+        {
+          b.Second[next[p.first - lo]++] = p.second;
+        }
+      }
+    }
+  });
+  b.Kept.resize(nb + 1);
   vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
-      vtkIdType* first = b.Second.data() + (i == 0 ? 0 : start[i - 1]);
-      vtkIdType* last = b.Second.data() + start[i];
+      vtkIdType* first = b.Second.data() + start[i];
+      vtkIdType* last = b.Second.data() + start[i + 1];
       std::sort(first, last);
-      b.Kept[i] = static_cast<std::uint32_t>(std::unique(first, last) - first);
+      b.Kept[i] = std::unique(first, last) - first;
     }
   });
-  vtkIdType kept = 0;
+  vtkIdType kept = 0; // Kept becomes each bucket's offset in Pairs
   for (vtkIdType i = 0; i < nb; ++i)
   {
-    kept += b.Kept[i];
+    const vtkIdType n = b.Kept[i];
+    b.Kept[i] = kept;
+    kept += n;
   }
-  b.Pairs.reserve(kept);
-  for (vtkIdType i = 0; i < nb; ++i)
-  {
-    const vtkIdType* first = b.Second.data() + (i == 0 ? 0 : start[i - 1]);
-    for (std::uint32_t k = 0; k < b.Kept[i]; ++k)
+  b.Kept[nb] = kept;
+  b.Pairs.resize(kept);
+  vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      b.Pairs.emplace_back(lo + i, first[k]);
+      const vtkIdType* first = b.Second.data() + start[i];
+      for (vtkIdType k = b.Kept[i]; k < b.Kept[i + 1]; ++k)
+      {
+        b.Pairs[k] = { lo + i, first[k - b.Kept[i]] };
+      }
     }
-  }
+  });
 }
 
 /**

@@ -122,8 +122,8 @@ void HullCache::Build(const Geometry& g, const View& v, const std::vector<vtkIdT
 {
   const vtkIdType numCells = static_cast<vtkIdType>(cells.size());
   this->Slot.assign(g.NumberOfCells, -1);
-  this->Start.resize(numCells + 1);
-  this->Start[0] = 0;
+  this->Entries.resize(numCells);
+  vtkIdType start = 0;
   for (vtkIdType k = 0; k < numCells; ++k)
   {
     const vtkIdType c = cells[k];
@@ -131,19 +131,19 @@ void HullCache::Build(const Geometry& g, const View& v, const std::vector<vtkIdT
     const int clip = v.ClipIndex[c];
     const vtkIdType bound = clip >= 0 ? static_cast<vtkIdType>(v.Clipped[clip].size() / 3)
                                       : g.NumberOfCorners(c);
-    this->Start[k + 1] = this->Start[k] + bound; // a hull has at most as many points
+    this->Entries[k].Start = start;
+    start += bound; // a hull has at most as many points
   }
-  this->Points.resize(2 * this->Start[numCells]);
-  this->Sizes.resize(numCells);
-  this->Areas.resize(numCells);
+  this->Points.resize(2 * start);
   vtkSMPTools::For(0, numCells, 256, [&](vtkIdType begin, vtkIdType end) {
     double xyz[3 * MaxVisiblePoints], hull[HullCapacity][2];
     for (vtkIdType k = begin; k < end; ++k)
     {
       const int size = Hull2d(xyz, v.VisiblePoints(g, cells[k], xyz), hull);
-      std::copy(&hull[0][0], &hull[0][0] + 2 * size, this->Points.data() + 2 * this->Start[k]);
-      this->Sizes[k] = size;
-      this->Areas[k] = Area(hull, size);
+      Entry& e = this->Entries[k];
+      std::copy(&hull[0][0], &hull[0][0] + 2 * size, this->Points.data() + 2 * e.Start);
+      e.Size = size;
+      e.Area = Area(hull, size);
     }
   });
 }
@@ -155,8 +155,9 @@ const double (*HullCache::Find(vtkIdType c, int& size, double& area) const)[2]
   {
     return nullptr;
   }
-  size = this->Sizes[k];
-  area = this->Areas[k];
-  return reinterpret_cast<const double(*)[2]>(this->Points.data() + 2 * this->Start[k]);
+  const Entry& e = this->Entries[k];
+  size = e.Size;
+  area = e.Area;
+  return reinterpret_cast<const double(*)[2]>(this->Points.data() + 2 * e.Start);
 }
 }

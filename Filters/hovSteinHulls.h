@@ -48,11 +48,16 @@ public:
   const double (*Find(vtkIdType c, int& size, double& area) const)[2];
 
 private:
-  std::vector<int> Slot;              ///< per cell: index in Start, or -1
-  std::vector<vtkIdType> Start;       ///< per hull + 1: first point
-  std::vector<double> Points;         ///< x, y per hull point
-  std::vector<int> Sizes;             ///< per hull
-  std::vector<double> Areas;          ///< per hull
+  /// Where a hull is, its size and area: one record (one cache miss per lookup).
+  struct Entry
+  {
+    vtkIdType Start; ///< first point in Points
+    double Area;
+    int Size;
+  };
+  std::vector<int> Slot;       ///< per cell: index in Entries, or -1
+  std::vector<Entry> Entries;  ///< per hull
+  std::vector<double> Points;  ///< x, y per hull point
 };
 }
 
