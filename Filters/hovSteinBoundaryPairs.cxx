@@ -378,24 +378,25 @@ void SortUniquePairs(BoundaryPairs::Buffers& b)
   const vtkIdType nb = hi - lo + 1;
   const vtkIdType threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   const vtkIdType chunks = std::max<vtkIdType>(1, std::min(numBlocks, threads));
-  auto chunkBlocks = [&](vtkIdType c) {
-    return std::make_pair(c * numBlocks / chunks, (c + 1) * numBlocks / chunks);
-  };
   std::vector<vtkIdType>& cursor = b.ChunkCursor; // [c * nb + bucket]
   cursor.assign(chunks * nb, 0);
-  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
-    for (vtkIdType c = c0; c < c1; ++c)
-    {
-      vtkIdType* count = cursor.data() + c * nb;
-      const auto range = chunkBlocks(c);
-      for (vtkIdType blk = range.first; blk < range.second; ++blk)
+  // fn(chunk's cursors, pair) for the pairs of each chunk of blocks, in parallel.
+  auto forChunks = [&](auto&& fn) {
+    vtkSMPTools::For(0, chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
+      for (vtkIdType c = c0; c < c1; ++c)
       {
-        for (const auto& p : b.BlockPairs[blk])
+        for (vtkIdType blk = c * numBlocks / chunks; blk < (c + 1) * numBlocks / chunks; ++blk)
         {
-          ++count[p.first - lo];
+          for (const auto& p : b.BlockPairs[blk])
+          {
+            fn(cursor.data() + c * nb, p);
+          }
         }
       }
-    }
+    });
+  };
+  forChunks([&](vtkIdType* count, const std::pair<vtkIdType, vtkIdType>& p) {
+    ++count[p.first - lo];
   });
   // Bucket i holds [start[i], start[i + 1]); chunk c writes its part of it
   // from cursor[c * nb + i] on.
@@ -414,19 +415,8 @@ void SortUniquePairs(BoundaryPairs::Buffers& b)
   }
   start[nb] = total;
   b.Second.resize(total);
-  vtkSMPTools::For(0, chunks, 1, [&](vtkIdType c0, vtkIdType c1) {
-    for (vtkIdType c = c0; c < c1; ++c)
-    {
-      vtkIdType* next = cursor.data() + c * nb;
-      const auto range = chunkBlocks(c);
-      for (vtkIdType blk = range.first; blk < range.second; ++blk)
-      {
-        for (const auto& p : b.BlockPairs[blk])
-        {
-          b.Second[next[p.first - lo]++] = p.second;
-        }
-      }
-    }
+  forChunks([&](vtkIdType* next, const std::pair<vtkIdType, vtkIdType>& p) {
+    b.Second[next[p.first - lo]++] = p.second;
   });
   b.Kept.resize(nb + 1);
   vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {

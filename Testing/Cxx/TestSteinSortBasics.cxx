@@ -4,6 +4,7 @@
 // chunking, empty input, an unsupported cell (warning), a cyclic triple of
 // interleaved bars, perspective from inside the mesh, and re-sorting after a
 // camera change without a new set-up.
+#include "hovSortMeshes.h"
 #include "hovTestMeshes.h"
 
 #include "vtkCamera.h"
@@ -167,27 +168,6 @@ void SetCamera(vtkCamera* cam, const double pos[3], const double focal[3], bool 
   cam->SetViewAngle(40);
 }
 
-/// A hexahedral block with jittered points (non-planar faces).
-vtkSmartPointer<vtkUnstructuredGrid> JitteredHexBlock(int n, double jitter)
-{
-  MeshBuilder m;
-  auto id = [n](int i, int j, int k) { return static_cast<vtkIdType>((k * (n + 1) + j) * (n + 1) + i); };
-  unsigned s = 1;
-  auto rnd = [&s]() {
-    s = s * 1103515245u + 12345u;
-    return ((s >> 8) & 0xffff) / 65535.0 - 0.5;
-  };
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        m.AddPoint(i + jitter * rnd(), j + jitter * rnd(), k + jitter * rnd(), 0);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        m.AddCell(VTK_HEXAHEDRON, { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) });
-  return m.Grid(false);
-}
 }
 
 namespace
@@ -317,7 +297,7 @@ int TestSteinSortBasics(int, char*[])
   };
   auto tets = hovTest::UnitBlock(4).Grid(false);
   auto inverted = hovTest::UnitBlock(3, true).Grid(false);
-  auto hexes = JitteredHexBlock(4, 0.3);
+  auto hexes = hovTest::JitteredHexBlock(4, 0.3);
   const Case cases[] = { { "tet block, perspective", tets, outside, centre, false },
     { "tet block, parallel", tets, outside, centre, true },
     { "inverted tet block, perspective", inverted, outside, centre, false },

@@ -248,6 +248,27 @@ MeshBuilder JitteredTetBlock(int nx, int ny, int nz, const double o[3], const do
   return m;
 }
 
+vtkSmartPointer<vtkUnstructuredGrid> JitteredHexBlock(int n, double jitter)
+{
+  MeshBuilder m;
+  auto id = [n](int i, int j, int k) { return static_cast<vtkIdType>((k * (n + 1) + j) * (n + 1) + i); };
+  unsigned s = 1;
+  auto rnd = [&s]() {
+    s = s * 1103515245u + 12345u;
+    return ((s >> 8) & 0xffff) / 65535.0 - 0.5;
+  };
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        m.AddPoint(i + jitter * rnd(), j + jitter * rnd(), k + jitter * rnd(), 0);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        m.AddCell(VTK_HEXAHEDRON, { id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1) });
+  return m.Grid(false);
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> RandomTetMesh(int n, unsigned seed)
 {
   const double o[3] = { 0, 0, 0 }, s[3] = { 1, 1, 1 };

@@ -45,6 +45,10 @@ struct SortRandom
 MeshBuilder JitteredTetBlock(int nx, int ny, int nz, const double o[3], const double size[3],
   double jitter, unsigned seed, const std::function<bool(int, int, int)>& keep = {});
 
+/// n^3 unit hexahedra over [0, n]^3 with every point moved by up to
+/// +-jitter/2 per axis (non-planar faces); jitter 0: an axis-aligned grid.
+vtkSmartPointer<vtkUnstructuredGrid> JitteredHexBlock(int n, double jitter);
+
 /// Random jittered tetrahedral cube [0,1]^3 of n^3 Kuhn cubes (6 n^3 tets).
 vtkSmartPointer<vtkUnstructuredGrid> RandomTetMesh(int n, unsigned seed);
 
