@@ -4,7 +4,8 @@
  * (TestSort*.cxx): random jittered tetrahedral blocks, conforming mixed
  * meshes, the configurations of HIAC Fig. 5 and Fig. 6, interleaved long thin
  * cells, non-convex meshes (hole, notch), disconnected pieces, a sliding
- * interface, a cyclic triple and views from inside a hole.
+ * interface, a cyclic triple and views from inside a hole. The meshes are in
+ * hovSortMeshes.cxx, the random numbers, views and cameras in hovSortViews.cxx.
  *
  * Every generator is deterministic (fixed seeds, std::mt19937 with explicit
  * arithmetic, no std:: distributions whose output varies between libraries).
