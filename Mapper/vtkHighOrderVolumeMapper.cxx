@@ -509,11 +509,13 @@ void vtkHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkNew<vtkTimerLog> tail;
   tail->StartTimer();
   timer->StopTimer();
-  this->FinishLevel(frame, timer->GetElapsedTime());
+  // The last completed level instead of an aborted one: drawn whole.
+  const bool previous = this->FinishLevel(frame, timer->GetElapsedTime());
   vtkDataArray* rgba = impl.FloatImage->GetPointData()->GetScalars();
   if (rgba && rgba->GetNumberOfTuples() == static_cast<vtkIdType>(width) * height)
   {
-    if (!impl.Display.Draw(ren, static_cast<vtkFloatArray*>(rgba)->GetPointer(0), width, height))
+    if (!impl.Display.Draw(ren, static_cast<vtkFloatArray*>(rgba)->GetPointer(0), width, height,
+          previous ? nullptr : impl.Check.GetNonZeroBox()))
     {
       vtkErrorMacro("Could not draw the volume image with OpenGL.");
     }

@@ -19,6 +19,8 @@
 #include "vtkVolume.h"
 #include "vtk_glew.h"
 
+#include <algorithm> // std::max, std::min
+
 hov::ImageDisplay::ImageDisplay() = default;
 
 hov::ImageDisplay::~ImageDisplay()
@@ -26,12 +28,20 @@ hov::ImageDisplay::~ImageDisplay()
   delete this->Quad;
 }
 
-bool hov::ImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int width, int height)
+bool hov::ImageDisplay::Draw(
+  vtkRenderer* ren, const float* rgba, int width, int height, const int* box)
 {
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren ? ren->GetRenderWindow() : nullptr);
   if (!renWin || !rgba || width <= 0 || height <= 0)
   {
     return false;
+  }
+  // Only the box of non-zero pixels: the rest would blend as nothing.
+  const int x0 = box ? std::max(box[0], 0) : 0, x1 = box ? std::min(box[1], width) : width;
+  const int y0 = box ? std::max(box[2], 0) : 0, y1 = box ? std::min(box[3], height) : height;
+  if (x0 >= x1 || y0 >= y1)
+  {
+    return true;
   }
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLClearErrorMacro();
@@ -41,7 +51,18 @@ bool hov::ImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int width, int
   this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   this->Texture->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  if (!this->Texture->Create2DFromRaw(width, height, 4, VTK_FLOAT, const_cast<float*>(rgba)))
+  // The box's rows of the image, read in place (unpack row length: the
+  // image's width); the unpack state is put back (Create2DFromRaw sets the
+  // alignment to 1 and leaves it).
+  GLint rowLength = 0, alignment = 4;
+  glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+  ostate->vtkglPixelStorei(GL_UNPACK_ROW_LENGTH, width);
+  const bool uploaded = this->Texture->Create2DFromRaw(x1 - x0, y1 - y0, 4, VTK_FLOAT,
+    const_cast<float*>(rgba + 4 * (static_cast<size_t>(y0) * width + x0)));
+  ostate->vtkglPixelStorei(GL_UNPACK_ROW_LENGTH, rowLength);
+  ostate->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, alignment);
+  if (!uploaded)
   {
     return false;
   }
@@ -57,6 +78,12 @@ bool hov::ImageDisplay::Draw(vtkRenderer* ren, const float* rgba, int width, int
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDepthMask(GL_FALSE);
+  // The quad over the box: the renderer's viewport (width x height) moved
+  // and shrunk to it, so texel (i, j) still lands on pixel (x0 + i, y0 + j).
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  int viewport[4];
+  ostate->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  ostate->vtkglViewport(viewport[0] + x0, viewport[1] + y0, x1 - x0, y1 - y0);
 
   if (!this->Blit(renWin, this->Texture))
   {

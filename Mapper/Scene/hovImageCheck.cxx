@@ -5,49 +5,95 @@
 #include "vtkSMPTools.h" // the parallel pass
 
 #include <algorithm> // std::min
+#include <array>     // the blocks' boxes
 #include <atomic>    // the blocks' counts
 #include <cfloat>    // FLT_MAX
-#include <cmath>     // std::isfinite, std::abs
+#include <cmath>     // std::abs
 #include <sstream>   // messages
 #include <string>    // messages
+#include <vector>    // the blocks' boxes
 
 namespace
 {
 /// Pixels per block of the parallel pass (a block's values stay in cache).
 constexpr size_t BlockPixels = 16384;
 
+/// Pixels per chunk of CheckRow (its values stay in L1 between its loops).
+constexpr int ChunkPixels = 64;
+
+/// Whether any of the @p n floats is non-zero (branch free: vectorized).
+inline bool AnyNonZero(const float* f, size_t n)
+{
+  unsigned any = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    any |= static_cast<unsigned>(f[i] != 0.0f);
+  }
+  return any != 0;
+}
+
 /**
- * One pass over the pixels [b, e) (4 values each): zeroes a pixel with a
- * value that float cannot hold (NaN, Inf, beyond FLT_MAX) and counts it,
- * writes the values as float into @p out if it is not null, and tells
- * whether any value is non-zero as a float (a double below float's smallest
- * denormal, e.g. from a unit distance of 1e300, is published as 0).
+ * One row of @p n pixels (4 values each) at @p rgba: zeroes a pixel with a
+ * value that float cannot hold (NaN, Inf, beyond FLT_MAX) and counts it in
+ * @p bad, writes the values as float into @p out (or a chunk-sized scratch
+ * if it is null) and widens [x0, x1) to the row's non-zero pixels as float
+ * (a double below float's smallest denormal, e.g. from a unit distance of
+ * 1e300, is published as 0). Chunk by chunk, branch free (the compiler
+ * vectorizes the loops): a chunk's values are tested first, and only a
+ * chunk with a bad value is looked at pixel by pixel.
  */
 template <typename T>
-void CheckPixels(T* rgba, size_t b, size_t e, float* out, size_t& bad, bool& nonZero)
+void CheckRow(T* rgba, int n, float* out, size_t& bad, int& x0, int& x1)
 {
-  for (size_t p = b; p < e; ++p)
+  float scratch[4 * ChunkPixels];
+  for (int c0 = 0; c0 < n; c0 += ChunkPixels)
   {
-    T* v = rgba + 4 * p;
-    bool ok = true;
-    for (int c = 0; c < 4; ++c)
+    const int c1 = std::min(n, c0 + ChunkPixels);
+    const size_t v0 = 4 * static_cast<size_t>(c0), v1 = 4 * static_cast<size_t>(c1);
+    unsigned ok = 1;
+    for (size_t i = v0; i < v1; ++i)
     {
-      ok = ok && std::isfinite(v[c]) && std::abs(static_cast<double>(v[c])) <= FLT_MAX;
+      // False for NaN too.
+      ok &= static_cast<unsigned>(std::abs(static_cast<double>(rgba[i])) <= FLT_MAX);
     }
     if (!ok)
     {
-      v[0] = v[1] = v[2] = v[3] = T(0);
-      ++bad;
-    }
-    for (int c = 0; c < 4; ++c)
-    {
-      const float f = static_cast<float>(v[c]);
-      nonZero = nonZero || f != 0.0f;
-      if (out)
+      for (size_t i = v0; i < v1; i += 4)
       {
-        out[4 * p + c] = f;
+        T* v = rgba + i;
+        bool fine = true;
+        for (int c = 0; c < 4; ++c)
+        {
+          fine = fine && std::abs(static_cast<double>(v[c])) <= FLT_MAX;
+        }
+        if (!fine)
+        {
+          v[0] = v[1] = v[2] = v[3] = T(0);
+          ++bad;
+        }
       }
     }
+    float* f = out ? out + v0 : scratch;
+    for (size_t i = v0; i < v1; ++i)
+    {
+      f[i - v0] = static_cast<float>(rgba[i]);
+    }
+    if (!AnyNonZero(f, v1 - v0))
+    {
+      continue;
+    }
+    // The chunk's first and last non-zero pixels, if they widen the range.
+    int first = c0, last = c1 - 1;
+    while (!AnyNonZero(f + 4 * (first - c0), 4))
+    {
+      ++first;
+    }
+    while (!AnyNonZero(f + 4 * (last - c0), 4))
+    {
+      --last;
+    }
+    x0 = std::min(x0, first);
+    x1 = std::max(x1, last + 1);
   }
 }
 
@@ -73,22 +119,56 @@ template <typename T>
 void hov::ImageCheck::Check(
   T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime, float* out)
 {
-  // Blocks in parallel: a 1024x1024 image is 32 MB of doubles, a serial pass
-  // over it several milliseconds of every frame.
+  // Blocks of rows in parallel: a 1024x1024 image is 32 MB of doubles, a
+  // serial pass over it several milliseconds of every frame. Each block
+  // keeps its box of non-zero pixels; they are merged after the pass.
+  const bool rows = frame.Width > 0 && pixels == static_cast<size_t>(frame.Width) * frame.Height;
+  const int width = rows ? frame.Width : static_cast<int>(std::min<size_t>(pixels, BlockPixels));
+  const size_t height = width > 0 ? (pixels + width - 1) / width : 0;
+  const size_t blockRows = std::max<size_t>(1, BlockPixels / std::max(width, 1));
+  const vtkIdType blocks = static_cast<vtkIdType>((height + blockRows - 1) / blockRows);
+  std::vector<std::array<int, 4>> boxes(blocks, std::array<int, 4>{ width, 0, 0, 0 });
   std::atomic<size_t> badPixels{ 0 };
-  std::atomic<bool> anyNonZero{ false };
-  const vtkIdType blocks = static_cast<vtkIdType>((pixels + BlockPixels - 1) / BlockPixels);
   vtkSMPTools::For(0, blocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     size_t bad = 0;
-    bool nonZero = false;
-    CheckPixels(rgba, static_cast<size_t>(b0) * BlockPixels,
-      std::min(pixels, static_cast<size_t>(b1) * BlockPixels), out, bad, nonZero);
-    badPixels += bad;
-    if (nonZero)
+    for (vtkIdType b = b0; b < b1; ++b)
     {
-      anyNonZero = true;
+      std::array<int, 4>& box = boxes[b];
+      const size_t y0 = b * blockRows, y1 = std::min(height, y0 + blockRows);
+      for (size_t y = y0; y < y1; ++y)
+      {
+        const size_t p = y * width;
+        const int n = static_cast<int>(std::min<size_t>(width, pixels - p));
+        int x0 = width, x1 = 0;
+        CheckRow(rgba + 4 * p, n, out ? out + 4 * p : nullptr, bad, x0, x1);
+        if (x0 < x1)
+        {
+          box[0] = std::min(box[0], x0);
+          box[1] = std::max(box[1], x1);
+          box[2] = box[3] > box[2] ? box[2] : static_cast<int>(y);
+          box[3] = static_cast<int>(y) + 1;
+        }
+      }
     }
+    badPixels += bad;
   });
+  int box[4] = { width, 0, 0, 0 }; // x0, x1, y0, y1 (half-open)
+  for (const std::array<int, 4>& b : boxes)
+  {
+    if (b[0] < b[1])
+    {
+      box[0] = std::min(box[0], b[0]);
+      box[1] = std::max(box[1], b[1]);
+      box[2] = box[3] > box[2] ? std::min(box[2], b[2]) : b[2];
+      box[3] = std::max(box[3], b[3]);
+    }
+  }
+  const bool anyNonZero = box[0] < box[1];
+  if (!anyNonZero)
+  {
+    box[0] = box[1] = box[2] = box[3] = 0;
+  }
+  std::copy(box, box + 4, this->NonZeroBox);
   const size_t bad = badPixels;
   if (bad > 0)
   {

@@ -1,6 +1,6 @@
 // The published float image (GetFloatImage) of CPU_ACCURATE, written with
-// the pixel check in one parallel pass over blocks of 16384 pixels, on the
-// bundled bracket at 257 x 203 (52,171 pixels: three whole blocks and a part):
+// the pixel check in one parallel pass over blocks of rows (16384 pixels), on the
+// bundled bracket at 257 x 203 (52,171 pixels: three blocks of 63 rows and a part):
 // - every value is the double image's (GetDoubleImage) rounded to float, with
 //   covered pixels in at least three blocks;
 // - the array is reused from frame to frame when nobody else holds it, and
