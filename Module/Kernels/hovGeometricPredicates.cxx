@@ -67,6 +67,14 @@ inline void TwoSum(double a, double b, double& x, double& y)
   y = (a - avirt) + (b - bvirt);
 }
 
+/// The tail y of x = a + b (TwoSum's, x given).
+inline void TwoSumTail(double a, double b, double x, double& y)
+{
+  const double bvirt = x - a;
+  const double avirt = x - bvirt;
+  y = (a - avirt) + (b - bvirt);
+}
+
 /// h = e + b (nonoverlapping, increasing magnitude, zeros eliminated).
 int Grow(const double* e, int n, double b, double* h)
 {
@@ -148,10 +156,48 @@ int Minor(double x, double y, double z, double w, double* m)
   return Add(a, na, b, nb, m);
 }
 
+/**
+ * det[r0; r1; r2] by cofactors when every product and difference on the way
+ * is exact in double (each checked: the fma residual of a product, the tail
+ * of a sum, are zero), e.g. points of a grid with integer or dyadic
+ * coordinates, where a corner lying exactly on a face plane makes the filter
+ * fail. False if any step rounds. Entries as ExactRows() leaves them (no
+ * under/overflow, so a zero residual means an exact product).
+ */
+bool DoubleDet3(const double* const r[3], double& det)
+{
+  double acc = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double* u = r[(i + 1) % 3];
+    const double* v = r[(i + 2) % 3];
+    const double p = u[0] * v[1], q = v[0] * u[1];
+    const double m = p - q;
+    const double t = m * r[i][2];
+    const double sum = acc + t;
+    double tail;
+    TwoSumTail(acc, t, sum, tail);
+    if (std::fma(u[0], v[1], -p) != 0 || std::fma(v[0], u[1], -q) != 0 ||
+      DiffTail(p, q, m) != 0 || std::fma(m, r[i][2], -t) != 0 || tail != 0 ||
+      !std::isfinite(sum))
+    {
+      return false;
+    }
+    acc = sum;
+  }
+  det = acc;
+  return true;
+}
+
 /// Exact sign of det[r0; r1; r2] for exact double entries (no under/overflow).
 int ExpansionDet3(const double* r0, const double* r1, const double* r2)
 {
   const double* r[3] = { r0, r1, r2 };
+  double det;
+  if (DoubleDet3(r, det))
+  {
+    return det > 0 ? 1 : (det < 0 ? -1 : 0);
+  }
   double acc[64];
   int nacc = 0;
   for (int i = 0; i < 3; ++i)

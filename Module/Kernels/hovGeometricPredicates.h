@@ -22,8 +22,12 @@
  * Shewchuk's a-priori bound (errboundA = (3 + 16 eps) eps |permanent| in 2D,
  * (7 + 56 eps) eps |permanent| in 3D, eps = 2^-53); otherwise (and whenever
  * the permanent is so small that products may have underflowed, or not
- * finite) it is recomputed exactly in rational arithmetic. Non-finite inputs
- * give 0.
+ * finite) it is recomputed exactly: when the differences are exact doubles,
+ * in double if every product and sum of the cofactor expansion is checked
+ * exact (fma residuals and sum tails zero: points of integer or dyadic grids,
+ * e.g. corners lying exactly on other faces' planes), else with Shewchuk's
+ * expansions; with rational arithmetic when even the differences round.
+ * Non-finite inputs give 0.
  *
  * Thread safety: re-entrant.
  */

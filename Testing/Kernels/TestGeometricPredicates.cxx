@@ -241,6 +241,59 @@ TEST(GeometricPredicates, LargeIntegerNearDegenerate)
   EXPECT_GT(nonzero, 1000);
 }
 
+TEST(GeometricPredicates, SmallGridPoints)
+{
+  // Points of integer and dyadic grids (the corners of meshes made from image
+  // data, the heatsink benchmark): every product of the determinant is exact
+  // in double, so the stage after the filter decides there without
+  // expansions; exactly coplanar points, one grid step off, and mixes with a
+  // coordinate of 53 significant bits (a product rounds: the expansions).
+  std::mt19937_64 rng(777);
+  std::uniform_int_distribution<int> u(-4096, 4096);
+  std::uniform_int_distribution<int> small(-3, 3);
+  const double scales[4] = { 1.0, 0.015625, std::ldexp(1.0, -70), std::ldexp(1.0, 60) };
+  int zero = 0, nonzero = 0;
+  for (int n = 0; n < 4000; ++n)
+  {
+    const double h = scales[n % 4];
+    double p[4][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        p[i][j] = h * u(rng);
+    const int s = small(rng), t = small(rng);
+    for (int j = 0; j < 3; ++j)
+      p[3][j] = p[0][j] + s * (p[1][j] - p[0][j]) + t * (p[2][j] - p[0][j]);
+    p[3][n % 3] += n % 5 < 2 ? 0.0 : (n % 2 ? h : -h);
+    if (n % 7 == 0)
+    {
+      p[n % 4][(n / 4) % 3] += h * 0.1; // 0.1 h: 53 significant bits
+    }
+    Check3(p[0], p[1], p[2], p[3]);
+    (Ref3(p[0], p[1], p[2], p[3]) == 0 ? zero : nonzero)++;
+  }
+  EXPECT_GT(zero, 1000);
+  EXPECT_GT(nonzero, 1500);
+  // Determinant +-1 with products near 2^50 (still exact in double), where
+  // the filter cannot decide: b - a = (X, 1, 0), c - a = (X + 1, 1, 0),
+  // d - a = (Y, Z, +-1), axes permuted.
+  std::uniform_int_distribution<long long> big(1LL << 23, 1LL << 25);
+  const int perms[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 },
+    { 2, 1, 0 } };
+  for (int n = 0; n < 2000; ++n)
+  {
+    const double x = static_cast<double>(big(rng)), y = static_cast<double>(big(rng));
+    const double z = static_cast<double>(big(rng)), w = n % 2 ? 1.0 : -1.0;
+    const double rows[4][3] = { { 0, 0, 0 }, { x, 1, 0 }, { x + 1, 1, 0 }, { y, z, w } };
+    const double a[3] = { 1.0 * u(rng), 1.0 * u(rng), 1.0 * u(rng) };
+    double p[4][3];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 3; ++j)
+        p[i][perms[n % 6][j]] = rows[i][j] + a[perms[n % 6][j]];
+    ASSERT_NE(Ref3(p[0], p[1], p[2], p[3]), 0);
+    Check3(p[0], p[1], p[2], p[3]);
+  }
+}
+
 TEST(GeometricPredicates, AxisAlignedPlanes)
 {
   // Triangles in a plane x_k = const (random, grid-aligned or degenerate), and
