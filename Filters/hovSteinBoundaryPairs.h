@@ -36,28 +36,45 @@
 #ifndef hovSteinBoundaryPairs_h
 #define hovSteinBoundaryPairs_h
 
-#include "hovSteinView.h" // Geometry, View
+#include "hovSteinTopology.h" // Topology
+#include "hovSteinView.h"     // Geometry, View
 
-#include <cstdint> // std::uint8_t
+#include <array>   // FacePair
+#include <cstdint> // std::int32_t, std::uint8_t
 #include <memory>  // std::unique_ptr
 #include <utility> // std::pair
 #include <vector>  // storage
 
 namespace hovStein
 {
+struct BoundaryAdjacency;
+
 /// A face taking part in step 3: bit 0 of Roles EXIT, bit 1 ENTRY.
 struct ViewFace
 {
   vtkIdType Cell;
   std::uint8_t Face;
   std::uint8_t Roles;
+  /// Its index in Topology::Boundary, -1 for an undecided interior face.
+  std::int32_t Boundary;
+};
+
+/// Counters of the covering sheets of one view (hovSteinSheets.h).
+struct SheetStats
+{
+  vtkIdType Sheets = 0;       ///< sheets with at least one face
+  vtkIdType CoveredTiles = 0; ///< tiles with at least one covering sheet
+  vtkIdType Covers = 0;       ///< (tile, covering sheet) pairs
 };
 
 /// Counters of step 3.
 struct PairStats
 {
   vtkIdType FacePairs = 0; ///< face pairs with overlapping extents and depth ranges
-  vtkIdType Tests = 0;     ///< distinct cell pairs tested with Obstructs()
+  /// Of those, passing the plane tests but never consecutive along a ray.
+  vtkIdType DroppedFacePairs = 0;
+  vtkIdType Tests = 0; ///< distinct cell pairs tested with Obstructs()
+  SheetStats Sheets;
 };
 
 /**
@@ -72,10 +89,29 @@ public:
   ~BoundaryPairs();
   /// Appends to @p edges the edges (b, a), b before a, for the cell pairs that
   /// need them (see the file doc), in a fixed order.
-  void Edges(const Geometry& g, const View& v, const std::vector<ViewFace>& faces,
-    std::vector<std::pair<vtkIdType, vtkIdType>>& edges, PairStats& stats);
+  void Edges(const Geometry& g, const Topology& t, const View& v,
+    const std::vector<ViewFace>& faces, std::vector<std::pair<vtkIdType, vtkIdType>>& edges,
+    PairStats& stats);
 
-  /// Frees the per-view buffers (the next view allocates them again).
+  /// Dropping the face pairs that covering sheets prove never consecutive
+  /// along a ray (hovSteinSheets.h): never (every candidate is tested), where
+  /// the faces overlap deeply in depth (default: the sheets cost a few ms per
+  /// view, worth it only there), or always.
+  enum Culling
+  {
+    CullNever = 0,
+    CullWhereDeep = 1,
+    CullAlways = 2
+  };
+  int SheetCulling = CullWhereDeep;
+  /// A dropped face pair: EXIT cell and face, ENTRY cell and face.
+  using FacePair = std::array<vtkIdType, 4>;
+  /// If set, the dropped face pairs of each view are written there (for the
+  /// tests that check every drop against rays; costs memory).
+  std::vector<FacePair>* DroppedLog = nullptr;
+
+  /// Frees the per-view buffers (the next view allocates them again); the
+  /// boundary faces' adjacency, made once per topology, is kept.
   void ReleaseBuffers();
 
   struct Buffers; ///< opaque: the per-view buffers
@@ -84,6 +120,7 @@ private:
   BoundaryPairs(const BoundaryPairs&) = delete;
   void operator=(const BoundaryPairs&) = delete;
   std::unique_ptr<Buffers> B;
+  std::unique_ptr<BoundaryAdjacency> Adjacency; ///< of the last topology (view-independent)
 };
 }
 

@@ -290,7 +290,7 @@ void GraphSort::CellPart(const Geometry& g, const Topology& t, const View& v, vt
       const int f = isB ? MatchingFace(g, t.A[i], t.FaceA[i], c) : t.FaceA[i];
       if (f >= 0)
       {
-        undecided.push_back({ c, static_cast<std::uint8_t>(f), 3 });
+        undecided.push_back({ c, static_cast<std::uint8_t>(f), 3, -1 });
       }
       counts.Undecided += !isB;
     }
@@ -360,7 +360,8 @@ void GraphSort::CollectFaces(const Topology& t, GraphStats& stats)
       {
         if (this->Roles[k])
         {
-          *out++ = { t.Boundary[k].Cell, t.Boundary[k].Face, this->Roles[k] };
+          *out++ = { t.Boundary[k].Cell, t.Boundary[k].Face, this->Roles[k],
+            k < INT32_MAX ? static_cast<std::int32_t>(k) : -1 };
         }
       }
     }
@@ -405,9 +406,10 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   this->PlanesGeneration = t.Generation; // the boundary faces' planes are made
   this->Extra.clear();
   PairStats pairStats;
-  this->Boundary.Edges(g, v, this->Faces, this->Extra, pairStats);
+  this->Boundary.Edges(g, t, v, this->Faces, this->Extra, pairStats);
   stats.Tests = pairStats.Tests;
   stats.FacePairs = pairStats.FacePairs;
+  stats.DroppedFacePairs = pairStats.DroppedFacePairs;
   stats.ObstructEdges = static_cast<vtkIdType>(this->Extra.size());
   this->Graph.AddExtraEdges(this->Extra, n);
   TopologicalOrder(this->Graph, g, v, numOrdered, order, stats);

@@ -58,6 +58,7 @@ struct GraphStats
 {
   vtkIdType Tests = 0;         ///< Obstructs() calls
   vtkIdType FacePairs = 0;     ///< boundary face pairs with overlapping extents and depths
+  vtkIdType DroppedFacePairs = 0; ///< of those, dropped by covering sheets
   vtkIdType FaceEdges = 0;     ///< edges from interior faces
   vtkIdType ObstructEdges = 0; ///< edges from Obstructs()
   vtkIdType Undecided = 0;     ///< interior faces left to Obstructs()
@@ -112,6 +113,11 @@ public:
   /// Frees the per-view buffers (the boundary faces' planes, made once per
   /// topology, are kept).
   void ReleaseBuffers();
+  /// BoundaryPairs::Culling: when to drop boundary face pairs that are never
+  /// consecutive along a ray (hovSteinSheets.h).
+  void SetSheetCulling(int mode) { this->Boundary.SheetCulling = mode; }
+  /// Where to write each view's dropped face pairs (tests; null: nowhere).
+  void SetDroppedLog(std::vector<BoundaryPairs::FacePair>* log) { this->Boundary.DroppedLog = log; }
 
 private:
   /// Counters of one block of cells in CellPass.

@@ -37,6 +37,7 @@ struct vtkSteinVisibilitySort::Internals
   vtkMTimeType SortCameraTime = 0;
   int SortTiles[2] = { -1, -1 };
   int SortAlgorithm = -1;
+  int SortCulling = -1;
   bool SortValid = false;
 };
 
@@ -113,7 +114,7 @@ void vtkSteinVisibilitySort::InitTraversal()
   if (im.SortValid && im.SortCamera == this->Camera &&
     im.SortCameraTime == this->Camera->GetMTime() && im.SortTiles[0] == this->NumberOfTilesX &&
     im.SortTiles[1] == this->NumberOfTilesY &&
-    im.SortAlgorithm == this->Algorithm)
+    im.SortAlgorithm == this->Algorithm && im.SortCulling == this->BoundaryPairCulling)
   {
     this->LastSortSeconds = Seconds(t0);
     return; // nothing changed: hand out the same order again
@@ -154,6 +155,7 @@ void vtkSteinVisibilitySort::InitTraversal()
   im.SortTiles[0] = this->NumberOfTilesX;
   im.SortTiles[1] = this->NumberOfTilesY;
   im.SortAlgorithm = this->Algorithm;
+  im.SortCulling = this->BoundaryPairCulling;
   im.SortValid = true;
   this->LastSortTime.Modified();
   this->LastSortSeconds = Seconds(t0);
@@ -170,6 +172,7 @@ void vtkSteinVisibilitySort::SortMerge()
   this->NumberOfMoves = stats.Moves;
   this->NumberOfGraphEdges = 0;
   this->NumberOfBoundaryCells = 0;
+  this->NumberOfBoundaryFacePairs = this->NumberOfDroppedFacePairs = 0;
   im.CycleCells = stats.CycleCells;
   this->UsedTiles[0] = stats.TilesX;
   this->UsedTiles[1] = stats.TilesY;
@@ -179,12 +182,15 @@ void vtkSteinVisibilitySort::SortGraph()
 {
   Internals& im = *this->Impl;
   hovStein::GraphStats stats;
+  im.GraphSorter.SetSheetCulling(this->BoundaryPairCulling);
   im.GraphSorter.Sort(im.Geometry, im.Topology, im.View, im.Order, stats);
   this->NumberOfCycles = stats.Cycles;
   this->NumberOfObstructsTests = stats.Tests;
   this->NumberOfMoves = 0;
   this->NumberOfGraphEdges = stats.FaceEdges + stats.ObstructEdges;
   this->NumberOfBoundaryCells = im.Topology.NumberOfBoundaryCells;
+  this->NumberOfBoundaryFacePairs = stats.FacePairs;
+  this->NumberOfDroppedFacePairs = stats.DroppedFacePairs;
   im.CycleCells = stats.CycleCells;
   this->UsedTiles[0] = this->UsedTiles[1] = 0;
 }
@@ -237,8 +243,11 @@ void vtkSteinVisibilitySort::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Algorithm: "
      << (this->Algorithm == ADJACENCY_GRAPH ? "ADJACENCY_GRAPH" : "MULTITILED_MERGE") << "\n";
   os << indent << "ViewBufferCellLimit: " << this->ViewBufferCellLimit << "\n";
+  os << indent << "BoundaryPairCulling: " << this->BoundaryPairCulling << "\n";
   os << indent << "NumberOfGraphEdges: " << this->NumberOfGraphEdges << "\n";
   os << indent << "NumberOfBoundaryCells: " << this->NumberOfBoundaryCells << "\n";
+  os << indent << "NumberOfBoundaryFacePairs: " << this->NumberOfBoundaryFacePairs
+     << " (dropped " << this->NumberOfDroppedFacePairs << ")\n";
   os << indent << "NumberOfTiles: " << this->NumberOfTilesX << " x " << this->NumberOfTilesY
      << " (used " << this->UsedTiles[0] << " x " << this->UsedTiles[1] << ")\n";
   os << indent << "NumberOfCycles: " << this->NumberOfCycles << "\n";

@@ -1,0 +1,51 @@
+/**
+ * @file hovSteinPairGrid.h
+ * @brief The per-view face data and the uniform screen grid of the boundary
+ *        pair search of vtkSteinVisibilitySort (hovSteinBoundaryPairs.h), shared
+ *        with the covering sheets that prune it (hovSteinSheets.h).
+ *
+ * A grid tile is the set of screen points whose IX() and IY() are its column
+ * and row: a rectangle (IX and IY are monotone), the border tiles extended to
+ * infinity outwards (IX and IY clamp). Every test that reasons about "the
+ * points of a tile" uses these functions, never a rectangle computed apart.
+ */
+#ifndef hovSteinPairGrid_h
+#define hovSteinPairGrid_h
+
+#include "vtkType.h" // vtkIdType
+
+#include <cstdint> // std::uint8_t
+
+namespace hovStein
+{
+/// Per-view data of one face of the pair search: screen extents, depth range, corners.
+struct FaceData
+{
+  float Box[4]; ///< xmin, xmax, ymin, ymax (outward)
+  double Front, Rear;
+  vtkIdType Ids[4];     ///< corners (point ids)
+  vtkIdType Triple[3];  ///< exact plane (outward counterclockwise) if Exact
+  std::uint8_t NumIds;
+  std::uint8_t Exact;   ///< 1: Triple spans the exact face plane
+};
+
+/// Uniform screen grid of the pair search.
+struct PairGrid
+{
+  int NX = 1, NY = 1;
+  double X0 = 0, Y0 = 0, DX = 1, DY = 1;
+  int IX(double x) const
+  {
+    const double u = (x - this->X0) / this->DX;
+    return u <= 0 ? 0 : (u >= this->NX - 1 ? this->NX - 1 : static_cast<int>(u));
+  }
+  int IY(double y) const
+  {
+    const double u = (y - this->Y0) / this->DY;
+    return u <= 0 ? 0 : (u >= this->NY - 1 ? this->NY - 1 : static_cast<int>(u));
+  }
+  vtkIdType NumberOfTiles() const { return static_cast<vtkIdType>(this->NX) * this->NY; }
+};
+}
+
+#endif

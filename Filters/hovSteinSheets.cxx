@@ -1,0 +1,320 @@
+// Covering sheets of vtkSteinVisibilitySort's boundary pair search (see hovSteinSheets.h).
+#include "hovSteinSheets.h"
+
+#include "hovGeometricPredicates.h" // exact Orient2d
+#include "hovSteinRounding.h"       // FloatDown, FloatUp
+
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hovStein
+{
+void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
+{
+  const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
+  this->Generation = t.Generation;
+  this->Across.assign(4 * nb, -1);
+  if (nb == 0 || nb >= INT32_MAX)
+  {
+    return;
+  }
+  // Corners of every boundary face, then the boundary faces of every point.
+  std::vector<vtkIdType> corners(4 * nb, -1);
+  std::vector<std::uint8_t> sizes(nb);
+  vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      sizes[k] = static_cast<std::uint8_t>(
+        g.OrientedFace(t.Boundary[k].Cell, t.Boundary[k].Face, corners.data() + 4 * k));
+    }
+  });
+  const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
+  std::vector<vtkIdType> start(numPoints + 1, 0);
+  for (vtkIdType k = 0; k < nb; ++k)
+  {
+    for (int i = 0; i < sizes[k]; ++i)
+    {
+      ++start[corners[4 * k + i] + 1];
+    }
+  }
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    start[p + 1] += start[p];
+  }
+  std::vector<std::int32_t> facesOf(start[numPoints]);
+  {
+    std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
+    for (vtkIdType k = 0; k < nb; ++k)
+    {
+      for (int i = 0; i < sizes[k]; ++i)
+      {
+        facesOf[cursor[corners[4 * k + i]]++] = static_cast<std::int32_t>(k);
+      }
+    }
+  }
+  // Across edge (p, q) of face k: the one other boundary face with p and q.
+  vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const int n = sizes[k];
+      for (int e = 0; e < n; ++e)
+      {
+        const vtkIdType p = corners[4 * k + e], q = corners[4 * k + (e + 1) % n];
+        std::int32_t other = -1;
+        int count = 0;
+        for (vtkIdType s = start[p]; s < start[p + 1]; ++s)
+        {
+          const std::int32_t j = facesOf[s];
+          if (j == k)
+          {
+            continue;
+          }
+          const vtkIdType* cj = corners.data() + 4 * static_cast<vtkIdType>(j);
+          if (std::find(cj, cj + sizes[j], q) != cj + sizes[j])
+          {
+            other = j;
+            ++count;
+          }
+        }
+        this->Across[4 * k + e] = count == 1 ? other : -1;
+      }
+    }
+  });
+}
+
+namespace
+{
+/// The point @p c strictly inside the projected triangle @p d (exact).
+bool StrictlyInside(const View& v, const FaceData& d, const double c[2])
+{
+  const double* p[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    p[i] = v.Proj.data() + 3 * d.Ids[i];
+  }
+  const double a[2] = { p[0][0], p[0][1] }, b[2] = { p[1][0], p[1][1] };
+  const double e[2] = { p[2][0], p[2][1] };
+  const int s0 = hov::Orient2d(a, b, c), s1 = hov::Orient2d(b, e, c), s2 = hov::Orient2d(e, a, c);
+  return s0 != 0 && s0 == s1 && s1 == s2;
+}
+}
+
+namespace
+{
+/// Union-find root with path halving.
+int Root(std::vector<int>& parent, int a)
+{
+  while (parent[a] != a)
+  {
+    parent[a] = parent[parent[a]];
+    a = parent[a];
+  }
+  return a;
+}
+}
+
+void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
+  const std::vector<ViewFace>& faces, const std::vector<FaceData>& data, const PairGrid& grid,
+  const vtkIdType* entryStart, const vtkIdType* entryFaces)
+{
+  const vtkIdType nt = grid.NumberOfTiles();
+  const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
+  std::vector<std::vector<std::pair<double, double>>> blockCovers(numBlocks);
+  std::vector<SheetStats> blockStats(numBlocks);
+  this->CoverStart.assign(nt + 1, 0);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    std::vector<std::pair<std::int32_t, vtkIdType>> members; // (boundary face, face), by the first
+    std::vector<int> parent;
+    std::vector<char> blocked, inside;
+    std::vector<double> front, rear;
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      std::vector<std::pair<double, double>>& covers = blockCovers[blk];
+      for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
+      {
+        const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
+        const double centre[2] = { grid.X0 + (ix + 0.5) * grid.DX, grid.Y0 + (iy + 0.5) * grid.DY };
+        if (grid.IX(centre[0]) != ix || grid.IY(centre[1]) != iy)
+        {
+          continue; // (a degenerate grid)
+        }
+        // The sheets' faces whose extents meet the tile, joined through their
+        // shared edges into the tile's local sheets.
+        members.clear();
+        for (vtkIdType s = entryStart[tile]; s < entryStart[tile + 1]; ++s)
+        {
+          const vtkIdType i = entryFaces[s];
+          const std::int32_t k = faces[i].Boundary;
+          if (k >= 0 && this->FaceOf[k] == i)
+          {
+            members.emplace_back(k, i);
+          }
+        }
+        const int m = static_cast<int>(members.size());
+        if (m == 0)
+        {
+          continue;
+        }
+        std::sort(members.begin(), members.end());
+        parent.resize(m);
+        for (int a = 0; a < m; ++a)
+        {
+          parent[a] = a;
+        }
+        for (int a = 0; a < m; ++a)
+        {
+          for (int e = 0; e < 4; ++e)
+          {
+            const std::int32_t j = adjacency.Across[4 * static_cast<vtkIdType>(members[a].first) + e];
+            if (j <= members[a].first || this->FaceOf[j] < 0)
+            {
+              continue;
+            }
+            const auto it = std::lower_bound(members.begin() + a + 1, members.end(),
+              std::make_pair(j, vtkIdType(-1)));
+            if (it != members.end() && it->first == j)
+            {
+              const int x = Root(parent, a), y = Root(parent, static_cast<int>(it - members.begin()));
+              parent[std::max(x, y)] = std::min(x, y);
+            }
+          }
+        }
+        // A local sheet with a border edge in the tile is blocked; the others
+        // cover the tile if its centre lies in one of their faces.
+        blocked.assign(m, 0);
+        inside.assign(m, 0);
+        front.assign(m, VTK_DOUBLE_MAX);
+        rear.assign(m, -VTK_DOUBLE_MAX);
+        for (int a = 0; a < m; ++a)
+        {
+          const int r = Root(parent, a);
+          const FaceData& d = data[members[a].second];
+          front[r] = std::min(front[r], d.Front);
+          rear[r] = std::max(rear[r], d.Rear);
+          const std::uint8_t border = this->Border[members[a].first];
+          for (int e = 0; e < 3 && !blocked[r]; ++e)
+          {
+            if (!(border & (1 << e)))
+            {
+              continue;
+            }
+            const double* p = v.Proj.data() + 3 * d.Ids[e];
+            const double* q = v.Proj.data() + 3 * d.Ids[(e + 1) % 3];
+            blocked[r] = grid.IX(FloatDown(std::min(p[0], q[0]))) <= ix &&
+              ix <= grid.IX(FloatUp(std::max(p[0], q[0]))) &&
+              grid.IY(FloatDown(std::min(p[1], q[1]))) <= iy &&
+              iy <= grid.IY(FloatUp(std::max(p[1], q[1])));
+          }
+          if (!inside[r])
+          {
+            inside[r] = StrictlyInside(v, d, centre);
+          }
+        }
+        const size_t before = covers.size();
+        for (int a = 0; a < m; ++a)
+        {
+          if (parent[a] == a)
+          {
+            ++blockStats[blk].Sheets;
+            if (!blocked[a] && inside[a])
+            {
+              covers.emplace_back(front[a], rear[a]);
+            }
+          }
+        }
+        this->CoverStart[tile + 1] = static_cast<vtkIdType>(covers.size() - before);
+      }
+    }
+  });
+  for (vtkIdType tile = 0; tile < nt; ++tile)
+  {
+    this->Stats.CoveredTiles += this->CoverStart[tile + 1] > 0;
+    this->CoverStart[tile + 1] += this->CoverStart[tile];
+  }
+  this->Covers.clear();
+  this->Covers.reserve(this->CoverStart[nt]);
+  for (vtkIdType blk = 0; blk < numBlocks; ++blk)
+  {
+    this->Covers.insert(this->Covers.end(), blockCovers[blk].begin(), blockCovers[blk].end());
+    this->Stats.Sheets += blockStats[blk].Sheets;
+  }
+  this->Stats.Covers = static_cast<vtkIdType>(this->Covers.size());
+}
+
+void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
+  const BoundaryAdjacency& adjacency, const std::vector<ViewFace>& faces,
+  const std::vector<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
+  const vtkIdType* entryFaces)
+{
+  this->Stats = SheetStats();
+  this->NX = grid.NX;
+  this->Margin = g.Diagonal;
+  const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
+  // The sheets' faces: ENTRY only (not undecided), of visible cells,
+  // triangles with exact planes.
+  this->FaceOf.assign(nb, -1);
+  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
+  for (vtkIdType i = 0; i < nf; ++i)
+  {
+    const ViewFace& f = faces[i];
+    if (f.Boundary >= 0 && f.Roles == 2 && v.Status[f.Cell] == StatusVisible &&
+      t.Boundary[f.Boundary].Mode == FaceExact && data[i].NumIds == 3)
+    {
+      this->FaceOf[f.Boundary] = static_cast<std::int32_t>(i);
+    }
+  }
+  // Border edges: not shared with exactly one other face of a sheet.
+  this->Border.assign(nb, 0);
+  vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      if (this->FaceOf[k] < 0)
+      {
+        continue;
+      }
+      std::uint8_t border = 0;
+      for (int e = 0; e < 3; ++e)
+      {
+        const std::int32_t j = adjacency.Across[4 * k + e];
+        border |= (j < 0 || this->FaceOf[j] < 0) ? (1 << e) : 0;
+      }
+      this->Border[k] = border;
+    }
+  });
+  this->Cover(v, adjacency, faces, data, grid, entryStart, entryFaces);
+}
+
+bool SheetCover::Separates(int ix0, int ix1, int iy0, int iy1, double rear, double front) const
+{
+  // The pair search's rounding margin on each comparison.
+  const double after = rear + 1e-9 * (std::abs(rear) + this->Margin);
+  const double before = front - 1e-9 * (std::abs(front) + this->Margin);
+  for (int iy = iy0; iy <= iy1; ++iy)
+  {
+    for (int ix = ix0; ix <= ix1; ++ix)
+    {
+      const vtkIdType tile = static_cast<vtkIdType>(iy) * this->NX + ix;
+      bool found = false;
+      for (vtkIdType c = this->CoverStart[tile]; c < this->CoverStart[tile + 1] && !found; ++c)
+      {
+        found = after < this->Covers[c].first && this->Covers[c].second < before;
+      }
+      if (!found)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+void SheetCover::ReleaseBuffers()
+{
+  std::vector<std::int32_t>().swap(this->FaceOf);
+  std::vector<std::uint8_t>().swap(this->Border);
+  std::vector<vtkIdType>().swap(this->CoverStart);
+  std::vector<std::pair<double, double>>().swap(this->Covers);
+}
+}
