@@ -136,8 +136,12 @@ struct TileRecord
 {
   float Box[4];
   double Depth; ///< ENTRY: rear depth; EXIT: front depth less the rounding margin
+  double Far;   ///< ENTRY: front depth; EXIT: rear depth (for the covering sheets)
   vtkIdType Cell;
   vtkIdType Face; ///< index into the faces
+  /// The face's tiles (TileRange): IX and IY are monotone, so the tile of
+  /// max(x0 of two faces) is the max of their first tile columns, etc.
+  std::int32_t Tiles[4];
 };
 
 /// Tile lists (CSR) of the EXIT ([0]) and ENTRY ([1]) faces, face indices in
@@ -292,22 +296,21 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
           const TileRecord& F = b.Records[0][i];
           for (const TileRecord* G = first; G != last; ++G)
           {
-            if (G->Cell == F.Cell || G->Depth < F.Depth || Disjoint(F.Box, G->Box) ||
-              grid.IX(std::max(F.Box[0], G->Box[0])) != ix ||
-              grid.IY(std::max(F.Box[2], G->Box[2])) != iy)
+            if (G->Depth < F.Depth)
+            {
+              break; // this ENTRY face and the rest lie in front of F
+            }
+            // The pair's tile: that of the lower-left corner of the
+            // intersection of the extents (both faces are in this one).
+            if (G->Cell == F.Cell || Disjoint(F.Box, G->Box) ||
+              std::max(F.Tiles[0], G->Tiles[0]) != ix || std::max(F.Tiles[2], G->Tiles[2]) != iy)
             {
               continue;
             }
             ++count;
-            const FaceData& DF = b.Data[F.Face];
-            const FaceData& DG = b.Data[G->Face];
-            if (!SomeCornerOutside(g, DF, DG) || !SomeCornerOutside(g, DG, DF))
-            {
-              continue;
-            }
             if (sheets &&
-              sheets->Separates(ix, grid.IX(std::min(F.Box[1], G->Box[1])), iy,
-                grid.IY(std::min(F.Box[3], G->Box[3])), DF.Rear, DG.Front))
+              sheets->Separates(ix, std::min(F.Tiles[1], G->Tiles[1]), iy,
+                std::min(F.Tiles[3], G->Tiles[3]), F.Far, G->Far))
             {
               ++dropped; // never consecutive along a ray (hovSteinSheets.h)
               if (log)
@@ -317,7 +320,12 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
               }
               continue;
             }
-            found.emplace_back(F.Cell, G->Cell);
+            const FaceData& DF = b.Data[F.Face];
+            const FaceData& DG = b.Data[G->Face];
+            if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
+            {
+              found.emplace_back(F.Cell, G->Cell);
+            }
           }
         }
       }
@@ -522,11 +530,26 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
           TileRecord& r = records[i];
           std::copy(d.Box, d.Box + 4, r.Box);
           r.Depth = k == 1 ? d.Rear : d.Front - 1e-9 * (std::abs(d.Front) + g.Diagonal);
+          r.Far = k == 1 ? d.Front : d.Rear;
           r.Cell = faces[fi].Cell;
           r.Face = fi;
+          std::copy(b.Ranges[fi].begin(), b.Ranges[fi].end(), r.Tiles);
         }
       });
   }
+  // Each tile's ENTRY records by decreasing rear depth: the search stops at
+  // the first one entirely in front of an EXIT face (the pairs found do not
+  // depend on the order: they are sorted and made unique afterwards).
+  const vtkIdType* entryStart = b.Lists.Start[1].data();
+  vtkSMPTools::For(0, grid.NumberOfTiles(), 256, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType tile = begin; tile < end; ++tile)
+    {
+      std::sort(b.Records[1].begin() + entryStart[tile], b.Records[1].begin() + entryStart[tile + 1],
+        [](const TileRecord& x, const TileRecord& y) {
+          return x.Depth > y.Depth || (x.Depth == y.Depth && x.Face < y.Face);
+        });
+    }
+  });
   const SheetCover* sheets = nullptr;
   if (this->SheetCulling == CullAlways ||
     (this->SheetCulling == CullWhereDeep && DeepOverlap(grid, b.Lists, nf)))

@@ -71,7 +71,7 @@ struct SheetStats
 struct PairStats
 {
   vtkIdType FacePairs = 0; ///< face pairs with overlapping extents and depth ranges
-  /// Of those, passing the plane tests but never consecutive along a ray.
+  /// Of those, never consecutive along a ray (covering sheets; before the plane tests).
   vtkIdType DroppedFacePairs = 0;
   vtkIdType Tests = 0; ///< distinct cell pairs tested with Obstructs()
   SheetStats Sheets;

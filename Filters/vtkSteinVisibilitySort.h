@@ -246,8 +246,8 @@ public:
    * - NumberOfGraphEdges: edges of the visibility DAG (adjacency graph),
    *   NumberOfBoundaryCells: cells with a boundary face (adjacency graph).
    * - NumberOfBoundaryFacePairs: candidate (EXIT, ENTRY) boundary face pairs
-   *   (adjacency graph), NumberOfDroppedFacePairs: those of them that passed
-   *   the plane tests but were dropped by BoundaryPairCulling.
+   *   (adjacency graph), NumberOfDroppedFacePairs: those of them dropped by
+   *   BoundaryPairCulling (before the plane tests).
    * - LastSortSeconds / LastSetupSeconds: wall time of the last sort and of
    *   the view-independent set-up it needed (0 when it was reused).
    */
