@@ -263,12 +263,14 @@ namespace
 {
 /**
  * The cell pairs (EXIT cell, ENTRY cell) of the face pairs that pass the tests
- * of the file doc, per tile the EXIT records against the ENTRY records (each
- * face pair in the tile of the lower-left corner of the intersection of the
- * extents), in parallel over fixed blocks of tiles; appended in tile order.
+ * of the file doc and are not dropped by @p sheets (if not null), per tile
+ * the EXIT records against the ENTRY records (by decreasing depth in each
+ * tile if @p depthSorted; each face pair in the tile of the lower-left corner
+ * of the intersection of the extents), in parallel over fixed blocks of
+ * tiles; appended in tile order. Dropped pairs go to @p log if not null.
  */
 void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sheets,
-  const std::vector<ViewFace>& faces, std::vector<BoundaryPairs::FacePair>* log,
+  bool depthSorted, const std::vector<ViewFace>& faces, std::vector<BoundaryPairs::FacePair>* log,
   BoundaryPairs::Buffers& b, PairStats& stats)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
@@ -298,7 +300,11 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
           {
             if (G->Depth < F.Depth)
             {
-              break; // this ENTRY face and the rest lie in front of F
+              if (depthSorted)
+              {
+                break; // this ENTRY face and the rest lie in front of F
+              }
+              continue;
             }
             // The pair's tile: that of the lower-left corner of the
             // intersection of the extents (both faces are in this one).
@@ -537,22 +543,24 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
         }
       });
   }
-  // Each tile's ENTRY records by decreasing rear depth: the search stops at
-  // the first one entirely in front of an EXIT face (the pairs found do not
-  // depend on the order: they are sorted and made unique afterwards).
+  // Where the faces overlap deeply: each tile's ENTRY records by decreasing
+  // rear depth, so that the search stops at the first one entirely in front
+  // of an EXIT face (the pairs found do not depend on the order: they are
+  // sorted and made unique afterwards), and the covering sheets.
+  const bool deep = DeepOverlap(grid, b.Lists, nf);
   const vtkIdType* entryStart = b.Lists.Start[1].data();
-  vtkSMPTools::For(0, grid.NumberOfTiles(), 256, [&](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, deep ? grid.NumberOfTiles() : 0, 256, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType tile = begin; tile < end; ++tile)
     {
-      std::sort(b.Records[1].begin() + entryStart[tile], b.Records[1].begin() + entryStart[tile + 1],
+      const auto records = b.Records[1].begin();
+      std::sort(records + entryStart[tile], records + entryStart[tile + 1],
         [](const TileRecord& x, const TileRecord& y) {
           return x.Depth > y.Depth || (x.Depth == y.Depth && x.Face < y.Face);
         });
     }
   });
   const SheetCover* sheets = nullptr;
-  if (this->SheetCulling == CullAlways ||
-    (this->SheetCulling == CullWhereDeep && DeepOverlap(grid, b.Lists, nf)))
+  if (this->SheetCulling == CullAlways || (this->SheetCulling == CullWhereDeep && deep))
   {
     if (!this->Adjacency)
     {
@@ -572,7 +580,7 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
   {
     this->DroppedLog->clear();
   }
-  FindCellPairs(g, grid, sheets, faces, this->DroppedLog, b, stats);
+  FindCellPairs(g, grid, sheets, deep, faces, this->DroppedLog, b, stats);
   SortUniquePairs(b);
   stats.Tests += static_cast<vtkIdType>(b.Pairs.size());
   DecidePairs(g, v, b, edges);

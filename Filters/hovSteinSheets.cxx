@@ -167,7 +167,8 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
         {
           for (int e = 0; e < 4; ++e)
           {
-            const std::int32_t j = adjacency.Across[4 * static_cast<vtkIdType>(members[a].first) + e];
+            const vtkIdType k = members[a].first;
+            const std::int32_t j = adjacency.Across[4 * k + e];
             if (j <= members[a].first || this->FaceOf[j] < 0)
             {
               continue;
@@ -176,7 +177,8 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
               std::make_pair(j, vtkIdType(-1)));
             if (it != members.end() && it->first == j)
             {
-              const int x = Root(parent, a), y = Root(parent, static_cast<int>(it - members.begin()));
+              const int x = Root(parent, a);
+              const int y = Root(parent, static_cast<int>(it - members.begin()));
               parent[std::max(x, y)] = std::min(x, y);
             }
           }
