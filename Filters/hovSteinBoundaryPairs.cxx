@@ -255,7 +255,9 @@ struct BoundaryPairs::Buffers
   std::vector<std::uint8_t> Used, Hit;
   std::vector<vtkIdType> Cells;
   HullCache Hulls;
-  std::vector<TileRecord> Records[2]; ///< EXIT, ENTRY: beside Lists.Items
+  /// EXIT, ENTRY records per tile (CSR of Lists.Start; the ENTRY records of
+  /// each tile by decreasing depth where the faces overlap deeply).
+  std::vector<TileRecord> Records[2];
   SheetCover Sheets;
 };
 
@@ -497,6 +499,10 @@ void BoundaryPairs::ReleaseBuffers()
 void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
   const std::vector<ViewFace>& faces, CellPairs& edges, PairStats& stats)
 {
+  if (this->DroppedLog)
+  {
+    this->DroppedLog->clear(); // this view's, even when it has none
+  }
   const vtkIdType nf = static_cast<vtkIdType>(faces.size());
   if (nf < 2)
   {
@@ -575,10 +581,6 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
       b.Lists.Items[1].data());
     stats.Sheets = b.Sheets.GetStats();
     sheets = &b.Sheets;
-  }
-  if (this->DroppedLog)
-  {
-    this->DroppedLog->clear();
   }
   FindCellPairs(g, grid, sheets, deep, faces, this->DroppedLog, b, stats);
   SortUniquePairs(b);

@@ -56,7 +56,7 @@ struct ViewFace
   std::uint8_t Face;
   std::uint8_t Roles;
   /// Its index in Topology::Boundary, -1 for an undecided interior face.
-  std::int32_t Boundary;
+  std::int32_t Boundary = -1;
 };
 
 /// Counters of the covering sheets of one view (hovSteinSheets.h).

@@ -399,6 +399,10 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   const vtkIdType numOrdered = AppendUnordered(g, v, order);
   if (numOrdered == 0)
   {
+    if (this->Boundary.DroppedLog)
+    {
+      this->Boundary.DroppedLog->clear(); // this view's: none
+    }
     return;
   }
   this->FaceDirections(g, t, v);

@@ -15,8 +15,13 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
 {
   const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
   this->Generation = t.Generation;
+  if (nb >= INT32_MAX)
+  {
+    this->Across.clear(); // (no sheets: ViewFace::Boundary is -1 beyond INT32_MAX)
+    return;
+  }
   this->Across.assign(4 * nb, -1);
-  if (nb == 0 || nb >= INT32_MAX)
+  if (nb == 0)
   {
     return;
   }
@@ -54,7 +59,9 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
       }
     }
   }
-  // Across edge (p, q) of face k: the one other boundary face with p and q.
+  // Across edge (p, q) of face k: the one other boundary face with p and q,
+  // if it runs that edge the other way, q to p (consistently oriented: the
+  // two faces then lie on opposite sides of the edge when both face the eye).
   vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end; ++k)
     {
@@ -72,13 +79,15 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
             continue;
           }
           const vtkIdType* cj = corners.data() + 4 * static_cast<vtkIdType>(j);
-          if (std::find(cj, cj + sizes[j], q) != cj + sizes[j])
+          const int nj = sizes[j];
+          const int at = static_cast<int>(std::find(cj, cj + nj, q) - cj);
+          if (at < nj)
           {
-            other = j;
             ++count;
+            other = cj[(at + 1) % nj] == p ? j : -2; // -2: the same way round
           }
         }
-        this->Across[4 * k + e] = count == 1 ? other : -1;
+        this->Across[4 * k + e] = count == 1 && other >= 0 ? other : -1;
       }
     }
   });
@@ -121,6 +130,7 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
 {
   const vtkIdType nt = grid.NumberOfTiles();
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
+  const double spanX = grid.DX * grid.NX, spanY = grid.DY * grid.NY;
   std::vector<std::vector<std::pair<double, double>>> blockCovers(numBlocks);
   std::vector<SheetStats> blockStats(numBlocks);
   this->CoverStart.assign(nt + 1, 0);
@@ -202,12 +212,16 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
             {
               continue;
             }
+            // The edge's extents, widened against the rounding of the
+            // projection (1e-9 of the coordinates and the grid's span).
             const double* p = v.Proj.data() + 3 * d.Ids[e];
             const double* q = v.Proj.data() + 3 * d.Ids[(e + 1) % 3];
-            blocked[r] = grid.IX(FloatDown(std::min(p[0], q[0]))) <= ix &&
-              ix <= grid.IX(FloatUp(std::max(p[0], q[0]))) &&
-              grid.IY(FloatDown(std::min(p[1], q[1]))) <= iy &&
-              iy <= grid.IY(FloatUp(std::max(p[1], q[1])));
+            const double x0 = std::min(p[0], q[0]), x1 = std::max(p[0], q[0]);
+            const double y0 = std::min(p[1], q[1]), y1 = std::max(p[1], q[1]);
+            const double mx = 1e-9 * (std::max(std::abs(x0), std::abs(x1)) + spanX);
+            const double my = 1e-9 * (std::max(std::abs(y0), std::abs(y1)) + spanY);
+            blocked[r] = grid.IX(FloatDown(x0 - mx)) <= ix && ix <= grid.IX(FloatUp(x1 + mx)) &&
+              grid.IY(FloatDown(y0 - my)) <= iy && iy <= grid.IY(FloatUp(y1 + my));
           }
           if (!inside[r])
           {
@@ -255,18 +269,43 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
   this->Margin = g.Diagonal;
   const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
   // The sheets' faces: ENTRY only (not undecided), of visible cells,
-  // triangles with exact planes.
+  // triangles with exact planes, counterclockwise on the screen as seen from
+  // outside (exactly, in the projected points the tests use: joined faces
+  // then lie on opposite sides of their shared edge there too).
+  const ViewFrame& f = v.Frame;
+  const double rxu[3] = { f.Right[1] * f.Up[2] - f.Right[2] * f.Up[1],
+    f.Right[2] * f.Up[0] - f.Right[0] * f.Up[2], f.Right[0] * f.Up[1] - f.Right[1] * f.Up[0] };
+  const int facing = rxu[0] * f.Dop[0] + rxu[1] * f.Dop[1] + rxu[2] * f.Dop[2] < 0 ? 1 : -1;
   this->FaceOf.assign(nb, -1);
-  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
-  for (vtkIdType i = 0; i < nf; ++i)
+  if (adjacency.Across.size() != 4 * static_cast<size_t>(nb))
   {
-    const ViewFace& f = faces[i];
-    if (f.Boundary >= 0 && f.Roles == 2 && v.Status[f.Cell] == StatusVisible &&
-      t.Boundary[f.Boundary].Mode == FaceExact && data[i].NumIds == 3)
-    {
-      this->FaceOf[f.Boundary] = static_cast<std::int32_t>(i);
-    }
+    return; // no adjacency (too many boundary faces): no sheets
   }
+  const vtkIdType nf = static_cast<vtkIdType>(faces.size());
+  vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const ViewFace& vf = faces[i];
+      const FaceData& d = data[i];
+      if (vf.Boundary < 0 || vf.Roles != 2 || v.Status[vf.Cell] != StatusVisible ||
+        d.NumIds != 3 || t.Boundary[vf.Boundary].Cell != vf.Cell ||
+        t.Boundary[vf.Boundary].Face != vf.Face || t.Boundary[vf.Boundary].Mode != FaceExact)
+      {
+        continue;
+      }
+      const double* p[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        p[c] = v.Proj.data() + 3 * d.Ids[c];
+      }
+      const double a[2] = { p[0][0], p[0][1] }, b[2] = { p[1][0], p[1][1] };
+      const double c[2] = { p[2][0], p[2][1] };
+      if (hov::Orient2d(a, b, c) == facing)
+      {
+        this->FaceOf[vf.Boundary] = static_cast<std::int32_t>(i);
+      }
+    }
+  });
   // Border edges: not shared with exactly one other face of a sheet.
   this->Border.assign(nb, 0);
   vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {

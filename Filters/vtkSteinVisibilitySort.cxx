@@ -114,7 +114,8 @@ void vtkSteinVisibilitySort::InitTraversal()
   if (im.SortValid && im.SortCamera == this->Camera &&
     im.SortCameraTime == this->Camera->GetMTime() && im.SortTiles[0] == this->NumberOfTilesX &&
     im.SortTiles[1] == this->NumberOfTilesY &&
-    im.SortAlgorithm == this->Algorithm && im.SortCulling == this->BoundaryPairCulling)
+    im.SortAlgorithm == this->Algorithm &&
+    (this->Algorithm != ADJACENCY_GRAPH || im.SortCulling == this->BoundaryPairCulling))
   {
     this->LastSortSeconds = Seconds(t0);
     return; // nothing changed: hand out the same order again
@@ -182,6 +183,10 @@ void vtkSteinVisibilitySort::SortGraph()
 {
   Internals& im = *this->Impl;
   hovStein::GraphStats stats;
+  static_assert(static_cast<int>(CULLING_OFF) == hovStein::BoundaryPairs::CullNever &&
+      static_cast<int>(CULLING_AUTO) == hovStein::BoundaryPairs::CullWhereDeep &&
+      static_cast<int>(CULLING_ON) == hovStein::BoundaryPairs::CullAlways,
+    "the public culling modes are the pair search's");
   im.GraphSorter.SetSheetCulling(this->BoundaryPairCulling);
   im.GraphSorter.Sort(im.Geometry, im.Topology, im.View, im.Order, stats);
   this->NumberOfCycles = stats.Cycles;

@@ -168,6 +168,13 @@ void hov::ImageCheck::Check(
   {
     box[0] = box[1] = box[2] = box[3] = 0;
   }
+  else if (!rows)
+  {
+    // Not the frame's rows (never so today): the whole frame, to be safe.
+    box[0] = box[2] = 0;
+    box[1] = std::max(frame.Width, 0);
+    box[3] = std::max(frame.Height, 0);
+  }
   std::copy(box, box + 4, this->NonZeroBox);
   const size_t bad = badPixels;
   if (bad > 0)

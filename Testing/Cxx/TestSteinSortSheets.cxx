@@ -13,11 +13,10 @@
 //   is part of the sort's cache key);
 // - the default, CULLING_AUTO, culls exactly as CULLING_ON or not at all: on
 //   the heatsinks' views across the fins, not on the bracket;
-// - every dropped face pair is checked on its own (up to 400 a view, 40
-//   rays each, by this test's own ray/triangle intersections): every sampled
-//   ray through the EXIT face F and then the ENTRY face G crosses another
-//   boundary face strictly between them, so the two cells are never
-//   consecutive along it.
+// - every dropped face pair is checked on its own (12 rays each, by this
+//   test's own ray/triangle intersections): every sampled ray through the
+//   EXIT face F and then the ENTRY face G crosses another boundary face
+//   strictly between them, so the two cells are never consecutive along it.
 #include "hovSortCases.h"
 #include "hovSortMeshes.h"
 #include "hovSortOracle.h"
@@ -267,6 +266,14 @@ std::vector<SortView> HeatsinkViews(const double b[6])
   const double eye[3] = { b[0] + 3.1, b[2] - 3.3, b[4] + 5.3 };
   const double focal[3] = { b[1], b[3], b[4] + 2.2 };
   views.push_back(InsideView("between two fins", eye, focal));
+  // In the air gap between the first two fins, half way along them, looking
+  // across the other fins (every fin's front and back around the eye), and
+  // inside the first fin (cells cut by the near plane).
+  const double gap[3] = { b[0] + 3.1, b[2] + 4.2, b[4] + 5.3 };
+  const double across[3] = { b[1], b[2] + 3.1, b[4] + 2.6 };
+  views.push_back(InsideView("in the gap", gap, across));
+  const double fin[3] = { b[0] + 1.05, b[2] + 4.3, b[4] + 5.2 };
+  views.push_back(InsideView("inside a fin", fin, across));
   return views;
 }
 }
