@@ -350,12 +350,4 @@ bool SheetCover::Separates(int ix0, int ix1, int iy0, int iy1, double rear, doub
   }
   return true;
 }
-
-void SheetCover::ReleaseBuffers()
-{
-  std::vector<std::int32_t>().swap(this->FaceOf);
-  std::vector<std::uint8_t>().swap(this->Border);
-  std::vector<vtkIdType>().swap(this->CoverStart);
-  std::vector<std::pair<double, double>>().swap(this->Covers);
-}
 }

@@ -45,7 +45,8 @@
  * (the bracket, blocks) they drop under 1% for a few ms per view, so by
  * default they are built only where the faces overlap deeply.
  *
- * Thread safety: Build() is not re-entrant; Separates() is const.
+ * Thread safety: Build() is not re-entrant; Separates() is const. The
+ * buffers live with the pair search's (BoundaryPairs::ReleaseBuffers()).
  */
 #ifndef hovSteinSheets_h
 #define hovSteinSheets_h
@@ -94,16 +95,13 @@ public:
 
   const SheetStats& GetStats() const { return this->Stats; }
 
-  /// Frees the per-view buffers.
-  void ReleaseBuffers();
-
 private:
   void Cover(const View& v, const BoundaryAdjacency& adjacency,
     const std::vector<ViewFace>& faces, const std::vector<FaceData>& data, const PairGrid& grid,
     const vtkIdType* entryStart, const vtkIdType* entryFaces);
 
   int NX = 0;
-  double Margin = 0; ///< absolute depth margin
+  double Margin = 0; ///< the mesh's diagonal: the absolute part of the depth margin
   /// Per boundary face: its face index in the view's faces if it is a sheet
   /// face, else -1; and the bits of its border edges.
   std::vector<std::int32_t> FaceOf;
