@@ -2,6 +2,7 @@
 #include "hovSteinMerge.h"
 
 #include "hovSteinObstructs.h" // Obstruction
+#include "hovSteinPairGrid.h"  // PairGrid: the tiles (the pair search's grid)
 
 #include <algorithm>
 #include <cassert>
@@ -32,24 +33,8 @@ struct Entry
   float Box[4];
 };
 
-struct TileGrid
-{
-  int NX = 1, NY = 1;
-  double X0 = 0, Y0 = 0, DX = 1, DY = 1;
-  int IX(float x) const
-  {
-    const double t = (x - this->X0) / this->DX;
-    return t <= 0 ? 0 : (t >= this->NX - 1 ? this->NX - 1 : static_cast<int>(t));
-  }
-  int IY(float y) const
-  {
-    const double t = (y - this->Y0) / this->DY;
-    return t <= 0 ? 0 : (t >= this->NY - 1 ? this->NY - 1 : static_cast<int>(t));
-  }
-};
-
 /// Tile region: the extents of all ordered cells, within the view's window.
-TileGrid MakeGrid(const View& v, const std::vector<vtkIdType>& cells, int nx, int ny)
+PairGrid MakeGrid(const View& v, const std::vector<vtkIdType>& cells, int nx, int ny)
 {
   double r[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   for (vtkIdType c : cells)
@@ -61,7 +46,7 @@ TileGrid MakeGrid(const View& v, const std::vector<vtkIdType>& cells, int nx, in
     r[3] = std::max(r[3], double(b[3]));
   }
   const double* w = v.Frame.Window;
-  TileGrid grid;
+  PairGrid grid;
   grid.NX = nx;
   grid.NY = ny;
   grid.X0 = std::max(r[0], w[0]);
@@ -128,7 +113,7 @@ namespace
 /// The Tile Sorting Lists and per-rank data of the merge.
 struct Tiles
 {
-  TileGrid Grid;
+  PairGrid Grid;
   std::vector<Entry> Entries;
   std::vector<std::int32_t> Head;        ///< per tile: first remaining entry, or -1
   std::vector<std::int32_t> RankEntries; ///< entries of each rank (rectangle order)

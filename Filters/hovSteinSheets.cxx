@@ -95,23 +95,26 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
 
 namespace
 {
+/// The screen points (x, y) of the triangle @p d's corners.
+void ScreenTriangle(const View& v, const FaceData& d, double p[3][2])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    p[i][0] = v.Proj[3 * d.Ids[i]];
+    p[i][1] = v.Proj[3 * d.Ids[i] + 1];
+  }
+}
+
 /// The point @p c strictly inside the projected triangle @p d (exact).
 bool StrictlyInside(const View& v, const FaceData& d, const double c[2])
 {
-  const double* p[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    p[i] = v.Proj.data() + 3 * d.Ids[i];
-  }
-  const double a[2] = { p[0][0], p[0][1] }, b[2] = { p[1][0], p[1][1] };
-  const double e[2] = { p[2][0], p[2][1] };
-  const int s0 = hov::Orient2d(a, b, c), s1 = hov::Orient2d(b, e, c), s2 = hov::Orient2d(e, a, c);
+  double p[3][2];
+  ScreenTriangle(v, d, p);
+  const int s0 = hov::Orient2d(p[0], p[1], c), s1 = hov::Orient2d(p[1], p[2], c);
+  const int s2 = hov::Orient2d(p[2], p[0], c);
   return s0 != 0 && s0 == s1 && s1 == s2;
 }
-}
 
-namespace
-{
 /// Union-find root with path halving.
 int Root(std::vector<int>& parent, int a)
 {
@@ -293,14 +296,9 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
       {
         continue;
       }
-      const double* p[3];
-      for (int c = 0; c < 3; ++c)
-      {
-        p[c] = v.Proj.data() + 3 * d.Ids[c];
-      }
-      const double a[2] = { p[0][0], p[0][1] }, b[2] = { p[1][0], p[1][1] };
-      const double c[2] = { p[2][0], p[2][1] };
-      if (hov::Orient2d(a, b, c) == facing)
+      double p[3][2];
+      ScreenTriangle(v, d, p);
+      if (hov::Orient2d(p[0], p[1], p[2]) == facing)
       {
         this->FaceOf[vf.Boundary] = static_cast<std::int32_t>(i);
       }
