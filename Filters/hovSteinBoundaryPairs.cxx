@@ -135,8 +135,10 @@ using TileRange = std::array<int, 4>;
 struct TileRecord
 {
   float Box[4];
-  double Depth; ///< ENTRY: rear depth; EXIT: front depth less the rounding margin
-  double Far;   ///< ENTRY: front depth; EXIT: rear depth (for the covering sheets)
+  double Depth; ///< ENTRY: rear depth; EXIT: DepthBefore(front depth)
+  /// ENTRY: DepthBefore(front depth); EXIT: DepthAfter(rear depth) (the
+  /// covering sheets' tests; the ENTRY records' order where the faces overlap deeply).
+  double Far;
   vtkIdType Cell;
   vtkIdType Face; ///< index into the faces
   /// The face's tiles (TileRange): IX and IY are monotone, so the tile of
@@ -256,8 +258,11 @@ struct BoundaryPairs::Buffers
   std::vector<vtkIdType> Cells;
   HullCache Hulls;
   /// EXIT, ENTRY records per tile (CSR of Lists.Start; the ENTRY records of
-  /// each tile by decreasing depth where the faces overlap deeply).
+  /// each tile by decreasing Far where the faces overlap deeply).
   std::vector<TileRecord> Records[2];
+  /// Where the faces overlap deeply, per tile: the largest Depth - Far of its
+  /// ENTRY records, rounded up (a record's Depth is at most its Far plus that).
+  std::vector<double> Thick;
   SheetCover Sheets;
 };
 
@@ -266,10 +271,18 @@ namespace
 /**
  * The cell pairs (EXIT cell, ENTRY cell) of the face pairs that pass the tests
  * of the file doc and are not dropped by @p sheets (if not null), per tile
- * the EXIT records against the ENTRY records (by decreasing depth in each
- * tile if @p depthSorted; each face pair in the tile of the lower-left corner
- * of the intersection of the extents), in parallel over fixed blocks of
- * tiles; appended in tile order. Dropped pairs go to @p log if not null.
+ * the EXIT records against the ENTRY records, in parallel over fixed blocks of
+ * tiles; appended in tile order. Each face pair is counted (and if dropped,
+ * logged to @p log if not null) in the tile of the lower-left corner of the
+ * intersection of the extents. Without sheets it is also found there; with
+ * sheets, in the first tile of that intersection (in row order) that has no
+ * covering sheet between the faces, if any. Where @p depthSorted (each
+ * tile's ENTRY records by decreasing Far, b.Thick set), the scan of an EXIT
+ * face stops once the remaining ENTRY faces lie in front of it, and with
+ * sheets and no log it starts after the ENTRY faces separated from it in the
+ * tile: the pairs of that tile that are dropped are then not met, nor
+ * counted, and those kept are counted where they are found (the number kept,
+ * counted less dropped, does not depend on the skipping).
  */
 void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sheets,
   bool depthSorted, const std::vector<ViewFace>& faces, std::vector<BoundaryPairs::FacePair>* log,
@@ -283,6 +296,7 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
   std::vector<std::vector<BoundaryPairs::FacePair>> logs(log ? numBlocks : 0);
   const vtkIdType* exitStart = b.Lists.Start[0].data();
   const vtkIdType* entryStart = b.Lists.Start[1].data();
+  const bool skip = sheets && depthSorted && !log;
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
@@ -295,38 +309,67 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
         const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
         const TileRecord* first = b.Records[1].data() + entryStart[tile];
         const TileRecord* last = b.Records[1].data() + entryStart[tile + 1];
+        const double thick = depthSorted ? b.Thick[tile] : 0;
         for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
         {
           const TileRecord& F = b.Records[0][i];
-          for (const TileRecord* G = first; G != last; ++G)
+          // An ENTRY face G with G.Far > nearest has a covering sheet between
+          // it and F in this tile.
+          const double nearest = sheets ? sheets->NearestRear(tile, F.Far) : VTK_DOUBLE_MAX;
+          const TileRecord* G = first;
+          if (skip && nearest < VTK_DOUBLE_MAX)
+          {
+            G = std::partition_point(
+              first, last, [nearest](const TileRecord& r) { return r.Far > nearest; });
+          }
+          for (; G != last; ++G)
           {
             if (G->Depth < F.Depth)
             {
-              if (depthSorted)
+              // Every ENTRY face after G has Depth <= G->Far + thick.
+              if (depthSorted && G->Far + thick + 1e-12 * (std::abs(G->Far) + thick) < F.Depth)
               {
-                break; // this ENTRY face and the rest lie in front of F
+                break;
               }
               continue;
             }
-            // The pair's tile: that of the lower-left corner of the
-            // intersection of the extents (both faces are in this one).
-            if (G->Cell == F.Cell || Disjoint(F.Box, G->Box) ||
-              std::max(F.Tiles[0], G->Tiles[0]) != ix || std::max(F.Tiles[2], G->Tiles[2]) != iy)
+            if (G->Cell == F.Cell || Disjoint(F.Box, G->Box))
             {
               continue;
             }
-            ++count;
-            if (sheets &&
-              sheets->Separates(ix, std::min(F.Tiles[1], G->Tiles[1]), iy,
-                std::min(F.Tiles[3], G->Tiles[3]), F.Far, G->Far))
+            // The tiles of the intersection of the extents (both faces are in each).
+            const int x0 = std::max(F.Tiles[0], G->Tiles[0]), y0 = std::max(F.Tiles[2], G->Tiles[2]);
+            const bool owner = x0 == ix && y0 == iy;
+            if (!sheets && !owner)
             {
-              ++dropped; // never consecutive along a ray (hovSteinSheets.h)
-              if (log)
-              {
-                const ViewFace &f = faces[F.Face], &h = faces[G->Face];
-                logs[blk].push_back({ f.Cell, f.Face, h.Cell, h.Face });
-              }
               continue;
+            }
+            count += owner;
+            if (sheets)
+            {
+              const int x1 = std::min(F.Tiles[1], G->Tiles[1]);
+              const int y1 = std::min(F.Tiles[3], G->Tiles[3]);
+              if (G->Far > nearest) // separated in this tile
+              {
+                if (owner && ((x0 == x1 && y0 == y1) || sheets->Separates(x0, x1, y0, y1, F.Far, G->Far)))
+                {
+                  ++dropped; // never consecutive along a ray (hovSteinSheets.h)
+                  if (log)
+                  {
+                    const ViewFace &f = faces[F.Face], &h = faces[G->Face];
+                    logs[blk].push_back({ f.Cell, f.Face, h.Cell, h.Face });
+                  }
+                }
+                continue;
+              }
+              if (!owner)
+              {
+                if (!sheets->SeparatesBefore(x0, x1, y0, y1, ix, iy, F.Far, G->Far))
+                {
+                  continue; // found in an earlier tile
+                }
+                count += skip; // the lower-left tile, separated, skipped it
+              }
             }
             const FaceData& DF = b.Data[F.Face];
             const FaceData& DG = b.Data[G->Face];
@@ -541,8 +584,8 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
           const FaceData& d = b.Data[fi];
           TileRecord& r = records[i];
           std::copy(d.Box, d.Box + 4, r.Box);
-          r.Depth = k == 1 ? d.Rear : d.Front - 1e-9 * (std::abs(d.Front) + g.Diagonal);
-          r.Far = k == 1 ? d.Front : d.Rear;
+          r.Depth = k == 1 ? d.Rear : DepthBefore(d.Front, g.Diagonal);
+          r.Far = k == 1 ? DepthBefore(d.Front, g.Diagonal) : DepthAfter(d.Rear, g.Diagonal);
           r.Cell = faces[fi].Cell;
           r.Face = fi;
           std::copy(b.Ranges[fi].begin(), b.Ranges[fi].end(), r.Tiles);
@@ -550,19 +593,27 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
       });
   }
   // Where the faces overlap deeply: each tile's ENTRY records by decreasing
-  // rear depth, so that the search stops at the first one entirely in front
-  // of an EXIT face (the pairs found do not depend on the order: they are
-  // sorted and made unique afterwards), and the covering sheets.
+  // Far (their front depth), so that the search can skip those behind a
+  // covering sheet and stop once the rest lie in front of an EXIT face (the
+  // pairs found do not depend on the order: they are sorted and made unique
+  // afterwards), and the covering sheets.
   const bool deep = DeepOverlap(grid, b.Lists, nf);
   const vtkIdType* entryStart = b.Lists.Start[1].data();
+  b.Thick.resize(deep ? grid.NumberOfTiles() : 0);
   vtkSMPTools::For(0, deep ? grid.NumberOfTiles() : 0, 256, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType tile = begin; tile < end; ++tile)
     {
       const auto records = b.Records[1].begin();
       std::sort(records + entryStart[tile], records + entryStart[tile + 1],
         [](const TileRecord& x, const TileRecord& y) {
-          return x.Depth > y.Depth || (x.Depth == y.Depth && x.Face < y.Face);
+          return x.Far > y.Far || (x.Far == y.Far && x.Face < y.Face);
         });
+      double thick = 0;
+      for (vtkIdType i = entryStart[tile]; i < entryStart[tile + 1]; ++i)
+      {
+        thick = std::max(thick, b.Records[1][i].Depth - b.Records[1][i].Far);
+      }
+      b.Thick[tile] = thick * (1 + 1e-12);
     }
   });
   const SheetCover* sheets = nullptr;

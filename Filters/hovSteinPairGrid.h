@@ -14,6 +14,7 @@
 
 #include "vtkType.h" // vtkIdType
 
+#include <cmath>   // std::abs
 #include <cstdint> // std::uint8_t
 
 namespace hovStein
@@ -28,6 +29,20 @@ struct FaceData
   std::uint8_t NumIds;
   std::uint8_t Exact;   ///< 1: Triple spans the exact face plane
 };
+
+/**
+ * The pair search's rounding margin on depth comparisons: a depth moved by
+ * 1e-9 of its magnitude and of the mesh's diagonal @p diagonal, towards the
+ * eye (DepthBefore) or away from it (DepthAfter).
+ */
+inline double DepthBefore(double z, double diagonal)
+{
+  return z - 1e-9 * (std::abs(z) + diagonal);
+}
+inline double DepthAfter(double z, double diagonal)
+{
+  return z + 1e-9 * (std::abs(z) + diagonal);
+}
 
 /// Uniform screen grid of the pair search.
 struct PairGrid

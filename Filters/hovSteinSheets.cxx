@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace hovStein
 {
@@ -243,6 +244,14 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
             }
           }
         }
+        // By decreasing front depth, each rear replaced by the least rear so
+        // far (NearestRear() reads one prefix).
+        const auto tileCovers = covers.begin() + static_cast<std::ptrdiff_t>(before);
+        std::sort(tileCovers, covers.end(), std::greater<std::pair<double, double>>());
+        for (auto c = tileCovers; c != covers.end(); ++c)
+        {
+          c->second = c == tileCovers ? c->second : std::min(c->second, (c - 1)->second);
+        }
         this->CoverStart[tile + 1] = static_cast<vtkIdType>(covers.size() - before);
       }
     }
@@ -269,7 +278,6 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
 {
   this->Stats = SheetStats();
   this->NX = grid.NX;
-  this->Margin = g.Diagonal;
   const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
   // The sheets' faces: ENTRY only (not undecided), of visible cells,
   // triangles with exact planes, counterclockwise on the screen as seen from
@@ -325,27 +333,39 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
   this->Cover(v, adjacency, faces, data, grid, entryStart, entryFaces);
 }
 
-bool SheetCover::Separates(int ix0, int ix1, int iy0, int iy1, double rear, double front) const
+double SheetCover::NearestRear(vtkIdType tile, double after) const
 {
-  // The pair search's rounding margin on each comparison.
-  const double after = rear + 1e-9 * (std::abs(rear) + this->Margin);
-  const double before = front - 1e-9 * (std::abs(front) + this->Margin);
+  double rear = VTK_DOUBLE_MAX;
+  for (vtkIdType c = this->CoverStart[tile]; c < this->CoverStart[tile + 1]; ++c)
+  {
+    if (!(this->Covers[c].first > after))
+    {
+      break;
+    }
+    rear = this->Covers[c].second;
+  }
+  return rear;
+}
+
+bool SheetCover::Separates(int ix0, int ix1, int iy0, int iy1, double after, double before) const
+{
   for (int iy = iy0; iy <= iy1; ++iy)
   {
     for (int ix = ix0; ix <= ix1; ++ix)
     {
-      const vtkIdType tile = static_cast<vtkIdType>(iy) * this->NX + ix;
-      bool found = false;
-      for (vtkIdType c = this->CoverStart[tile]; c < this->CoverStart[tile + 1] && !found; ++c)
-      {
-        found = after < this->Covers[c].first && this->Covers[c].second < before;
-      }
-      if (!found)
+      if (!(this->NearestRear(static_cast<vtkIdType>(iy) * this->NX + ix, after) < before))
       {
         return false;
       }
     }
   }
   return true;
+}
+
+bool SheetCover::SeparatesBefore(
+  int ix0, int ix1, int iy0, int iy1, int ix, int iy, double after, double before) const
+{
+  return (iy == iy0 || this->Separates(ix0, ix1, iy0, iy - 1, after, before)) &&
+    (ix == ix0 || this->Separates(ix0, ix - 1, iy, iy, after, before));
 }
 }

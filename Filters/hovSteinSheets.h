@@ -88,10 +88,22 @@ public:
     const vtkIdType* entryFaces);
 
   /**
-   * Whether every tile [ix0, ix1] x [iy0, iy1] has a covering sheet lying
-   * strictly (beyond @p margin) between depths @p rear and @p front.
+   * The least rear depth of the covering sheets of @p tile whose front depth
+   * exceeds @p after (VTK_DOUBLE_MAX if none): a face pair of that tile with
+   * DepthAfter(F's rear) <= @p after and DepthBefore(G's front) > the result
+   * is separated there.
    */
-  bool Separates(int ix0, int ix1, int iy0, int iy1, double rear, double front) const;
+  double NearestRear(vtkIdType tile, double after) const;
+
+  /**
+   * Whether every tile [ix0, ix1] x [iy0, iy1] has a covering sheet lying
+   * strictly between depths @p after and @p before: DepthAfter(F's rear) and
+   * DepthBefore(G's front) (hovSteinPairGrid.h), the pair search's margins.
+   */
+  bool Separates(int ix0, int ix1, int iy0, int iy1, double after, double before) const;
+  /// The same for the tiles of [ix0, ix1] x [iy0, iy1] before (ix, iy) in row order.
+  bool SeparatesBefore(
+    int ix0, int ix1, int iy0, int iy1, int ix, int iy, double after, double before) const;
 
   const SheetStats& GetStats() const { return this->Stats; }
 
@@ -101,12 +113,12 @@ private:
     const vtkIdType* entryStart, const vtkIdType* entryFaces);
 
   int NX = 0;
-  double Margin = 0; ///< the mesh's diagonal: the absolute part of the depth margin
   /// Per boundary face: its face index in the view's faces if it is a sheet
   /// face, else -1; and the bits of its border edges.
   std::vector<std::int32_t> FaceOf;
   std::vector<std::uint8_t> Border;
-  /// Per tile (CSR): the covering sheets' depth ranges (front, rear).
+  /// Per tile (CSR): the covering sheets' depth ranges (front, rear) by
+  /// decreasing front, each rear the least of those so far.
   std::vector<vtkIdType> CoverStart;
   std::vector<std::pair<double, double>> Covers;
   SheetStats Stats;

@@ -246,8 +246,12 @@ public:
    * - NumberOfGraphEdges: edges of the visibility DAG (adjacency graph),
    *   NumberOfBoundaryCells: cells with a boundary face (adjacency graph).
    * - NumberOfBoundaryFacePairs: candidate (EXIT, ENTRY) boundary face pairs
-   *   (adjacency graph), NumberOfDroppedFacePairs: those of them dropped by
-   *   BoundaryPairCulling (before the plane tests).
+   *   the search met (adjacency graph), NumberOfDroppedFacePairs: those of
+   *   them dropped by BoundaryPairCulling (before the plane tests). Where the
+   *   culling runs on deeply overlapping faces, the search skips, per EXIT
+   *   face and tile, the ENTRY faces behind its nearest covering sheet: those
+   *   pairs are neither met nor counted. The difference, the pairs kept for
+   *   the plane tests, does not depend on that.
    * - LastSortSeconds / LastSetupSeconds: wall time of the last sort and of
    *   the view-independent set-up it needed (0 when it was reused).
    */

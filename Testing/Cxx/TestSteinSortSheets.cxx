@@ -13,6 +13,11 @@
 //   is part of the sort's cache key);
 // - the default, CULLING_AUTO, culls exactly as CULLING_ON or not at all: on
 //   the heatsinks' views across the fins, not on the bracket;
+// - with the dropped-pair log (every candidate met and counted) and without
+//   it (the search skips, per EXIT face and tile, the ENTRY faces behind a
+//   covering sheet), the same face pairs are kept, the same cell pairs tested
+//   and the order is the same; with the log, the candidates are those of
+//   CULLING_OFF;
 // - every dropped face pair is checked on its own (12 rays each, by this
 //   test's own ray/triangle intersections): every sampled ray through the
 //   EXIT face F and then the ENTRY face G crosses another boundary face
@@ -66,10 +71,26 @@ vtkSmartPointer<vtkUnstructuredGrid> JitteredHeatsink(double jitter, unsigned se
 
 struct Totals
 {
-  vtkIdType Dropped[2] = { 0, 0 }, Tests[2] = { 0, 0 }, FacePairs[2] = { 0, 0 };
-  vtkIdType AcrossDropped = 0, AcrossPairs = 0; ///< "across the fins", with the culling
-  int AutoCulled = 0;                           ///< views CULLING_AUTO culled
+  vtkIdType Kept[2] = { 0, 0 }, Tests[2] = { 0, 0 }, FacePairs[2] = { 0, 0 };
+  int AutoCulled = 0; ///< views CULLING_AUTO culled
 };
+
+/// The counters of one sort.
+struct Counts
+{
+  vtkIdType FacePairs, Dropped, Tests, Edges;
+  bool operator==(const Counts& o) const
+  {
+    return this->FacePairs == o.FacePairs && this->Dropped == o.Dropped &&
+      this->Tests == o.Tests && this->Edges == o.Edges;
+  }
+};
+
+Counts GetCounts(vtkSteinVisibilitySort* sort)
+{
+  return { sort->GetNumberOfBoundaryFacePairs(), sort->GetNumberOfDroppedFacePairs(),
+    sort->GetNumberOfObstructsTests(), sort->GetNumberOfGraphEdges() };
+}
 
 void Run(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, const SortView& view,
   const OracleOptions& options, Totals& totals)
@@ -77,6 +98,7 @@ void Run(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, const 
   vtkNew<vtkCamera> cam;
   view.Apply(cam);
   vtkNew<vtkSteinVisibilitySort> sort;
+  Counts counts[2];
   for (const int culling : { 1, 0 })
   {
     sort->SetBoundaryPairCulling(culling ? vtkSteinVisibilitySort::CULLING_ON
@@ -85,10 +107,10 @@ void Run(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, const 
       FullOrder(sort, grid, cam, nullptr, vtkVisibilitySort::BACK_TO_FRONT);
     const OracleResult r = CheckVisibilityOrder(grid, cam, nullptr, order, options);
     const std::string what = mesh + " / " + view.Name + (culling ? " / culling" : " / all pairs");
-    std::cout << "  " << what << ": " << r.Str() << ", face pairs "
-              << sort->GetNumberOfBoundaryFacePairs() << ", dropped "
-              << sort->GetNumberOfDroppedFacePairs() << ", tests "
-              << sort->GetNumberOfObstructsTests() << ", edges " << sort->GetNumberOfGraphEdges()
+    const Counts c = GetCounts(sort);
+    counts[culling] = c;
+    std::cout << "  " << what << ": " << r.Str() << ", face pairs met " << c.FacePairs
+              << ", dropped " << c.Dropped << ", tests " << c.Tests << ", edges " << c.Edges
               << "\n";
     ck.Check(r.EveryCellOnce(), what + ": every cell once");
     ck.Check(r.RayViolations == 0 && r.FaceViolations == 0, what + ": no oracle violation");
@@ -97,27 +119,19 @@ void Run(Checker& ck, const std::string& mesh, vtkUnstructuredGrid* grid, const 
     ck.Check(r.PairsChecked > 0, what + ": the oracle saw overlapping cells along rays");
     if (!culling)
     {
-      ck.Check(sort->GetNumberOfDroppedFacePairs() == 0, what + ": nothing dropped");
+      ck.Check(c.Dropped == 0, what + ": nothing dropped");
     }
-    totals.Dropped[culling] += sort->GetNumberOfDroppedFacePairs();
-    if (culling)
-    {
-      // The default decides by the depth of the overlap: the same drops or none.
-      vtkNew<vtkSteinVisibilitySort> automatic;
-      FullOrder(automatic, grid, cam, nullptr, vtkVisibilitySort::BACK_TO_FRONT);
-      const vtkIdType dropped = automatic->GetNumberOfDroppedFacePairs();
-      totals.AutoCulled += dropped > 0;
-      ck.Check(dropped == 0 || dropped == sort->GetNumberOfDroppedFacePairs(),
-        what + ": CULLING_AUTO culls as CULLING_ON or not at all");
-    }
-    if (culling && view.Name == "across the fins")
-    {
-      totals.AcrossDropped += sort->GetNumberOfDroppedFacePairs();
-      totals.AcrossPairs += sort->GetNumberOfBoundaryFacePairs();
-    }
-    totals.Tests[culling] += sort->GetNumberOfObstructsTests();
-    totals.FacePairs[culling] += sort->GetNumberOfBoundaryFacePairs();
+    totals.Kept[culling] += c.FacePairs - c.Dropped;
+    totals.Tests[culling] += c.Tests;
+    totals.FacePairs[culling] += c.FacePairs;
   }
+  // The default decides by the depth of the overlap: as CULLING_ON or as CULLING_OFF.
+  vtkNew<vtkSteinVisibilitySort> automatic;
+  FullOrder(automatic, grid, cam, nullptr, vtkVisibilitySort::BACK_TO_FRONT);
+  const Counts a = GetCounts(automatic);
+  totals.AutoCulled += a == counts[1] && a.Tests < counts[0].Tests;
+  ck.Check(a == counts[0] || a == counts[1],
+    mesh + " / " + view.Name + ": CULLING_AUTO culls as CULLING_ON or not at all");
 }
 
 /// Ray (o + t d) and triangle: t, or NaN if it misses (slightly exclusive).
@@ -151,13 +165,24 @@ double Hit(const double o[3], const double d[3], const double* a, const double* 
   return (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
 }
 
+/// The dropped face pairs of one view and their check.
+struct DropCheck
+{
+  vtkIdType Candidates = 0, Drops = 0, Logged = 0; ///< with the log: every candidate met
+  vtkIdType SkippingMet = 0; ///< without the log: the candidates met
+  vtkIdType Rays = 0, Wrong = 0;
+  bool SameAsSkipping = false; ///< kept pairs, tests and order as without the log
+};
+
 /**
  * Checks the dropped face pairs of one view of @p grid with the sort's own
  * geometry and topology: rays from the eye through random points of F that
- * go on through G must cross another boundary face strictly between.
- * Returns the number of such rays; @p wrong counts those that cross none.
+ * go on through G must cross another boundary face strictly between
+ * (DropCheck::Wrong counts those that cross none). Also sorts without the
+ * log (the search then skips the ENTRY faces behind covering sheets) and
+ * compares.
  */
-vtkIdType CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam, vtkIdType& drops, vtkIdType& wrong)
+DropCheck CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam)
 {
   hovStein::Geometry g;
   g.Build(grid, nullptr);
@@ -165,14 +190,25 @@ vtkIdType CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam, vtkIdType& drops
   t.Build(g);
   hovStein::View v;
   v.Setup(g, cam, false);
-  hovStein::GraphSort sorter;
+  hovStein::GraphSort sorter, skipping;
   sorter.SetSheetCulling(hovStein::BoundaryPairs::CullAlways);
+  skipping.SetSheetCulling(hovStein::BoundaryPairs::CullAlways);
   std::vector<hovStein::BoundaryPairs::FacePair> log;
   sorter.SetDroppedLog(&log);
-  std::vector<vtkIdType> order;
-  hovStein::GraphStats stats;
+  std::vector<vtkIdType> order, skippingOrder;
+  hovStein::GraphStats stats, skippingStats;
   sorter.Sort(g, t, v, order, stats);
-  drops = static_cast<vtkIdType>(log.size());
+  skipping.Sort(g, t, v, skippingOrder, skippingStats);
+  DropCheck check;
+  check.Candidates = stats.FacePairs;
+  check.Drops = stats.DroppedFacePairs;
+  check.Logged = static_cast<vtkIdType>(log.size());
+  check.SkippingMet = skippingStats.FacePairs;
+  check.SameAsSkipping = order == skippingOrder && stats.Tests == skippingStats.Tests &&
+    stats.ObstructEdges == skippingStats.ObstructEdges &&
+    stats.FacePairs - stats.DroppedFacePairs ==
+      skippingStats.FacePairs - skippingStats.DroppedFacePairs &&
+    skippingStats.FacePairs <= stats.FacePairs;
   // Every boundary face as a triangle fan of its corners.
   std::vector<std::array<vtkIdType, 4>> boundary;
   std::vector<int> sizes;
@@ -196,8 +232,6 @@ vtkIdType CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam, vtkIdType& drops
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.02, 0.98);
   const hovStein::ViewFrame& f = v.Frame;
-  vtkIdType rays = 0;
-  wrong = 0;
   const size_t step = 1;
   for (size_t i = 0; i < log.size(); i += step)
   {
@@ -226,7 +260,7 @@ vtkIdType CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam, vtkIdType& drops
       {
         continue; // this ray does not go through F and then G
       }
-      ++rays;
+      ++check.Rays;
       const double margin = 1e-7 * (tG - tF);
       bool between = false;
       for (size_t k = 0; k < boundary.size() && !between; ++k)
@@ -234,10 +268,10 @@ vtkIdType CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam, vtkIdType& drops
         const double h = faceHit(boundary[k].data(), sizes[k], o, d);
         between = h > tF + margin && h < tG - margin;
       }
-      wrong += !between;
+      check.Wrong += !between;
     }
   }
-  return rays;
+  return check;
 }
 
 /// Views of the heatsink (fins along y, stacked along x, up z).
@@ -291,29 +325,46 @@ int TestSteinSortSheets(int argc, char* argv[])
     double b[6];
     mesh->GetBounds(b);
     Totals totals;
-    vtkIdType drops = 0, rays = 0, wrong = 0;
+    DropCheck all;
+    vtkIdType acrossPairs = 0, acrossDropped = 0; ///< "across the fins", every candidate met
     for (const SortView& view : HeatsinkViews(b))
     {
       Run(ck, name, mesh, view, options, totals);
       vtkNew<vtkCamera> cam;
       view.Apply(cam);
-      vtkIdType viewDrops = 0, viewWrong = 0;
-      rays += CheckDrops(mesh, cam, viewDrops, viewWrong);
-      drops += viewDrops;
-      wrong += viewWrong;
+      const DropCheck d = CheckDrops(mesh, cam);
+      const std::string what = name + " / " + view.Name;
+      ck.Check(d.SameAsSkipping,
+        what + ": skipping the faces behind covering sheets keeps the same pairs and order");
+      ck.Check(d.Logged == d.Drops, what + ": the log has every dropped pair");
+      all.Candidates += d.Candidates;
+      all.Drops += d.Drops;
+      all.SkippingMet += d.SkippingMet;
+      all.Rays += d.Rays;
+      all.Wrong += d.Wrong;
+      if (view.Name == "across the fins")
+      {
+        acrossPairs += d.Candidates;
+        acrossDropped += d.Drops;
+      }
     }
     std::cout << name << ": CULLING_AUTO culled in " << totals.AutoCulled << " views\n";
     ck.Check(totals.AutoCulled >= 3, name + ": CULLING_AUTO culls in the views across the fins");
-    std::cout << name << ": " << drops << " dropped face pairs, " << rays
-              << " sampled rays through both faces, " << wrong << " with nothing between\n";
-    ck.Check(drops == totals.Dropped[1], name + ": the log has every dropped pair");
-    ck.Check(rays > 1000 && wrong == 0,
+    std::cout << name << ": " << all.Drops << " dropped face pairs, " << all.Rays
+              << " sampled rays through both faces, " << all.Wrong << " with nothing between\n";
+    ck.Check(all.Rays > 1000 && all.Wrong == 0,
       name + ": every sampled ray through a dropped pair crosses a boundary face between");
     std::cout << name << " (" << mesh->GetNumberOfCells() << " cells): face pairs "
-              << totals.FacePairs[1] << ", dropped " << totals.Dropped[1] << ", tests "
-              << totals.Tests[1] << " with the culling, " << totals.Tests[0] << " without\n";
-    ck.Check(totals.FacePairs[1] == totals.FacePairs[0], name + ": the same candidate face pairs");
-    ck.Check(totals.AcrossDropped > totals.AcrossPairs / 4,
+              << all.Candidates << ", dropped " << all.Drops << ", tests " << totals.Tests[1]
+              << " with the culling, " << totals.Tests[0] << " without\n";
+    ck.Check(all.Candidates == totals.FacePairs[0], name + ": the same candidate face pairs");
+    std::cout << name << ": without the log the search met " << all.SkippingMet
+              << " face pairs of " << all.Candidates << "\n";
+    ck.Check(all.SkippingMet < all.Candidates - all.Drops / 2,
+      name + ": without the log the search skips most dropped pairs");
+    ck.Check(totals.Kept[1] == totals.FacePairs[0] - all.Drops,
+      name + ": CULLING_ON keeps the candidates less the dropped ones");
+    ck.Check(acrossDropped > acrossPairs / 4,
       name + ", across the fins: the culling drops more than a quarter of the face pairs");
     ck.Check(totals.Tests[1] < totals.Tests[0], name + ": fewer Obstructs() tests");
   }
@@ -331,7 +382,7 @@ int TestSteinSortSheets(int argc, char* argv[])
     {
       Run(ck, "bracket", bracket, view, bracketOptions, totals);
     }
-    ck.Check(totals.Dropped[1] > 0, "bracket: the culling drops face pairs");
+    ck.Check(totals.Kept[1] < totals.FacePairs[0], "bracket: the culling drops face pairs");
     std::cout << "bracket: CULLING_AUTO culled in " << totals.AutoCulled << " views\n";
     ck.Check(totals.AutoCulled == 0, "bracket: CULLING_AUTO does not cull (shallow overlap)");
   }
