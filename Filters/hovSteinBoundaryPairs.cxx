@@ -26,7 +26,8 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
   {
     g.ExactTriple(c, vf.Face, d.Triple);
   }
-  if (v.Status[c] != StatusVisible)
+  d.Screen = v.Status[c] == StatusVisible;
+  if (!d.Screen)
   {
     std::copy(v.Box.data() + 4 * c, v.Box.data() + 4 * c + 4, d.Box);
     d.Front = v.Front[c];
@@ -39,6 +40,11 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
   for (int i = 0; i < d.NumIds; ++i)
   {
     const double* p = v.Proj.data() + 3 * d.Ids[i];
+    if (i < 3)
+    {
+      d.Corners[i][0] = p[0];
+      d.Corners[i][1] = p[1];
+    }
     box[0] = std::min(box[0], p[0]);
     box[1] = std::max(box[1], p[0]);
     box[2] = std::min(box[2], p[1]);
@@ -77,6 +83,50 @@ bool SomeCornerOutside(const Geometry& g, const FaceData& d, const FaceData& oth
     if (n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2]) >= -margin)
     {
       return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * The screen projections of the triangles @p d and @p e clearly apart: an
+ * edge of one with every corner of the other outside its line by more than
+ * 1e-9 of the triangles' extent (then no ray meets both). False for other
+ * faces and for faces of cells cut by the near plane (their data hold the
+ * cell's extents).
+ */
+bool ApartOnScreen(const FaceData& d, const FaceData& e)
+{
+  if (d.NumIds != 3 || e.NumIds != 3 || !d.Screen || !e.Screen)
+  {
+    return false;
+  }
+  const double(*p[2])[2] = { d.Corners, e.Corners };
+  const double extent = std::max(
+    { double(d.Box[1]) - d.Box[0], double(d.Box[3]) - d.Box[2], double(e.Box[1]) - e.Box[0],
+      double(e.Box[3]) - e.Box[2] });
+  for (int t = 0; t < 2; ++t)
+  {
+    const double(*a)[2] = p[t];
+    const double(*b)[2] = p[1 - t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const double* x = a[k];
+      const double* y = a[(k + 1) % 3];
+      const double ex = y[0] - x[0], ey = y[1] - x[1];
+      const double c = ex * (a[(k + 2) % 3][1] - x[1]) - ey * (a[(k + 2) % 3][0] - x[0]);
+      // The third corner's side is inside; b's corners must be clearly on the other.
+      const double tol = 1e-9 * extent * (std::abs(ex) + std::abs(ey));
+      bool apart = c != 0;
+      for (int j = 0; j < 3 && apart; ++j)
+      {
+        const double s = ex * (b[j][1] - x[1]) - ey * (b[j][0] - x[0]);
+        apart = c > 0 ? s < -tol : s > tol;
+      }
+      if (apart)
+      {
+        return true;
+      }
     }
   }
   return false;
@@ -373,7 +423,8 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
             }
             const FaceData& DF = b.Data[F.Face];
             const FaceData& DG = b.Data[G->Face];
-            if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
+            if (!ApartOnScreen(DF, DG) && SomeCornerOutside(g, DF, DG) &&
+              SomeCornerOutside(g, DG, DF))
             {
               found.emplace_back(F.Cell, G->Cell);
             }

@@ -9,6 +9,9 @@
  * or undecided) crosses F at a point x and G at a point y farther along the
  * ray. Hence a face pair (F, G) can only be needed when
  * - the screen extents of F and G overlap (both contain the image of x and y);
+ *   for triangles of visible cells, no edge of one has the other's corners
+ *   all clearly outside its line (more than 1e-9 of the extents): a ray
+ *   through both exists only if the projections overlap;
  * - rear depth of G > front depth of F (depth grows along the ray; compared
  *   with a rounding margin, pruned only when clearly violated);
  * - if F is an exact face: some corner of G lies on the closed outer side of

@@ -28,6 +28,8 @@ struct FaceData
   vtkIdType Triple[3];  ///< exact plane (outward counterclockwise) if Exact
   std::uint8_t NumIds;
   std::uint8_t Exact;   ///< 1: Triple spans the exact face plane
+  std::uint8_t Screen;  ///< 1: Box, depths and Corners are the face's (its cell is visible)
+  double Corners[3][2]; ///< screen points of the first three corners if Screen
 };
 
 /**
