@@ -1,6 +1,7 @@
 // Boundary face pairs of vtkSteinVisibilitySort's ADJACENCY_GRAPH (see hovSteinBoundaryPairs.h).
 #include "hovSteinBoundaryPairs.h"
 
+#include "hovSteinFacePairs.h" // FillFaceData, SomeCornerOutside, ApartOnScreen, InFrontOnScreen
 #include "hovSteinHulls.h"     // HullCache
 #include "hovSteinObstructs.h" // Obstruction
 #include "hovSteinPairGrid.h"  // FaceData, PairGrid
@@ -17,121 +18,6 @@ namespace hovStein
 {
 namespace
 {
-void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData& d)
-{
-  const vtkIdType c = vf.Cell;
-  d.NumIds = static_cast<std::uint8_t>(g.OrientedFace(c, vf.Face, d.Ids));
-  d.Exact = (g.FaceCode(c, vf.Face) & 3) == FaceExact && vf.Roles != 3;
-  if (d.Exact)
-  {
-    g.ExactTriple(c, vf.Face, d.Triple);
-  }
-  d.Screen = v.Status[c] == StatusVisible;
-  if (!d.Screen)
-  {
-    std::copy(v.Box.data() + 4 * c, v.Box.data() + 4 * c + 4, d.Box);
-    d.Front = v.Front[c];
-    d.Rear = v.Rear[c];
-    return;
-  }
-  double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  d.Front = VTK_DOUBLE_MAX;
-  d.Rear = -VTK_DOUBLE_MAX;
-  for (int i = 0; i < d.NumIds; ++i)
-  {
-    const double* p = v.Proj.data() + 3 * d.Ids[i];
-    if (i < 3)
-    {
-      d.Corners[i][0] = p[0];
-      d.Corners[i][1] = p[1];
-    }
-    box[0] = std::min(box[0], p[0]);
-    box[1] = std::max(box[1], p[0]);
-    box[2] = std::min(box[2], p[1]);
-    box[3] = std::max(box[3], p[1]);
-    d.Front = std::min(d.Front, p[2]);
-    d.Rear = std::max(d.Rear, p[2]);
-  }
-  d.Box[0] = FloatDown(box[0]);
-  d.Box[1] = FloatUp(box[1]);
-  d.Box[2] = FloatDown(box[2]);
-  d.Box[3] = FloatUp(box[3]);
-}
-
-/**
- * Some corner of @p other lies on the outer side of the plane of the exact face
- * @p d, or within a margin inside it (true if @p d is not exact). The margin,
- * 1e-9 times the coordinate magnitude (100x the rounding tolerance of
- * Obstructs()), keeps nearly coplanar non-conforming interfaces whose points
- * are not exactly coplanar (sheared sliding interfaces) among the candidates.
- */
-bool SomeCornerOutside(const Geometry& g, const FaceData& d, const FaceData& other)
-{
-  if (!d.Exact)
-  {
-    return true;
-  }
-  const double *a = g.Point(d.Triple[0]), *b = g.Point(d.Triple[1]), *c = g.Point(d.Triple[2]);
-  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
-  const double scale = g.Diagonal + std::max({ std::abs(a[0]), std::abs(a[1]), std::abs(a[2]) });
-  const double margin = 1e-9 * scale * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  for (int i = 0; i < other.NumIds; ++i)
-  {
-    const double* p = g.Point(other.Ids[i]);
-    if (n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2]) >= -margin)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-/**
- * The screen projections of the triangles @p d and @p e clearly apart: an
- * edge of one with every corner of the other outside its line by more than
- * 1e-9 of the triangles' extent (then no ray meets both). False for other
- * faces and for faces of cells cut by the near plane (their data hold the
- * cell's extents).
- */
-bool ApartOnScreen(const FaceData& d, const FaceData& e)
-{
-  if (d.NumIds != 3 || e.NumIds != 3 || !d.Screen || !e.Screen)
-  {
-    return false;
-  }
-  const double(*p[2])[2] = { d.Corners, e.Corners };
-  const double extent = std::max(
-    { double(d.Box[1]) - d.Box[0], double(d.Box[3]) - d.Box[2], double(e.Box[1]) - e.Box[0],
-      double(e.Box[3]) - e.Box[2] });
-  for (int t = 0; t < 2; ++t)
-  {
-    const double(*a)[2] = p[t];
-    const double(*b)[2] = p[1 - t];
-    for (int k = 0; k < 3; ++k)
-    {
-      const double* x = a[k];
-      const double* y = a[(k + 1) % 3];
-      const double ex = y[0] - x[0], ey = y[1] - x[1];
-      const double c = ex * (a[(k + 2) % 3][1] - x[1]) - ey * (a[(k + 2) % 3][0] - x[0]);
-      // The third corner's side is inside; b's corners must be clearly on the other.
-      const double tol = 1e-9 * extent * (std::abs(ex) + std::abs(ey));
-      bool apart = c != 0;
-      for (int j = 0; j < 3 && apart; ++j)
-      {
-        const double s = ex * (b[j][1] - x[1]) - ey * (b[j][0] - x[0]);
-        apart = c > 0 ? s < -tol : s > tol;
-      }
-      if (apart)
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 /// Tiles about the mean extent of the faces, within the view window, at most ~4 per face.
 PairGrid MakePairGrid(const View& v, const std::vector<FaceData>& data)
 {
@@ -319,8 +205,9 @@ struct BoundaryPairs::Buffers
 namespace
 {
 /**
- * The cell pairs (EXIT cell, ENTRY cell) of the face pairs that pass the tests
- * of the file doc and are not dropped by @p sheets (if not null), per tile
+ * The cell pairs (EXIT cell, 2 ENTRY cell + 1 if @p certify and the face
+ * pair proves the edge) of the face pairs that pass the tests of the file doc
+ * and are not dropped by @p sheets (if not null), per tile
  * the EXIT records against the ENTRY records, in parallel over fixed blocks of
  * tiles; appended in tile order. Each face pair is counted (and if dropped,
  * logged to @p log if not null) in the tile of the lower-left corner of the
@@ -335,8 +222,8 @@ namespace
  * counted less dropped, does not depend on the skipping).
  */
 void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sheets,
-  bool depthSorted, const std::vector<ViewFace>& faces, std::vector<BoundaryPairs::FacePair>* log,
-  BoundaryPairs::Buffers& b, PairStats& stats)
+  bool depthSorted, bool certify, const std::vector<ViewFace>& faces,
+  std::vector<BoundaryPairs::FacePair>* log, BoundaryPairs::Buffers& b, PairStats& stats)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
@@ -426,7 +313,9 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
             if (!ApartOnScreen(DF, DG) && SomeCornerOutside(g, DF, DG) &&
               SomeCornerOutside(g, DG, DF))
             {
-              found.emplace_back(F.Cell, G->Cell);
+              // The second cell times 2, plus 1 if the edge needs no test.
+              found.emplace_back(
+                F.Cell, 2 * G->Cell + (certify && InFrontOnScreen(DF, F.Far, DG, G->Far)));
             }
           }
         }
@@ -449,7 +338,8 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
 
 /**
  * The distinct cell pairs of the blocks of FindCellPairs() into b.Pairs, in
- * increasing (first, second) order: bucketed by first cell (a counting sort
+ * increasing (first, second) order, the second cell times 2 plus 1 if any of
+ * its face pairs needs no test: bucketed by first cell (a counting sort
  * over the range of first cells), each bucket sorted and made unique on its
  * own, in parallel. The same pairs in the same order as sorting all of them
  * and removing repeats, in about half the time on the heatsink 0.5M (measured
@@ -501,7 +391,20 @@ void SortUniquePairs(BoundaryPairs::Buffers& b)
       vtkIdType* first = b.Second.data() + (i == 0 ? 0 : start[i - 1]);
       vtkIdType* last = b.Second.data() + start[i];
       std::sort(first, last);
-      b.Kept[i] = static_cast<std::uint32_t>(std::unique(first, last) - first);
+      // One entry per second cell, marked if any of its entries is (2c + 1 sorts after 2c).
+      vtkIdType* out = first;
+      for (vtkIdType* it = first; it != last; ++it)
+      {
+        if (out != first && (out[-1] >> 1) == (*it >> 1))
+        {
+          out[-1] = *it;
+        }
+        else
+        {
+          *out++ = *it;
+        }
+      }
+      b.Kept[i] = static_cast<std::uint32_t>(out - first);
     }
   });
   vtkIdType kept = 0;
@@ -539,17 +442,24 @@ bool DeepOverlap(const PairGrid& grid, const TileLists& lists, vtkIdType numFace
 }
 
 /**
- * Obstructs(a, b) for the sorted distinct cell pairs, in parallel (the hulls
- * of their cells computed once first); appends the edges (b, a) in pair order.
+ * The edges (b, a) of the sorted distinct cell pairs (a, 2 b + certain) in
+ * pair order: without a test for the certain ones (InFrontOnScreen), else if
+ * Obstructs(a, b), in parallel (the hulls of the tested cells computed once
+ * first). Returns the number of tests.
  */
-void DecidePairs(const Geometry& g, const View& v, BoundaryPairs::Buffers& b, CellPairs& edges)
+vtkIdType DecidePairs(const Geometry& g, const View& v, BoundaryPairs::Buffers& b, CellPairs& edges)
 {
   const CellPairs& pairs = b.Pairs;
   const vtkIdType np = static_cast<vtkIdType>(pairs.size());
   b.Used.assign(g.NumberOfCells, 0);
+  vtkIdType tests = 0;
   for (const auto& p : pairs)
   {
-    b.Used[p.first] = b.Used[p.second] = 1;
+    if (!(p.second & 1))
+    {
+      b.Used[p.first] = b.Used[p.second >> 1] = 1;
+      ++tests;
+    }
   }
   b.Cells.clear();
   for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
@@ -565,16 +475,18 @@ void DecidePairs(const Geometry& g, const View& v, BoundaryPairs::Buffers& b, Ce
     Obstruction ob(g, v, &b.Hulls);
     for (vtkIdType i = begin; i < end; ++i)
     {
-      b.Hit[i] = ob.Obstructs(pairs[i].first, pairs[i].second);
+      const vtkIdType second = pairs[i].second;
+      b.Hit[i] = (second & 1) || ob.Obstructs(pairs[i].first, second >> 1);
     }
   });
   for (vtkIdType i = 0; i < np; ++i)
   {
     if (b.Hit[i])
     {
-      edges.emplace_back(pairs[i].second, pairs[i].first);
+      edges.emplace_back(pairs[i].second >> 1, pairs[i].first);
     }
   }
+  return tests;
 }
 }
 
@@ -684,9 +596,8 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
     stats.Sheets = b.Sheets.GetStats();
     sheets = &b.Sheets;
   }
-  FindCellPairs(g, grid, sheets, deep, faces, this->DroppedLog, b, stats);
+  FindCellPairs(g, grid, sheets, deep, this->CertifiedEdges, faces, this->DroppedLog, b, stats);
   SortUniquePairs(b);
-  stats.Tests += static_cast<vtkIdType>(b.Pairs.size());
-  DecidePairs(g, v, b, edges);
+  stats.Tests += DecidePairs(g, v, b, edges);
 }
 }

@@ -23,8 +23,11 @@
  *   Obstructs() treats as touching) stay candidates;
  * - if G is an exact face: some corner of F lies on the closed outer side of
  *   G's plane (x does: it is on the eye's side of y, and the eye is outside).
- * Every cell pair (A, B) with a face pair passing these tests is decided with
- * the exact cell-level Obstructs(A, B), which adds the edge B -> A.
+ * Every cell pair (A, B) with a face pair passing these tests gets the edge
+ * B -> A if Obstructs(A, B), the exact cell-level test; without the test when
+ * one of its face pairs proves it (triangles whose projections share a point
+ * inside both by a margin, F entirely in front of G in depth: an open set of
+ * rays leaves A and then enters B).
  * Faces of straddling cells (clipped by the near plane) use the cell's
  * visible-part extents and depth range. Undecided interior faces (non-planar
  * faces with the eye near them) are EXIT and ENTRY faces of both their cells.
@@ -107,6 +110,9 @@ public:
     CullAlways = 2
   };
   int SheetCulling = CullWhereDeep;
+  /// Cell pairs with a face pair that InFrontOnScreen() (hovSteinFacePairs.h)
+  /// proves ordered get their edge without Obstructs() (off: for tests).
+  bool CertifiedEdges = true;
   /// A dropped face pair: EXIT cell and face, ENTRY cell and face.
   using FacePair = std::array<vtkIdType, 4>;
   /// If set, the dropped face pairs of each view are written there (for the

@@ -116,6 +116,8 @@ public:
   /// BoundaryPairs::Culling: when to drop boundary face pairs that are never
   /// consecutive along a ray (hovSteinSheets.h).
   void SetSheetCulling(int mode) { this->Boundary.SheetCulling = mode; }
+  /// Edges proved by a face pair without Obstructs() (default on; off for tests).
+  void SetCertifiedEdges(bool on) { this->Boundary.CertifiedEdges = on; }
   /// Where to write each view's dropped face pairs (tests; null: nowhere).
   void SetDroppedLog(std::vector<BoundaryPairs::FacePair>* log) { this->Boundary.DroppedLog = log; }
 

@@ -1,0 +1,181 @@
+// Face pair tests of the Stein sort's boundary pair search (see hovSteinFacePairs.h).
+#include "hovSteinFacePairs.h"
+
+#include "hovSteinRounding.h" // FloatDown, FloatUp
+
+#include <algorithm>
+#include <cmath>
+
+namespace hovStein
+{
+namespace
+{
+/// The largest side of the extents of @p d and @p e.
+double Extent(const FaceData& d, const FaceData& e)
+{
+  return std::max({ double(d.Box[1]) - d.Box[0], double(d.Box[3]) - d.Box[2],
+    double(e.Box[1]) - e.Box[0], double(e.Box[3]) - e.Box[2] });
+}
+
+/**
+ * Where @p x lies from edge @p k of the screen triangle @p t: +1 inside (the
+ * third corner's side) by more than 1e-9 @p extent, -1 outside by more, 0
+ * near the line or for an edge without area.
+ */
+int EdgeSide(const double t[3][2], int k, const double x[2], double extent)
+{
+  const double* p = t[k];
+  const double* q = t[(k + 1) % 3];
+  const double ex = q[0] - p[0], ey = q[1] - p[1];
+  const double c = ex * (t[(k + 2) % 3][1] - p[1]) - ey * (t[(k + 2) % 3][0] - p[0]);
+  const double s = ex * (x[1] - p[1]) - ey * (x[0] - p[0]); // distance * |q - p|
+  const double tol = 1e-9 * extent * (std::abs(ex) + std::abs(ey));
+  if (c == 0 || std::abs(s) <= tol)
+  {
+    return 0;
+  }
+  return (s > 0) == (c > 0) ? 1 : -1;
+}
+
+bool ScreenTriangles(const FaceData& d, const FaceData& e)
+{
+  return d.NumIds == 3 && e.NumIds == 3 && d.Screen && e.Screen;
+}
+}
+
+void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData& d)
+{
+  const vtkIdType c = vf.Cell;
+  d.NumIds = static_cast<std::uint8_t>(g.OrientedFace(c, vf.Face, d.Ids));
+  d.Exact = (g.FaceCode(c, vf.Face) & 3) == FaceExact && vf.Roles != 3;
+  if (d.Exact)
+  {
+    g.ExactTriple(c, vf.Face, d.Triple);
+  }
+  d.Screen = v.Status[c] == StatusVisible;
+  if (!d.Screen)
+  {
+    std::copy(v.Box.data() + 4 * c, v.Box.data() + 4 * c + 4, d.Box);
+    d.Front = v.Front[c];
+    d.Rear = v.Rear[c];
+    return;
+  }
+  double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  d.Front = VTK_DOUBLE_MAX;
+  d.Rear = -VTK_DOUBLE_MAX;
+  for (int i = 0; i < d.NumIds; ++i)
+  {
+    const double* p = v.Proj.data() + 3 * d.Ids[i];
+    if (i < 3)
+    {
+      d.Corners[i][0] = p[0];
+      d.Corners[i][1] = p[1];
+    }
+    box[0] = std::min(box[0], p[0]);
+    box[1] = std::max(box[1], p[0]);
+    box[2] = std::min(box[2], p[1]);
+    box[3] = std::max(box[3], p[1]);
+    d.Front = std::min(d.Front, p[2]);
+    d.Rear = std::max(d.Rear, p[2]);
+  }
+  d.Box[0] = FloatDown(box[0]);
+  d.Box[1] = FloatUp(box[1]);
+  d.Box[2] = FloatDown(box[2]);
+  d.Box[3] = FloatUp(box[3]);
+}
+
+bool SomeCornerOutside(const Geometry& g, const FaceData& d, const FaceData& other)
+{
+  if (!d.Exact)
+  {
+    return true;
+  }
+  const double *a = g.Point(d.Triple[0]), *b = g.Point(d.Triple[1]), *c = g.Point(d.Triple[2]);
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+  const double scale = g.Diagonal + std::max({ std::abs(a[0]), std::abs(a[1]), std::abs(a[2]) });
+  const double margin = 1e-9 * scale * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int i = 0; i < other.NumIds; ++i)
+  {
+    const double* p = g.Point(other.Ids[i]);
+    if (n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2]) >= -margin)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool ApartOnScreen(const FaceData& d, const FaceData& e)
+{
+  if (!ScreenTriangles(d, e))
+  {
+    return false;
+  }
+  const double extent = Extent(d, e);
+  for (int t = 0; t < 2; ++t)
+  {
+    const FaceData& a = t ? e : d;
+    const FaceData& b = t ? d : e;
+    for (int k = 0; k < 3; ++k)
+    {
+      bool apart = true;
+      for (int j = 0; j < 3 && apart; ++j)
+      {
+        apart = EdgeSide(a.Corners, k, b.Corners[j], extent) < 0;
+      }
+      if (apart)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double eBefore)
+{
+  if (!(fAfter < eBefore) || !ScreenTriangles(f, e) || !f.Exact || !e.Exact)
+  {
+    return false;
+  }
+  const double extent = Extent(f, e);
+  double c[2][2];
+  for (int t = 0; t < 2; ++t)
+  {
+    const FaceData& a = t ? e : f;
+    c[t][0] = (a.Corners[0][0] + a.Corners[1][0] + a.Corners[2][0]) / 3;
+    c[t][1] = (a.Corners[0][1] + a.Corners[1][1] + a.Corners[2][1]) / 3;
+  }
+  for (int t = 0; t < 4; ++t)
+  {
+    double x[2];
+    if (t < 2)
+    {
+      x[0] = c[t][0];
+      x[1] = c[t][1];
+    }
+    else if (t == 2)
+    {
+      x[0] = 0.5 * (c[0][0] + c[1][0]);
+      x[1] = 0.5 * (c[0][1] + c[1][1]);
+    }
+    else
+    {
+      x[0] = 0.5 * (std::max(f.Box[0], e.Box[0]) + double(std::min(f.Box[1], e.Box[1])));
+      x[1] = 0.5 * (std::max(f.Box[2], e.Box[2]) + double(std::min(f.Box[3], e.Box[3])));
+    }
+    bool inside = true;
+    for (int k = 0; k < 6 && inside; ++k)
+    {
+      inside = EdgeSide(k < 3 ? f.Corners : e.Corners, k % 3, x, extent) > 0;
+    }
+    if (inside)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}

@@ -1,0 +1,56 @@
+/**
+ * @file hovSteinFacePairs.h
+ * @brief The per-view data of the boundary faces of the Stein sort's pair
+ *        search (hovSteinBoundaryPairs.h) and the tests on one (EXIT face F,
+ *        ENTRY face G) pair: which need their cells' Obstructs() test, which
+ *        need none, and which give the edge without it.
+ *
+ * Screen points, extents and depths are the view's projected doubles
+ * (View::Proj), in which the whole sort reasons; the screen tests keep a
+ * margin of 1e-9 of the faces' extents on their safe side, far above the
+ * projection's rounding.
+ */
+#ifndef hovSteinFacePairs_h
+#define hovSteinFacePairs_h
+
+#include "hovSteinBoundaryPairs.h" // ViewFace
+#include "hovSteinPairGrid.h"      // FaceData
+#include "hovSteinView.h"          // Geometry, View
+
+namespace hovStein
+{
+/// The face data of @p vf in view @p v (faces of cells cut by the near plane
+/// get their cell's visible extents and depths, and Screen = 0).
+void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData& d);
+
+/**
+ * Some corner of @p other lies on the outer side of the plane of the exact face
+ * @p d, or within a margin inside it (true if @p d is not exact). The margin,
+ * 1e-9 times the coordinate magnitude (100x the rounding tolerance of
+ * Obstructs()), keeps nearly coplanar non-conforming interfaces whose points
+ * are not exactly coplanar (sheared sliding interfaces) among the candidates.
+ */
+bool SomeCornerOutside(const Geometry& g, const FaceData& d, const FaceData& other);
+
+/**
+ * The screen projections of the triangles @p d and @p e clearly apart: an
+ * edge of one with every corner of the other outside its line by more than
+ * the margin (then no ray meets both). False for other faces and for faces of
+ * cells cut by the near plane.
+ */
+bool ApartOnScreen(const FaceData& d, const FaceData& e);
+
+/**
+ * An open set of view rays leaves a cell through the EXIT face @p f and later
+ * enters another through the ENTRY face @p e, so that f's cell must be drawn
+ * after e's (Obstructs(f's cell, e's cell) holds; in a mesh of disjoint convex
+ * cells no ray sees them in the other order): both triangles of visible cells
+ * with exact planes (the eye strictly inside f's, strictly outside e's),
+ * @p fAfter = DepthAfter(f's rear) < @p eBefore = DepthBefore(e's front),
+ * and the centroid of either triangle inside both by more than the margin.
+ * False when it cannot tell.
+ */
+bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double eBefore);
+}
+
+#endif
