@@ -19,7 +19,7 @@ namespace hovStein
 namespace
 {
 /// Tiles about the mean extent of the faces, within the view window, at most ~4 per face.
-PairGrid MakePairGrid(const View& v, const std::vector<FaceData>& data)
+PairGrid MakePairGrid(const View& v, const FillBuffer<FaceData>& data)
 {
   double r[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   for (const FaceData& d : data)
@@ -87,7 +87,7 @@ struct TileRecord
 struct TileLists
 {
   std::vector<vtkIdType> Start[2]; ///< per tile + 1
-  std::vector<vtkIdType> Items[2];
+  FillBuffer<vtkIdType> Items[2];
 };
 
 /// Bands of tile rows for BinFaces: band b holds the tiles [Start(b), Start(b + 1)).
@@ -99,7 +99,7 @@ struct TileBands
   /// Calls fn(face, roles, tile) for the tiles of band @p b, face by face.
   template <class Fn>
   void ForTiles(vtkIdType b, const std::vector<ViewFace>& faces,
-    const std::vector<TileRange>& ranges, Fn&& fn) const
+    const FillBuffer<TileRange>& ranges, Fn&& fn) const
   {
     const int y0 = static_cast<int>(this->Start(b) / this->Grid.NX);
     const int y1 = static_cast<int>(this->Start(b + 1) / this->Grid.NX);
@@ -125,7 +125,7 @@ struct TileBands
  * out in face order whatever the number of bands and threads.
  */
 void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
-  const std::vector<TileRange>& ranges, TileLists& lists)
+  const FillBuffer<TileRange>& ranges, TileLists& lists)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   // Enough bands to balance the threads (each scans all faces).
@@ -182,8 +182,8 @@ using CellPairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
 /// The per-view buffers (kept between views).
 struct BoundaryPairs::Buffers
 {
-  std::vector<FaceData> Data;
-  std::vector<TileRange> Ranges;
+  FillBuffer<FaceData> Data;
+  FillBuffer<TileRange> Ranges;
   TileLists Lists;
   std::vector<CellPairs> BlockPairs;
   std::vector<vtkIdType> BlockCount, BlockDropped;
@@ -195,7 +195,7 @@ struct BoundaryPairs::Buffers
   HullCache Hulls;
   /// EXIT, ENTRY records per tile (CSR of Lists.Start; the ENTRY records of
   /// each tile by decreasing Far where the faces overlap deeply).
-  std::vector<TileRecord> Records[2];
+  FillBuffer<TileRecord> Records[2];
   /// Where the faces overlap deeply, per tile: the largest Depth - Far of its
   /// ENTRY records, rounded up (a record's Depth is at most its Far plus that).
   std::vector<double> Thick;
@@ -536,8 +536,8 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
   // streams through them and rejects almost every candidate on them).
   for (int k = 0; k < 2; ++k)
   {
-    const std::vector<vtkIdType>& items = b.Lists.Items[k];
-    std::vector<TileRecord>& records = b.Records[k];
+    const FillBuffer<vtkIdType>& items = b.Lists.Items[k];
+    FillBuffer<TileRecord>& records = b.Records[k];
     records.resize(items.size());
     vtkSMPTools::For(0, static_cast<vtkIdType>(items.size()), 4096,
       [&](vtkIdType begin, vtkIdType end) {

@@ -12,6 +12,8 @@
 #ifndef hovSteinPairGrid_h
 #define hovSteinPairGrid_h
 
+#include "hovSteinBuffers.h" // FillBuffer
+
 #include "vtkType.h" // vtkIdType
 
 #include <cmath>   // std::abs

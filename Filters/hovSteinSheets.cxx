@@ -129,7 +129,7 @@ int Root(std::vector<int>& parent, int a)
 }
 
 void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
-  const std::vector<ViewFace>& faces, const std::vector<FaceData>& data, const PairGrid& grid,
+  const std::vector<ViewFace>& faces, const FillBuffer<FaceData>& data, const PairGrid& grid,
   const vtkIdType* entryStart, const vtkIdType* entryFaces)
 {
   const vtkIdType nt = grid.NumberOfTiles();
@@ -273,7 +273,7 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
 
 void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
   const BoundaryAdjacency& adjacency, const std::vector<ViewFace>& faces,
-  const std::vector<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
+  const FillBuffer<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
   const vtkIdType* entryFaces)
 {
   this->Stats = SheetStats();

@@ -84,7 +84,7 @@ public:
    */
   void Build(const Geometry& g, const Topology& t, const View& v,
     const BoundaryAdjacency& adjacency, const std::vector<ViewFace>& faces,
-    const std::vector<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
+    const FillBuffer<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
     const vtkIdType* entryFaces);
 
   /**
@@ -109,7 +109,7 @@ public:
 
 private:
   void Cover(const View& v, const BoundaryAdjacency& adjacency,
-    const std::vector<ViewFace>& faces, const std::vector<FaceData>& data, const PairGrid& grid,
+    const std::vector<ViewFace>& faces, const FillBuffer<FaceData>& data, const PairGrid& grid,
     const vtkIdType* entryStart, const vtkIdType* entryFaces);
 
   int NX = 0;

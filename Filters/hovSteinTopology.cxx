@@ -168,38 +168,72 @@ void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
   }
 }
 
+/// The smallest corner id of face f of cell c (FaceKey(g, c, f)[0]).
+vtkIdType SmallestCorner(const Geometry& g, vtkIdType c, int f)
+{
+  const Shape& s = GetShape(g.Kinds[c]);
+  const vtkIdType* corners = g.CellCorners(c);
+  vtkIdType k = corners[s.Faces[f][0]];
+  for (int i = 1; i < s.FaceSize[f]; ++i)
+  {
+    k = std::min(k, corners[s.Faces[f][i]]);
+  }
+  return k;
+}
+
 /**
  * The faces of the supported cells (entries c * 8 + f) bucketed by their
- * smallest corner id (counting sort): bucket p is entries[start[p],
- * start[p + 1]).
+ * smallest corner id (counting sort, in parallel over blocks of cells with a
+ * count per block and point): bucket p is entries[start[p], start[p + 1]),
+ * in increasing entry order whatever the number of blocks.
  */
 void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<vtkIdType>& entries)
 {
   const vtkIdType n = g.NumberOfCells;
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
-  start.assign(numPoints + 1, 0);
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
-    for (int f = 0; f < numFaces; ++f)
+  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const vtkIdType numBlocks =
+    std::max<vtkIdType>(1, std::min<vtkIdType>(n, threads > 1 ? 2 * threads : 1));
+  auto forFaces = [&](vtkIdType block, auto&& fn) {
+    for (vtkIdType c = block * n / numBlocks; c < (block + 1) * n / numBlocks; ++c)
     {
-      ++start[FaceKey(g, c, f)[0] + 1];
+      const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
+      for (int f = 0; f < numFaces; ++f)
+      {
+        fn(c, f, SmallestCorner(g, c, f));
+      }
     }
-  }
+  };
+  // count[block * numPoints + p]: block's faces in bucket p, then its cursor there.
+  std::vector<vtkIdType> count(static_cast<size_t>(numBlocks) * numPoints, 0);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType block = b0; block < b1; ++block)
+    {
+      vtkIdType* mine = count.data() + block * numPoints;
+      forFaces(block, [&](vtkIdType, int, vtkIdType p) { ++mine[p]; });
+    }
+  });
+  start.assign(numPoints + 1, 0);
+  vtkIdType total = 0;
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
-    start[p + 1] += start[p];
-  }
-  entries.resize(start[numPoints]);
-  std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
-    for (int f = 0; f < numFaces; ++f)
+    start[p] = total;
+    for (vtkIdType block = 0; block < numBlocks; ++block)
     {
-      entries[cursor[FaceKey(g, c, f)[0]]++] = c * 8 + f;
+      const vtkIdType k = count[block * numPoints + p];
+      count[block * numPoints + p] = total;
+      total += k;
     }
   }
+  start[numPoints] = total;
+  entries.resize(total);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType block = b0; block < b1; ++block)
+    {
+      vtkIdType* cursor = count.data() + block * numPoints;
+      forFaces(block, [&](vtkIdType c, int f, vtkIdType p) { entries[cursor[p]++] = c * 8 + f; });
+    }
+  });
 }
 
 /**
@@ -252,8 +286,8 @@ void Topology::Build(const Geometry& g)
   {
     std::vector<vtkIdType> start, entries;
     BucketFaces(g, start, entries);
-    MatchFaces(g, start, entries, *this, chunks);
-  }
+      MatchFaces(g, start, entries, *this, chunks);
+    }
   this->Collect(g, chunks);
   this->BuildCellFaces(g);
   this->BuildBoundary(g);
