@@ -16,6 +16,7 @@
 
 namespace hovStein
 {
+static_assert(MaxIndexedCells <= VTK_ID_MAX / 2, "cell pairs carry 2 * cell + 1");
 namespace
 {
 /// Tiles about the mean extent of the faces, within the view window, at most ~4 per face.
@@ -186,7 +187,7 @@ struct BoundaryPairs::Buffers
   FillBuffer<TileRange> Ranges;
   TileLists Lists;
   std::vector<CellPairs> BlockPairs;
-  std::vector<vtkIdType> BlockCount, BlockDropped;
+  std::vector<vtkIdType> BlockCount, BlockDropped, BlockKept;
   CellPairs Pairs;
   std::vector<vtkIdType> PairStart, Second; ///< FindCellPairs' pairs bucketed by first cell
   std::vector<std::uint32_t> Kept;          ///< per bucket: distinct second cells
@@ -230,6 +231,7 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
   b.BlockPairs.resize(numBlocks);
   b.BlockCount.resize(numBlocks);
   b.BlockDropped.resize(numBlocks);
+  b.BlockKept.resize(numBlocks);
   std::vector<std::vector<BoundaryPairs::FacePair>> logs(log ? numBlocks : 0);
   const vtkIdType* exitStart = b.Lists.Start[0].data();
   const vtkIdType* entryStart = b.Lists.Start[1].data();
@@ -240,7 +242,7 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
       CellPairs found; // local (no shared cache lines), with the block's old capacity
       found.swap(b.BlockPairs[blk]);
       found.clear();
-      vtkIdType count = 0, dropped = 0;
+      vtkIdType count = 0, dropped = 0, kept = 0;
       for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
       {
         const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
@@ -308,12 +310,14 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
                 count += skip; // the lower-left tile, separated, skipped it
               }
             }
+            ++kept; // found here, once
             const FaceData& DF = b.Data[F.Face];
             const FaceData& DG = b.Data[G->Face];
             if (!ApartOnScreen(DF, DG) && SomeCornerOutside(g, DF, DG) &&
               SomeCornerOutside(g, DG, DF))
             {
-              // The second cell times 2, plus 1 if the edge needs no test.
+              // The second cell times 2, plus 1 if the edge needs no test
+              // (no overflow: see the static_assert at the top).
               found.emplace_back(
                 F.Cell, 2 * G->Cell + (certify && InFrontOnScreen(DF, F.Far, DG, G->Far)));
             }
@@ -323,12 +327,14 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
       b.BlockPairs[blk].swap(found);
       b.BlockCount[blk] = count;
       b.BlockDropped[blk] = dropped;
+      b.BlockKept[blk] = kept;
     }
   });
   for (vtkIdType blk = 0; blk < numBlocks; ++blk)
   {
     stats.FacePairs += b.BlockCount[blk];
     stats.DroppedFacePairs += b.BlockDropped[blk];
+    stats.KeptFacePairs += b.BlockKept[blk];
   }
   for (const auto& blockLog : logs)
   {

@@ -76,10 +76,17 @@ struct SheetStats
 /// Counters of step 3.
 struct PairStats
 {
-  vtkIdType FacePairs = 0; ///< face pairs with overlapping extents and depth ranges
-  /// Of those, never consecutive along a ray (covering sheets; before the plane tests).
+  /// Face pairs with overlapping extents and depth ranges that the search met
+  /// (where it skips the faces behind covering sheets, not those).
+  vtkIdType FacePairs = 0;
+  /// Of those, never consecutive along a ray (covering sheets; before the
+  /// plane tests); 0 where the search skips (it skips every pair it would drop).
   vtkIdType DroppedFacePairs = 0;
-  vtkIdType Tests = 0; ///< distinct cell pairs tested with Obstructs()
+  /// Face pairs passed on to the screen and plane tests, each once: FacePairs
+  /// less DroppedFacePairs, whether the search skips or not.
+  vtkIdType KeptFacePairs = 0;
+  /// Distinct cell pairs tested with Obstructs() (not those a face pair proves).
+  vtkIdType Tests = 0;
   SheetStats Sheets;
 };
 

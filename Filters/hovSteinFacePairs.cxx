@@ -10,26 +10,32 @@ namespace hovStein
 {
 namespace
 {
-/// The largest side of the extents of @p d and @p e.
-double Extent(const FaceData& d, const FaceData& e)
+/**
+ * A distance margin on the screen for the faces @p d and @p e: @p relative
+ * times the largest side of their extents, plus 1e-9 of the magnitude their
+ * screen points' rounding is relative to (FaceData::ScreenScale).
+ */
+double Margin(const FaceData& d, const FaceData& e, double relative)
 {
-  return std::max({ double(d.Box[1]) - d.Box[0], double(d.Box[3]) - d.Box[2],
-    double(e.Box[1]) - e.Box[0], double(e.Box[3]) - e.Box[2] });
+  return relative *
+    std::max({ double(d.Box[1]) - d.Box[0], double(d.Box[3]) - d.Box[2],
+      double(e.Box[1]) - e.Box[0], double(e.Box[3]) - e.Box[2] }) +
+    1e-9 * std::max(d.ScreenScale, e.ScreenScale);
 }
 
 /**
  * Where @p x lies from edge @p k of the screen triangle @p t: +1 inside (the
- * third corner's side) by more than 1e-9 @p extent, -1 outside by more, 0
- * near the line or for an edge without area.
+ * third corner's side) by more than @p margin, -1 outside by more, 0 near the
+ * line or for an edge without area.
  */
-int EdgeSide(const double t[3][2], int k, const double x[2], double extent)
+int EdgeSide(const double t[3][2], int k, const double x[2], double margin)
 {
   const double* p = t[k];
   const double* q = t[(k + 1) % 3];
   const double ex = q[0] - p[0], ey = q[1] - p[1];
   const double c = ex * (t[(k + 2) % 3][1] - p[1]) - ey * (t[(k + 2) % 3][0] - p[0]);
   const double s = ex * (x[1] - p[1]) - ey * (x[0] - p[0]); // distance * |q - p|
-  const double tol = 1e-9 * extent * (std::abs(ex) + std::abs(ey));
+  const double tol = margin * (std::abs(ex) + std::abs(ey)); // >= margin * |q - p|
   if (c == 0 || std::abs(s) <= tol)
   {
     return 0;
@@ -63,6 +69,7 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
   double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   d.Front = VTK_DOUBLE_MAX;
   d.Rear = -VTK_DOUBLE_MAX;
+  d.ScreenScale = v.Frame.Parallel ? 3 * g.MaxAbsCoordinate : 1.0;
   for (int i = 0; i < d.NumIds; ++i)
   {
     const double* p = v.Proj.data() + 3 * d.Ids[i];
@@ -70,6 +77,10 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
     {
       d.Corners[i][0] = p[0];
       d.Corners[i][1] = p[1];
+    }
+    if (!v.Frame.Parallel)
+    {
+      d.ScreenScale = std::max(d.ScreenScale, 1 + std::abs(p[0]) + std::abs(p[1]));
     }
     box[0] = std::min(box[0], p[0]);
     box[1] = std::max(box[1], p[0]);
@@ -113,7 +124,7 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e)
   {
     return false;
   }
-  const double extent = Extent(d, e);
+  const double margin = Margin(d, e, 1e-9);
   for (int t = 0; t < 2; ++t)
   {
     const FaceData& a = t ? e : d;
@@ -123,7 +134,7 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e)
       bool apart = true;
       for (int j = 0; j < 3 && apart; ++j)
       {
-        apart = EdgeSide(a.Corners, k, b.Corners[j], extent) < 0;
+        apart = EdgeSide(a.Corners, k, b.Corners[j], margin) < 0;
       }
       if (apart)
       {
@@ -140,7 +151,9 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
   {
     return false;
   }
-  const double extent = Extent(f, e);
+  // Inside by 1e-4 of the extents: the overlap holds a disc far larger than
+  // what Obstructs() treats as touching (1e-10 of the cells' hull areas).
+  const double margin = Margin(f, e, 1e-4);
   double c[2][2];
   for (int t = 0; t < 2; ++t)
   {
@@ -169,7 +182,7 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
     bool inside = true;
     for (int k = 0; k < 6 && inside; ++k)
     {
-      inside = EdgeSide(k < 3 ? f.Corners : e.Corners, k % 3, x, extent) > 0;
+      inside = EdgeSide(k < 3 ? f.Corners : e.Corners, k % 3, x, margin) > 0;
     }
     if (inside)
     {

@@ -7,8 +7,9 @@
  *
  * Screen points, extents and depths are the view's projected doubles
  * (View::Proj), in which the whole sort reasons; the screen tests keep a
- * margin of 1e-9 of the faces' extents on their safe side, far above the
- * projection's rounding.
+ * margin on their safe side: 1e-9 of the faces' extents (1e-4 to prove an
+ * edge) plus 1e-9 of the magnitude the projection's rounding is relative to
+ * (FaceData::ScreenScale), far above that rounding.
  */
 #ifndef hovSteinFacePairs_h
 #define hovSteinFacePairs_h
@@ -43,11 +44,14 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e);
 /**
  * An open set of view rays leaves a cell through the EXIT face @p f and later
  * enters another through the ENTRY face @p e, so that f's cell must be drawn
- * after e's (Obstructs(f's cell, e's cell) holds; in a mesh of disjoint convex
- * cells no ray sees them in the other order): both triangles of visible cells
+ * after e's (some ray meets it first; in a mesh of disjoint convex cells none
+ * meets them in the other order, and the overlap, a disc of 1e-4 of the
+ * extents, is far above what Obstructs() treats as touching, so Obstructs()
+ * holds as well): both triangles of visible cells
  * with exact planes (the eye strictly inside f's, strictly outside e's),
  * @p fAfter = DepthAfter(f's rear) < @p eBefore = DepthBefore(e's front),
- * and the centroid of either triangle inside both by more than the margin.
+ * and a point inside both by more than the margin (tried: the centroids,
+ * their midpoint, the centre of the extents' overlap).
  * False when it cannot tell.
  */
 bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double eBefore);

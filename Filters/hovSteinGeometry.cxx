@@ -298,6 +298,11 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   this->Diagonal = lo[0] <= hi[0] ? std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
                                       (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]))
                                   : 0.0;
+  this->MaxAbsCoordinate = 0;
+  for (int k = 0; k < 3 && lo[0] <= hi[0]; ++k)
+  {
+    this->MaxAbsCoordinate = std::max({ this->MaxAbsCoordinate, std::abs(lo[k]), std::abs(hi[k]) });
+  }
 
   // Pass 1: kinds and corner counts.
   CellSource source(input);

@@ -86,6 +86,7 @@ struct Geometry
   vtkIdType NumberOfBadCells = 0;
   vtkIdType FirstBadCell = -1;
   double Diagonal = 0; ///< of the world bounding box of the points
+  double MaxAbsCoordinate = 0; ///< largest |coordinate| of the finite world points
 
   /// Build from @p input with points mapped by @p model (object to world; may be null).
   void Build(vtkDataSet* input, vtkMatrix4x4* model);

@@ -414,6 +414,7 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   stats.Tests = pairStats.Tests;
   stats.FacePairs = pairStats.FacePairs;
   stats.DroppedFacePairs = pairStats.DroppedFacePairs;
+  stats.KeptFacePairs = pairStats.KeptFacePairs;
   stats.ObstructEdges = static_cast<vtkIdType>(this->Extra.size());
   this->Graph.AddExtraEdges(this->Extra, n);
   TopologicalOrder(this->Graph, g, v, numOrdered, order, stats);

@@ -56,9 +56,10 @@ namespace hovStein
 {
 struct GraphStats
 {
-  vtkIdType Tests = 0;         ///< Obstructs() calls
-  vtkIdType FacePairs = 0;     ///< boundary face pairs with overlapping extents and depths
-  vtkIdType DroppedFacePairs = 0; ///< of those, dropped by covering sheets
+  vtkIdType Tests = 0;         ///< Obstructs() calls (PairStats::Tests)
+  vtkIdType FacePairs = 0;        ///< PairStats::FacePairs
+  vtkIdType DroppedFacePairs = 0; ///< PairStats::DroppedFacePairs
+  vtkIdType KeptFacePairs = 0;    ///< PairStats::KeptFacePairs
   vtkIdType FaceEdges = 0;     ///< edges from interior faces
   vtkIdType ObstructEdges = 0; ///< edges from Obstructs()
   vtkIdType Undecided = 0;     ///< interior faces left to Obstructs()
@@ -118,6 +119,12 @@ public:
   void SetSheetCulling(int mode) { this->Boundary.SheetCulling = mode; }
   /// Edges proved by a face pair without Obstructs() (default on; off for tests).
   void SetCertifiedEdges(bool on) { this->Boundary.CertifiedEdges = on; }
+  /// The last view's edges from boundary face pairs: (behind, in front),
+  /// sorted by the second (tests).
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& GetObstructEdges() const
+  {
+    return this->Extra;
+  }
   /// Where to write each view's dropped face pairs (tests; null: nowhere).
   void SetDroppedLog(std::vector<BoundaryPairs::FacePair>* log) { this->Boundary.DroppedLog = log; }
 

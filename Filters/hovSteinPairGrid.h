@@ -32,6 +32,10 @@ struct FaceData
   std::uint8_t Exact;   ///< 1: Triple spans the exact face plane
   std::uint8_t Screen;  ///< 1: Box, depths and Corners are the face's (its cell is visible)
   double Corners[3][2]; ///< screen points of the first three corners if Screen
+  /// If Screen: the magnitude the rounding of Corners is relative to (the
+  /// world coordinates in a parallel view, 1 + |screen coordinates| in a
+  /// perspective one, whose screen points are tangents).
+  double ScreenScale;
 };
 
 /**

@@ -290,7 +290,10 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
   this->FaceOf.assign(nb, -1);
   if (adjacency.Across.size() != 4 * static_cast<size_t>(nb))
   {
-    return; // no adjacency (too many boundary faces): no sheets
+    // No adjacency (too many boundary faces): no sheets, no covers.
+    this->CoverStart.assign(grid.NumberOfTiles() + 1, 0);
+    this->Covers.clear();
+    return;
   }
   const vtkIdType nf = static_cast<vtkIdType>(faces.size());
   vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {

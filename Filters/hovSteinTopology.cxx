@@ -192,8 +192,8 @@ void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<v
   const vtkIdType n = g.NumberOfCells;
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
-  const vtkIdType numBlocks =
-    std::max<vtkIdType>(1, std::min<vtkIdType>(n, threads > 1 ? 2 * threads : 1));
+  // At most 4 blocks: the counts take numBlocks times the points' ids.
+  const vtkIdType numBlocks = std::max<vtkIdType>(1, std::min<vtkIdType>({ n, 2 * threads, 4 }));
   auto forFaces = [&](vtkIdType block, auto&& fn) {
     for (vtkIdType c = block * n / numBlocks; c < (block + 1) * n / numBlocks; ++c)
     {
@@ -286,8 +286,8 @@ void Topology::Build(const Geometry& g)
   {
     std::vector<vtkIdType> start, entries;
     BucketFaces(g, start, entries);
-      MatchFaces(g, start, entries, *this, chunks);
-    }
+    MatchFaces(g, start, entries, *this, chunks);
+  }
   this->Collect(g, chunks);
   this->BuildCellFaces(g);
   this->BuildBoundary(g);

@@ -241,7 +241,8 @@ public:
    * - GetCycleCells(): ids of the cells involved in cycles (each id once).
    * - NumberOfUnorderedCells: unsupported or invalid cells output first.
    * - NumberOfObstructsTests: pairs tested with Obstructs() (full tests,
-   *   not counting pairs skipped by depth or by last-comparison marks).
+   *   not counting pairs skipped by depth or by last-comparison marks, nor,
+   *   in the adjacency graph, those whose edge one boundary face pair proves).
    * - NumberOfMoves: cells moved to the head of the global list (merge).
    * - NumberOfGraphEdges: edges of the visibility DAG (adjacency graph),
    *   NumberOfBoundaryCells: cells with a boundary face (adjacency graph).
@@ -250,8 +251,9 @@ public:
    *   them dropped by BoundaryPairCulling (before the plane tests). Where the
    *   culling runs on deeply overlapping faces, the search skips, per EXIT
    *   face and tile, the ENTRY faces behind its nearest covering sheet: those
-   *   pairs are neither met nor counted. The difference, the pairs kept for
-   *   the plane tests, does not depend on that.
+   *   pairs are neither met nor counted (every pair it would drop is among
+   *   them, so NumberOfDroppedFacePairs is then 0). The difference, the pairs
+   *   kept for the screen and plane tests, does not depend on that.
    * - LastSortSeconds / LastSetupSeconds: wall time of the last sort and of
    *   the view-independent set-up it needed (0 when it was reused).
    */

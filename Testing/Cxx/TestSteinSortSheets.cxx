@@ -2,8 +2,9 @@
 // face pairs that a covering sheet of front-facing boundary faces separates on
 // every ray through both are not tested. On finned heatsinks (the benchmark's
 // mesh, small: fins one behind the other, the case the culling is for), on
-// the grid and with jittered points (bumpy fins: silhouettes inside the fins'
-// faces), and on the bundled bracket, from random perspective and parallel
+// the grid, with jittered points (bumpy fins: silhouettes inside the fins'
+// faces) and jittered far from the origin (3e5: the screen tests' margins
+// follow the coordinates), and on the bundled bracket, from random perspective and parallel
 // views, along the fins, grazing and from between two fins:
 // - with and without the culling, the order passes the independent ray/face
 //   oracle (hovSortOracle: every cell once, no violation) with no cycle;
@@ -15,12 +16,13 @@
 //   the heatsinks' views across the fins, not on the bracket;
 // - with the dropped-pair log (every candidate met and counted) and without
 //   it (the search skips, per EXIT face and tile, the ENTRY faces behind a
-//   covering sheet), the same face pairs are kept, the same cell pairs tested
-//   and the order is the same; with the log, the candidates are those of
-//   CULLING_OFF;
+//   covering sheet), the same face pairs are kept, each found once (the kept
+//   count is the candidates less the drops), the same cell pairs tested, the
+//   same edges made and the order is the same; with the log, the candidates
+//   are those of CULLING_OFF;
 // - the edges that single face pairs prove without Obstructs() (triangles
 //   overlapping on the screen, one entirely in front) are exactly those
-//   Obstructs() finds: the same order and edges with that shortcut off;
+//   Obstructs() finds: the same order and edge set with that shortcut off;
 // - every dropped face pair is checked on its own (12 rays each, by this
 //   test's own ray/triangle intersections): every sampled ray through the
 //   EXIT face F and then the ENTRY face G crosses another boundary face
@@ -189,8 +191,10 @@ bool SameWithoutCertificates(vtkUnstructuredGrid* grid, vtkCamera* cam, vtkIdTyp
   with.Sort(g, t, v, order[0], stats[0]);
   without.Sort(g, t, v, order[1], stats[1]);
   saved = stats[1].Tests - stats[0].Tests;
-  return order[0] == order[1] && stats[0].ObstructEdges == stats[1].ObstructEdges &&
-    stats[0].Tests <= stats[1].Tests;
+  auto withEdges = with.GetObstructEdges(), withoutEdges = without.GetObstructEdges();
+  std::sort(withEdges.begin(), withEdges.end());
+  std::sort(withoutEdges.begin(), withoutEdges.end());
+  return order[0] == order[1] && withEdges == withoutEdges && stats[0].Tests <= stats[1].Tests;
 }
 
 /// The dropped face pairs of one view and their check.
@@ -232,10 +236,13 @@ DropCheck CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam)
   check.Drops = stats.DroppedFacePairs;
   check.Logged = static_cast<vtkIdType>(log.size());
   check.SkippingMet = skippingStats.FacePairs;
+  // Each kept pair found once: the kept count is the candidates less the
+  // drops (every candidate is met while logging), with and without skipping.
   check.SameAsSkipping = order == skippingOrder && stats.Tests == skippingStats.Tests &&
-    stats.ObstructEdges == skippingStats.ObstructEdges &&
-    stats.FacePairs - stats.DroppedFacePairs ==
-      skippingStats.FacePairs - skippingStats.DroppedFacePairs &&
+    sorter.GetObstructEdges() == skipping.GetObstructEdges() &&
+    stats.KeptFacePairs == stats.FacePairs - stats.DroppedFacePairs &&
+    skippingStats.KeptFacePairs == stats.KeptFacePairs &&
+    skippingStats.FacePairs - skippingStats.DroppedFacePairs == stats.KeptFacePairs &&
     skippingStats.FacePairs <= stats.FacePairs;
   // Every boundary face as a triangle fan of its corners.
   std::vector<std::array<vtkIdType, 4>> boundary;
@@ -346,10 +353,25 @@ int TestSteinSortSheets(int argc, char* argv[])
   OracleOptions options;
   options.RaysX = options.RaysY = 110;
   options.RandomRays = 3000;
-  for (const double jitter : { 0.0, 0.12 })
+  for (const int variant : { 0, 1, 2 })
   {
-    const std::string name = jitter > 0 ? "jittered heatsink" : "heatsink";
+    const double jitter = variant ? 0.12 : 0.0;
+    const std::string name =
+      variant == 2 ? "far jittered heatsink" : (variant ? "jittered heatsink" : "heatsink");
     vtkSmartPointer<vtkUnstructuredGrid> mesh = JitteredHeatsink(jitter, 77);
+    if (variant == 2)
+    {
+      // Far from the origin: the screen tests' margins must follow the
+      // coordinates' magnitude (parallel views project them unshifted).
+      vtkPoints* points = mesh->GetPoints();
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        points->GetPoint(i, x);
+        points->SetPoint(i, x[0] + 3.0e5, x[1] - 1.25e5, x[2] + 2.0e5);
+      }
+      mesh->GetPoints()->Modified();
+    }
     double b[6];
     mesh->GetBounds(b);
     Totals totals;
