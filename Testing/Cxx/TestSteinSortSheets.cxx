@@ -170,6 +170,20 @@ double Hit(const double o[3], const double d[3], const double* a, const double* 
   return (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
 }
 
+/// The sort's geometry, topology and view of @p grid seen by @p cam.
+struct SortSetup
+{
+  hovStein::Geometry G;
+  hovStein::Topology T;
+  hovStein::View V;
+  SortSetup(vtkUnstructuredGrid* grid, vtkCamera* cam)
+  {
+    this->G.Build(grid, nullptr);
+    this->T.Build(this->G);
+    this->V.Setup(this->G, cam, false);
+  }
+};
+
 /**
  * Sorts one view with and without the edges that face pairs prove
  * (InFrontOnScreen): the same order and Obstructs() edges must come out
@@ -178,12 +192,10 @@ double Hit(const double o[3], const double d[3], const double* a, const double* 
  */
 bool SameWithoutCertificates(vtkUnstructuredGrid* grid, vtkCamera* cam, vtkIdType& saved)
 {
-  hovStein::Geometry g;
-  g.Build(grid, nullptr);
-  hovStein::Topology t;
-  t.Build(g);
-  hovStein::View v;
-  v.Setup(g, cam, false);
+  const SortSetup setup(grid, cam);
+  const hovStein::Geometry& g = setup.G;
+  const hovStein::Topology& t = setup.T;
+  const hovStein::View& v = setup.V;
   hovStein::GraphSort with, without;
   without.SetCertifiedEdges(false);
   std::vector<vtkIdType> order[2];
@@ -216,12 +228,10 @@ struct DropCheck
  */
 DropCheck CheckDrops(vtkUnstructuredGrid* grid, vtkCamera* cam)
 {
-  hovStein::Geometry g;
-  g.Build(grid, nullptr);
-  hovStein::Topology t;
-  t.Build(g);
-  hovStein::View v;
-  v.Setup(g, cam, false);
+  const SortSetup setup(grid, cam);
+  const hovStein::Geometry& g = setup.G;
+  const hovStein::Topology& t = setup.T;
+  const hovStein::View& v = setup.V;
   hovStein::GraphSort sorter, skipping;
   sorter.SetSheetCulling(hovStein::BoundaryPairs::CullAlways);
   skipping.SetSheetCulling(hovStein::BoundaryPairs::CullAlways);
