@@ -5,7 +5,6 @@
 #include "hovSteinHulls.h"     // HullCache
 #include "hovSteinObstructs.h" // Obstruction
 #include "hovSteinPairGrid.h"  // FaceData, PairGrid
-#include "hovSteinRounding.h"  // FloatDown, FloatUp
 #include "hovSteinSheets.h"    // BoundaryAdjacency, SheetCover
 
 #include "vtkSMPTools.h"
@@ -19,46 +18,6 @@ namespace hovStein
 static_assert(MaxIndexedCells <= VTK_ID_MAX / 2, "cell pairs carry 2 * cell + 1");
 namespace
 {
-/// Tiles about the mean extent of the faces, within the view window, at most ~4 per face.
-PairGrid MakePairGrid(const View& v, const FillBuffer<FaceData>& data)
-{
-  double r[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (const FaceData& d : data)
-  {
-    r[0] = std::min(r[0], double(d.Box[0]));
-    r[1] = std::max(r[1], double(d.Box[1]));
-    r[2] = std::min(r[2], double(d.Box[2]));
-    r[3] = std::max(r[3], double(d.Box[3]));
-  }
-  const double* win = v.Frame.Window;
-  PairGrid grid;
-  grid.X0 = std::max(r[0], win[0]);
-  grid.Y0 = std::max(r[2], win[2]);
-  const double width = std::min(r[1], win[1]) - grid.X0, height = std::min(r[3], win[3]) - grid.Y0;
-  double w = 0, h = 0;
-  for (const FaceData& d : data)
-  {
-    w += std::min(double(d.Box[1]) - d.Box[0], width);
-    h += std::min(double(d.Box[3]) - d.Box[2], height);
-  }
-  const double count = std::max<double>(1, static_cast<double>(data.size()));
-  w /= count;
-  h /= count;
-  if (!(width > 0 && height > 0 && w > 0 && h > 0) || !std::isfinite(width * height))
-  {
-    return grid; // one tile
-  }
-  double nx = width / w, ny = height / h;
-  const double scale = std::sqrt(std::min(1.0, 4 * count / (nx * ny)));
-  nx = std::min(4096.0, std::max(1.0, std::floor(nx * scale)));
-  ny = std::min(4096.0, std::max(1.0, std::floor(ny * scale)));
-  grid.NX = static_cast<int>(nx);
-  grid.NY = static_cast<int>(ny);
-  grid.DX = width / grid.NX;
-  grid.DY = height / grid.NY;
-  return grid;
-}
-
 inline bool Disjoint(const float* a, const float* b)
 {
   return a[1] <= b[0] || b[1] <= a[0] || a[3] <= b[2] || b[3] <= a[2];
@@ -277,7 +236,8 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
               continue;
             }
             // The tiles of the intersection of the extents (both faces are in each).
-            const int x0 = std::max(F.Tiles[0], G->Tiles[0]), y0 = std::max(F.Tiles[2], G->Tiles[2]);
+            const int x0 = std::max(F.Tiles[0], G->Tiles[0]);
+            const int y0 = std::max(F.Tiles[2], G->Tiles[2]);
             const bool owner = x0 == ix && y0 == iy;
             if (!sheets && !owner)
             {
@@ -290,7 +250,8 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
               const int y1 = std::min(F.Tiles[3], G->Tiles[3]);
               if (G->Far > nearest) // separated in this tile
               {
-                if (owner && ((x0 == x1 && y0 == y1) || sheets->Separates(x0, x1, y0, y1, F.Far, G->Far)))
+                if (owner &&
+                  ((x0 == x1 && y0 == y1) || sheets->Separates(x0, x1, y0, y1, F.Far, G->Far)))
                 {
                   ++dropped; // never consecutive along a ray (hovSteinSheets.h)
                   if (log)

@@ -104,7 +104,8 @@ bool SomeCornerOutside(const Geometry& g, const FaceData& d, const FaceData& oth
   const double *a = g.Point(d.Triple[0]), *b = g.Point(d.Triple[1]), *c = g.Point(d.Triple[2]);
   const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
   const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+  const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+    u[0] * w[1] - u[1] * w[0] };
   const double scale = g.Diagonal + std::max({ std::abs(a[0]), std::abs(a[1]), std::abs(a[2]) });
   const double margin = 1e-9 * scale * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   for (int i = 0; i < other.NumIds; ++i)

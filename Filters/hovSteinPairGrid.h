@@ -69,6 +69,11 @@ struct PairGrid
   }
   vtkIdType NumberOfTiles() const { return static_cast<vtkIdType>(this->NX) * this->NY; }
 };
+
+struct View;
+/// Tiles about the mean extent of the faces @p data, within the view
+/// window of @p v, at most ~4 per face.
+PairGrid MakePairGrid(const View& v, const FillBuffer<FaceData>& data);
 }
 
 #endif
