@@ -112,7 +112,7 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
     {
       start[i + 1] += start[i];
     }
-    lists.Items[k].resize(start[nt]);
+    Refill(lists.Items[k], start[nt]);
   }
   vtkSMPTools::For(0, bands.Count, 1, [&](vtkIdType b0, vtkIdType b1) {
     std::vector<vtkIdType> cursor[2];
@@ -482,7 +482,7 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
     return;
   }
   Buffers& b = *this->B;
-  b.Data.resize(nf); // every record is filled
+  Refill(b.Data, nf); // every record is filled
   vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -490,7 +490,7 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
     }
   });
   const PairGrid grid = MakePairGrid(v, b.Data);
-  b.Ranges.resize(nf);
+  Refill(b.Ranges, nf);
   vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
@@ -505,7 +505,7 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
   {
     const FillBuffer<vtkIdType>& items = b.Lists.Items[k];
     FillBuffer<TileRecord>& records = b.Records[k];
-    records.resize(items.size());
+    Refill(records, items.size());
     vtkSMPTools::For(0, static_cast<vtkIdType>(items.size()), 4096,
       [&](vtkIdType begin, vtkIdType end) {
         for (vtkIdType i = begin; i < end; ++i)

@@ -53,6 +53,22 @@ struct DefaultInitAllocator : std::allocator<T>
 /// A vector filled completely by its user after each resize().
 template <class T>
 using FillBuffer = std::vector<T, DefaultInitAllocator<T>>;
+
+/**
+ * Sizes @p buffer to @p n elements whose old values are not needed: when it
+ * must grow, the old storage is freed first (nothing is copied, no two
+ * copies at once) and 1/8 more is reserved for the next views.
+ */
+template <class T>
+void Refill(FillBuffer<T>& buffer, size_t n)
+{
+  if (n > buffer.capacity())
+  {
+    FillBuffer<T>().swap(buffer);
+    buffer.reserve(n + n / 8);
+  }
+  buffer.resize(n);
+}
 }
 
 #endif
