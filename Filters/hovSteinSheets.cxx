@@ -96,21 +96,10 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
 
 namespace
 {
-/// The screen points (x, y) of the triangle @p d's corners.
-void ScreenTriangle(const View& v, const FaceData& d, double p[3][2])
+/// The point @p c strictly inside the projected triangle @p d (exact; d.Screen).
+bool StrictlyInside(const FaceData& d, const double c[2])
 {
-  for (int i = 0; i < 3; ++i)
-  {
-    p[i][0] = v.Proj[3 * d.Ids[i]];
-    p[i][1] = v.Proj[3 * d.Ids[i] + 1];
-  }
-}
-
-/// The point @p c strictly inside the projected triangle @p d (exact).
-bool StrictlyInside(const View& v, const FaceData& d, const double c[2])
-{
-  double p[3][2];
-  ScreenTriangle(v, d, p);
+  const double(*p)[2] = d.Corners;
   const int s0 = hov::Orient2d(p[0], p[1], c), s1 = hov::Orient2d(p[1], p[2], c);
   const int s2 = hov::Orient2d(p[2], p[0], c);
   return s0 != 0 && s0 == s1 && s1 == s2;
@@ -128,7 +117,7 @@ int Root(std::vector<int>& parent, int a)
 }
 }
 
-void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
+void SheetCover::Cover(const BoundaryAdjacency& adjacency,
   const std::vector<ViewFace>& faces, const FillBuffer<FaceData>& data, const PairGrid& grid,
   const vtkIdType* entryStart, const vtkIdType* entryFaces)
 {
@@ -218,8 +207,8 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
             }
             // The edge's extents, widened against the rounding of the
             // projection (1e-9 of the coordinates and the grid's span).
-            const double* p = v.Proj.data() + 3 * d.Ids[e];
-            const double* q = v.Proj.data() + 3 * d.Ids[(e + 1) % 3];
+            const double* p = d.Corners[e];
+            const double* q = d.Corners[(e + 1) % 3];
             const double x0 = std::min(p[0], q[0]), x1 = std::max(p[0], q[0]);
             const double y0 = std::min(p[1], q[1]), y1 = std::max(p[1], q[1]);
             const double mx = 1e-9 * (std::max(std::abs(x0), std::abs(x1)) + spanX);
@@ -229,7 +218,7 @@ void SheetCover::Cover(const View& v, const BoundaryAdjacency& adjacency,
           }
           if (!inside[r])
           {
-            inside[r] = StrictlyInside(v, d, centre);
+            inside[r] = StrictlyInside(d, centre);
           }
         }
         const size_t before = covers.size();
@@ -301,15 +290,12 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
     {
       const ViewFace& vf = faces[i];
       const FaceData& d = data[i];
-      if (vf.Boundary < 0 || vf.Roles != 2 || v.Status[vf.Cell] != StatusVisible ||
-        d.NumIds != 3 || t.Boundary[vf.Boundary].Cell != vf.Cell ||
+      if (vf.Boundary < 0 || vf.Roles != 2 || !d.Screen || d.NumIds != 3 || t.Boundary[vf.Boundary].Cell != vf.Cell ||
         t.Boundary[vf.Boundary].Face != vf.Face || t.Boundary[vf.Boundary].Mode != FaceExact)
       {
         continue;
       }
-      double p[3][2];
-      ScreenTriangle(v, d, p);
-      if (hov::Orient2d(p[0], p[1], p[2]) == facing)
+      if (hov::Orient2d(d.Corners[0], d.Corners[1], d.Corners[2]) == facing)
       {
         this->FaceOf[vf.Boundary] = static_cast<std::int32_t>(i);
       }
@@ -333,7 +319,7 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
       this->Border[k] = border;
     }
   });
-  this->Cover(v, adjacency, faces, data, grid, entryStart, entryFaces);
+  this->Cover(adjacency, faces, data, grid, entryStart, entryFaces);
 }
 
 double SheetCover::NearestRear(vtkIdType tile, double after) const

@@ -108,7 +108,7 @@ public:
   const SheetStats& GetStats() const { return this->Stats; }
 
 private:
-  void Cover(const View& v, const BoundaryAdjacency& adjacency,
+  void Cover(const BoundaryAdjacency& adjacency,
     const std::vector<ViewFace>& faces, const FillBuffer<FaceData>& data, const PairGrid& grid,
     const vtkIdType* entryStart, const vtkIdType* entryFaces);
 
