@@ -10,16 +10,23 @@ namespace hovStein
 {
 namespace
 {
+/// The larger side of the screen extents of the triangle @p d's Corners.
+double CornerExtent(const FaceData& d)
+{
+  const double(*p)[2] = d.Corners;
+  return std::max(std::max({ p[0][0], p[1][0], p[2][0] }) - std::min({ p[0][0], p[1][0], p[2][0] }),
+    std::max({ p[0][1], p[1][1], p[2][1] }) - std::min({ p[0][1], p[1][1], p[2][1] }));
+}
+
 /**
- * A distance margin on the screen for the faces @p d and @p e: @p relative
- * times the largest side of their extents, plus 1e-9 of the magnitude their
- * screen points' rounding is relative to (FaceData::ScreenScale).
+ * A distance margin on the screen for the screen triangles @p d and @p e:
+ * @p relative times the largest side of their extents, plus 1e-9 of the
+ * magnitude their screen points' rounding is relative to
+ * (FaceData::ScreenScale). Reads only the faces' first cache line.
  */
 double Margin(const FaceData& d, const FaceData& e, double relative)
 {
-  return relative *
-    std::max({ double(d.Box[1]) - d.Box[0], double(d.Box[3]) - d.Box[2],
-      double(e.Box[1]) - e.Box[0], double(e.Box[3]) - e.Box[2] }) +
+  return relative * std::max(CornerExtent(d), CornerExtent(e)) +
     1e-9 * std::max(d.ScreenScale, e.ScreenScale);
 }
 
@@ -56,7 +63,15 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
   d.Exact = (g.FaceCode(c, vf.Face) & 3) == FaceExact && vf.Roles != 3;
   if (d.Exact)
   {
-    g.ExactTriple(c, vf.Face, d.Triple);
+    // The exact plane's corners are corners of the face: their places in Ids.
+    vtkIdType triple[3];
+    g.ExactTriple(c, vf.Face, triple);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int at = static_cast<int>(std::find(d.Ids, d.Ids + d.NumIds, triple[k]) - d.Ids);
+      d.TripleAt[k] = static_cast<std::uint8_t>(at);
+      d.Exact = d.Exact && at < d.NumIds; // (always found; if not: no exact plane)
+    }
   }
   d.Screen = v.Status[c] == StatusVisible;
   if (!d.Screen)
@@ -101,7 +116,9 @@ bool SomeCornerOutside(const Geometry& g, const FaceData& d, const FaceData& oth
   {
     return true;
   }
-  const double *a = g.Point(d.Triple[0]), *b = g.Point(d.Triple[1]), *c = g.Point(d.Triple[2]);
+  const double* a = g.Point(d.Ids[d.TripleAt[0]]);
+  const double* b = g.Point(d.Ids[d.TripleAt[1]]);
+  const double* c = g.Point(d.Ids[d.TripleAt[2]]);
   const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
   const double w[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
   const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],

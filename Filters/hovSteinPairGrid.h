@@ -21,22 +21,28 @@
 
 namespace hovStein
 {
-/// Per-view data of one face of the pair search: screen extents, depth range, corners.
-struct FaceData
+/**
+ * Per-view data of one face of the pair search: screen corners, extents, depth
+ * range, corner ids. Two cache lines: the first holds all that the screen
+ * tests read (ApartOnScreen, InFrontOnScreen, the covering sheets), so a test
+ * on a pair of faces met in random order loads one line of each.
+ */
+struct alignas(64) FaceData
 {
-  float Box[4]; ///< xmin, xmax, ymin, ymax (outward)
-  double Front, Rear;
-  vtkIdType Ids[4];     ///< corners (point ids)
-  vtkIdType Triple[3];  ///< exact plane (outward counterclockwise) if Exact
-  std::uint8_t NumIds;
-  std::uint8_t Exact;   ///< 1: Triple spans the exact face plane
-  std::uint8_t Screen;  ///< 1: Box, depths and Corners are the face's (its cell is visible)
   double Corners[3][2]; ///< screen points of the first three corners if Screen
   /// If Screen: the magnitude the rounding of Corners is relative to (the
   /// world coordinates in a parallel view, 1 + |screen coordinates| in a
   /// perspective one, whose screen points are tangents).
   double ScreenScale;
+  std::uint8_t NumIds;
+  std::uint8_t Exact;       ///< 1: Ids[TripleAt[0..2]] span the exact face plane
+  std::uint8_t Screen;      ///< 1: Box, depths and Corners are the face's (its cell is visible)
+  std::uint8_t TripleAt[3]; ///< if Exact: the exact plane's corners (outward counterclockwise)
+  float Box[4];         ///< xmin, xmax, ymin, ymax (outward)
+  double Front, Rear;
+  vtkIdType Ids[4]; ///< corners (point ids)
 };
+static_assert(sizeof(FaceData) == 128, "two cache lines");
 
 /**
  * The pair search's rounding margin on depth comparisons: a depth moved by
