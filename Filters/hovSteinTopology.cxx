@@ -2,6 +2,7 @@
 #include "hovSteinTopology.h"
 
 #include "hovGeometricPredicates.h" // exact Orient3d
+#include "hovSteinBuffers.h"         // FillBuffer
 
 #include "vtkSMPTools.h"
 
@@ -58,16 +59,16 @@ std::array<vtkIdType, 4> FaceKey(const Geometry& g, vtkIdType c, int f)
 
 /**
  * True when every corner of cell @p other lies on the closed outer side of
- * face f of cell c, one strictly (Newell faces: all corners off the face
+ * face f of cell c (sorted corner ids @p key: FaceKey), one strictly (Newell faces: all corners off the face
  * strictly outside the deviation slab). Cell c lies on the inner side by
  * construction, so the plane separates the two cells.
  */
-bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
+bool OtherOutside(
+  const Geometry& g, vtkIdType c, int f, vtkIdType other, const std::array<vtkIdType, 4>& key)
 {
   const std::uint8_t mode = g.FaceCode(c, f) & 3;
   const int n = g.NumberOfCorners(other);
   const vtkIdType* ids = g.CellCorners(other);
-  const std::array<vtkIdType, 4> key = FaceKey(g, c, f);
   bool strict = false;
   if (mode == FaceExact)
   {
@@ -109,35 +110,69 @@ bool OtherOutside(const Geometry& g, vtkIdType c, int f, vtkIdType other)
 }
 
 /**
- * Matches the faces of one bucket (entries c*8+f with the same smallest id)
- * by their sorted corner ids: writes the interior faces to @p t's arrays at
- * out.First + out.Count on, and lists the boundary entries.
+ * A face in its bucket (whose point id is the face's smallest corner id): its
+ * other corner ids, sorted (a triangle's third is -1, as in FaceKey), and its
+ * entry c * 8 + f, so that matching reads the bucket alone, not the cells'
+ * tables at random. Id: 32 bits where the point ids and entries fit (16 bytes
+ * a face), else vtkIdType.
  */
-void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
-  std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>>& keyed, Topology& t,
+template <typename Id>
+struct FaceEntry
+{
+  Id K[3];
+  Id Entry;
+  bool operator<(const FaceEntry& o) const
+  {
+    return this->K[0] != o.K[0] ? this->K[0] < o.K[0]
+      : this->K[1] != o.K[1]    ? this->K[1] < o.K[1]
+      : this->K[2] != o.K[2]    ? this->K[2] < o.K[2]
+                                : this->Entry < o.Entry;
+  }
+  bool SameFace(const FaceEntry& o) const
+  {
+    return this->K[0] == o.K[0] && this->K[1] == o.K[1] && this->K[2] == o.K[2];
+  }
+  vtkIdType Cell() const { return static_cast<vtkIdType>(this->Entry >> 3); }
+  int Face() const { return static_cast<int>(this->Entry & 7); }
+};
+
+/// Whether FaceEntry<std::uint32_t> holds every point id (and -1) and entry.
+bool NarrowEntries(const Geometry& g)
+{
+  const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
+  return numPoints < 0xffffffffLL && g.NumberOfCells <= 0x1fffffffLL;
+}
+
+/**
+ * Matches the faces of bucket @p p (entries @p e, @p m of them; sorted here):
+ * writes the interior faces to @p t's arrays at out.First + out.Count on, and
+ * lists the boundary entries.
+ */
+template <typename Id>
+void MatchBucket(const Geometry& g, vtkIdType p, FaceEntry<Id>* e, vtkIdType m, Topology& t,
   ChunkMatches& out)
 {
-  keyed.resize(m);
-  for (vtkIdType i = 0; i < m; ++i)
-  {
-    keyed[i] = { FaceKey(g, e[i] >> 3, static_cast<int>(e[i] & 7)), e[i] };
-  }
-  std::sort(keyed.begin(), keyed.end());
+  std::sort(e, e + m);
   for (vtkIdType i = 0; i < m;)
   {
     vtkIdType j = i + 1;
-    while (j < m && keyed[j].first == keyed[i].first)
+    while (j < m && e[j].SameFace(e[i]))
     {
       ++j;
     }
     bool interior = false;
     if (j == i + 2)
     {
-      const vtkIdType a = keyed[i].second >> 3, b = keyed[i + 1].second >> 3;
-      const int fa = static_cast<int>(keyed[i].second & 7), fb = static_cast<int>(keyed[i + 1].second & 7);
+      const vtkIdType a = e[i].Cell(), b = e[i + 1].Cell();
+      const int fa = e[i].Face(), fb = e[i + 1].Face();
       const std::uint8_t mode = g.FaceCode(a, fa) & 3;
+      std::array<vtkIdType, 4> key = { p, -1, -1, -1 };
+      for (int k = 0; k < 3; ++k)
+      {
+        key[k + 1] = e[i].K[k] == static_cast<Id>(-1) ? -1 : static_cast<vtkIdType>(e[i].K[k]);
+      }
       interior = a != b && mode != FaceSkip && (g.FaceCode(b, fb) & 3) != FaceSkip &&
-        OtherOutside(g, a, fa, b);
+        OtherOutside(g, a, fa, b, key);
       if (interior)
       {
         const vtkIdType k = out.First + out.Count++;
@@ -152,9 +187,9 @@ void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
           {
             vtkIdType ids[3];
             g.ExactTriple(a, fa, ids);
-            for (int i = 0; i < 3; ++i)
+            for (int q = 0; q < 3; ++q)
             {
-              triple[i] = static_cast<std::uint32_t>(ids[i]);
+              triple[q] = static_cast<std::uint32_t>(ids[q]);
             }
           }
         }
@@ -162,7 +197,7 @@ void MatchBucket(const Geometry& g, const vtkIdType* e, vtkIdType m,
     }
     for (vtkIdType k = i; !interior && k < j; ++k)
     {
-      out.Boundary.push_back(keyed[k].second);
+      out.Boundary.push_back(static_cast<vtkIdType>(e[k].Entry));
     }
     i = j;
   }
@@ -182,12 +217,15 @@ vtkIdType SmallestCorner(const Geometry& g, vtkIdType c, int f)
 }
 
 /**
- * The faces of the supported cells (entries c * 8 + f) bucketed by their
- * smallest corner id (counting sort, in parallel over blocks of cells with a
- * count per block and point): bucket p is entries[start[p], start[p + 1]),
- * in increasing entry order whatever the number of blocks.
+ * The faces of the supported cells (FaceEntry: entries c * 8 + f and their
+ * keys) bucketed by their smallest corner id (counting sort, in parallel over
+ * blocks of cells with a count per block and point): bucket p is
+ * entries[start[p], start[p + 1]), in increasing entry order whatever the
+ * number of blocks.
  */
-void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<vtkIdType>& entries)
+template <typename Id>
+void BucketFaces(
+  const Geometry& g, std::vector<vtkIdType>& start, FillBuffer<FaceEntry<Id>>& entries)
 {
   const vtkIdType n = g.NumberOfCells;
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
@@ -231,7 +269,12 @@ void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<v
     for (vtkIdType block = b0; block < b1; ++block)
     {
       vtkIdType* cursor = count.data() + block * numPoints;
-      forFaces(block, [&](vtkIdType c, int f, vtkIdType p) { entries[cursor[p]++] = c * 8 + f; });
+      forFaces(block, [&](vtkIdType c, int f, vtkIdType p) {
+        const std::array<vtkIdType, 4> k = FaceKey(g, c, f); // k[0] is p
+        entries[cursor[p]++] = FaceEntry<Id>{ { static_cast<Id>(k[1]), static_cast<Id>(k[2]),
+                                                static_cast<Id>(k[3]) },
+          static_cast<Id>(c * 8 + f) };
+      });
     }
   });
 }
@@ -241,8 +284,9 @@ void BucketFaces(const Geometry& g, std::vector<vtkIdType>& start, std::vector<v
  * of faces (low point ids hold more faces: a face goes to its smallest id);
  * sizes @p t's interior face arrays for the bound.
  */
+template <typename Id>
 void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
-  const std::vector<vtkIdType>& entries, Topology& t, std::vector<ChunkMatches>& chunks)
+  FillBuffer<FaceEntry<Id>>& entries, Topology& t, std::vector<ChunkMatches>& chunks)
 {
   const vtkIdType numPoints = static_cast<vtkIdType>(start.size()) - 1;
   const vtkIdType numChunks = std::max<vtkIdType>(1, std::min<vtkIdType>(256, numPoints));
@@ -266,13 +310,12 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
   // Point ids as uint32 (NoTriple reserved), else no triples (EyeSide instead).
   t.TripleA.assign(numPoints < static_cast<vtkIdType>(Topology::NoTriple) ? 3 * bound : 0, 0);
   vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
-    std::vector<std::pair<std::array<vtkIdType, 4>, vtkIdType>> keyed;
     for (vtkIdType k = k0; k < k1; ++k)
     {
       ChunkMatches found = chunks[k]; // local: chunks[k] shares cache lines with its neighbours
       for (vtkIdType p = chunk[k]; p < chunk[k + 1]; ++p)
       {
-        MatchBucket(g, entries.data() + start[p], start[p + 1] - start[p], keyed, t, found);
+        MatchBucket(g, p, entries.data() + start[p], start[p + 1] - start[p], t, found);
       }
       chunks[k] = std::move(found);
     }
@@ -280,13 +323,23 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
 }
 }
 
-void Topology::Build(const Geometry& g)
+void Topology::Build(const Geometry& g, bool wideEntries)
 {
   std::vector<ChunkMatches> chunks;
-  {
-    std::vector<vtkIdType> start, entries;
+  auto match = [&](auto id) {
+    using Id = decltype(id);
+    std::vector<vtkIdType> start;
+    FillBuffer<FaceEntry<Id>> entries;
     BucketFaces(g, start, entries);
     MatchFaces(g, start, entries, *this, chunks);
+  };
+  if (!wideEntries && NarrowEntries(g))
+  {
+    match(std::uint32_t());
+  }
+  else
+  {
+    match(vtkIdType());
   }
   this->Collect(g, chunks);
   this->BuildCellFaces(g);

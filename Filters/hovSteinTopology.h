@@ -6,7 +6,9 @@
  * The faces of all supported cells are matched by their sorted corner point ids
  * (triangles by 3 ids, quadrilaterals by their 4 corners): the faces are
  * bucketed by their smallest point id (a counting sort, O(faces)) and each
- * bucket is sorted and scanned in parallel. A face is INTERIOR when exactly two
+ * bucket is sorted and scanned in parallel. Each bucket entry carries its
+ * face's other sorted corner ids (computed while the cells are read in order),
+ * so the matching reads the bucket, not the cells' tables at random. A face is INTERIOR when exactly two
  * cells A and B share it, both have a usable face code there (not FaceSkip), and
  * B lies on the outer side of A's face: exact faces need every corner of B on
  * the closed outer side (exact Orient3d) and one strictly outside; Newell faces
@@ -69,7 +71,9 @@ struct Topology
   unsigned long Generation = 0;
 
   vtkIdType NumberOfInteriorFaces() const { return static_cast<vtkIdType>(this->A.size()); }
-  void Build(const Geometry& g);
+  /// Builds everything from @p g. @p wideEntries: match the faces with 64-bit
+  /// entries even where 32-bit ones fit (the same result; for tests).
+  void Build(const Geometry& g, bool wideEntries = false);
 
 private:
   /// The matched chunks' interior faces made contiguous; BoundaryFaces.

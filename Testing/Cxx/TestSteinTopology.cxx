@@ -1,0 +1,214 @@
+// The face adjacency of vtkSteinVisibilitySort (hovStein::Topology,
+// Filters/hovSteinTopology.h) against an independent count from VTK's own
+// cell faces: on conforming meshes of correctly oriented cells (Kuhn
+// tetrahedra, jittered hexahedra, the mixed mesh, a block with holes) every
+// face that two cells share is an interior face with those two cells, and
+// every face of one cell only is a boundary face; the per-cell lists agree
+// with the interior faces. With a duplicated cell (three cells on some faces,
+// two on the same side of others) those faces are boundary faces. And the
+// 32-bit face entries give exactly the arrays of the 64-bit ones
+// (Topology::Build's wideEntries), so the wide path, used only beyond 4G
+// points or 512M cells, is exercised.
+#include "hovSortMeshes.h"
+#include "hovSteinTopology.h"
+#include "hovTestScenes.h"
+
+#include "vtkCell.h"
+#include "vtkGenericCell.h"
+#include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace hovTest;
+
+namespace
+{
+using Key = std::array<vtkIdType, 4>;
+
+/// Sorted point ids of a face (-1 padding a triangle at the end).
+Key SortedKey(const vtkIdType* ids, int n)
+{
+  Key k = { -1, -1, -1, -1 };
+  std::copy(ids, ids + n, k.begin());
+  std::sort(k.begin(), k.begin() + n);
+  return k;
+}
+
+/// Per face key, the cells that have it (VTK's cell faces).
+std::map<Key, std::vector<vtkIdType>> ReferenceFaces(vtkUnstructuredGrid* grid)
+{
+  std::map<Key, std::vector<vtkIdType>> faces;
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    grid->GetCell(c, cell);
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      vtkCell* face = cell->GetFace(f);
+      const int n = static_cast<int>(face->GetNumberOfPoints());
+      std::vector<vtkIdType> ids(n);
+      for (int i = 0; i < n; ++i)
+      {
+        ids[i] = face->GetPointId(i);
+      }
+      faces[SortedKey(ids.data(), n)].push_back(c);
+    }
+  }
+  return faces;
+}
+
+/// The key of face f of cell c in our geometry.
+Key OurKey(const hovStein::Geometry& g, vtkIdType c, int f)
+{
+  vtkIdType ids[4];
+  const int n = g.OrientedFace(c, f, ids);
+  return SortedKey(ids, n);
+}
+
+bool SameArrays(const hovStein::Topology& a, const hovStein::Topology& b)
+{
+  bool same = a.A == b.A && a.B == b.B && a.FaceA == b.FaceA && a.TripleA == b.TripleA &&
+    a.CellFaceOffsets == b.CellFaceOffsets && a.CellFaces == b.CellFaces &&
+    a.CellNeighbours == b.CellNeighbours && a.BoundaryFaces == b.BoundaryFaces &&
+    a.NumberOfBoundaryCells == b.NumberOfBoundaryCells && a.Boundary.size() == b.Boundary.size();
+  for (size_t i = 0; same && i < a.Boundary.size(); ++i)
+  {
+    same = a.Boundary[i].Cell == b.Boundary[i].Cell && a.Boundary[i].Face == b.Boundary[i].Face &&
+      a.Boundary[i].Mode == b.Boundary[i].Mode;
+  }
+  return same;
+}
+
+/**
+ * Builds the topology of @p grid (32- and 64-bit entries) and checks it.
+ * @p conforming: every shared face must be interior. @p duplicate: the last
+ * cell is a copy of cell @p duplicate, whose faces must all be boundary faces.
+ */
+void Run(Checker& ck, const std::string& name, vtkUnstructuredGrid* grid, bool conforming,
+  vtkIdType duplicate = -1)
+{
+  hovStein::Geometry g;
+  g.Build(grid, nullptr);
+  hovStein::Topology narrow, wide;
+  narrow.Build(g);
+  wide.Build(g, true);
+  const std::map<Key, std::vector<vtkIdType>> reference = ReferenceFaces(grid);
+
+  // The interior faces: keys and cells against the reference.
+  std::set<std::pair<Key, std::pair<vtkIdType, vtkIdType>>> ours, expected;
+  long badFace = 0;
+  for (vtkIdType i = 0; i < narrow.NumberOfInteriorFaces(); ++i)
+  {
+    const vtkIdType a = narrow.A[i], b = narrow.B[i];
+    const Key k = OurKey(g, a, narrow.FaceA[i]);
+    ours.insert({ k, { std::min(a, b), std::max(a, b) } });
+    // B has the same face (some face of B with this key).
+    bool found = false;
+    for (int f = 0; f < hovStein::GetShape(g.Kinds[b]).NumFaces; ++f)
+    {
+      found = found || OurKey(g, b, f) == k;
+    }
+    badFace += !found;
+  }
+  long shared = 0, single = 0;
+  for (const auto& entry : reference)
+  {
+    const std::vector<vtkIdType>& cells = entry.second;
+    shared += cells.size() == 2;
+    single += cells.size() == 1;
+    if (cells.size() == 2)
+    {
+      expected.insert({ entry.first, { std::min(cells[0], cells[1]), std::max(cells[0], cells[1]) } });
+    }
+  }
+  long boundaryBits = 0;
+  for (std::uint8_t bits : narrow.BoundaryFaces)
+  {
+    for (; bits; bits &= bits - 1)
+    {
+      ++boundaryBits;
+    }
+  }
+  // The per-cell lists: each interior face once in A's list and once in B's.
+  long listErrors = 0;
+  for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
+  {
+    for (vtkIdType e = narrow.CellFaceOffsets[c]; e < narrow.CellFaceOffsets[c + 1]; ++e)
+    {
+      const vtkIdType i = narrow.CellFaces[e] / 2;
+      const bool isB = narrow.CellFaces[e] % 2 == 1;
+      listErrors += (isB ? narrow.B[i] : narrow.A[i]) != c;
+      listErrors += (isB ? narrow.A[i] : narrow.B[i]) != narrow.CellNeighbours[e];
+    }
+  }
+  const long listed = static_cast<long>(narrow.CellFaceOffsets[g.NumberOfCells]);
+  std::cout << "  " << name << ": cells " << g.NumberOfCells << ", interior "
+            << narrow.NumberOfInteriorFaces() << " (faces of two cells " << shared
+            << "), boundary faces " << boundaryBits << " (faces of one cell " << single
+            << "), boundary cells " << narrow.NumberOfBoundaryCells << "\n";
+  ck.Check(narrow.NumberOfInteriorFaces() > 0, name + ": interior faces found");
+  ck.Check(badFace == 0, name + ": each interior face is a face of both its cells");
+  ck.Check(listErrors == 0 && listed == 2 * narrow.NumberOfInteriorFaces(),
+    name + ": per-cell lists hold each interior face on both sides");
+  ck.Check(static_cast<size_t>(boundaryBits) == narrow.Boundary.size(),
+    name + ": boundary list = boundary bits");
+  ck.Check(SameArrays(narrow, wide), name + ": 32-bit and 64-bit face entries give the same topology");
+  if (conforming)
+  {
+    ck.Check(ours == expected, name + ": interior faces = the faces two cells share (VTK's faces)");
+    ck.Check(boundaryBits == single, name + ": boundary faces = the faces of one cell");
+  }
+  if (duplicate >= 0)
+  {
+    const vtkIdType copy = g.NumberOfCells - 1;
+    const int numFaces = hovStein::GetShape(g.Kinds[copy]).NumFaces;
+    const std::uint8_t all = static_cast<std::uint8_t>((1 << numFaces) - 1);
+    ck.Check(narrow.BoundaryFaces[copy] == all && narrow.BoundaryFaces[duplicate] == all,
+      name + ": every face of the duplicated cell and of its copy is a boundary face");
+    // Everything else as without the copy: the faces two cells share, less
+    // those of the duplicated cell.
+    long expectedInterior = 0;
+    for (const auto& p : expected)
+    {
+      expectedInterior += p.second.first != duplicate && p.second.second != copy;
+    }
+    ck.Check(narrow.NumberOfInteriorFaces() == expectedInterior,
+      name + ": the other shared faces stay interior");
+  }
+}
+
+/// @p grid with a copy of cell @p c appended.
+vtkSmartPointer<vtkUnstructuredGrid> WithCopy(vtkUnstructuredGrid* grid, vtkIdType c)
+{
+  vtkNew<vtkUnstructuredGrid> out;
+  out->DeepCopy(grid);
+  vtkNew<vtkIdList> ids;
+  grid->GetCellPoints(c, ids);
+  out->InsertNextCell(grid->GetCellType(c), ids);
+  return out;
+}
+}
+
+int TestSteinTopology(int, char*[])
+{
+  Checker ck;
+  const double o[3] = { -1.25, 0.5, 3.0 }, size[3] = { 2.0, 1.5, 0.75 };
+  vtkSmartPointer<vtkUnstructuredGrid> tets = JitteredTetBlock(5, 4, 3, o, size, 0.3, 7).Grid();
+  Run(ck, "jittered Kuhn tetrahedra", tets, true);
+  Run(ck, "jittered hexahedra", JitteredHexBlock(4, 0.2), true);
+  Run(ck, "mixed mesh", MixedMesh(3), true);
+  Run(ck, "block with holes", HoledBlock(6, 5), true);
+  // An interior cell (a middle one) and a copy of it: its faces are shared by
+  // three cells, or by two on the same side.
+  const vtkIdType middle = tets->GetNumberOfCells() / 2;
+  Run(ck, "tetrahedra with a duplicated cell", WithCopy(tets, middle), false, middle);
+  return ck.Result();
+}
