@@ -206,7 +206,8 @@ void MarkAxisPlanes(Geometry& g, vtkIdType c)
 }
 
 /// Corners and faces of one supported cell; false if it is invalid.
-bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, vtkIdList* ids, vtkIdType numPoints)
+bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, const vtkIdType* ids,
+  vtkIdType numIds, vtkIdType numPoints)
 {
   const Shape& s = GetShape(kind);
   vtkIdType* corners = g.Corners.data() + g.CornerOffsets[c];
@@ -214,7 +215,8 @@ bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, vtkIdList* ids, vtk
   double centre[3] = { 0, 0, 0 };
   for (int i = 0; i < s.NumCorners; ++i)
   {
-    const vtkIdType id = ids->GetId(type == VTK_VOXEL ? voxelToHex[i] : i);
+    const int at = type == VTK_VOXEL ? voxelToHex[i] : i;
+    const vtkIdType id = at < numIds ? ids[at] : -1;
     if (id < 0 || id >= numPoints)
     {
       return false;
@@ -358,12 +360,26 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   this->Planes.shrink_to_fit(); // a tetrahedral mesh after a hexahedral one keeps nothing
 
   // Pass 2: corners, face orientation and planes.
+  // A 64-bit cell array hands out its own ids (no copy, thread safe).
+  vtkCellArray* shared =
+    source.Grid && source.Grid->GetCells()->IsStorage64Bit() ? source.Grid->GetCells() : nullptr;
   auto pass2 = [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType c = begin; c < end; ++c)
     {
-      vtkIdList* ids = source.Ids(c);
+      vtkIdType numIds = 0;
+      const vtkIdType* ids = nullptr;
+      if (shared)
+      {
+        shared->GetCellAtId(c, numIds, ids);
+      }
+      else
+      {
+        vtkIdList* list = source.Ids(c);
+        numIds = list->GetNumberOfIds();
+        ids = list->GetPointer(0);
+      }
       const Kind kind = static_cast<Kind>(this->Kinds[c]);
-      if (kind != KindBad && FillCell(*this, c, kind, source.Type(c), ids, numPoints))
+      if (kind != KindBad && FillCell(*this, c, kind, source.Type(c), ids, numIds, numPoints))
       {
         MarkAxisPlanes(*this, c);
         continue;
@@ -371,9 +387,9 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       this->Kinds[c] = KindBad;
       vtkIdType* corners = this->Corners.data() + this->CornerOffsets[c];
       const vtkIdType count = this->CornerOffsets[c + 1] - this->CornerOffsets[c];
-      for (vtkIdType i = 0; i < count && i < ids->GetNumberOfIds(); ++i)
+      for (vtkIdType i = 0; i < count && i < numIds; ++i)
       {
-        const vtkIdType id = ids->GetId(i);
+        const vtkIdType id = ids[i];
         corners[i] = (id >= 0 && id < numPoints) ? id : -1;
       }
     }
