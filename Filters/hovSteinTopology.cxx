@@ -412,7 +412,7 @@ void Topology::BuildCellFaces(const Geometry& g)
   this->CellFaces.resize(2 * m);
   this->CellNeighbours.resize(2 * m);
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
-  const vtkIdType numBands = std::min<vtkIdType>(threads > 1 ? 2 * threads : 1, std::max<vtkIdType>(n, 1));
+  const vtkIdType numBands = std::min<vtkIdType>(std::max(threads, 1), std::max<vtkIdType>(n, 1));
   vtkSMPTools::For(0, numBands, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType band = b0; band < b1; ++band)
     {
