@@ -10,24 +10,16 @@ namespace hovStein
 {
 namespace
 {
-/// The larger side of the screen extents of the triangle @p d's Corners.
-double CornerExtent(const FaceData& d)
-{
-  const double(*p)[2] = d.Corners;
-  return std::max(std::max({ p[0][0], p[1][0], p[2][0] }) - std::min({ p[0][0], p[1][0], p[2][0] }),
-    std::max({ p[0][1], p[1][1], p[2][1] }) - std::min({ p[0][1], p[1][1], p[2][1] }));
-}
-
 /**
  * A distance margin on the screen for the screen triangles @p d and @p e:
  * @p relative times the largest side of their extents, plus 1e-9 of the
  * magnitude their screen points' rounding is relative to
- * (FaceData::ScreenScale). Reads only the faces' first cache line.
+ * (FaceData::ScreenScale); both rounded up (a larger margin is the safe
+ * side). Reads only the faces' first cache line.
  */
 double Margin(const FaceData& d, const FaceData& e, double relative)
 {
-  return relative * std::max(CornerExtent(d), CornerExtent(e)) +
-    1e-9 * std::max(d.ScreenScale, e.ScreenScale);
+  return relative * std::max(d.Extent, e.Extent) + 1e-9 * std::max(d.ScreenScale, e.ScreenScale);
 }
 
 /**
@@ -84,7 +76,8 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
   double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   d.Front = VTK_DOUBLE_MAX;
   d.Rear = -VTK_DOUBLE_MAX;
-  d.ScreenScale = v.Frame.Parallel ? 3 * g.MaxAbsCoordinate : 1.0;
+  double scale = v.Frame.Parallel ? 3 * g.MaxAbsCoordinate : 1.0;
+  double corners[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   for (int i = 0; i < d.NumIds; ++i)
   {
     const double* p = v.Proj.data() + 3 * d.Ids[i];
@@ -92,10 +85,14 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
     {
       d.Corners[i][0] = p[0];
       d.Corners[i][1] = p[1];
+      corners[0] = std::min(corners[0], p[0]);
+      corners[1] = std::max(corners[1], p[0]);
+      corners[2] = std::min(corners[2], p[1]);
+      corners[3] = std::max(corners[3], p[1]);
     }
     if (!v.Frame.Parallel)
     {
-      d.ScreenScale = std::max(d.ScreenScale, 1 + std::abs(p[0]) + std::abs(p[1]));
+      scale = std::max(scale, 1 + std::abs(p[0]) + std::abs(p[1]));
     }
     box[0] = std::min(box[0], p[0]);
     box[1] = std::max(box[1], p[0]);
@@ -104,6 +101,8 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
     d.Front = std::min(d.Front, p[2]);
     d.Rear = std::max(d.Rear, p[2]);
   }
+  d.ScreenScale = FloatUp(scale);
+  d.Extent = FloatUp(std::max(corners[1] - corners[0], corners[3] - corners[2]));
   d.Box[0] = FloatDown(box[0]);
   d.Box[1] = FloatUp(box[1]);
   d.Box[2] = FloatDown(box[2]);
@@ -145,14 +144,21 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e)
   const double margin = Margin(d, e, 1e-9);
   for (int t = 0; t < 2; ++t)
   {
-    const FaceData& a = t ? e : d;
-    const FaceData& b = t ? d : e;
+    const double(*a)[2] = t ? e.Corners : d.Corners;
+    const double(*b)[2] = t ? d.Corners : e.Corners;
     for (int k = 0; k < 3; ++k)
     {
-      bool apart = true;
+      // EdgeSide(a, k, b[j], margin) < 0 for every j, the edge computed once.
+      const double* p = a[k];
+      const double* q = a[(k + 1) % 3];
+      const double ex = q[0] - p[0], ey = q[1] - p[1];
+      const double c = ex * (a[(k + 2) % 3][1] - p[1]) - ey * (a[(k + 2) % 3][0] - p[0]);
+      const double tol = margin * (std::abs(ex) + std::abs(ey));
+      bool apart = c != 0;
       for (int j = 0; j < 3 && apart; ++j)
       {
-        apart = EdgeSide(a.Corners, k, b.Corners[j], margin) < 0;
+        const double s = ex * (b[j][1] - p[1]) - ey * (b[j][0] - p[0]);
+        apart = std::abs(s) > tol && (s > 0) != (c > 0);
       }
       if (apart)
       {

@@ -32,8 +32,9 @@ struct alignas(64) FaceData
   double Corners[3][2]; ///< screen points of the first three corners if Screen
   /// If Screen: the magnitude the rounding of Corners is relative to (the
   /// world coordinates in a parallel view, 1 + |screen coordinates| in a
-  /// perspective one, whose screen points are tangents).
-  double ScreenScale;
+  /// perspective one, whose screen points are tangents), rounded up.
+  float ScreenScale;
+  float Extent; ///< if Screen: the larger side of the first three corners' extents, rounded up
   std::uint8_t NumIds;
   std::uint8_t Exact;       ///< 1: Ids[TripleAt[0..2]] span the exact face plane
   std::uint8_t Screen;      ///< 1: Box, depths and Corners are the face's (its cell is visible)
