@@ -1,6 +1,7 @@
 // Face pair tests of the Stein sort's boundary pair search (see hovSteinFacePairs.h).
 #include "hovSteinFacePairs.h"
 
+#include "hovSteinHulls.h"    // ClipPolygon, HullCapacity
 #include "hovSteinRounding.h" // FloatDown, FloatUp
 
 #include <algorithm>
@@ -40,6 +41,58 @@ int EdgeSide(const double t[3][2], int k, const double x[2], double margin)
     return 0;
   }
   return (s > 0) == (c > 0) ? 1 : -1;
+}
+
+/// @p t's corners counterclockwise into @p out; false if it has no area.
+bool CounterClockwise(const double t[3][2], double out[][2])
+{
+  const double c = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
+    (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
+  if (!(c != 0))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    const int j = c > 0 ? i : 2 - i;
+    out[i][0] = t[j][0];
+    out[i][1] = t[j][1];
+  }
+  return true;
+}
+
+/**
+ * The area centroid of the intersection of the screen triangles @p a and
+ * @p b (ClipPolygon) into @p x; false if it has no area. A candidate point
+ * only: the caller checks it.
+ */
+bool OverlapCentroid(const double a[3][2], const double b[3][2], double x[2])
+{
+  double poly[HullCapacity][2], clip[3][2];
+  if (!CounterClockwise(a, poly) || !CounterClockwise(b, clip))
+  {
+    return false;
+  }
+  const int n = ClipPolygon(poly, 3, clip, 3);
+  double area = 0, cx = 0, cy = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    // Relative to the first vertex (less cancellation far from the origin).
+    const int j = i + 1 < n ? i + 1 : 0;
+    const double ux = poly[i][0] - poly[0][0], uy = poly[i][1] - poly[0][1];
+    const double vx = poly[j][0] - poly[0][0], vy = poly[j][1] - poly[0][1];
+    const double w = ux * vy - vx * uy;
+    area += w;
+    cx += (ux + vx) * w;
+    cy += (uy + vy) * w;
+  }
+  if (n < 3 || !(area > 0))
+  {
+    return false;
+  }
+  x[0] = poly[0][0] + cx / (3 * area);
+  x[1] = poly[0][1] + cy / (3 * area);
+  return true;
 }
 
 bool ScreenTriangles(const FaceData& d, const FaceData& e)
@@ -185,6 +238,14 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
     c[t][0] = (a.Corners[0][0] + a.Corners[1][0] + a.Corners[2][0]) / 3;
     c[t][1] = (a.Corners[0][1] + a.Corners[1][1] + a.Corners[2][1]) / 3;
   }
+  auto insideBoth = [&](const double x[2]) {
+    bool inside = true;
+    for (int k = 0; k < 6 && inside; ++k)
+    {
+      inside = EdgeSide(k < 3 ? f.Corners : e.Corners, k % 3, x, margin) > 0;
+    }
+    return inside;
+  };
   for (int t = 0; t < 4; ++t)
   {
     double x[2];
@@ -203,16 +264,14 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
       x[0] = 0.5 * (std::max(f.Box[0], e.Box[0]) + double(std::min(f.Box[1], e.Box[1])));
       x[1] = 0.5 * (std::max(f.Box[2], e.Box[2]) + double(std::min(f.Box[3], e.Box[3])));
     }
-    bool inside = true;
-    for (int k = 0; k < 6 && inside; ++k)
-    {
-      inside = EdgeSide(k < 3 ? f.Corners : e.Corners, k % 3, x, margin) > 0;
-    }
-    if (inside)
+    if (insideBoth(x))
     {
       return true;
     }
   }
-  return false;
+  // Last: the area centroid of the triangles' intersection (inside both
+  // wherever they overlap by more than slivers; checked like the others).
+  double x[2];
+  return OverlapCentroid(f.Corners, e.Corners, x) && insideBoth(x);
 }
 }

@@ -51,7 +51,8 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e);
  * with exact planes (the eye strictly inside f's, strictly outside e's),
  * @p fAfter = DepthAfter(f's rear) < @p eBefore = DepthBefore(e's front),
  * and a point inside both by more than the margin (tried: the centroids,
- * their midpoint, the centre of the extents' overlap).
+ * their midpoint, the centre of the extents' overlap, the area centroid of
+ * the triangles' intersection).
  * False when it cannot tell.
  */
 bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double eBefore);
