@@ -274,13 +274,21 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
             ++kept; // found here, once
             const FaceData& DF = b.Data[F.Face];
             const FaceData& DG = b.Data[G->Face];
-            if (!ApartOnScreen(DF, DG) && SomeCornerOutside(g, DF, DG) &&
-              SomeCornerOutside(g, DG, DF))
+            if (ApartOnScreen(DF, DG))
             {
-              // The second cell times 2, plus 1 if the edge needs no test
-              // (no overflow: see the static_assert at the top).
-              found.emplace_back(
-                F.Cell, 2 * G->Cell + (certify && InFrontOnScreen(DF, F.Far, DG, G->Far)));
+              continue;
+            }
+            // The second cell times 2, plus 1 if the edge needs no test (no
+            // overflow: see the static_assert at the top). A proved pair has
+            // a corner of each face beyond the other's plane (rays pass F,
+            // then G): no need to ask SomeCornerOutside().
+            if (certify && InFrontOnScreen(DF, F.Far, DG, G->Far))
+            {
+              found.emplace_back(F.Cell, 2 * G->Cell + 1);
+            }
+            else if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
+            {
+              found.emplace_back(F.Cell, 2 * G->Cell);
             }
           }
         }
