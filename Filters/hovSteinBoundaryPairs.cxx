@@ -202,6 +202,35 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
       found.swap(b.BlockPairs[blk]);
       found.clear();
       vtkIdType count = 0, dropped = 0, kept = 0;
+      // The face pair tests of the EXIT face F against the batch's ENTRY faces.
+      constexpr int BatchSize = 16;
+      const TileRecord* batch[BatchSize];
+      int numBatch = 0;
+      auto testBatch = [&](const TileRecord& F) {
+        const FaceData& DF = b.Data[F.Face];
+        for (int k = 0; k < numBatch; ++k)
+        {
+          const TileRecord* G = batch[k];
+          const FaceData& DG = b.Data[G->Face];
+          if (ApartOnScreen(DF, DG))
+          {
+            continue;
+          }
+          // The second cell times 2, plus 1 if the edge needs no test (no
+          // overflow: see the static_assert at the top). A proved pair has
+          // a corner of each face beyond the other's plane (rays pass F,
+          // then G): no need to ask SomeCornerOutside().
+          if (certify && InFrontOnScreen(DF, F.Far, DG, G->Far))
+          {
+            found.emplace_back(F.Cell, 2 * G->Cell + 1);
+          }
+          else if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
+          {
+            found.emplace_back(F.Cell, 2 * G->Cell);
+          }
+        }
+        numBatch = 0;
+      };
       for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
       {
         const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
@@ -211,6 +240,10 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
         for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
         {
           const TileRecord& F = b.Records[0][i];
+          if (i + 2 < exitStart[tile + 1])
+          {
+            Prefetch(b.Data.data() + b.Records[0][i + 2].Face);
+          }
           // An ENTRY face G with G.Far > nearest has a covering sheet between
           // it and F in this tile.
           const double nearest = sheets ? sheets->NearestRear(tile, F.Far) : VTK_DOUBLE_MAX;
@@ -272,25 +305,16 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
               }
             }
             ++kept; // found here, once
-            const FaceData& DF = b.Data[F.Face];
-            const FaceData& DG = b.Data[G->Face];
-            if (ApartOnScreen(DF, DG))
+            // Tested in batches: the face data of a batch's ENTRY faces,
+            // scattered through memory, are fetched meanwhile.
+            Prefetch(b.Data.data() + G->Face);
+            batch[numBatch++] = G;
+            if (numBatch == BatchSize)
             {
-              continue;
-            }
-            // The second cell times 2, plus 1 if the edge needs no test (no
-            // overflow: see the static_assert at the top). A proved pair has
-            // a corner of each face beyond the other's plane (rays pass F,
-            // then G): no need to ask SomeCornerOutside().
-            if (certify && InFrontOnScreen(DF, F.Far, DG, G->Far))
-            {
-              found.emplace_back(F.Cell, 2 * G->Cell + 1);
-            }
-            else if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
-            {
-              found.emplace_back(F.Cell, 2 * G->Cell);
+              testBatch(F);
             }
           }
+          testBatch(F);
         }
       }
       b.BlockPairs[blk].swap(found);

@@ -1,7 +1,8 @@
 /**
  * @file hovSteinBuffers.h
  * @brief Per-view buffers of the Stein sort that every step fills completely:
- *        std::vector whose resize() leaves trivial elements uninitialised.
+ *        std::vector whose resize() leaves trivial elements uninitialised;
+ *        a prefetch hint for the steps that read them at random.
  *
  * A value-initialising resize() zeroes the new memory on one thread, touching
  * (and faulting in) every page before the parallel fill touches it again; on
@@ -49,6 +50,16 @@ struct DefaultInitAllocator : std::allocator<T>
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 };
+
+/// A hint to fetch the cache line of @p p (no effect where unsupported).
+inline void Prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
 
 /// A vector filled completely by its user after each resize().
 template <class T>

@@ -1,6 +1,8 @@
 // Topological sort with cycle fallback of vtkSteinVisibilitySort (see hovSteinGraph.h).
 #include "hovSteinGraph.h"
 
+#include "hovSteinBuffers.h" // Prefetch
+
 #include <algorithm>
 #include <cstdint>
 
@@ -8,16 +10,6 @@ namespace hovStein
 {
 namespace
 {
-/// A hint to fetch the cache line of @p p (no effect where unsupported).
-inline void Prefetch(const void* p)
-{
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
 /// Cells [first, last) back to front by rearmost depth, ties by id.
 void SortBackToFront(const Geometry& g, const View& v, vtkIdType* first, vtkIdType* last)
 {
