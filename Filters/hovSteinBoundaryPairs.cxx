@@ -1,7 +1,7 @@
 // Boundary face pairs of vtkSteinVisibilitySort's ADJACENCY_GRAPH (see hovSteinBoundaryPairs.h).
 #include "hovSteinBoundaryPairs.h"
 
-#include "hovSteinFacePairs.h" // FillFaceData, SomeCornerOutside, ApartOnScreen, InFrontOnScreen
+#include "hovSteinFacePairs.h" // FillFaceData, ClassifyFacePair
 #include "hovSteinHulls.h"     // HullCache
 #include "hovSteinObstructs.h" // Obstruction
 #include "hovSteinPairGrid.h"  // FaceData, PairGrid
@@ -211,22 +211,12 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
         for (int k = 0; k < numBatch; ++k)
         {
           const TileRecord* G = batch[k];
-          const FaceData& DG = b.Data[G->Face];
-          if (ApartOnScreen(DF, DG))
+          const int kind = ClassifyFacePair(g, DF, F.Far, b.Data[G->Face], G->Far, certify);
+          if (kind != NoCandidate)
           {
-            continue;
-          }
-          // The second cell times 2, plus 1 if the edge needs no test (no
-          // overflow: see the static_assert at the top). A proved pair has
-          // a corner of each face beyond the other's plane (rays pass F,
-          // then G): no need to ask SomeCornerOutside().
-          if (certify && InFrontOnScreen(DF, F.Far, DG, G->Far))
-          {
-            found.emplace_back(F.Cell, 2 * G->Cell + 1);
-          }
-          else if (SomeCornerOutside(g, DF, DG) && SomeCornerOutside(g, DG, DF))
-          {
-            found.emplace_back(F.Cell, 2 * G->Cell);
+            // The second cell times 2, plus 1 if the edge needs no test (no
+            // overflow: see the static_assert at the top).
+            found.emplace_back(F.Cell, 2 * G->Cell + (kind == ProvedEdge));
           }
         }
         numBatch = 0;

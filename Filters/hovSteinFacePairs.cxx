@@ -274,4 +274,18 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
   double x[2];
   return OverlapCentroid(f.Corners, e.Corners, x) && insideBoth(x);
 }
+
+int ClassifyFacePair(const Geometry& g, const FaceData& f, double fAfter, const FaceData& e,
+  double eBefore, bool certify)
+{
+  if (ApartOnScreen(f, e))
+  {
+    return NoCandidate;
+  }
+  if (certify && InFrontOnScreen(f, fAfter, e, eBefore))
+  {
+    return ProvedEdge;
+  }
+  return SomeCornerOutside(g, f, e) && SomeCornerOutside(g, e, f) ? NeedsTest : NoCandidate;
+}
 }

@@ -56,6 +56,23 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e);
  * False when it cannot tell.
  */
 bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double eBefore);
+
+/// What ClassifyFacePair() makes of a face pair.
+enum FacePairKind
+{
+  NoCandidate = -1, ///< no ray passes F and then G (ApartOnScreen, SomeCornerOutside)
+  NeedsTest = 0,    ///< the cells' Obstructs() decides
+  ProvedEdge = 1    ///< InFrontOnScreen (if @p certify)
+};
+
+/**
+ * The tests on the EXIT face @p f (DepthAfter of its rear @p fAfter) and the
+ * ENTRY face @p e (DepthBefore of its front @p eBefore), cheapest first. A
+ * proved pair has a corner of each face beyond the other's plane (rays pass
+ * f, then e), so SomeCornerOutside() is asked only for the others.
+ */
+int ClassifyFacePair(const Geometry& g, const FaceData& f, double fAfter, const FaceData& e,
+  double eBefore, bool certify);
 }
 
 #endif
