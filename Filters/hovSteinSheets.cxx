@@ -117,8 +117,7 @@ int Root(std::vector<int>& parent, int a)
 }
 }
 
-void SheetCover::Cover(const BoundaryAdjacency& adjacency,
-  const std::vector<ViewFace>& faces, const FillBuffer<FaceData>& data, const PairGrid& grid,
+void SheetCover::Cover(const FillBuffer<FaceData>& data, const PairGrid& grid,
   const vtkIdType* entryStart, const vtkIdType* entryFaces)
 {
   const vtkIdType nt = grid.NumberOfTiles();
@@ -128,7 +127,7 @@ void SheetCover::Cover(const BoundaryAdjacency& adjacency,
   std::vector<SheetStats> blockStats(numBlocks);
   this->CoverStart.assign(nt + 1, 0);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    std::vector<std::pair<std::int32_t, vtkIdType>> members; // (boundary face, face), by the first
+    std::vector<vtkIdType> members; // sheet faces (face indices), increasing
     std::vector<int> parent;
     std::vector<char> blocked, inside;
     std::vector<double> front, rear;
@@ -143,16 +142,19 @@ void SheetCover::Cover(const BoundaryAdjacency& adjacency,
         {
           continue; // (a degenerate grid)
         }
-        // The sheets' faces whose extents meet the tile, joined through their
-        // shared edges into the tile's local sheets.
+        // The sheets' faces whose extents meet the tile (the lists are in
+        // increasing face order), joined through their shared edges into the
+        // tile's local sheets; their data fetched meanwhile.
         members.clear();
         for (vtkIdType s = entryStart[tile]; s < entryStart[tile + 1]; ++s)
         {
           const vtkIdType i = entryFaces[s];
-          const std::int32_t k = faces[i].Boundary;
-          if (k >= 0 && this->FaceOf[k] == i)
+          if (this->Border[i] & SheetFace)
           {
-            members.emplace_back(k, i);
+            members.push_back(i);
+            Prefetch(data.data() + i);
+            Prefetch(reinterpret_cast<const char*>(data.data() + i) + 64);
+            Prefetch(this->Across.data() + 3 * i);
           }
         }
         const int m = static_cast<int>(members.size());
@@ -160,7 +162,6 @@ void SheetCover::Cover(const BoundaryAdjacency& adjacency,
         {
           continue;
         }
-        std::sort(members.begin(), members.end());
         parent.resize(m);
         for (int a = 0; a < m; ++a)
         {
@@ -168,17 +169,15 @@ void SheetCover::Cover(const BoundaryAdjacency& adjacency,
         }
         for (int a = 0; a < m; ++a)
         {
-          for (int e = 0; e < 4; ++e)
+          for (int e = 0; e < 3; ++e)
           {
-            const vtkIdType k = members[a].first;
-            const std::int32_t j = adjacency.Across[4 * k + e];
-            if (j <= members[a].first || this->FaceOf[j] < 0)
+            const std::int32_t j = this->Across[3 * members[a] + e];
+            if (j <= members[a]) // (-1, or joined from j's side: the relation is symmetric)
             {
               continue;
             }
-            const auto it = std::lower_bound(members.begin() + a + 1, members.end(),
-              std::make_pair(j, vtkIdType(-1)));
-            if (it != members.end() && it->first == j)
+            const auto it = std::lower_bound(members.begin() + a + 1, members.end(), j);
+            if (it != members.end() && *it == j)
             {
               const int x = Root(parent, a);
               const int y = Root(parent, static_cast<int>(it - members.begin()));
@@ -195,10 +194,10 @@ void SheetCover::Cover(const BoundaryAdjacency& adjacency,
         for (int a = 0; a < m; ++a)
         {
           const int r = Root(parent, a);
-          const FaceData& d = data[members[a].second];
+          const FaceData& d = data[members[a]];
           front[r] = std::min(front[r], d.Front);
           rear[r] = std::max(rear[r], d.Rear);
-          const std::uint8_t border = this->Border[members[a].first];
+          const std::uint8_t border = this->Border[members[a]];
           for (int e = 0; e < 3 && !blocked[r]; ++e)
           {
             if (!(border & (1 << e)))
@@ -301,25 +300,34 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
       }
     }
   });
-  // Border edges: not shared with exactly one other face of a sheet.
-  this->Border.assign(nb, 0);
-  vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
+  // Per face: sheet face or not, its neighbours across its edges (faces of
+  // sheets), border edges (not shared with exactly one other sheet face).
+  this->Border.resize(nf);
+  this->Across.resize(3 * nf);
+  vtkSMPTools::For(0, nf, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType i = begin; i < end; ++i)
     {
-      if (this->FaceOf[k] < 0)
-      {
-        continue;
-      }
+      const std::int32_t k = faces[i].Boundary;
       std::uint8_t border = 0;
       for (int e = 0; e < 3; ++e)
       {
-        const std::int32_t j = adjacency.Across[4 * k + e];
-        border |= (j < 0 || this->FaceOf[j] < 0) ? (1 << e) : 0;
+        this->Across[3 * i + e] = -1;
       }
-      this->Border[k] = border;
+      if (k >= 0 && this->FaceOf[k] == i)
+      {
+        border = SheetFace;
+        for (int e = 0; e < 3; ++e)
+        {
+          const std::int32_t j = adjacency.Across[4 * static_cast<vtkIdType>(k) + e];
+          const std::int32_t other = j < 0 ? -1 : this->FaceOf[j];
+          this->Across[3 * i + e] = other;
+          border |= other < 0 ? (1 << e) : 0;
+        }
+      }
+      this->Border[i] = border;
     }
   });
-  this->Cover(adjacency, faces, data, grid, entryStart, entryFaces);
+  this->Cover(data, grid, entryStart, entryFaces);
 }
 
 double SheetCover::NearestRear(vtkIdType tile, double after) const

@@ -108,15 +108,20 @@ public:
   const SheetStats& GetStats() const { return this->Stats; }
 
 private:
-  void Cover(const BoundaryAdjacency& adjacency,
-    const std::vector<ViewFace>& faces, const FillBuffer<FaceData>& data, const PairGrid& grid,
-    const vtkIdType* entryStart, const vtkIdType* entryFaces);
+  void Cover(const FillBuffer<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
+    const vtkIdType* entryFaces);
 
   int NX = 0;
   /// Per boundary face: its face index in the view's faces if it is a sheet
-  /// face, else -1; and the bits of its border edges.
+  /// face, else -1.
   std::vector<std::int32_t> FaceOf;
-  std::vector<std::uint8_t> Border;
+  /// Per face of the view (what Cover() reads for each tile a face meets,
+  /// made once per face): SheetFace bit if it is a sheet face, and the bits
+  /// of its border edges; across each edge, the sheet face sharing it (a
+  /// face index), else -1.
+  static constexpr std::uint8_t SheetFace = 128;
+  FillBuffer<std::uint8_t> Border;
+  FillBuffer<std::int32_t> Across;
   /// Per tile (CSR): the covering sheets' depth ranges (front, rear) by
   /// decreasing front, each rear the least of those so far.
   std::vector<vtkIdType> CoverStart;
