@@ -35,12 +35,16 @@ struct TileRecord
   /// ENTRY: DepthBefore(front depth); EXIT: DepthAfter(rear depth) (the
   /// covering sheets' tests; the ENTRY records' order where the faces overlap deeply).
   double Far;
-  vtkIdType Cell;
-  vtkIdType Face; ///< index into the faces
-  /// The face's tiles (TileRange): IX and IY are monotone, so the tile of
-  /// max(x0 of two faces) is the max of their first tile columns, etc.
-  std::int32_t Tiles[4];
+  CellIndex Cell;
+  std::uint32_t Face; ///< index into the faces (at most 6 a cell: fits)
+  /// The face's tiles (TileRange; at most MaxGridSide a side): IX and
+  /// IY are monotone, so the tile of max(x0 of two faces) is the max of their
+  /// first tile columns, etc.
+  std::int16_t Tiles[4];
 };
+static_assert(sizeof(TileRecord) == 48, "compact records: the search streams through them");
+static_assert(MaxGridSide <= 32767, "tile columns and rows fit in 16 bits");
+static_assert(6 * static_cast<double>(MaxIndexedCells) < 4294967296.0, "face indices fit");
 
 /// Tile lists (CSR) of the EXIT ([0]) and ENTRY ([1]) faces, face indices in
 /// increasing order within each tile.
@@ -216,7 +220,7 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
           {
             // The second cell times 2, plus 1 if the edge needs no test (no
             // overflow: see the static_assert at the top).
-            found.emplace_back(F.Cell, 2 * G->Cell + (kind == ProvedEdge));
+            found.emplace_back(F.Cell, 2 * vtkIdType(G->Cell) + (kind == ProvedEdge));
           }
         }
         numBatch = 0;
@@ -538,9 +542,12 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
           std::copy(d.Box, d.Box + 4, r.Box);
           r.Depth = k == 1 ? d.Rear : DepthBefore(d.Front, g.Diagonal);
           r.Far = k == 1 ? DepthBefore(d.Front, g.Diagonal) : DepthAfter(d.Rear, g.Diagonal);
-          r.Cell = faces[fi].Cell;
-          r.Face = fi;
-          std::copy(b.Ranges[fi].begin(), b.Ranges[fi].end(), r.Tiles);
+          r.Cell = static_cast<CellIndex>(faces[fi].Cell);
+          r.Face = static_cast<std::uint32_t>(fi);
+          for (int q = 0; q < 4; ++q)
+          {
+            r.Tiles[q] = static_cast<std::int16_t>(b.Ranges[fi][q]);
+          }
         }
       });
   }

@@ -38,8 +38,8 @@ PairGrid MakePairGrid(const View& v, const FillBuffer<FaceData>& data)
   }
   double nx = width / w, ny = height / h;
   const double scale = std::sqrt(std::min(1.0, 4 * count / (nx * ny)));
-  nx = std::min(4096.0, std::max(1.0, std::floor(nx * scale)));
-  ny = std::min(4096.0, std::max(1.0, std::floor(ny * scale)));
+  nx = std::min<double>(MaxGridSide, std::max(1.0, std::floor(nx * scale)));
+  ny = std::min<double>(MaxGridSide, std::max(1.0, std::floor(ny * scale)));
   grid.NX = static_cast<int>(nx);
   grid.NY = static_cast<int>(ny);
   grid.DX = width / grid.NX;

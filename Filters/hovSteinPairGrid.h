@@ -59,6 +59,9 @@ inline double DepthAfter(double z, double diagonal)
   return z + 1e-9 * (std::abs(z) + diagonal);
 }
 
+/// The most tiles of the pair search's grid on a side.
+constexpr int MaxGridSide = 4096;
+
 /// Uniform screen grid of the pair search.
 struct PairGrid
 {
