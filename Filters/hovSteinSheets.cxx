@@ -2,6 +2,7 @@
 #include "hovSteinSheets.h"
 
 #include "hovGeometricPredicates.h" // exact Orient2d
+#include "hovSteinBuckets.h"         // ParallelBuckets
 #include "hovSteinRounding.h"       // FloatDown, FloatUp
 
 #include "vtkSMPTools.h"
@@ -37,29 +38,18 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
     }
   });
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
-  std::vector<vtkIdType> start(numPoints + 1, 0);
-  for (vtkIdType k = 0; k < nb; ++k)
-  {
-    for (int i = 0; i < sizes[k]; ++i)
-    {
-      ++start[corners[4 * k + i] + 1];
-    }
-  }
-  for (vtkIdType p = 0; p < numPoints; ++p)
-  {
-    start[p + 1] += start[p];
-  }
-  std::vector<std::int32_t> facesOf(start[numPoints]);
-  {
-    std::vector<vtkIdType> cursor(start.begin(), start.end() - 1);
-    for (vtkIdType k = 0; k < nb; ++k)
+  std::vector<vtkIdType> start;
+  FillBuffer<std::int32_t> facesOf;
+  auto items = [&](vtkIdType begin, vtkIdType end, auto&& emit) {
+    for (vtkIdType k = begin; k < end; ++k)
     {
       for (int i = 0; i < sizes[k]; ++i)
       {
-        facesOf[cursor[corners[4 * k + i]]++] = static_cast<std::int32_t>(k);
+        emit(corners[4 * k + i], [k]() { return static_cast<std::int32_t>(k); });
       }
     }
-  }
+  };
+  ParallelBuckets(nb, numPoints, items, start, facesOf);
   // Across edge (p, q) of face k: the one other boundary face with p and q,
   // if it runs that edge the other way, q to p (consistently oriented: the
   // two faces then lie on opposite sides of the edge when both face the eye).

@@ -2,7 +2,7 @@
 #include "hovSteinTopology.h"
 
 #include "hovGeometricPredicates.h" // exact Orient3d
-#include "hovSteinBuffers.h"         // FillBuffer
+#include "hovSteinBuckets.h"         // ParallelBuckets, FillBuffer
 
 #include "vtkSMPTools.h"
 
@@ -218,65 +218,30 @@ vtkIdType SmallestCorner(const Geometry& g, vtkIdType c, int f)
 
 /**
  * The faces of the supported cells (FaceEntry: entries c * 8 + f and their
- * keys) bucketed by their smallest corner id (counting sort, in parallel over
- * blocks of cells with a count per block and point): bucket p is
- * entries[start[p], start[p + 1]), in increasing entry order whatever the
- * number of blocks.
+ * keys) bucketed by their smallest corner id (ParallelBuckets): bucket p is
+ * entries[start[p], start[p + 1]), in increasing entry order.
  */
 template <typename Id>
 void BucketFaces(
   const Geometry& g, std::vector<vtkIdType>& start, FillBuffer<FaceEntry<Id>>& entries)
 {
-  const vtkIdType n = g.NumberOfCells;
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
-  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
-  // At most 4 blocks: the counts take numBlocks times the points' ids.
-  const vtkIdType numBlocks = std::max<vtkIdType>(1, std::min<vtkIdType>({ n, 2 * threads, 4 }));
-  auto forFaces = [&](vtkIdType block, auto&& fn) {
-    for (vtkIdType c = block * n / numBlocks; c < (block + 1) * n / numBlocks; ++c)
+  auto items = [&g](vtkIdType begin, vtkIdType end, auto&& emit) {
+    for (vtkIdType c = begin; c < end; ++c)
     {
       const int numFaces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
       for (int f = 0; f < numFaces; ++f)
       {
-        fn(c, f, SmallestCorner(g, c, f));
+        emit(SmallestCorner(g, c, f), [&g, c, f]() {
+          const std::array<vtkIdType, 4> k = FaceKey(g, c, f); // k[0] is the bucket
+          return FaceEntry<Id>{ { static_cast<Id>(k[1]), static_cast<Id>(k[2]),
+                                  static_cast<Id>(k[3]) },
+            static_cast<Id>(c * 8 + f) };
+        });
       }
     }
   };
-  // count[block * numPoints + p]: block's faces in bucket p, then its cursor there.
-  std::vector<vtkIdType> count(static_cast<size_t>(numBlocks) * numPoints, 0);
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    for (vtkIdType block = b0; block < b1; ++block)
-    {
-      vtkIdType* mine = count.data() + block * numPoints;
-      forFaces(block, [&](vtkIdType, int, vtkIdType p) { ++mine[p]; });
-    }
-  });
-  start.assign(numPoints + 1, 0);
-  vtkIdType total = 0;
-  for (vtkIdType p = 0; p < numPoints; ++p)
-  {
-    start[p] = total;
-    for (vtkIdType block = 0; block < numBlocks; ++block)
-    {
-      const vtkIdType k = count[block * numPoints + p];
-      count[block * numPoints + p] = total;
-      total += k;
-    }
-  }
-  start[numPoints] = total;
-  entries.resize(total);
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    for (vtkIdType block = b0; block < b1; ++block)
-    {
-      vtkIdType* cursor = count.data() + block * numPoints;
-      forFaces(block, [&](vtkIdType c, int f, vtkIdType p) {
-        const std::array<vtkIdType, 4> k = FaceKey(g, c, f); // k[0] is p
-        entries[cursor[p]++] = FaceEntry<Id>{ { static_cast<Id>(k[1]), static_cast<Id>(k[2]),
-                                                static_cast<Id>(k[3]) },
-          static_cast<Id>(c * 8 + f) };
-      });
-    }
-  });
+  ParallelBuckets(g.NumberOfCells, numPoints, items, start, entries);
 }
 
 /**

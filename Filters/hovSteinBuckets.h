@@ -1,0 +1,75 @@
+/**
+ * @file hovSteinBuckets.h
+ * @brief A counting sort in parallel for the Stein sort's set-up: items
+ *        bucketed by integer keys (faces by point), in item order within
+ *        each bucket whatever the number of threads.
+ *
+ * The items are cut into at most 4 blocks (2 per thread), each with its own
+ * count per key: counting and scattering run in parallel, and the buckets
+ * hold their items in increasing item order (the blocks are laid out block
+ * after block inside each bucket). The counts take numBlocks times the keys.
+ *
+ * Thread safety: the callbacks run concurrently on disjoint item ranges.
+ */
+#ifndef hovSteinBuckets_h
+#define hovSteinBuckets_h
+
+#include "hovSteinBuffers.h" // FillBuffer
+
+#include "vtkSMPTools.h"
+#include "vtkType.h" // vtkIdType
+
+#include <algorithm> // std::min, std::max
+#include <vector>
+
+namespace hovStein
+{
+/**
+ * Buckets items [0, @p numItems) by keys in [0, @p numKeys): @p items(begin,
+ * end, emit) calls emit(key, value) for each key of each item of [begin,
+ * end), in item order, where value() makes the stored element (called only
+ * when scattering). Bucket k is out[start[k], start[k + 1]).
+ */
+template <class T, class ItemsFn>
+void ParallelBuckets(vtkIdType numItems, vtkIdType numKeys, const ItemsFn& items,
+  std::vector<vtkIdType>& start, FillBuffer<T>& out)
+{
+  const vtkIdType threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const vtkIdType numBlocks =
+    std::max<vtkIdType>(1, std::min<vtkIdType>(std::min<vtkIdType>(numItems, 2 * threads), 4));
+  auto first = [&](vtkIdType block) { return block * numItems / numBlocks; };
+  // count[block * numKeys + k]: the block's items in bucket k, then its cursor there.
+  std::vector<vtkIdType> count(static_cast<size_t>(numBlocks) * numKeys, 0);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType block = b0; block < b1; ++block)
+    {
+      vtkIdType* mine = count.data() + block * numKeys;
+      items(first(block), first(block + 1), [mine](vtkIdType key, auto&&) { ++mine[key]; });
+    }
+  });
+  start.assign(numKeys + 1, 0);
+  vtkIdType total = 0;
+  for (vtkIdType k = 0; k < numKeys; ++k)
+  {
+    start[k] = total;
+    for (vtkIdType block = 0; block < numBlocks; ++block)
+    {
+      const vtkIdType c = count[block * numKeys + k];
+      count[block * numKeys + k] = total;
+      total += c;
+    }
+  }
+  start[numKeys] = total;
+  out.resize(total);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType block = b0; block < b1; ++block)
+    {
+      vtkIdType* cursor = count.data() + block * numKeys;
+      items(first(block), first(block + 1),
+        [cursor, &out](vtkIdType key, auto&& value) { out[cursor[key]++] = value(); });
+    }
+  });
+}
+}
+
+#endif
