@@ -8,20 +8,25 @@
 // two on the same side of others) those faces are boundary faces. And the
 // 32-bit face entries give exactly the arrays of the 64-bit ones
 // (Topology::Build's wideEntries), so the wide path, used only beyond 4G
-// points or 512M cells, is exercised.
+// points or 512M cells, is exercised. ParallelBuckets (the counting sort of
+// the set-up) gives a serial stable counting sort's buckets under 1, 2, 3 and
+// 4 threads and the Sequential backend.
 #include "hovSortMeshes.h"
+#include "hovSteinBuckets.h"
 #include "hovSteinTopology.h"
 #include "hovTestScenes.h"
 
 #include "vtkCell.h"
 #include "vtkGenericCell.h"
 #include "vtkNew.h"
+#include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <array>
 #include <iostream>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <utility>
@@ -185,6 +190,62 @@ void Run(Checker& ck, const std::string& name, vtkUnstructuredGrid* grid, bool c
   }
 }
 
+/// ParallelBuckets against a serial stable counting sort on random items
+/// (0 to 3 keys each, some keys never used) under several thread counts.
+void CheckBuckets(Checker& ck)
+{
+  std::mt19937 rng(17);
+  const vtkIdType numItems = 20011, numKeys = 997;
+  std::vector<std::vector<vtkIdType>> keys(numItems);
+  for (auto& k : keys)
+  {
+    const int m = static_cast<int>(rng() % 4);
+    for (int i = 0; i < m; ++i)
+    {
+      k.push_back(static_cast<vtkIdType>(rng() % (numKeys - 7)));
+    }
+  }
+  std::vector<std::vector<vtkIdType>> expected(numKeys);
+  for (vtkIdType item = 0; item < numItems; ++item)
+  {
+    for (vtkIdType k : keys[item])
+    {
+      expected[k].push_back(3 * item + 1);
+    }
+  }
+  auto items = [&keys](vtkIdType begin, vtkIdType end, auto&& emit) {
+    for (vtkIdType item = begin; item < end; ++item)
+    {
+      for (vtkIdType k : keys[item])
+      {
+        emit(k, [item]() { return 3 * item + 1; });
+      }
+    }
+  };
+  struct Setting
+  {
+    int Threads;
+    std::string Backend;
+  };
+  for (const Setting& setting : std::vector<Setting>{ { 1, "TBB" }, { 2, "TBB" }, { 3, "TBB" },
+         { 4, "TBB" }, { 1, "Sequential" } })
+  {
+    std::vector<vtkIdType> start;
+    hovStein::FillBuffer<vtkIdType> out;
+    vtkSMPTools::LocalScope(vtkSMPTools::Config{ setting.Threads, setting.Backend, false },
+      [&]() { hovStein::ParallelBuckets(numItems, numKeys, items, start, out); });
+    bool same = static_cast<vtkIdType>(start.size()) == numKeys + 1 && start[0] == 0;
+    for (vtkIdType k = 0; same && k < numKeys; ++k)
+    {
+      same = std::vector<vtkIdType>(out.begin() + start[k], out.begin() + start[k + 1]) ==
+        expected[k];
+    }
+    ck.Check(same,
+      "ParallelBuckets, " + setting.Backend + " " + std::to_string(setting.Threads) +
+        " thread(s): the buckets of a serial stable counting sort");
+  }
+}
+
 /// @p grid with a copy of cell @p c appended.
 vtkSmartPointer<vtkUnstructuredGrid> WithCopy(vtkUnstructuredGrid* grid, vtkIdType c)
 {
@@ -200,6 +261,7 @@ vtkSmartPointer<vtkUnstructuredGrid> WithCopy(vtkUnstructuredGrid* grid, vtkIdTy
 int TestSteinTopology(int, char*[])
 {
   Checker ck;
+  CheckBuckets(ck);
   const double o[3] = { -1.25, 0.5, 3.0 }, size[3] = { 2.0, 1.5, 0.75 };
   vtkSmartPointer<vtkUnstructuredGrid> tets = JitteredTetBlock(5, 4, 3, o, size, 0.3, 7).Grid();
   Run(ck, "jittered Kuhn tetrahedra", tets, true);
