@@ -50,10 +50,12 @@ vtkIdType Kahn(Digraph& d, vtkIdType* queue, vtkIdType tail)
     {
       Prefetch(offsets + queue[head + 16]);
       Prefetch(counts + queue[head + 16]);
+      Prefetch(extraOffsets + queue[head + 16]);
     }
     if (head + 8 < tail)
     {
       Prefetch(targets + offsets[queue[head + 8]]);
+      Prefetch(extraTargets + extraOffsets[queue[head + 8]]);
     }
     if (head + 4 < tail)
     {
@@ -61,6 +63,10 @@ vtkIdType Kahn(Digraph& d, vtkIdType* queue, vtkIdType tail)
       for (int k = 0; k < counts[w]; ++k)
       {
         Prefetch(indeg + targets[offsets[w] + k]);
+      }
+      for (vtkIdType e = extraOffsets[w]; e < extraOffsets[w + 1]; ++e)
+      {
+        Prefetch(indeg + extraTargets[e]);
       }
     }
     const vtkIdType u = queue[head];
