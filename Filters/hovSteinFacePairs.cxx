@@ -231,38 +231,59 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
   // Inside by 1e-4 of the extents: the overlap holds a disc far larger than
   // what Obstructs() treats as touching (1e-10 of the cells' hull areas).
   const double margin = Margin(f, e, 1e-4);
-  double c[2][2];
+  // EdgeSide(t, k, x, margin) > 0 for the six edges, each set up once:
+  // sign * s > tol, the same s and tol (an edge without area proves nothing).
+  double edge[6][6]; // p.x, p.y, e.x, e.y, tol, sign of the third corner's side
+  for (int k = 0; k < 6; ++k)
+  {
+    const double(*t)[2] = k < 3 ? f.Corners : e.Corners;
+    const double* p = t[k % 3];
+    const double* q = t[(k + 1) % 3];
+    const double* r = t[(k + 2) % 3];
+    const double ex = q[0] - p[0], ey = q[1] - p[1];
+    const double c = ex * (r[1] - p[1]) - ey * (r[0] - p[0]);
+    if (c == 0)
+    {
+      return false;
+    }
+    edge[k][0] = p[0];
+    edge[k][1] = p[1];
+    edge[k][2] = ex;
+    edge[k][3] = ey;
+    edge[k][4] = margin * (std::abs(ex) + std::abs(ey));
+    edge[k][5] = c > 0 ? 1.0 : -1.0;
+  }
+  auto insideBoth = [&edge](const double x[2]) {
+    for (int k = 0; k < 6; ++k)
+    {
+      const double* d = edge[k];
+      if (!(d[5] * (d[2] * (x[1] - d[1]) - d[3] * (x[0] - d[0])) > d[4]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  double c[2][2], lo[2][2], hi[2][2];
   for (int t = 0; t < 2; ++t)
   {
-    const FaceData& a = t ? e : f;
-    c[t][0] = (a.Corners[0][0] + a.Corners[1][0] + a.Corners[2][0]) / 3;
-    c[t][1] = (a.Corners[0][1] + a.Corners[1][1] + a.Corners[2][1]) / 3;
-  }
-  auto insideBoth = [&](const double x[2]) {
-    bool inside = true;
-    for (int k = 0; k < 6 && inside; ++k)
+    const double(*a)[2] = t ? e.Corners : f.Corners;
+    for (int i = 0; i < 2; ++i)
     {
-      inside = EdgeSide(k < 3 ? f.Corners : e.Corners, k % 3, x, margin) > 0;
+      c[t][i] = (a[0][i] + a[1][i] + a[2][i]) / 3;
+      lo[t][i] = std::min({ a[0][i], a[1][i], a[2][i] });
+      hi[t][i] = std::max({ a[0][i], a[1][i], a[2][i] });
     }
-    return inside;
-  };
+  }
   for (int t = 0; t < 4; ++t)
   {
     double x[2];
-    if (t < 2)
+    for (int i = 0; i < 2; ++i)
     {
-      x[0] = c[t][0];
-      x[1] = c[t][1];
-    }
-    else if (t == 2)
-    {
-      x[0] = 0.5 * (c[0][0] + c[1][0]);
-      x[1] = 0.5 * (c[0][1] + c[1][1]);
-    }
-    else
-    {
-      x[0] = 0.5 * (std::max(f.Box[0], e.Box[0]) + double(std::min(f.Box[1], e.Box[1])));
-      x[1] = 0.5 * (std::max(f.Box[2], e.Box[2]) + double(std::min(f.Box[3], e.Box[3])));
+      // The centroids, their midpoint, the centre of the extents' overlap.
+      x[i] = t < 2 ? c[t][i]
+        : t == 2   ? 0.5 * (c[0][i] + c[1][i])
+                   : 0.5 * (std::max(lo[0][i], lo[1][i]) + std::min(hi[0][i], hi[1][i]));
     }
     if (insideBoth(x))
     {
