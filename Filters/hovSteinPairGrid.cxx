@@ -3,31 +3,69 @@
 
 #include "hovSteinView.h" // View
 
+#include "vtkSMPTools.h"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace hovStein
 {
 PairGrid MakePairGrid(const View& v, const FillBuffer<FaceData>& data)
 {
+  // In parallel over fixed chunks, each chunk's partial results combined in
+  // chunk order: the grid does not depend on the number of threads.
+  const vtkIdType n = static_cast<vtkIdType>(data.size());
+  constexpr vtkIdType Chunk = 8192;
+  const vtkIdType numChunks = (n + Chunk - 1) / Chunk;
+  std::vector<std::array<double, 4>> partial(numChunks);
+  auto forChunks = [&](auto&& fn) {
+    vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType c0, vtkIdType c1) {
+      for (vtkIdType c = c0; c < c1; ++c)
+      {
+        fn(c * Chunk, std::min(n, (c + 1) * Chunk), partial[c]);
+      }
+    });
+  };
+  forChunks([&](vtkIdType begin, vtkIdType end, std::array<double, 4>& r) {
+    r = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const float* box = data[i].Box;
+      r[0] = std::min(r[0], double(box[0]));
+      r[1] = std::max(r[1], double(box[1]));
+      r[2] = std::min(r[2], double(box[2]));
+      r[3] = std::max(r[3], double(box[3]));
+    }
+  });
   double r[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (const FaceData& d : data)
+  for (const std::array<double, 4>& p : partial)
   {
-    r[0] = std::min(r[0], double(d.Box[0]));
-    r[1] = std::max(r[1], double(d.Box[1]));
-    r[2] = std::min(r[2], double(d.Box[2]));
-    r[3] = std::max(r[3], double(d.Box[3]));
+    r[0] = std::min(r[0], p[0]);
+    r[1] = std::max(r[1], p[1]);
+    r[2] = std::min(r[2], p[2]);
+    r[3] = std::max(r[3], p[3]);
   }
   const double* win = v.Frame.Window;
   PairGrid grid;
   grid.X0 = std::max(r[0], win[0]);
   grid.Y0 = std::max(r[2], win[2]);
   const double width = std::min(r[1], win[1]) - grid.X0, height = std::min(r[3], win[3]) - grid.Y0;
+  forChunks([&](vtkIdType begin, vtkIdType end, std::array<double, 4>& sum) {
+    sum = { 0, 0, 0, 0 };
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      const float* box = data[i].Box;
+      sum[0] += std::min(double(box[1]) - box[0], width);
+      sum[1] += std::min(double(box[3]) - box[2], height);
+    }
+  });
   double w = 0, h = 0;
-  for (const FaceData& d : data)
+  for (const std::array<double, 4>& sum : partial)
   {
-    w += std::min(double(d.Box[1]) - d.Box[0], width);
-    h += std::min(double(d.Box[3]) - d.Box[2], height);
+    w += sum[0];
+    h += sum[1];
   }
   const double count = std::max<double>(1, static_cast<double>(data.size()));
   w /= count;
