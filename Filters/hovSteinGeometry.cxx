@@ -360,9 +360,10 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   this->Planes.shrink_to_fit(); // a tetrahedral mesh after a hexahedral one keeps nothing
 
   // Pass 2: corners, face orientation and planes.
-  // A 64-bit cell array hands out its own ids (no copy, thread safe).
-  vtkCellArray* shared =
-    source.Grid && source.Grid->GetCells()->IsStorage64Bit() ? source.Grid->GetCells() : nullptr;
+  // A cell array whose storage is vtkIdType hands out its own ids (no copy,
+  // no shared temporary: thread safe). A grid after Initialize() has none.
+  vtkCellArray* cells = source.Grid ? source.Grid->GetCells() : nullptr;
+  vtkCellArray* shared = cells && cells->IsStorageShareable() ? cells : nullptr;
   auto pass2 = [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType c = begin; c < end; ++c)
     {

@@ -340,9 +340,15 @@ int TestSteinSortBasics(int, char*[])
     Check(sizes && chunks == all && all.size() == 384, "chunks of 7 concatenate to GetOrder()");
   }
 
-  // Empty input: no cells, no error.
+  // Empty input: no cells, no error; also a grid after Initialize(), whose
+  // cell array is null.
+  for (int initialized = 0; initialized < 2; ++initialized)
   {
     vtkNew<vtkUnstructuredGrid> empty;
+    if (initialized)
+    {
+      empty->Initialize();
+    }
     vtkNew<vtkSteinVisibilitySort> sort;
     vtkNew<vtkTest::ErrorObserver> obs;
     sort->AddObserver(vtkCommand::ErrorEvent, obs);
@@ -351,7 +357,8 @@ int TestSteinSortBasics(int, char*[])
     sort->SetCamera(cam);
     sort->InitTraversal();
     Check(sort->GetNextCells() == nullptr && !obs->GetError() && !obs->GetWarning(),
-      "empty input: nothing, no error");
+      initialized ? "empty input after Initialize() (null cell array): nothing, no error"
+                  : "empty input: nothing, no error");
   }
 
   // An unsupported cell among tetrahedra: a warning, output first, once.
