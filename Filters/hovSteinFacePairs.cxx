@@ -24,24 +24,34 @@ double Margin(const FaceData& d, const FaceData& e, double relative)
 }
 
 /**
- * Where @p x lies from edge @p k of the screen triangle @p t: +1 inside (the
- * third corner's side) by more than @p margin, -1 outside by more, 0 near the
- * line or for an edge without area.
+ * Edge k of a screen triangle set up once for side tests with a margin:
+ * Side(x) is the signed distance of @p x times |q - p| (positive on the third
+ * corner's side), Tol the margin times |ex| + |ey| (>= margin * |q - p|). x
+ * lies inside by more than the margin iff Side(x) > Tol, outside by more iff
+ * Side(x) < -Tol; an edge without area (Sign 0) has neither.
  */
-int EdgeSide(const double t[3][2], int k, const double x[2], double margin)
+struct EdgeLine
 {
-  const double* p = t[k];
-  const double* q = t[(k + 1) % 3];
-  const double ex = q[0] - p[0], ey = q[1] - p[1];
-  const double c = ex * (t[(k + 2) % 3][1] - p[1]) - ey * (t[(k + 2) % 3][0] - p[0]);
-  const double s = ex * (x[1] - p[1]) - ey * (x[0] - p[0]); // distance * |q - p|
-  const double tol = margin * (std::abs(ex) + std::abs(ey)); // >= margin * |q - p|
-  if (c == 0 || std::abs(s) <= tol)
+  double PX, PY, EX, EY, Tol, Sign;
+  EdgeLine() = default;
+  EdgeLine(const double t[3][2], int k, double margin)
   {
-    return 0;
+    const double* p = t[k];
+    const double* q = t[(k + 1) % 3];
+    const double* r = t[(k + 2) % 3];
+    this->PX = p[0];
+    this->PY = p[1];
+    this->EX = q[0] - p[0];
+    this->EY = q[1] - p[1];
+    const double c = this->EX * (r[1] - p[1]) - this->EY * (r[0] - p[0]);
+    this->Tol = margin * (std::abs(this->EX) + std::abs(this->EY));
+    this->Sign = c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0);
   }
-  return (s > 0) == (c > 0) ? 1 : -1;
-}
+  double Side(const double x[2]) const
+  {
+    return this->Sign * (this->EX * (x[1] - this->PY) - this->EY * (x[0] - this->PX));
+  }
+};
 
 /// @p t's corners counterclockwise into @p out; false if it has no area.
 bool CounterClockwise(const double t[3][2], double out[][2])
@@ -201,17 +211,12 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e)
     const double(*b)[2] = t ? d.Corners : e.Corners;
     for (int k = 0; k < 3; ++k)
     {
-      // EdgeSide(a, k, b[j], margin) < 0 for every j, the edge computed once.
-      const double* p = a[k];
-      const double* q = a[(k + 1) % 3];
-      const double ex = q[0] - p[0], ey = q[1] - p[1];
-      const double c = ex * (a[(k + 2) % 3][1] - p[1]) - ey * (a[(k + 2) % 3][0] - p[0]);
-      const double tol = margin * (std::abs(ex) + std::abs(ey));
-      bool apart = c != 0;
+      // Every corner of b outside edge k of a by more than the margin.
+      const EdgeLine line(a, k, margin);
+      bool apart = line.Sign != 0;
       for (int j = 0; j < 3 && apart; ++j)
       {
-        const double s = ex * (b[j][1] - p[1]) - ey * (b[j][0] - p[0]);
-        apart = std::abs(s) > tol && (s > 0) != (c > 0);
+        apart = line.Side(b[j]) < -line.Tol;
       }
       if (apart)
       {
@@ -231,33 +236,20 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
   // Inside by 1e-4 of the extents: the overlap holds a disc far larger than
   // what Obstructs() treats as touching (1e-10 of the cells' hull areas).
   const double margin = Margin(f, e, 1e-4);
-  // EdgeSide(t, k, x, margin) > 0 for the six edges, each set up once:
-  // sign * s > tol, the same s and tol (an edge without area proves nothing).
-  double edge[6][6]; // p.x, p.y, e.x, e.y, tol, sign of the third corner's side
+  // Inside both triangles by more than the margin: the six edges set up once.
+  EdgeLine edges[6];
   for (int k = 0; k < 6; ++k)
   {
-    const double(*t)[2] = k < 3 ? f.Corners : e.Corners;
-    const double* p = t[k % 3];
-    const double* q = t[(k + 1) % 3];
-    const double* r = t[(k + 2) % 3];
-    const double ex = q[0] - p[0], ey = q[1] - p[1];
-    const double c = ex * (r[1] - p[1]) - ey * (r[0] - p[0]);
-    if (c == 0)
+    edges[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3, margin);
+    if (edges[k].Sign == 0)
     {
-      return false;
+      return false; // a triangle without area proves nothing
     }
-    edge[k][0] = p[0];
-    edge[k][1] = p[1];
-    edge[k][2] = ex;
-    edge[k][3] = ey;
-    edge[k][4] = margin * (std::abs(ex) + std::abs(ey));
-    edge[k][5] = c > 0 ? 1.0 : -1.0;
   }
-  auto insideBoth = [&edge](const double x[2]) {
-    for (int k = 0; k < 6; ++k)
+  auto insideBoth = [&edges](const double x[2]) {
+    for (const EdgeLine& line : edges)
     {
-      const double* d = edge[k];
-      if (!(d[5] * (d[2] * (x[1] - d[1]) - d[3] * (x[0] - d[0])) > d[4]))
+      if (!(line.Side(x) > line.Tol))
       {
         return false;
       }

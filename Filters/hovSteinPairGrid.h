@@ -24,8 +24,9 @@ namespace hovStein
 /**
  * Per-view data of one face of the pair search: screen corners, extents, depth
  * range, corner ids. Two cache lines: the first holds all that the screen
- * tests read (ApartOnScreen, InFrontOnScreen, the covering sheets), so a test
- * on a pair of faces met in random order loads one line of each.
+ * tests of a face pair read (ApartOnScreen, InFrontOnScreen: corners, scale,
+ * extent, flags), so a pair of faces met in random order loads one line of
+ * each; the second the extents, depths and ids (records, sheets, planes).
  */
 struct alignas(64) FaceData
 {

@@ -111,15 +111,16 @@ bool OtherOutside(
 
 /**
  * A face in its bucket (whose point id is the face's smallest corner id): its
- * other corner ids, sorted (a triangle's third is -1, as in FaceKey), and its
- * entry c * 8 + f, so that matching reads the bucket alone, not the cells'
- * tables at random. Id: 32 bits where the point ids and entries fit (16 bytes
- * a face), else vtkIdType.
+ * other corner ids plus one, sorted (a triangle's third is 0: FaceKey's -1,
+ * first in either width), and its entry c * 8 + f, so that matching reads the
+ * bucket alone, not the cells' tables at random. Id: 32 bits where the point
+ * ids and entries fit (16 bytes a face), else vtkIdType (32 bytes a face:
+ * beyond 4G points or 512M cells only).
  */
 template <typename Id>
 struct FaceEntry
 {
-  Id K[3];
+  Id K[3]; ///< FaceKey()[1..3] + 1
   Id Entry;
   bool operator<(const FaceEntry& o) const
   {
@@ -136,7 +137,7 @@ struct FaceEntry
   int Face() const { return static_cast<int>(this->Entry & 7); }
 };
 
-/// Whether FaceEntry<std::uint32_t> holds every point id (and -1) and entry.
+/// Whether FaceEntry<std::uint32_t> holds every point id + 1 and entry.
 bool NarrowEntries(const Geometry& g)
 {
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
@@ -169,7 +170,7 @@ void MatchBucket(const Geometry& g, vtkIdType p, FaceEntry<Id>* e, vtkIdType m, 
       std::array<vtkIdType, 4> key = { p, -1, -1, -1 };
       for (int k = 0; k < 3; ++k)
       {
-        key[k + 1] = e[i].K[k] == static_cast<Id>(-1) ? -1 : static_cast<vtkIdType>(e[i].K[k]);
+        key[k + 1] = static_cast<vtkIdType>(e[i].K[k]) - 1;
       }
       interior = a != b && mode != FaceSkip && (g.FaceCode(b, fb) & 3) != FaceSkip &&
         OtherOutside(g, a, fa, b, key);
@@ -234,8 +235,8 @@ void BucketFaces(
       {
         emit(SmallestCorner(g, c, f), [&g, c, f]() {
           const std::array<vtkIdType, 4> k = FaceKey(g, c, f); // k[0] is the bucket
-          return FaceEntry<Id>{ { static_cast<Id>(k[1]), static_cast<Id>(k[2]),
-                                  static_cast<Id>(k[3]) },
+          return FaceEntry<Id>{ { static_cast<Id>(k[1] + 1), static_cast<Id>(k[2] + 1),
+                                  static_cast<Id>(k[3] + 1) },
             static_cast<Id>(c * 8 + f) };
         });
       }

@@ -8,7 +8,8 @@
 // two on the same side of others) those faces are boundary faces. And the
 // 32-bit face entries give exactly the arrays of the 64-bit ones
 // (Topology::Build's wideEntries), so the wide path, used only beyond 4G
-// points or 512M cells, is exercised. ParallelBuckets (the counting sort of
+// points or 512M cells, is exercised (also where a triangle's and a
+// quadrilateral's keys agree on three ids: overlapping cells). ParallelBuckets (the counting sort of
 // the set-up) gives a serial stable counting sort's buckets under 1, 2, 3 and
 // 4 threads and the Sequential backend.
 #include "hovSortMeshes.h"
@@ -18,7 +19,9 @@
 
 #include "vtkCell.h"
 #include "vtkGenericCell.h"
+#include "vtkCellType.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -190,12 +193,13 @@ void Run(Checker& ck, const std::string& name, vtkUnstructuredGrid* grid, bool c
   }
 }
 
-/// ParallelBuckets against a serial stable counting sort on random items
-/// (0 to 3 keys each, some keys never used) under several thread counts.
-void CheckBuckets(Checker& ck)
+/// ParallelBuckets against a serial stable counting sort on @p numItems
+/// random items (0 to 3 keys each, some keys never used) under several
+/// thread counts.
+void CheckBuckets(Checker& ck, vtkIdType numItems)
 {
   std::mt19937 rng(17);
-  const vtkIdType numItems = 20011, numKeys = 997;
+  const vtkIdType numKeys = 997;
   std::vector<std::vector<vtkIdType>> keys(numItems);
   for (auto& k : keys)
   {
@@ -241,9 +245,36 @@ void CheckBuckets(Checker& ck)
         expected[k];
     }
     ck.Check(same,
-      "ParallelBuckets, " + setting.Backend + " " + std::to_string(setting.Threads) +
-        " thread(s): the buckets of a serial stable counting sort");
+      "ParallelBuckets, " + std::to_string(numItems) + " items, " + setting.Backend + " " +
+        std::to_string(setting.Threads) + " thread(s): a serial stable counting sort's buckets");
   }
+}
+
+/**
+ * Overlapping cells (not a valid mesh): two pyramids sharing their square
+ * base (0, 1, 2, 3) and two tetrahedra sharing the triangle (0, 1, 2) in the
+ * same plane, on opposite sides each. Both shared faces are interior, and
+ * their sorted keys agree on their first three ids: the triangle's padding
+ * must sort the same way with 32-bit and 64-bit face entries.
+ */
+vtkSmartPointer<vtkUnstructuredGrid> TriangleInQuad()
+{
+  vtkNew<vtkPoints> points;
+  const double xyz[6][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 0.5, 0.5, 1 }, { 0.5, 0.5, -1 } };
+  for (const auto& p : xyz)
+  {
+    points->InsertNextPoint(p);
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  const vtkIdType up[5] = { 0, 1, 2, 3, 4 }, down[5] = { 0, 3, 2, 1, 5 };
+  const vtkIdType tetUp[4] = { 0, 1, 2, 4 }, tetDown[4] = { 0, 2, 1, 5 };
+  grid->InsertNextCell(VTK_TETRA, 4, tetUp);
+  grid->InsertNextCell(VTK_PYRAMID, 5, up);
+  grid->InsertNextCell(VTK_TETRA, 4, tetDown);
+  grid->InsertNextCell(VTK_PYRAMID, 5, down);
+  return grid;
 }
 
 /// @p grid with a copy of cell @p c appended.
@@ -261,7 +292,10 @@ vtkSmartPointer<vtkUnstructuredGrid> WithCopy(vtkUnstructuredGrid* grid, vtkIdTy
 int TestSteinTopology(int, char*[])
 {
   Checker ck;
-  CheckBuckets(ck);
+  for (vtkIdType numItems : { 0, 1, 3, 20011 }) // 1, 3, 2 or 4 blocks
+  {
+    CheckBuckets(ck, numItems);
+  }
   const double o[3] = { -1.25, 0.5, 3.0 }, size[3] = { 2.0, 1.5, 0.75 };
   vtkSmartPointer<vtkUnstructuredGrid> tets = JitteredTetBlock(5, 4, 3, o, size, 0.3, 7).Grid();
   Run(ck, "jittered Kuhn tetrahedra", tets, true);
@@ -272,5 +306,6 @@ int TestSteinTopology(int, char*[])
   // three cells, or by two on the same side.
   const vtkIdType middle = tets->GetNumberOfCells() / 2;
   Run(ck, "tetrahedra with a duplicated cell", WithCopy(tets, middle), false, middle);
+  Run(ck, "a triangle inside a quadrilateral (overlapping cells)", TriangleInQuad(), false);
   return ck.Result();
 }
