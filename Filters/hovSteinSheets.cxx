@@ -205,7 +205,9 @@ void SheetCover::Cover(const FillBuffer<FaceData>& data, const PairGrid& grid,
             blocked[r] = grid.IX(FloatDown(x0 - mx)) <= ix && ix <= grid.IX(FloatUp(x1 + mx)) &&
               grid.IY(FloatDown(y0 - my)) <= iy && iy <= grid.IY(FloatUp(y1 + my));
           }
-          if (!inside[r])
+          // (Outside the face's extents, rounded outwards: not inside.)
+          if (!inside[r] && d.Box[0] <= centre[0] && centre[0] <= d.Box[1] &&
+            d.Box[2] <= centre[1] && centre[1] <= d.Box[3])
           {
             inside[r] = StrictlyInside(d, centre);
           }
