@@ -8,8 +8,8 @@
  * bucketed by their smallest point id (a counting sort, O(faces)) and each
  * bucket is sorted and scanned in parallel. Each bucket entry carries its
  * face's other sorted corner ids (computed while the cells are read in order),
- * so the matching reads the bucket, not the cells' tables at random. A face is INTERIOR when exactly two
- * cells A and B share it, both have a usable face code there (not FaceSkip), and
+ * so the matching reads the bucket, not the cells' tables at random. A face is
+ * INTERIOR when exactly two cells A and B share it, both have a usable face code there (not FaceSkip), and
  * B lies on the outer side of A's face: exact faces need every corner of B on
  * the closed outer side (exact Orient3d) and one strictly outside; Newell faces
  * need B's corners off the face outside its deviation slab. Every other face

@@ -9,9 +9,10 @@
 // 32-bit face entries give exactly the arrays of the 64-bit ones
 // (Topology::Build's wideEntries), so the wide path, used only beyond 4G
 // points or 512M cells, is exercised (also where a triangle's and a
-// quadrilateral's keys agree on three ids: overlapping cells). ParallelBuckets (the counting sort of
-// the set-up) gives a serial stable counting sort's buckets under 1, 2, 3 and
-// 4 threads and the Sequential backend.
+// quadrilateral's keys agree on three ids: overlapping cells).
+// ParallelBuckets (the counting sort of the set-up) gives a serial stable
+// counting sort's buckets for 0 to 20011 items (1 to 4 blocks) under 1 to 4
+// threads and the Sequential backend.
 #include "hovSortMeshes.h"
 #include "hovSteinBuckets.h"
 #include "hovSteinTopology.h"
@@ -134,7 +135,8 @@ void Run(Checker& ck, const std::string& name, vtkUnstructuredGrid* grid, bool c
     single += cells.size() == 1;
     if (cells.size() == 2)
     {
-      expected.insert({ entry.first, { std::min(cells[0], cells[1]), std::max(cells[0], cells[1]) } });
+      expected.insert(
+        { entry.first, { std::min(cells[0], cells[1]), std::max(cells[0], cells[1]) } });
     }
   }
   long boundaryBits = 0;
@@ -168,7 +170,8 @@ void Run(Checker& ck, const std::string& name, vtkUnstructuredGrid* grid, bool c
     name + ": per-cell lists hold each interior face on both sides");
   ck.Check(static_cast<size_t>(boundaryBits) == narrow.Boundary.size(),
     name + ": boundary list = boundary bits");
-  ck.Check(SameArrays(narrow, wide), name + ": 32-bit and 64-bit face entries give the same topology");
+  ck.Check(
+    SameArrays(narrow, wide), name + ": 32-bit and 64-bit face entries give the same topology");
   if (conforming)
   {
     ck.Check(ours == expected, name + ": interior faces = the faces two cells share (VTK's faces)");
