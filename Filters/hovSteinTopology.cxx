@@ -60,8 +60,9 @@ std::array<vtkIdType, 4> FaceKey(const Geometry& g, vtkIdType c, int f)
 /**
  * True when every corner of cell @p other lies on the closed outer side of
  * face f of cell c (sorted corner ids @p key: FaceKey), one strictly (Newell
- * faces: all corners off the face strictly outside the deviation slab). Cell c lies on the inner side by
- * construction, so the plane separates the two cells.
+ * faces: all corners off the face strictly outside the deviation slab). Cell
+ * c lies on the inner side by construction, so the plane separates the two
+ * cells.
  */
 bool OtherOutside(
   const Geometry& g, vtkIdType c, int f, vtkIdType other, const std::array<vtkIdType, 4>& key)
