@@ -29,30 +29,22 @@ namespace
 long AlignedFaces(vtkUnstructuredGrid* grid)
 {
   long count = 0;
-  vtkNew<vtkGenericCell> cell;
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-  {
-    grid->GetCell(c, cell);
-    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+  ForEachVTKFace(grid, [&](vtkIdType, const std::vector<vtkIdType>& ids) {
+    for (int k = 0; k < 3; ++k)
     {
-      vtkCell* face = cell->GetFace(f);
-      const int n = static_cast<int>(face->GetNumberOfPoints());
-      for (int k = 0; k < 3; ++k)
+      bool same = true;
+      const double first = grid->GetPoint(ids[0])[k];
+      for (size_t i = 1; i < ids.size(); ++i)
       {
-        bool same = true;
-        const double first = grid->GetPoint(face->GetPointId(0))[k];
-        for (int i = 1; i < n; ++i)
-        {
-          same = same && grid->GetPoint(face->GetPointId(i))[k] == first;
-        }
-        if (same)
-        {
-          ++count;
-          break;
-        }
+        same = same && grid->GetPoint(ids[i])[k] == first;
+      }
+      if (same)
+      {
+        ++count;
+        break;
       }
     }
-  }
+  });
   return count;
 }
 

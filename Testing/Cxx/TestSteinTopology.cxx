@@ -55,22 +55,9 @@ Key SortedKey(const vtkIdType* ids, int n)
 std::map<Key, std::vector<vtkIdType>> ReferenceFaces(vtkUnstructuredGrid* grid)
 {
   std::map<Key, std::vector<vtkIdType>> faces;
-  vtkNew<vtkGenericCell> cell;
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-  {
-    grid->GetCell(c, cell);
-    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
-    {
-      vtkCell* face = cell->GetFace(f);
-      const int n = static_cast<int>(face->GetNumberOfPoints());
-      std::vector<vtkIdType> ids(n);
-      for (int i = 0; i < n; ++i)
-      {
-        ids[i] = face->GetPointId(i);
-      }
-      faces[SortedKey(ids.data(), n)].push_back(c);
-    }
-  }
+  ForEachVTKFace(grid, [&](vtkIdType c, const std::vector<vtkIdType>& ids) {
+    faces[SortedKey(ids.data(), static_cast<int>(ids.size()))].push_back(c);
+  });
   return faces;
 }
 

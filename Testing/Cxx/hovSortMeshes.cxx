@@ -1,6 +1,8 @@
 #include "hovSortMeshes.h"
 
+#include "vtkCell.h"
 #include "vtkCellType.h"
+#include "vtkGenericCell.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkTransform.h"
@@ -516,4 +518,24 @@ vtkSmartPointer<vtkUnstructuredGrid> CyclicTriple()
   return m.Grid();
 }
 
+void ForEachVTKFace(vtkUnstructuredGrid* grid,
+  const std::function<void(vtkIdType, const std::vector<vtkIdType>&)>& fn)
+{
+  vtkNew<vtkGenericCell> cell;
+  std::vector<vtkIdType> ids;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    grid->GetCell(c, cell);
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      vtkCell* face = cell->GetFace(f);
+      ids.resize(face->GetNumberOfPoints());
+      for (size_t i = 0; i < ids.size(); ++i)
+      {
+        ids[i] = face->GetPointId(static_cast<vtkIdType>(i));
+      }
+      fn(c, ids);
+    }
+  }
+}
 }

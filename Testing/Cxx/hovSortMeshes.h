@@ -113,6 +113,12 @@ SortView InsideView(const std::string& name, const double eye[3], const double f
 
 /// A rigid motion plus a non-uniform scale (a model transform for the tests).
 void TestModelTransform(vtkMatrix4x4* m);
+
+/// @p fn(cell, point ids) for every face of every cell of @p grid, as VTK's
+/// own cells give them (vtkCell::GetFace): an independent reference for the
+/// sort's face tables.
+void ForEachVTKFace(vtkUnstructuredGrid* grid,
+  const std::function<void(vtkIdType, const std::vector<vtkIdType>&)>& fn);
 }
 
 #endif
