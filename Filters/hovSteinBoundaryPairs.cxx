@@ -169,7 +169,7 @@ struct BoundaryPairs::Buffers
 namespace
 {
 /**
- * The cell pairs (EXIT cell, 2 ENTRY cell + 1 if @p certify and the face
+ * The cell pairs (ENTRY cell, 2 EXIT cell + 1 if @p certify and the face
  * pair proves the edge) of the face pairs that pass the tests of the file doc
  * and are not dropped by @p sheets (if not null), per tile
  * the EXIT records against the ENTRY records, in parallel over fixed blocks of
@@ -218,9 +218,10 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
           const int kind = ClassifyFacePair(g, DF, F.Far, b.Data[G->Face], G->Far, certify);
           if (kind != NoCandidate)
           {
-            // The second cell times 2, plus 1 if the edge needs no test (no
-            // overflow: see the static_assert at the top).
-            found.emplace_back(F.Cell, 2 * vtkIdType(G->Cell) + (kind == ProvedEdge));
+            // The ENTRY cell first (the edges' source: they come out
+            // bucketed by it), the EXIT cell times 2, plus 1 if the edge
+            // needs no test (no overflow: see the static_assert at the top).
+            found.emplace_back(G->Cell, 2 * vtkIdType(F.Cell) + (kind == ProvedEdge));
           }
         }
         numBatch = 0;
@@ -435,8 +436,9 @@ bool DeepOverlap(const PairGrid& grid, const TileLists& lists, vtkIdType numFace
 }
 
 /**
- * The edges (b, a) of the sorted distinct cell pairs (a, 2 b + certain) in
- * pair order: without a test for the certain ones (InFrontOnScreen), else if
+ * The edges (b, a) of the sorted distinct cell pairs (b, 2 a + certain), a
+ * the EXIT cell, in pair order (by b, then a: the Digraph's CSR order):
+ * without a test for the certain ones (InFrontOnScreen), else if
  * Obstructs(a, b), in parallel (the hulls of the tested cells computed once
  * first). Returns the number of tests.
  */
@@ -469,14 +471,14 @@ vtkIdType DecidePairs(const Geometry& g, const View& v, BoundaryPairs::Buffers& 
     for (vtkIdType i = begin; i < end; ++i)
     {
       const vtkIdType second = pairs[i].second;
-      b.Hit[i] = (second & 1) || ob.Obstructs(pairs[i].first, second >> 1);
+      b.Hit[i] = (second & 1) || ob.Obstructs(second >> 1, pairs[i].first);
     }
   });
   for (vtkIdType i = 0; i < np; ++i)
   {
     if (b.Hit[i])
     {
-      edges.emplace_back(pairs[i].second >> 1, pairs[i].first);
+      edges.emplace_back(pairs[i].first, pairs[i].second >> 1);
     }
   }
   return tests;

@@ -101,7 +101,7 @@ public:
   BoundaryPairs();
   ~BoundaryPairs();
   /// Appends to @p edges the edges (b, a), b before a, for the cell pairs that
-  /// need them (see the file doc), in a fixed order.
+  /// need them (see the file doc), sorted by b, then a.
   void Edges(const Geometry& g, const Topology& t, const View& v,
     const std::vector<ViewFace>& faces, std::vector<std::pair<vtkIdType, vtkIdType>>& edges,
     PairStats& stats);

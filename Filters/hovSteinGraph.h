@@ -100,7 +100,8 @@ struct Digraph
     return k < this->FaceCount[u] ? this->FaceTargets[this->FaceOffsets[u] + k]
                                   : this->ExtraTargets[this->ExtraOffsets[u] + k - this->FaceCount[u]];
   }
-  /// Adds the edges (from, to) of @p edges (sorted by to) to the CSR and the in-degrees.
+  /// Adds the edges (from, to) of @p edges, sorted by from, then to, to the
+  /// CSR and the in-degrees.
   void AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n);
 };
 
@@ -120,7 +121,7 @@ public:
   /// Edges proved by a face pair without Obstructs() (default on; off for tests).
   void SetCertifiedEdges(bool on) { this->Boundary.CertifiedEdges = on; }
   /// The last view's edges from boundary face pairs: (behind, in front),
-  /// sorted by the second (tests).
+  /// sorted by the first, then the second (tests).
   const std::vector<std::pair<vtkIdType, vtkIdType>>& GetObstructEdges() const
   {
     return this->Extra;

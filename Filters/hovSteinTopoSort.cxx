@@ -160,21 +160,26 @@ void Tarjan(const Digraph& d, const std::vector<std::uint8_t>& done, std::vector
 
 void Digraph::AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n)
 {
-  this->ExtraOffsets.assign(n + 1, 0);
-  for (const auto& e : edges)
+  // Sorted by source: the targets are the edges' second cells in order, and
+  // each cell's offset is the first edge from it or from a later cell.
+  const vtkIdType ne = static_cast<vtkIdType>(edges.size());
+  this->ExtraOffsets.resize(n + 1);
+  this->ExtraTargets.resize(ne);
+  vtkIdType* offsets = this->ExtraOffsets.data();
+  vtkIdType c = 0;
+  for (vtkIdType i = 0; i < ne; ++i)
   {
-    ++this->ExtraOffsets[e.first + 1];
-    ++this->InDegree[e.second];
+    const vtkIdType from = edges[i].first;
+    while (c <= from)
+    {
+      offsets[c++] = i;
+    }
+    this->ExtraTargets[i] = edges[i].second;
+    ++this->InDegree[edges[i].second];
   }
-  for (vtkIdType c = 0; c < n; ++c)
+  while (c <= n)
   {
-    this->ExtraOffsets[c + 1] += this->ExtraOffsets[c];
-  }
-  this->ExtraTargets.resize(edges.size());
-  std::vector<vtkIdType> cursor(this->ExtraOffsets.begin(), this->ExtraOffsets.end() - 1);
-  for (const auto& e : edges)
-  {
-    this->ExtraTargets[cursor[e.first]++] = e.second;
+    offsets[c++] = ne;
   }
 }
 
