@@ -2,8 +2,7 @@
 #include "hovSteinBoundaryPairs.h"
 
 #include "hovSteinFacePairs.h" // FillFaceData, ClassifyFacePair
-#include "hovSteinHulls.h"     // HullCache
-#include "hovSteinObstructs.h" // Obstruction
+#include "hovSteinPairEdges.h" // PairEdges
 #include "hovSteinPairGrid.h"  // FaceData, PairGrid
 #include "hovSteinSheets.h"    // BoundaryAdjacency, SheetCover
 
@@ -15,7 +14,6 @@
 
 namespace hovStein
 {
-static_assert(MaxIndexedCells <= VTK_ID_MAX / 2, "cell pairs carry 2 * cell + 1");
 namespace
 {
 inline bool Disjoint(const float* a, const float* b)
@@ -140,7 +138,6 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
   });
 }
 
-using CellPairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
 }
 
 /// The per-view buffers (kept between views).
@@ -150,13 +147,9 @@ struct BoundaryPairs::Buffers
   FillBuffer<TileRange> Ranges;
   TileLists Lists;
   std::vector<CellPairs> BlockPairs;
+  std::vector<std::pair<vtkIdType, vtkIdType>> BlockRange; ///< of the blocks' first cells
   std::vector<vtkIdType> BlockCount, BlockDropped, BlockKept;
-  CellPairs Pairs;
-  std::vector<vtkIdType> PairStart, Second; ///< FindCellPairs' pairs bucketed by first cell
-  std::vector<std::uint32_t> Kept;          ///< per bucket: distinct second cells
-  std::vector<std::uint8_t> Used, Hit;
-  std::vector<vtkIdType> Cells;
-  HullCache Hulls;
+  PairEdges Edges; ///< the blocks' cell pairs made unique and decided
   /// EXIT, ENTRY records per tile (CSR of Lists.Start; the ENTRY records of
   /// each tile by decreasing Far where the faces overlap deeply).
   FillBuffer<TileRecord> Records[2];
@@ -192,6 +185,7 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
   b.BlockPairs.resize(numBlocks);
+  b.BlockRange.resize(numBlocks);
   b.BlockCount.resize(numBlocks);
   b.BlockDropped.resize(numBlocks);
   b.BlockKept.resize(numBlocks);
@@ -312,6 +306,13 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
           testBatch(F);
         }
       }
+      vtkIdType lo = VTK_ID_MAX, hi = -1; // the range of first cells
+      for (const auto& p : found)
+      {
+        lo = std::min(lo, p.first);
+        hi = std::max(hi, p.first);
+      }
+      b.BlockRange[blk] = { lo, hi };
       b.BlockPairs[blk].swap(found);
       b.BlockCount[blk] = count;
       b.BlockDropped[blk] = dropped;
@@ -327,93 +328,6 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
   for (const auto& blockLog : logs)
   {
     log->insert(log->end(), blockLog.begin(), blockLog.end());
-  }
-}
-
-/**
- * The distinct cell pairs of the blocks of FindCellPairs() into b.Pairs, in
- * increasing (first, second) order, the second cell times 2 plus 1 if any of
- * its face pairs needs no test: bucketed by first cell (a counting sort
- * over the range of first cells), each bucket sorted and made unique on its
- * own, in parallel. The same pairs in the same order as sorting all of them
- * and removing repeats, in about half the time on the heatsink 0.5M (measured
- * side by side: 45-57 ms against 79-97 ms; counting and scattering in
- * parallel over chunks of blocks saved only another ~7%, so they stay serial).
- */
-void SortUniquePairs(BoundaryPairs::Buffers& b)
-{
-  vtkIdType lo = VTK_ID_MAX, hi = -1;
-  for (const CellPairs& block : b.BlockPairs)
-  {
-    for (const auto& p : block)
-    {
-      lo = std::min(lo, p.first);
-      hi = std::max(hi, p.first);
-    }
-  }
-  b.Pairs.clear();
-  if (hi < lo)
-  {
-    return;
-  }
-  const vtkIdType nb = hi - lo + 1;
-  std::vector<vtkIdType>& start = b.PairStart;
-  start.assign(nb + 1, 0);
-  for (const CellPairs& block : b.BlockPairs)
-  {
-    for (const auto& p : block)
-    {
-      ++start[p.first - lo + 1];
-    }
-  }
-  for (vtkIdType i = 0; i < nb; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-  b.Second.resize(start[nb]);
-  for (const CellPairs& block : b.BlockPairs) // start[i] becomes the end of bucket i
-  {
-    for (const auto& p : block)
-    {
-      b.Second[start[p.first - lo]++] = p.second;
-    }
-  }
-  b.Kept.resize(nb);
-  vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      vtkIdType* first = b.Second.data() + (i == 0 ? 0 : start[i - 1]);
-      vtkIdType* last = b.Second.data() + start[i];
-      std::sort(first, last);
-      // One entry per second cell, marked if any of its entries is (2c + 1 sorts after 2c).
-      vtkIdType* out = first;
-      for (vtkIdType* it = first; it != last; ++it)
-      {
-        if (out != first && (out[-1] >> 1) == (*it >> 1))
-        {
-          out[-1] = *it;
-        }
-        else
-        {
-          *out++ = *it;
-        }
-      }
-      b.Kept[i] = static_cast<std::uint32_t>(out - first);
-    }
-  });
-  vtkIdType kept = 0;
-  for (vtkIdType i = 0; i < nb; ++i)
-  {
-    kept += b.Kept[i];
-  }
-  b.Pairs.reserve(kept);
-  for (vtkIdType i = 0; i < nb; ++i)
-  {
-    const vtkIdType* first = b.Second.data() + (i == 0 ? 0 : start[i - 1]);
-    for (std::uint32_t k = 0; k < b.Kept[i]; ++k)
-    {
-      b.Pairs.emplace_back(lo + i, first[k]);
-    }
   }
 }
 
@@ -435,54 +349,6 @@ bool DeepOverlap(const PairGrid& grid, const TileLists& lists, vtkIdType numFace
   return pairs > 40.0 * static_cast<double>(numFaces);
 }
 
-/**
- * The edges (b, a) of the sorted distinct cell pairs (b, 2 a + certain), a
- * the EXIT cell, in pair order (by b, then a: the Digraph's CSR order):
- * without a test for the certain ones (InFrontOnScreen), else if
- * Obstructs(a, b), in parallel (the hulls of the tested cells computed once
- * first). Returns the number of tests.
- */
-vtkIdType DecidePairs(const Geometry& g, const View& v, BoundaryPairs::Buffers& b, CellPairs& edges)
-{
-  const CellPairs& pairs = b.Pairs;
-  const vtkIdType np = static_cast<vtkIdType>(pairs.size());
-  b.Used.assign(g.NumberOfCells, 0);
-  vtkIdType tests = 0;
-  for (const auto& p : pairs)
-  {
-    if (!(p.second & 1))
-    {
-      b.Used[p.first] = b.Used[p.second >> 1] = 1;
-      ++tests;
-    }
-  }
-  b.Cells.clear();
-  for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
-  {
-    if (b.Used[c])
-    {
-      b.Cells.push_back(c);
-    }
-  }
-  b.Hulls.Build(g, v, b.Cells);
-  b.Hit.resize(np);
-  vtkSMPTools::For(0, np, 64, [&](vtkIdType begin, vtkIdType end) {
-    Obstruction ob(g, v, &b.Hulls);
-    for (vtkIdType i = begin; i < end; ++i)
-    {
-      const vtkIdType second = pairs[i].second;
-      b.Hit[i] = (second & 1) || ob.Obstructs(second >> 1, pairs[i].first);
-    }
-  });
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    if (b.Hit[i])
-    {
-      edges.emplace_back(pairs[i].first, pairs[i].second >> 1);
-    }
-  }
-  return tests;
-}
 }
 
 BoundaryPairs::BoundaryPairs()
@@ -498,7 +364,8 @@ void BoundaryPairs::ReleaseBuffers()
 }
 
 void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
-  const std::vector<ViewFace>& faces, CellPairs& edges, PairStats& stats)
+  const std::vector<ViewFace>& faces, std::vector<vtkIdType>& offsets,
+  std::vector<vtkIdType>& targets, PairStats& stats)
 {
   if (this->DroppedLog)
   {
@@ -507,6 +374,8 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
   const vtkIdType nf = static_cast<vtkIdType>(faces.size());
   if (nf < 2)
   {
+    offsets.assign(g.NumberOfCells + 1, 0);
+    targets.clear();
     return;
   }
   Buffers& b = *this->B;
@@ -595,7 +464,7 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
     sheets = &b.Sheets;
   }
   FindCellPairs(g, grid, sheets, deep, this->CertifiedEdges, faces, this->DroppedLog, b, stats);
-  SortUniquePairs(b);
-  stats.Tests += DecidePairs(g, v, b, edges);
+  b.Edges.Collect(b.BlockPairs, b.BlockRange);
+  stats.Tests += b.Edges.Decide(g, v, offsets, targets);
 }
 }

@@ -35,9 +35,8 @@
  * Face pairs are found with a uniform screen grid, per tile the EXIT faces
  * against the ENTRY faces (each pair in the tile of
  * the lower-left corner of the intersection of the extents), in parallel over
- * blocks of tiles; the cell pairs are sorted and made unique, then tested in
- * parallel, the hulls of their cells computed once (hovSteinHulls.h). Results
- * do not depend on the thread count.
+ * blocks of tiles; the cell pairs are made unique and tested in parallel
+ * (hovSteinPairEdges.h). Results do not depend on the thread count.
  */
 #ifndef hovSteinBoundaryPairs_h
 #define hovSteinBoundaryPairs_h
@@ -100,11 +99,12 @@ class BoundaryPairs
 public:
   BoundaryPairs();
   ~BoundaryPairs();
-  /// Appends to @p edges the edges (b, a), b before a, for the cell pairs that
-  /// need them (see the file doc), sorted by b, then a.
+  /// The edges b -> a, b before a, for the cell pairs that need them (see the
+  /// file doc), as a CSR over the cells: @p offsets per cell + 1, @p targets
+  /// (each cell's a in increasing order).
   void Edges(const Geometry& g, const Topology& t, const View& v,
-    const std::vector<ViewFace>& faces, std::vector<std::pair<vtkIdType, vtkIdType>>& edges,
-    PairStats& stats);
+    const std::vector<ViewFace>& faces, std::vector<vtkIdType>& offsets,
+    std::vector<vtkIdType>& targets, PairStats& stats);
 
   /// Dropping the face pairs that covering sheets prove never consecutive
   /// along a ray (hovSteinSheets.h): never (every candidate is tested), where

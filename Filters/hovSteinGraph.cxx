@@ -1,7 +1,7 @@
 // Visibility DAG of vtkSteinVisibilitySort's ADJACENCY_GRAPH algorithm (see hovSteinGraph.h).
 #include "hovSteinGraph.h"
 
-#include "hovSteinBoundaryPairs.h"  // BoundaryEdges
+#include "hovSteinBoundaryPairs.h"  // BoundaryPairs
 #include "hovSteinMerge.h"          // RadixSortDescending
 
 #include "vtkSMPTools.h"
@@ -408,16 +408,33 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
   this->FaceDirections(g, t, v);
   this->CellPass(g, t, v, stats);
   this->PlanesGeneration = t.Generation; // the boundary faces' planes are made
-  this->Extra.clear();
   PairStats pairStats;
-  this->Boundary.Edges(g, t, v, this->Faces, this->Extra, pairStats);
+  Digraph& d = this->Graph;
+  this->Boundary.Edges(g, t, v, this->Faces, d.ExtraOffsets, d.ExtraTargets, pairStats);
   stats.Tests = pairStats.Tests;
   stats.FacePairs = pairStats.FacePairs;
   stats.DroppedFacePairs = pairStats.DroppedFacePairs;
   stats.KeptFacePairs = pairStats.KeptFacePairs;
-  stats.ObstructEdges = static_cast<vtkIdType>(this->Extra.size());
-  this->Graph.AddExtraEdges(this->Extra, n);
-  TopologicalOrder(this->Graph, g, v, numOrdered, order, stats);
+  stats.ObstructEdges = static_cast<vtkIdType>(d.ExtraTargets.size());
+  for (const vtkIdType target : d.ExtraTargets)
+  {
+    ++d.InDegree[target];
+  }
+  TopologicalOrder(d, g, v, numOrdered, order, stats);
+}
+
+std::vector<std::pair<vtkIdType, vtkIdType>> GraphSort::GetObstructEdges() const
+{
+  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
+  const Digraph& d = this->Graph;
+  for (size_t c = 0; c + 1 < d.ExtraOffsets.size(); ++c)
+  {
+    for (vtkIdType e = d.ExtraOffsets[c]; e < d.ExtraOffsets[c + 1]; ++e)
+    {
+      edges.emplace_back(static_cast<vtkIdType>(c), d.ExtraTargets[e]);
+    }
+  }
+  return edges;
 }
 
 void GraphSort::ReleaseBuffers()
@@ -430,7 +447,6 @@ void GraphSort::ReleaseBuffers()
   std::vector<std::vector<ViewFace>>().swap(this->Undecided);
   std::vector<ViewFace>().swap(this->Faces);
   this->Graph = Digraph();
-  std::vector<std::pair<vtkIdType, vtkIdType>>().swap(this->Extra);
   this->Boundary.ReleaseBuffers();
 }
 }

@@ -100,9 +100,6 @@ struct Digraph
     return k < this->FaceCount[u] ? this->FaceTargets[this->FaceOffsets[u] + k]
                                   : this->ExtraTargets[this->ExtraOffsets[u] + k - this->FaceCount[u]];
   }
-  /// Adds the edges (from, to) of @p edges, sorted by from, then to, to the
-  /// CSR and the in-degrees.
-  void AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n);
 };
 
 /// The ADJACENCY_GRAPH sort with its per-view buffers.
@@ -121,11 +118,8 @@ public:
   /// Edges proved by a face pair without Obstructs() (default on; off for tests).
   void SetCertifiedEdges(bool on) { this->Boundary.CertifiedEdges = on; }
   /// The last view's edges from boundary face pairs: (behind, in front),
-  /// sorted by the first, then the second (tests).
-  const std::vector<std::pair<vtkIdType, vtkIdType>>& GetObstructEdges() const
-  {
-    return this->Extra;
-  }
+  /// sorted by the first, then the second (tests; none once the buffers are released).
+  std::vector<std::pair<vtkIdType, vtkIdType>> GetObstructEdges() const;
   /// Where to write each view's dropped face pairs (tests; null: nowhere).
   void SetDroppedLog(std::vector<BoundaryPairs::FacePair>* log) { this->Boundary.DroppedLog = log; }
 
@@ -156,7 +150,6 @@ private:
   std::vector<std::vector<ViewFace>> Undecided; ///< per block of cells: undecided interior faces
   std::vector<ViewFace> Faces;
   Digraph Graph;
-  std::vector<std::pair<vtkIdType, vtkIdType>> Extra;
   BoundaryPairs Boundary;
 };
 

@@ -158,31 +158,6 @@ void Tarjan(const Digraph& d, const std::vector<std::uint8_t>& done, std::vector
 }
 }
 
-void Digraph::AddExtraEdges(const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, vtkIdType n)
-{
-  // Sorted by source: the targets are the edges' second cells in order, and
-  // each cell's offset is the first edge from it or from a later cell.
-  const vtkIdType ne = static_cast<vtkIdType>(edges.size());
-  this->ExtraOffsets.resize(n + 1);
-  this->ExtraTargets.resize(ne);
-  vtkIdType* offsets = this->ExtraOffsets.data();
-  vtkIdType c = 0;
-  for (vtkIdType i = 0; i < ne; ++i)
-  {
-    const vtkIdType from = edges[i].first;
-    while (c <= from)
-    {
-      offsets[c++] = i;
-    }
-    this->ExtraTargets[i] = edges[i].second;
-    ++this->InDegree[edges[i].second];
-  }
-  while (c <= n)
-  {
-    offsets[c++] = ne;
-  }
-}
-
 void TopologicalOrder(Digraph& d, const Geometry& g, const View& v, vtkIdType numOrdered,
   std::vector<vtkIdType>& order, GraphStats& stats)
 {
