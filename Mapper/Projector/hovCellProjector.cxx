@@ -158,6 +158,7 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   frame.PerturbY = rays.GetPerturbY();
   frame.General = setup.GetGeneralCells().GetCells().empty() ? nullptr : &general;
   Statistics stats = RunTiles(buf.Bins, width, height, settings.Progress, buf.Tiles, frame, rgba);
+  stats.Content = buf.Bins.ContentBox(width, height); // tiles without cells are written zero
   if (buf.Records.IsWhole())
   {
     stats.Records = static_cast<vtkIdType>(buf.Records.GetRecords().size());

@@ -119,6 +119,10 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   {
     st = this->Projector.Render(
       scene.GetCells(), scene.GetFrontToBack(), rays, tf->GetTable(), settings, depth, image);
+    if (f == 1)
+    {
+      frame.Content = st.Content; // (a reduced image is expanded over all of it)
+    }
   }
   if (features >= 0)
   {

@@ -137,6 +137,27 @@ void hov::TilePixels::WritePixels(
   }
 }
 
+std::array<int, 4> hov::TileBins::ContentBox(int width, int height) const
+{
+  int box[4] = { INT_MAX, 0, INT_MAX, 0 };
+  for (int t = 0; t < this->NumberOfTiles(); ++t)
+  {
+    if (this->Start[t + 1] > this->Start[t])
+    {
+      const int x0 = (t % this->TilesX) * this->Size, y0 = (t / this->TilesX) * this->Size;
+      box[0] = std::min(box[0], x0);
+      box[1] = std::max(box[1], std::min(width, x0 + this->Size));
+      box[2] = std::min(box[2], y0);
+      box[3] = std::max(box[3], std::min(height, y0 + this->Size));
+    }
+  }
+  if (box[0] >= box[1] || box[2] >= box[3])
+  {
+    return { 0, 0, 0, 0 };
+  }
+  return { box[0], box[1], box[2], box[3] };
+}
+
 void hov::TilePixels::WriteEmptyTile(
   const TileBins& bins, int width, int height, int tileIndex, std::vector<double>& rgba)
 {

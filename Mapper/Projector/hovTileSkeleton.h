@@ -34,6 +34,7 @@
 
 #include <algorithm> // std::min, std::max
 #include <array>     // pixel boxes
+#include <climits>   // INT_MAX
 #include <vector>    // buffers
 
 namespace hov
@@ -63,6 +64,10 @@ struct ProjectorStatistics
   vtkIdType Records = 0;           ///< cell records built (hov::CellRecords)
   double ShadingErrorEstimate = 0.0; ///< worst estimate of a shaded quadrature segment
   bool Aborted = false;            ///< Progress returned true: unrendered tiles are zero
+  /// Columns [x0, x1) and rows [y0, y1), {x0, x1, y0, y1}, outside of which
+  /// every pixel of the image is zero (tiles without cells); all of it
+  /// unless the projector says less.
+  std::array<int, 4> Content = { 0, INT_MAX, 0, INT_MAX };
 };
 
 /// A cell's pixel box: i0, i1, j0, j1 inclusive; i0 > i1 means empty.
@@ -105,6 +110,9 @@ struct TileBins
   /// Bin the cells whose pixel boxes are @p boxes (per ordered cell).
   void Build(const std::vector<CellBox>& boxes, int width, int height, int tileSize);
   int NumberOfTiles() const { return this->TilesX * this->TilesY; }
+  /// The pixels of the tiles with cells, as ProjectorStatistics::Content
+  /// (all zero if none) for an image of @p width x @p height.
+  std::array<int, 4> ContentBox(int width, int height) const;
 };
 
 /// The pixels of one tile (tile-local pixel p = j W + i) and what is

