@@ -147,7 +147,7 @@ struct BoundaryPairs::Buffers
   FillBuffer<TileRange> Ranges;
   TileLists Lists;
   std::vector<CellPairs> BlockPairs;
-  std::vector<std::pair<vtkIdType, vtkIdType>> BlockRange; ///< of the blocks' first cells
+  std::vector<CellRange> BlockRange; ///< of the blocks' first cells
   std::vector<vtkIdType> BlockCount, BlockDropped, BlockKept;
   PairEdges Edges; ///< the blocks' cell pairs made unique and decided
   /// EXIT, ENTRY records per tile (CSR of Lists.Start; the ENTRY records of
@@ -214,7 +214,7 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
           {
             // The ENTRY cell first (the edges' source: they come out
             // bucketed by it), the EXIT cell times 2, plus 1 if the edge
-            // needs no test (no overflow: see the static_assert at the top).
+            // needs no test (no overflow: see the static_assert in hovSteinPairEdges.cxx).
             found.emplace_back(G->Cell, 2 * vtkIdType(F.Cell) + (kind == ProvedEdge));
           }
         }

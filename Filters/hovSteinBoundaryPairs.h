@@ -47,7 +47,6 @@
 #include <array>   // FacePair
 #include <cstdint> // std::int32_t, std::uint8_t
 #include <memory>  // std::unique_ptr
-#include <utility> // std::pair
 #include <vector>  // storage
 
 namespace hovStein

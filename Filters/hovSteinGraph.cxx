@@ -403,6 +403,8 @@ void GraphSort::Sort(const Geometry& g, const Topology& t, const View& v,
     {
       this->Boundary.DroppedLog->clear(); // this view's: none
     }
+    this->Graph.ExtraOffsets.clear(); // nor edges (GetObstructEdges)
+    this->Graph.ExtraTargets.clear();
     return;
   }
   this->FaceDirections(g, t, v);

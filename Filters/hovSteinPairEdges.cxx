@@ -19,8 +19,7 @@ static_assert(MaxIndexedCells <= VTK_ID_MAX / 2, "cell pairs carry 2 * cell + 1"
  * ms; counting and scattering in parallel over chunks of blocks saved only
  * another ~7%, so they stay serial).
  */
-void PairEdges::Collect(
-  const std::vector<CellPairs>& blocks, const std::vector<std::pair<vtkIdType, vtkIdType>>& ranges)
+void PairEdges::Collect(const std::vector<CellPairs>& blocks, const std::vector<CellRange>& ranges)
 {
   vtkIdType lo = VTK_ID_MAX, hi = -1;
   for (const auto& range : ranges)
@@ -111,7 +110,8 @@ vtkIdType PairEdges::Decide(const Geometry& g, const View& v, std::vector<vtkIdT
   }
   this->Hulls.Build(g, v, this->Cells);
   // Each bucket's edges, kept at its beginning (Kept becomes their count).
-  vtkSMPTools::For(0, nb, 1024, [&](vtkIdType begin, vtkIdType end) {
+  // (Most buckets are empty or hold one or two pairs: chunks of 256 balance the tests.)
+  vtkSMPTools::For(0, nb, 256, [&](vtkIdType begin, vtkIdType end) {
     Obstruction ob(g, v, &this->Hulls);
     for (vtkIdType i = begin; i < end; ++i)
     {

@@ -28,18 +28,15 @@ namespace hovStein
 {
 /// Cell pairs (b, 2 a + certain), in the order the search found them.
 using CellPairs = std::vector<std::pair<vtkIdType, vtkIdType>>;
+/// The least and greatest first cell of a block of CellPairs (least > greatest if empty).
+using CellRange = std::pair<vtkIdType, vtkIdType>;
 
 /// De-duplication and decision of the search's cell pairs, with its buffers (kept between views).
 class PairEdges
 {
 public:
-  /**
-   * Buckets the pairs of @p blocks (in block order) by first cell;
-   * @p ranges: each block's least and greatest first cell (least > greatest
-   * for an empty block).
-   */
-  void Collect(
-    const std::vector<CellPairs>& blocks, const std::vector<std::pair<vtkIdType, vtkIdType>>& ranges);
+  /// Buckets the pairs of @p blocks (in block order) by first cell; @p ranges: each block's.
+  void Collect(const std::vector<CellPairs>& blocks, const std::vector<CellRange>& ranges);
   /**
    * Decides the collected pairs for the view @p v: the edges b -> a as a CSR
    * over all cells of @p g (@p offsets per cell + 1, @p targets). Returns the
@@ -49,10 +46,11 @@ public:
     std::vector<vtkIdType>& targets);
 
 private:
+  /// The first entry of bucket @p i (first cell Lo + i) in Second.
   vtkIdType* Bucket(vtkIdType i) { return this->Second.data() + (i == 0 ? 0 : this->End[i - 1]); }
-  /// Buckets over the first cells [Lo, Lo + Kept.size()): bucket i ends at
-  /// End[i] and begins at End[i - 1] (0 for i = 0).
+  /// The buckets are over the first cells [Lo, Lo + Kept.size()).
   vtkIdType Lo = 0;
+  /// Bucket i's entries (second cells) are Second[End[i - 1] (0 for i = 0), End[i]).
   std::vector<vtkIdType> End, Second;
   std::vector<std::uint32_t> Kept; ///< per bucket: distinct second cells, then edges
   std::vector<std::uint8_t> Used;  ///< per cell: tested

@@ -121,7 +121,7 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
       scene.GetCells(), scene.GetFrontToBack(), rays, tf->GetTable(), settings, depth, image);
     if (f == 1)
     {
-      frame.Content = st.Content; // (a reduced image is expanded over all of it)
+      frame.Content = st.Content; // (reduced frames keep the default: the whole image)
     }
   }
   if (features >= 0)

@@ -35,7 +35,9 @@ public:
    * class doc); @p settingsTime is the mapper's modification time (a changed
    * setting warns about an empty image again). If @p out is not null, the
    * checked values are also written there as float (4 per pixel), in the same
-   * parallel pass. @p pixels is the frame's Width x Height.
+   * parallel pass. @p pixels is the frame's Width x Height. Values outside
+   * the frame's Content box are the backend's promised zeros: not read nor
+   * checked, written as float zeros.
    */
   template <typename T>
   void Check(T* rgba, size_t pixels, const RenderFrame& frame, vtkMTimeType settingsTime,

@@ -118,7 +118,8 @@ public:
   /// bottom), or left empty by a backend that writes the float image itself.
   std::vector<double> RGBA;
   /// Columns [x0, x1) and rows [y0, y1), {x0, x1, y0, y1}, outside of which
-  /// every value of RGBA is zero (the backend's promise; by default none).
+  /// every value of RGBA is zero (the backend's promise; by default the
+  /// whole image, no promise).
   std::array<int, 4> Content = { 0, INT_MAX, 0, INT_MAX };
   /// Whether visible cells were drawn (an empty image then needs a warning).
   bool Drawn = false;

@@ -3,8 +3,8 @@
 // bundled bracket at 257 x 203 (52,171 pixels: three blocks of 63 rows and a part):
 // - every value is the double image's (GetDoubleImage) rounded to float, with
 //   covered pixels in at least three blocks, also where the pass only writes
-//   zeros: outside the tiles (32 x 32) that hold cells, whose pixels it does
-//   not read (whole tile rows and columns are outside here);
+//   zeros: outside the tiles (TileSize, 32) that hold cells, whose pixels it
+//   does not read (whole tile rows and columns are outside here);
 // - the array is reused from frame to frame when nobody else holds it, and
 //   left alone (a new one published) when somebody does;
 // - pixels whose colour float cannot hold (Wilhelms-Van Gelder emission, red
@@ -110,8 +110,10 @@ int TestPublishedImage(int argc, char* argv[])
     ck.Check(blocks.size() >= 3 && covered > 5000,
       "the covered pixels (" + std::to_string(covered) + ") lie in " +
         std::to_string(blocks.size()) + " blocks of 16384 pixels (at least 3)");
-    // Tiles beyond the covered pixels' extent (and a pixel of slack) hold no
-    // cell: a whole tile row or column of them lies outside the content box.
+    // Every cell of the bracket is visible (the transfer function is
+    // non-zero over its scalar range), so tiles beyond the covered pixels'
+    // extent (and a pixel of slack) hold no cell: a whole tile row or column
+    // of them lies outside the content box.
     int box[4] = { Width, -1, Height, -1 };
     for (int y = 0; y < Height; ++y)
     {
@@ -126,7 +128,7 @@ int TestPublishedImage(int argc, char* argv[])
         }
       }
     }
-    const int tile = 32;
+    const int tile = mapper->GetTileSize();
     const bool freeTiles = (box[0] - 1) / tile > 0 || (box[2] - 1) / tile > 0 ||
       (box[1] + 1) / tile < (Width - 1) / tile || (box[3] + 1) / tile < (Height - 1) / tile;
     ck.Check(freeTiles, "a whole row or column of tiles lies outside the covered pixels");
