@@ -364,8 +364,8 @@ void BoundaryPairs::ReleaseBuffers()
 }
 
 void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
-  const std::vector<ViewFace>& faces, std::vector<vtkIdType>& offsets,
-  std::vector<vtkIdType>& targets, PairStats& stats)
+  const std::vector<ViewFace>& faces, FillBuffer<vtkIdType>& offsets,
+  FillBuffer<vtkIdType>& targets, PairStats& stats)
 {
   if (this->DroppedLog)
   {

@@ -102,8 +102,8 @@ public:
   /// file doc), as a CSR over the cells: @p offsets per cell + 1, @p targets
   /// (each cell's a in increasing order).
   void Edges(const Geometry& g, const Topology& t, const View& v,
-    const std::vector<ViewFace>& faces, std::vector<vtkIdType>& offsets,
-    std::vector<vtkIdType>& targets, PairStats& stats);
+    const std::vector<ViewFace>& faces, FillBuffer<vtkIdType>& offsets,
+    FillBuffer<vtkIdType>& targets, PairStats& stats);
 
   /// Dropping the face pairs that covering sheets prove never consecutive
   /// along a ray (hovSteinSheets.h): never (every candidate is tested), where

@@ -354,7 +354,8 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       first += MaxFaces;
     }
   }
-  this->Corners.assign(this->CornerOffsets[n], 0);
+  // (Every corner is written below, in parallel: no serial zeroing first.)
+  this->Corners.resize(this->CornerOffsets[n]);
   this->FaceCodes.assign(MaxFaces * n, FaceSkip);
   this->Planes.assign(planes, Plane{});
   this->Planes.shrink_to_fit(); // a tetrahedral mesh after a hexahedral one keeps nothing
@@ -388,10 +389,10 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       this->Kinds[c] = KindBad;
       vtkIdType* corners = this->Corners.data() + this->CornerOffsets[c];
       const vtkIdType count = this->CornerOffsets[c + 1] - this->CornerOffsets[c];
-      for (vtkIdType i = 0; i < count && i < numIds; ++i)
+      for (vtkIdType i = 0; i < count; ++i)
       {
-        const vtkIdType id = ids[i];
-        corners[i] = (id >= 0 && id < numPoints) ? id : -1;
+        const vtkIdType id = i < numIds ? ids[i] : -1;
+        corners[i] = i >= numIds ? 0 : ((id >= 0 && id < numPoints) ? id : -1);
       }
     }
   };

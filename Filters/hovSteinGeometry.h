@@ -22,7 +22,8 @@
 #ifndef hovSteinGeometry_h
 #define hovSteinGeometry_h
 
-#include "vtkType.h" // vtkIdType
+#include "hovSteinBuffers.h" // FillBuffer
+#include "vtkType.h"         // vtkIdType
 
 #include <cstdint> // std::uint8_t
 #include <vector>  // storage
@@ -76,10 +77,10 @@ struct Plane
 struct Geometry
 {
   vtkIdType NumberOfCells = 0;
-  std::vector<double> Points;          ///< world coordinates, 3 per input point
+  FillBuffer<double> Points;           ///< world coordinates, 3 per input point
   std::vector<std::uint8_t> Kinds;     ///< per cell
   std::vector<vtkIdType> CornerOffsets; ///< per cell + 1
-  std::vector<vtkIdType> Corners;      ///< corner point ids (bad cells: all their points)
+  FillBuffer<vtkIdType> Corners;       ///< corner point ids (bad cells: all their points)
   std::vector<std::uint8_t> FaceCodes; ///< MaxFaces per cell
   std::vector<Plane> Planes;           ///< MaxFaces per cell with a Newell face
   std::vector<vtkIdType> PlaneOffsets; ///< per cell: first plane, or -1 (empty without planes)

@@ -148,7 +148,7 @@ vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdTyp
 /// Per interior face: +1 edge A -> B, -1 edge B -> A, 0 none, 2 undecided.
 void GraphSort::FaceDirections(const Geometry& g, const Topology& t, const View& v)
 {
-  std::vector<std::int8_t>& dir = this->Directions;
+  FillBuffer<std::int8_t>& dir = this->Directions;
   const ViewFrame& f = v.Frame;
   const vtkIdType m = t.NumberOfInteriorFaces();
   dir.resize(m);
@@ -442,7 +442,7 @@ std::vector<std::pair<vtkIdType, vtkIdType>> GraphSort::GetObstructEdges() const
 void GraphSort::ReleaseBuffers()
 {
   // Swapped with empty vectors: clear() would keep the capacity.
-  std::vector<std::int8_t>().swap(this->Directions);
+  FillBuffer<std::int8_t>().swap(this->Directions);
   std::vector<std::uint8_t>().swap(this->Roles);
   std::vector<vtkIdType>().swap(this->RoleStart);
   std::vector<BlockCounts>().swap(this->Counts);

@@ -84,11 +84,13 @@ inline bool Ordered(const View& v, vtkIdType c)
 struct Digraph
 {
   const vtkIdType* FaceOffsets = nullptr;
-  std::vector<CellIndex> FaceTargets;
-  std::vector<std::uint8_t> FaceCount;
-  std::vector<vtkIdType> ExtraOffsets; ///< per cell + 1
-  std::vector<vtkIdType> ExtraTargets;
-  std::vector<std::int32_t> InDegree; ///< per cell: edges into it (consumed by the sort)
+  // Each filled completely per view before it is read (FillBuffer: no
+  // serial zeroing of tens of MB at each allocation).
+  FillBuffer<CellIndex> FaceTargets; ///< (slots past FaceCount are never read)
+  FillBuffer<std::uint8_t> FaceCount;
+  FillBuffer<vtkIdType> ExtraOffsets; ///< per cell + 1
+  FillBuffer<vtkIdType> ExtraTargets;
+  FillBuffer<std::int32_t> InDegree; ///< per cell: edges into it (consumed by the sort)
 
   vtkIdType Degree(vtkIdType u) const
   {
@@ -143,7 +145,7 @@ private:
   /// FaceDirections tests their corners (Topology::TripleA) each view.
   std::unique_ptr<FilteredPlane[]> BoundaryPlanes;
   unsigned long PlanesGeneration = 0;
-  std::vector<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
+  FillBuffer<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
   std::vector<std::uint8_t> Roles;     ///< per boundary face: its role in step 2 (0: none)
   std::vector<vtkIdType> RoleStart;    ///< per block of boundary faces + 1: first face in Faces
   std::vector<BlockCounts> Counts;

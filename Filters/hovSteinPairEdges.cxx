@@ -80,8 +80,8 @@ void PairEdges::Collect(const std::vector<CellPairs>& blocks, const std::vector<
   });
 }
 
-vtkIdType PairEdges::Decide(const Geometry& g, const View& v, std::vector<vtkIdType>& offsets,
-  std::vector<vtkIdType>& targets)
+vtkIdType PairEdges::Decide(const Geometry& g, const View& v, FillBuffer<vtkIdType>& offsets,
+  FillBuffer<vtkIdType>& targets)
 {
   const vtkIdType n = g.NumberOfCells;
   const vtkIdType nb = static_cast<vtkIdType>(this->Kept.size());

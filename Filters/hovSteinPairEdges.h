@@ -42,8 +42,8 @@ public:
    * over all cells of @p g (@p offsets per cell + 1, @p targets). Returns the
    * number of Obstructs() tests.
    */
-  vtkIdType Decide(const Geometry& g, const View& v, std::vector<vtkIdType>& offsets,
-    std::vector<vtkIdType>& targets);
+  vtkIdType Decide(const Geometry& g, const View& v, FillBuffer<vtkIdType>& offsets,
+    FillBuffer<vtkIdType>& targets);
 
 private:
   /// The first entry of bucket @p i (first cell Lo + i) in Second.

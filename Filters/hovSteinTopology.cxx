@@ -185,6 +185,7 @@ void MatchBucket(const Geometry& g, vtkIdType p, FaceEntry<Id>* e, vtkIdType m, 
         {
           std::uint32_t* triple = t.TripleA.data() + 3 * k;
           triple[0] = Topology::NoTriple;
+          triple[1] = triple[2] = 0;
           if (mode == FaceExact)
           {
             vtkIdType ids[3];
@@ -275,7 +276,7 @@ void MatchFaces(const Geometry& g, const std::vector<vtkIdType>& start,
   t.B.resize(bound);
   t.FaceA.resize(bound);
   // Point ids as uint32 (NoTriple reserved), else no triples (EyeSide instead).
-  t.TripleA.assign(numPoints < static_cast<vtkIdType>(Topology::NoTriple) ? 3 * bound : 0, 0);
+  t.TripleA.resize(numPoints < static_cast<vtkIdType>(Topology::NoTriple) ? 3 * bound : 0);
   vtkSMPTools::For(0, numChunks, 1, [&](vtkIdType k0, vtkIdType k1) {
     for (vtkIdType k = k0; k < k1; ++k)
     {

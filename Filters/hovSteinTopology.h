@@ -40,20 +40,20 @@ struct ChunkMatches; // what Build's face matching finds in a chunk of buckets
 struct Topology
 {
   /// Interior faces: cells A and B (B on the outer side of face FaceA[i] of A).
-  std::vector<CellIndex> A, B;
-  std::vector<std::uint8_t> FaceA;
+  FillBuffer<CellIndex> A, B;
+  FillBuffer<std::uint8_t> FaceA;
   /// Per interior face, 3 entries: for an exact face of A, the point ids of
   /// Geometry::ExactTriple(A, FaceA), so that each view's side test reads them
   /// and the points instead of A's tables at random; NoTriple first for
   /// other faces. 12 bytes a face (a filtered plane per face was 48: 190 MB for
   /// 2M tetrahedra). Empty when the point ids do not fit in 32 bits.
-  std::vector<std::uint32_t> TripleA;
+  FillBuffer<std::uint32_t> TripleA;
   static constexpr std::uint32_t NoTriple = 0xffffffffu;
   /// Per cell: its interior faces (CSR, in increasing interior face index) as
   /// 2 * index + 1 if the cell is the face's B, 2 * index if it is its A.
-  std::vector<vtkIdType> CellFaceOffsets; ///< per cell + 1
-  std::vector<std::uint32_t> CellFaces;
-  std::vector<CellIndex> CellNeighbours; ///< beside CellFaces: the cell on the other side
+  FillBuffer<vtkIdType> CellFaceOffsets; ///< per cell + 1
+  FillBuffer<std::uint32_t> CellFaces;
+  FillBuffer<CellIndex> CellNeighbours; ///< beside CellFaces: the cell on the other side
   /// Per cell: bit f set when face f is a boundary face.
   std::vector<std::uint8_t> BoundaryFaces;
   vtkIdType NumberOfBoundaryCells = 0;
