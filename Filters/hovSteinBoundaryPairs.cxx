@@ -155,7 +155,7 @@ struct BoundaryPairs::Buffers
   FillBuffer<TileRecord> Records[2];
   /// Where the faces overlap deeply, per tile: the largest Depth - Far of its
   /// ENTRY records, rounded up (a record's Depth is at most its Far plus that).
-  std::vector<double> Thick;
+  FillBuffer<double> Thick;
   SheetCover Sheets;
 };
 
@@ -429,7 +429,7 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
   // afterwards), and the covering sheets.
   const bool deep = DeepOverlap(grid, b.Lists, nf);
   const vtkIdType* entryStart = b.Lists.Start[1].data();
-  b.Thick.resize(deep ? grid.NumberOfTiles() : 0);
+  Refill(b.Thick, deep ? grid.NumberOfTiles() : 0); // every tile is set below
   vtkSMPTools::For(0, deep ? grid.NumberOfTiles() : 0, 256, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType tile = begin; tile < end; ++tile)
     {
