@@ -391,8 +391,7 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       const vtkIdType count = this->CornerOffsets[c + 1] - this->CornerOffsets[c];
       for (vtkIdType i = 0; i < count; ++i)
       {
-        const vtkIdType id = i < numIds ? ids[i] : -1;
-        corners[i] = i >= numIds ? 0 : ((id >= 0 && id < numPoints) ? id : -1);
+        corners[i] = i < numIds && ids[i] >= 0 && ids[i] < numPoints ? ids[i] : -1;
       }
     }
   };

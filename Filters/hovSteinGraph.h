@@ -84,7 +84,7 @@ inline bool Ordered(const View& v, vtkIdType c)
 struct Digraph
 {
   const vtkIdType* FaceOffsets = nullptr;
-  // Each filled completely per view before it is read (FillBuffer: no
+  // Each element written per view before it is read (FillBuffer: no
   // serial zeroing of tens of MB at each allocation).
   FillBuffer<CellIndex> FaceTargets; ///< (slots past FaceCount are never read)
   FillBuffer<std::uint8_t> FaceCount;

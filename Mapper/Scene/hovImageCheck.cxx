@@ -157,7 +157,7 @@ void hov::ImageCheck::Check(
         if (out)
         {
           std::fill(out + 4 * p, out + 4 * (p + c0), 0.0f);
-          std::fill(out + 4 * (p + std::max(c0, c1)), out + 4 * (p + n), 0.0f);
+          std::fill(out + 4 * (p + c1), out + 4 * (p + n), 0.0f);
         }
         int x0 = width, x1 = 0;
         if (c0 < c1)
