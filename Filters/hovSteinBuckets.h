@@ -2,7 +2,8 @@
  * @file hovSteinBuckets.h
  * @brief A counting sort in parallel for the Stein sort's set-up: items
  *        bucketed by integer keys (faces by point), in item order within
- *        each bucket whatever the number of threads.
+ *        each bucket whatever the number of threads; and a running sum in
+ *        parallel (CSR offsets).
  *
  * The items are cut into at most 4 blocks (2 per thread), each with its own
  * count per key: counting and scattering run in parallel, and the buckets
@@ -24,6 +25,51 @@
 
 namespace hovStein
 {
+/**
+ * Running sum in place, in parallel over blocks: @p a has @p n + 1 entries,
+ * a[0] the start and a[i + 1] the count of item i; afterwards a[i + 1] is
+ * a[i] plus that count (offsets of a CSR). The same sums for every thread count.
+ */
+template <class T>
+void ParallelRunningSum(T* a, vtkIdType n)
+{
+  constexpr vtkIdType MinBlock = 1 << 16;
+  const vtkIdType threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const vtkIdType numBlocks = std::max<vtkIdType>(1, std::min(n / MinBlock, 4 * threads));
+  auto first = [&](vtkIdType block) { return block * n / numBlocks; };
+  std::vector<T> base(numBlocks + 1, 0);
+  base[0] = a[0];
+  if (numBlocks > 1)
+  {
+    vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+      for (vtkIdType block = b0; block < b1; ++block)
+      {
+        T sum = 0;
+        for (vtkIdType i = first(block); i < first(block + 1); ++i)
+        {
+          sum += a[i + 1];
+        }
+        base[block + 1] = sum;
+      }
+    });
+  }
+  for (vtkIdType block = 0; block + 1 < numBlocks; ++block)
+  {
+    base[block + 1] += base[block];
+  }
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType block = b0; block < b1; ++block)
+    {
+      T sum = base[block];
+      for (vtkIdType i = first(block); i < first(block + 1); ++i)
+      {
+        sum += a[i + 1];
+        a[i + 1] = sum;
+      }
+    }
+  });
+}
+
 /**
  * Buckets items [0, @p numItems) by keys in [0, @p numKeys): @p items(begin,
  * end, emit) calls emit(key, value) for each key of each item of [begin,

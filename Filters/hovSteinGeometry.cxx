@@ -2,13 +2,19 @@
 #include "hovSteinGeometry.h"
 
 #include "hovGeometricPredicates.h" // exact Orient3d
+#include "hovSteinBuckets.h"         // ParallelRunningSum
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
@@ -159,6 +165,99 @@ std::uint8_t QuadCode(const double* p[4], const double* centre, Plane& plane)
   plane = { { sign * n[0], sign * n[1], sign * n[2] }, sign * d, dev };
   return FaceNewell;
 }
+
+/// Bounds of the finite coordinates: lo[k] > hi[k] if there are none.
+struct Bounds
+{
+  double Lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double Hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  void Add(const double* x)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (std::isfinite(x[k]))
+      {
+        this->Lo[k] = std::min(this->Lo[k], x[k]);
+        this->Hi[k] = std::max(this->Hi[k], x[k]);
+      }
+    }
+  }
+};
+
+/**
+ * The points of @p input in world coordinates (@p model applied, unless null
+ * or the identity) into @p out, 3 per point, and the bounds of their finite
+ * coordinates. In parallel where the points are a float or double array
+ * (thread-safe reads), else one GetPoint() call at a time.
+ */
+void ReadPoints(vtkDataSet* input, vtkMatrix4x4* model, FillBuffer<double>& out, double lo[3],
+  double hi[3])
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  out.resize(3 * numPoints); // every coordinate is written below
+  double m[16];
+  const bool identity = !model || model->IsIdentity();
+  if (!identity)
+  {
+    vtkMatrix4x4::DeepCopy(m, model);
+  }
+  vtkPointSet* set = vtkPointSet::SafeDownCast(input);
+  vtkDataArray* data = set && set->GetPoints() ? set->GetPoints()->GetData() : nullptr;
+  vtkDoubleArray* doubles = vtkDoubleArray::FastDownCast(data);
+  vtkFloatArray* floats = vtkFloatArray::FastDownCast(data);
+  vtkSMPThreadLocal<Bounds> bounds;
+  auto read = [&](vtkIdType begin, vtkIdType end) {
+    Bounds& b = bounds.Local();
+    for (vtkIdType i = begin; i < end; ++i)
+    {
+      double* x = out.data() + 3 * i;
+      if (doubles)
+      {
+        std::copy_n(doubles->GetPointer(3 * i), 3, x);
+      }
+      else if (floats)
+      {
+        std::copy_n(floats->GetPointer(3 * i), 3, x);
+      }
+      else
+      {
+        input->GetPoint(i, x);
+      }
+      if (!identity)
+      {
+        double y[3], w = m[12] * x[0] + m[13] * x[1] + m[14] * x[2] + m[15];
+        for (int k = 0; k < 3; ++k)
+        {
+          y[k] = (m[4 * k] * x[0] + m[4 * k + 1] * x[1] + m[4 * k + 2] * x[2] + m[4 * k + 3]) / w;
+        }
+        std::copy(y, y + 3, x);
+      }
+      b.Add(x);
+    }
+  };
+  if ((doubles || floats) && data->GetNumberOfComponents() == 3 &&
+    data->GetNumberOfTuples() >= numPoints)
+  {
+    vtkSMPTools::For(0, numPoints, 16384, read);
+  }
+  else
+  {
+    doubles = nullptr;
+    floats = nullptr;
+    read(0, numPoints);
+  }
+  Bounds all;
+  for (const Bounds& b : bounds)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      all.Lo[k] = std::min(all.Lo[k], b.Lo[k]);
+      all.Hi[k] = std::max(all.Hi[k], b.Hi[k]);
+    }
+  }
+  std::copy_n(all.Lo, 3, lo);
+  std::copy_n(all.Hi, 3, hi);
+}
 }
 
 const Shape* const ShapeTable[5] = { &NoShape, &TetShape, &HexShape, &WedgeShape, &PyramidShape };
@@ -263,40 +362,8 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   const vtkIdType numPoints = input->GetNumberOfPoints();
   const vtkIdType n = input->GetNumberOfCells();
   this->NumberOfCells = n;
-  this->Points.resize(3 * numPoints);
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
-    input->GetPoint(i, this->Points.data() + 3 * i);
-  }
-  double m[16];
-  const bool identity = !model || model->IsIdentity();
-  if (!identity)
-  {
-    vtkMatrix4x4::DeepCopy(m, model);
-  }
-  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[3] = { -VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
-    double* x = this->Points.data() + 3 * i;
-    if (!identity)
-    {
-      double y[3], w = m[12] * x[0] + m[13] * x[1] + m[14] * x[2] + m[15];
-      for (int k = 0; k < 3; ++k)
-      {
-        y[k] = (m[4 * k] * x[0] + m[4 * k + 1] * x[1] + m[4 * k + 2] * x[2] + m[4 * k + 3]) / w;
-      }
-      std::copy(y, y + 3, x);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      if (std::isfinite(x[k]))
-      {
-        lo[k] = std::min(lo[k], x[k]);
-        hi[k] = std::max(hi[k], x[k]);
-      }
-    }
-  }
+  double lo[3], hi[3];
+  ReadPoints(input, model, this->Points, lo, hi);
   this->Diagonal = lo[0] <= hi[0] ? std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
                                       (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]))
                                   : 0.0;
@@ -314,8 +381,16 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
     input->GetCellPoints(0, warm);
   }
   this->Kinds.assign(n, KindBad);
-  this->CornerOffsets.assign(n + 1, 0);
+  this->CornerOffsets.resize(n + 1);
+  this->CornerOffsets[0] = 0;
+  // Newell planes for the faces of the cells other than tetrahedra (none, and
+  // no per-cell offsets, for a tetrahedral mesh).
+  auto hasPlanes = [this](vtkIdType c) {
+    return this->Kinds[c] != KindBad && this->Kinds[c] != KindTet;
+  };
+  vtkSMPThreadLocal<vtkIdType> planeCells(0);
   auto pass1 = [&](vtkIdType begin, vtkIdType end) {
+    vtkIdType& withPlanes = planeCells.Local();
     for (vtkIdType c = begin; c < end; ++c)
     {
       const vtkIdType npts = source.Grid ? source.Grid->GetCells()->GetCellSize(c)
@@ -323,6 +398,7 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       int corners = 0;
       this->Kinds[c] = KindOf(source.Type(c), npts, corners);
       this->CornerOffsets[c + 1] = corners;
+      withPlanes += hasPlanes(c);
     }
   };
   if (source.Grid)
@@ -333,16 +409,11 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   {
     pass1(0, n);
   }
-  // Newell planes for the faces of the cells other than tetrahedra (none, and
-  // no per-cell offsets, for a tetrahedral mesh).
-  auto hasPlanes = [this](vtkIdType c) {
-    return this->Kinds[c] != KindBad && this->Kinds[c] != KindTet;
-  };
+  ParallelRunningSum(this->CornerOffsets.data(), n);
   vtkIdType planes = 0;
-  for (vtkIdType c = 0; c < n; ++c)
+  for (vtkIdType count : planeCells)
   {
-    this->CornerOffsets[c + 1] += this->CornerOffsets[c];
-    planes += hasPlanes(c) ? MaxFaces : 0;
+    planes += MaxFaces * count;
   }
   this->PlaneOffsets.assign(planes > 0 ? n : 0, -1);
   this->PlaneOffsets.shrink_to_fit();
@@ -365,7 +436,13 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   // no shared temporary: thread safe). A grid after Initialize() has none.
   vtkCellArray* cells = source.Grid ? source.Grid->GetCells() : nullptr;
   vtkCellArray* shared = cells && cells->IsStorageShareable() ? cells : nullptr;
+  struct BadCells
+  {
+    vtkIdType Count = 0, First = -1;
+  };
+  vtkSMPThreadLocal<BadCells> badCells;
   auto pass2 = [&](vtkIdType begin, vtkIdType end) {
+    BadCells& bad = badCells.Local();
     for (vtkIdType c = begin; c < end; ++c)
     {
       vtkIdType numIds = 0;
@@ -387,6 +464,10 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
         continue;
       }
       this->Kinds[c] = KindBad;
+      if (bad.Count++ == 0 || c < bad.First)
+      {
+        bad.First = c;
+      }
       vtkIdType* corners = this->Corners.data() + this->CornerOffsets[c];
       const vtkIdType count = this->CornerOffsets[c + 1] - this->CornerOffsets[c];
       for (vtkIdType i = 0; i < count; ++i)
@@ -403,13 +484,15 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   {
     pass2(0, n);
   }
+  // The number of bad cells and the first: per thread, then combined.
   this->NumberOfBadCells = 0;
   this->FirstBadCell = -1;
-  for (vtkIdType c = 0; c < n; ++c)
+  for (const BadCells& bad : badCells)
   {
-    if (this->Kinds[c] == KindBad)
+    this->NumberOfBadCells += bad.Count;
+    if (bad.Count > 0 && (this->FirstBadCell < 0 || bad.First < this->FirstBadCell))
     {
-      this->FirstBadCell = this->NumberOfBadCells++ == 0 ? c : this->FirstBadCell;
+      this->FirstBadCell = bad.First;
     }
   }
 }

@@ -22,19 +22,22 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
     this->Across.clear(); // (no sheets: ViewFace::Boundary is -1 beyond INT32_MAX)
     return;
   }
-  this->Across.assign(4 * nb, -1);
+  this->Across.resize(4 * nb); // every entry is written below, in parallel
   if (nb == 0)
   {
     return;
   }
-  // Corners of every boundary face, then the boundary faces of every point.
-  std::vector<vtkIdType> corners(4 * nb, -1);
-  std::vector<std::uint8_t> sizes(nb);
+  // Corners of every boundary face (a triangle's fourth -1), then the
+  // boundary faces of every point.
+  FillBuffer<vtkIdType> corners(4 * nb);
+  FillBuffer<std::uint8_t> sizes(nb);
   vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end; ++k)
     {
-      sizes[k] = static_cast<std::uint8_t>(
-        g.OrientedFace(t.Boundary[k].Cell, t.Boundary[k].Face, corners.data() + 4 * k));
+      vtkIdType* ids = corners.data() + 4 * k;
+      const int n = g.OrientedFace(t.Boundary[k].Cell, t.Boundary[k].Face, ids);
+      std::fill(ids + n, ids + 4, -1);
+      sizes[k] = static_cast<std::uint8_t>(n);
     }
   });
   const vtkIdType numPoints = static_cast<vtkIdType>(g.Points.size() / 3);
@@ -80,6 +83,7 @@ void BoundaryAdjacency::Build(const Geometry& g, const Topology& t)
         }
         this->Across[4 * k + e] = count == 1 && other >= 0 ? other : -1;
       }
+      std::fill(this->Across.data() + 4 * k + n, this->Across.data() + 4 * k + 4, -1);
     }
   });
 }

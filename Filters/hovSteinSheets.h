@@ -67,7 +67,7 @@ struct BoundaryAdjacency
   /// Per boundary face (Topology::Boundary), 4 entries: across edge e (from
   /// corner e to corner e + 1 of Geometry::OrientedFace), the boundary face
   /// sharing it when exactly two boundary faces share it, else -1.
-  std::vector<std::int32_t> Across;
+  FillBuffer<std::int32_t> Across;
   unsigned long Generation = 0; ///< Topology::Generation it was built for
 
   void Build(const Geometry& g, const Topology& t);

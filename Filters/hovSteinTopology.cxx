@@ -4,6 +4,7 @@
 #include "hovGeometricPredicates.h" // exact Orient3d
 #include "hovSteinBuckets.h"         // ParallelBuckets, FillBuffer
 
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
@@ -23,6 +24,17 @@ struct ChunkMatches
 
 namespace
 {
+/// The number of bits set in @p mask (a cell's boundary faces).
+inline int BitCount(std::uint8_t mask)
+{
+  int count = 0;
+  for (; mask; mask &= mask - 1)
+  {
+    ++count;
+  }
+  return count;
+}
+
 /// Sorted corner ids of face f of cell c (triangles padded with -1 at the end).
 std::array<vtkIdType, 4> FaceKey(const Geometry& g, vtkIdType c, int f)
 {
@@ -319,28 +331,39 @@ void Topology::Build(const Geometry& g, bool wideEntries)
 void Topology::Collect(const Geometry& g, const std::vector<ChunkMatches>& chunks)
 {
   // Close the gaps between the chunks' interior faces (in chunk order: a
-  // chunk moves down, never over a chunk not yet moved).
-  vtkIdType m = 0;
-  for (const ChunkMatches& chunk : chunks)
-  {
-    if (chunk.First != m)
+  // chunk moves down, never over a chunk not yet moved), one array per task.
+  auto close = [&chunks](auto& values, vtkIdType width) {
+    vtkIdType m = 0;
+    for (const ChunkMatches& chunk : chunks)
     {
-      const vtkIdType f = chunk.First, c = chunk.Count;
-      std::copy(this->A.begin() + f, this->A.begin() + f + c, this->A.begin() + m);
-      std::copy(this->B.begin() + f, this->B.begin() + f + c, this->B.begin() + m);
-      std::copy(this->FaceA.begin() + f, this->FaceA.begin() + f + c, this->FaceA.begin() + m);
-      if (!this->TripleA.empty())
+      if (chunk.First != m)
       {
-        std::copy(this->TripleA.begin() + 3 * f, this->TripleA.begin() + 3 * (f + c),
-          this->TripleA.begin() + 3 * m);
+        const auto from = values.begin() + width * chunk.First;
+        std::copy(from, from + width * chunk.Count, values.begin() + width * m);
+      }
+      m += chunk.Count;
+    }
+    values.resize(values.empty() ? 0 : width * m);
+  };
+  vtkSMPTools::For(0, 4, 1, [&](vtkIdType t0, vtkIdType t1) {
+    for (vtkIdType task = t0; task < t1; ++task)
+    {
+      switch (task)
+      {
+        case 0:
+          close(this->A, 1);
+          break;
+        case 1:
+          close(this->B, 1);
+          break;
+        case 2:
+          close(this->FaceA, 1);
+          break;
+        default:
+          close(this->TripleA, 3);
       }
     }
-    m += chunk.Count;
-  }
-  this->A.resize(m);
-  this->B.resize(m);
-  this->FaceA.resize(m);
-  this->TripleA.resize(this->TripleA.empty() ? 0 : 3 * m);
+  });
   const vtkIdType n = g.NumberOfCells;
   this->BoundaryFaces.assign(n, 0);
   for (const ChunkMatches& chunk : chunks)
@@ -349,11 +372,6 @@ void Topology::Collect(const Geometry& g, const std::vector<ChunkMatches>& chunk
     {
       this->BoundaryFaces[e >> 3] |= static_cast<std::uint8_t>(1 << (e & 7));
     }
-  }
-  this->NumberOfBoundaryCells = 0;
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    this->NumberOfBoundaryCells += this->BoundaryFaces[c] != 0;
   }
 }
 
@@ -365,16 +383,14 @@ void Topology::BuildCellFaces(const Geometry& g)
   const vtkIdType m = this->NumberOfInteriorFaces();
   this->CellFaceOffsets.resize(n + 1);
   this->CellFaceOffsets[0] = 0;
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    std::uint8_t mask = this->BoundaryFaces[c];
-    vtkIdType count = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
-    for (; mask; mask &= mask - 1)
+  vtkSMPTools::For(0, n, 16384, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
     {
-      --count;
+      const int faces = g.Kinds[c] == KindBad ? 0 : GetShape(g.Kinds[c]).NumFaces;
+      this->CellFaceOffsets[c + 1] = faces - BitCount(this->BoundaryFaces[c]);
     }
-    this->CellFaceOffsets[c + 1] = this->CellFaceOffsets[c] + count;
-  }
+  });
+  ParallelRunningSum(this->CellFaceOffsets.data(), n);
   // In parallel over bands of cells: each band scans all faces and fills its
   // own cells' lists, in increasing face order whatever the number of bands.
   this->CellFaces.resize(2 * m);
@@ -409,17 +425,49 @@ void Topology::BuildCellFaces(const Geometry& g)
 
 void Topology::BuildBoundary(const Geometry& g)
 {
-  this->Boundary.clear();
-  for (vtkIdType c = 0; c < g.NumberOfCells; ++c)
-  {
-    for (int f = 0; this->BoundaryFaces[c] && f < MaxFaces; ++f)
+  // Per block of cells its boundary faces, counted then written in parallel.
+  const vtkIdType n = g.NumberOfCells;
+  constexpr vtkIdType Block = 16384;
+  const vtkIdType numBlocks = (n + Block - 1) / Block;
+  std::vector<vtkIdType> start(numBlocks + 1, 0);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
     {
-      if (this->BoundaryFaces[c] & (1 << f))
+      vtkIdType count = 0;
+      for (vtkIdType c = blk * Block; c < std::min(n, (blk + 1) * Block); ++c)
       {
-        this->Boundary.push_back(
-          { c, static_cast<std::uint8_t>(f), static_cast<std::uint8_t>(g.FaceCode(c, f) & 3) });
+        count += BitCount(this->BoundaryFaces[c]);
+      }
+      start[blk + 1] = count;
+    }
+  });
+  ParallelRunningSum(start.data(), numBlocks);
+  this->NumberOfBoundaryCells = 0;
+  this->Boundary.resize(start[numBlocks]); // every face is written below
+  vtkSMPThreadLocal<vtkIdType> boundaryCells(0);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    vtkIdType& cellsWithFaces = boundaryCells.Local();
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      BoundaryFace* out = this->Boundary.data() + start[blk];
+      for (vtkIdType c = blk * Block; c < std::min(n, (blk + 1) * Block); ++c)
+      {
+        const std::uint8_t mask = this->BoundaryFaces[c];
+        cellsWithFaces += mask != 0;
+        for (int f = 0; mask >> f; ++f)
+        {
+          if (mask & (1 << f))
+          {
+            *out++ = { c, static_cast<std::uint8_t>(f),
+              static_cast<std::uint8_t>(g.FaceCode(c, f) & 3) };
+          }
+        }
       }
     }
+  });
+  for (vtkIdType count : boundaryCells)
+  {
+    this->NumberOfBoundaryCells += count;
   }
 }
 }

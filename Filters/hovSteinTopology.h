@@ -65,7 +65,7 @@ struct Topology
     std::uint8_t Face, Mode; ///< Mode: FaceCode & 3
   };
   /// The boundary faces in cell order, by face within a cell.
-  std::vector<BoundaryFace> Boundary;
+  FillBuffer<BoundaryFace> Boundary;
 
   /// Distinct for every Build() of any Topology (for caches derived from it).
   unsigned long Generation = 0;
@@ -79,6 +79,7 @@ private:
   /// The matched chunks' interior faces made contiguous; BoundaryFaces.
   void Collect(const Geometry& g, const std::vector<ChunkMatches>& chunks);
   void BuildCellFaces(const Geometry& g);
+  /// Boundary and NumberOfBoundaryCells (from BoundaryFaces).
   void BuildBoundary(const Geometry& g);
 };
 }
