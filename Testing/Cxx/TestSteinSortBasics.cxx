@@ -1,19 +1,24 @@
 // vtkSteinVisibilitySort basics: every cell exactly once, shared faces in the
 // right order (checked independently from face planes and the eye), two tets
 // in both directions and projections, a model transform that swaps them,
-// chunking, empty input, an unsupported cell (warning), a cyclic triple of
-// interleaved bars, perspective from inside the mesh, and re-sorting after a
-// camera change without a new set-up.
+// point coordinates stored as float, double or int, chunking, empty input, an
+// unsupported cell (warning), a cyclic triple of interleaved bars,
+// perspective from inside the mesh, and re-sorting after a camera change
+// without a new set-up.
 #include "hovSortMeshes.h"
 #include "hovTestMeshes.h"
 
 #include "vtkCamera.h"
 #include "vtkCell.h"
 #include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkSteinVisibilitySort.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkUnstructuredGrid.h"
@@ -317,6 +322,46 @@ int TestSteinSortBasics(int, char*[])
               << sort->GetNumberOfMoves() << ", cycles " << sort->GetNumberOfCycles() << "\n";
     Check(bad == 0 && sort->GetNumberOfCycles() == 0,
       c.Name + ": no interior face out of order (" + std::to_string(bad) + "), no cycle");
+  }
+
+  // Point storage: float, double and integer coordinates (the last read one
+  // point at a time, the others in parallel) of the tet block scaled 4x
+  // (integers): the same order, every face in order.
+  {
+    const double far[3] = { 16.8, -12.4, 10.8 }, mid[3] = { 2, 2, 2 };
+    SetCamera(cam, far, mid, false);
+    std::vector<vtkIdType> orders[3];
+    int violations = 0;
+    for (int type = 0; type < 3; ++type)
+    {
+      vtkSmartPointer<vtkDataArray> data;
+      if (type == 0)
+        data = vtkSmartPointer<vtkFloatArray>::New();
+      else if (type == 1)
+        data = vtkSmartPointer<vtkDoubleArray>::New();
+      else
+        data = vtkSmartPointer<vtkIntArray>::New();
+      data->SetNumberOfComponents(3);
+      data->SetNumberOfTuples(tets->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < tets->GetNumberOfPoints(); ++i)
+      {
+        const double* x = tets->GetPoint(i);
+        data->SetTuple3(i, 4 * x[0], 4 * x[1], 4 * x[2]);
+      }
+      vtkNew<vtkPoints> points;
+      points->SetData(data);
+      vtkNew<vtkUnstructuredGrid> grid;
+      grid->ShallowCopy(tets);
+      grid->SetPoints(points);
+      vtkNew<vtkSteinVisibilitySort> sort;
+      sort->SetInput(grid);
+      sort->SetCamera(cam);
+      orders[type] = Traverse(sort, "tet block x4, point type " + std::to_string(type));
+      violations += FaceViolations(grid, cam, orders[type]);
+    }
+    Check(orders[0] == orders[1] && orders[1] == orders[2] && violations == 0,
+      "float, double and int points: the same order, no face out of order (" +
+        std::to_string(violations) + ")");
   }
 
   // Chunks of MaxCellsReturned, the same order as GetOrder().
