@@ -1,6 +1,7 @@
 // De-duplication and decision of the Stein sort's boundary cell pairs (see hovSteinPairEdges.h).
 #include "hovSteinPairEdges.h"
 
+#include "hovSteinBuckets.h"   // ParallelRunningSum
 #include "hovSteinObstructs.h" // Obstruction
 #include "hovSteinTopology.h"  // MaxIndexedCells
 
@@ -100,14 +101,37 @@ vtkIdType PairEdges::Decide(const Geometry& g, const View& v, FillBuffer<vtkIdTy
       }
     }
   }
-  this->Cells.clear();
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    if (this->Used[c])
+  // The tested cells in increasing order: counted, then listed, per block.
+  constexpr vtkIdType Block = 16384;
+  const vtkIdType numBlocks = (n + Block - 1) / Block;
+  std::vector<vtkIdType>& start = this->BlockStart;
+  start.assign(numBlocks + 1, 0);
+  auto usedIn = [&](vtkIdType blk, auto&& fn) {
+    for (vtkIdType c = blk * Block; c < std::min(n, (blk + 1) * Block); ++c)
     {
-      this->Cells.push_back(c);
+      if (this->Used[c])
+      {
+        fn(c);
+      }
     }
-  }
+  };
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      vtkIdType count = 0;
+      usedIn(blk, [&count](vtkIdType) { ++count; });
+      start[blk + 1] = count;
+    }
+  });
+  ParallelRunningSum(start.data(), numBlocks);
+  this->Cells.resize(start[numBlocks]);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      vtkIdType* out = this->Cells.data() + start[blk];
+      usedIn(blk, [&out](vtkIdType c) { *out++ = c; });
+    }
+  });
   this->Hulls.Build(g, v, this->Cells);
   // Each bucket's edges, kept at its beginning (Kept becomes their count).
   // (Most buckets are empty or hold one or two pairs: chunks of 256 balance the tests.)
@@ -129,13 +153,15 @@ vtkIdType PairEdges::Decide(const Geometry& g, const View& v, FillBuffer<vtkIdTy
     }
   });
   offsets.resize(n + 1);
-  vtkIdType total = 0;
-  for (vtkIdType c = 0; c <= n; ++c)
-  {
-    offsets[c] = total;
-    total += c >= lo && c - lo < nb ? this->Kept[c - lo] : 0;
-  }
-  targets.resize(total);
+  offsets[0] = 0;
+  vtkSMPTools::For(0, n, 16384, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      offsets[c + 1] = c >= lo && c - lo < nb ? this->Kept[c - lo] : 0;
+    }
+  });
+  ParallelRunningSum(offsets.data(), n);
+  targets.resize(offsets[n]);
   vtkSMPTools::For(0, nb, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
