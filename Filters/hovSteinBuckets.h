@@ -2,8 +2,8 @@
  * @file hovSteinBuckets.h
  * @brief A counting sort in parallel for the Stein sort's set-up: items
  *        bucketed by integer keys (faces by point), in item order within
- *        each bucket whatever the number of threads; and a running sum in
- *        parallel (CSR offsets).
+ *        each bucket whatever the number of threads; a running sum in parallel
+ *        (CSR offsets) and a parallel selection of indices.
  *
  * The items are cut into at most 4 blocks (2 per thread), each with its own
  * count per key: counting and scattering run in parallel, and the buckets
@@ -65,6 +65,45 @@ void ParallelRunningSum(T* a, vtkIdType n)
       {
         sum += a[i + 1];
         a[i + 1] = sum;
+      }
+    }
+  });
+}
+
+/**
+ * Appends to @p out, in increasing order, every i in [0, @p n) with
+ * @p keep(i) true: counted per block, then written, in parallel.
+ */
+template <class Keep>
+void ParallelSelect(vtkIdType n, const Keep& keep, std::vector<vtkIdType>& out)
+{
+  constexpr vtkIdType Block = 16384;
+  const vtkIdType numBlocks = (n + Block - 1) / Block;
+  std::vector<vtkIdType> start(numBlocks + 1, 0);
+  start[0] = static_cast<vtkIdType>(out.size());
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      vtkIdType count = 0;
+      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
+      {
+        count += keep(i) ? 1 : 0;
+      }
+      start[blk + 1] = count;
+    }
+  });
+  ParallelRunningSum(start.data(), numBlocks);
+  out.resize(start[numBlocks]);
+  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType blk = b0; blk < b1; ++blk)
+    {
+      vtkIdType* to = out.data() + start[blk];
+      for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
+      {
+        if (keep(i))
+        {
+          *to++ = i;
+        }
       }
     }
   });

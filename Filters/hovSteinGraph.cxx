@@ -2,6 +2,7 @@
 #include "hovSteinGraph.h"
 
 #include "hovSteinBoundaryPairs.h"  // BoundaryPairs
+#include "hovSteinBuckets.h"        // ParallelSelect
 #include "hovSteinMerge.h"          // RadixSortDescending
 
 #include "vtkSMPTools.h"
@@ -127,13 +128,7 @@ vtkIdType AppendUnordered(const Geometry& g, const View& v, std::vector<vtkIdTyp
 {
   const vtkIdType n = g.NumberOfCells;
   std::vector<vtkIdType> first;
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    if (!Ordered(v, c))
-    {
-      first.push_back(c);
-    }
-  }
+  ParallelSelect(n, [&v](vtkIdType c) { return !Ordered(v, c); }, first);
   std::vector<float> keys(first.size());
   for (size_t i = 0; i < first.size(); ++i)
   {

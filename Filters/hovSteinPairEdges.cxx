@@ -1,7 +1,7 @@
 // De-duplication and decision of the Stein sort's boundary cell pairs (see hovSteinPairEdges.h).
 #include "hovSteinPairEdges.h"
 
-#include "hovSteinBuckets.h"   // ParallelRunningSum
+#include "hovSteinBuckets.h"   // ParallelRunningSum, ParallelSelect
 #include "hovSteinObstructs.h" // Obstruction
 #include "hovSteinTopology.h"  // MaxIndexedCells
 
@@ -101,37 +101,8 @@ vtkIdType PairEdges::Decide(const Geometry& g, const View& v, FillBuffer<vtkIdTy
       }
     }
   }
-  // The tested cells in increasing order: counted, then listed, per block.
-  constexpr vtkIdType Block = 16384;
-  const vtkIdType numBlocks = (n + Block - 1) / Block;
-  std::vector<vtkIdType>& start = this->BlockStart;
-  start.assign(numBlocks + 1, 0);
-  auto usedIn = [&](vtkIdType blk, auto&& fn) {
-    for (vtkIdType c = blk * Block; c < std::min(n, (blk + 1) * Block); ++c)
-    {
-      if (this->Used[c])
-      {
-        fn(c);
-      }
-    }
-  };
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    for (vtkIdType blk = b0; blk < b1; ++blk)
-    {
-      vtkIdType count = 0;
-      usedIn(blk, [&count](vtkIdType) { ++count; });
-      start[blk + 1] = count;
-    }
-  });
-  ParallelRunningSum(start.data(), numBlocks);
-  this->Cells.resize(start[numBlocks]);
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    for (vtkIdType blk = b0; blk < b1; ++blk)
-    {
-      vtkIdType* out = this->Cells.data() + start[blk];
-      usedIn(blk, [&out](vtkIdType c) { *out++ = c; });
-    }
-  });
+  this->Cells.clear();
+  ParallelSelect(n, [this](vtkIdType c) { return this->Used[c] != 0; }, this->Cells);
   this->Hulls.Build(g, v, this->Cells);
   // Each bucket's edges, kept at its beginning (Kept becomes their count).
   // (Most buckets are empty or hold one or two pairs: chunks of 256 balance the tests.)

@@ -55,7 +55,6 @@ private:
   std::vector<std::uint32_t> Kept; ///< per bucket: distinct second cells, then edges
   std::vector<std::uint8_t> Used;  ///< per cell: tested
   std::vector<vtkIdType> Cells;    ///< the tested cells
-  std::vector<vtkIdType> BlockStart; ///< where each block of cells starts in Cells
   HullCache Hulls;
 };
 }

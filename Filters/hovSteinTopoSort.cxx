@@ -1,6 +1,7 @@
 // Topological sort with cycle fallback of vtkSteinVisibilitySort (see hovSteinGraph.h).
 #include "hovSteinGraph.h"
 
+#include "hovSteinBuckets.h" // ParallelSelect
 #include "hovSteinBuffers.h" // Prefetch
 
 #include <algorithm>
@@ -164,13 +165,8 @@ void TopologicalOrder(Digraph& d, const Geometry& g, const View& v, vtkIdType nu
   const vtkIdType n = static_cast<vtkIdType>(d.FaceCount.size());
   // Kahn's algorithm with @p order itself as the FIFO queue.
   const size_t start = order.size();
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    if (d.InDegree[c] == 0 && Ordered(v, c))
-    {
-      order.push_back(c);
-    }
-  }
+  ParallelSelect(
+    n, [&d, &v](vtkIdType c) { return d.InDegree[c] == 0 && Ordered(v, c); }, order);
   SortBackToFront(g, v, order.data() + start, order.data() + order.size());
   const vtkIdType sources = static_cast<vtkIdType>(order.size() - start);
   order.resize(start + numOrdered + 1); // + 1: Kahn's branch-free push writes one past
