@@ -6,6 +6,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
+#include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -309,7 +310,9 @@ bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, const vtkIdType* id
   vtkIdType numIds, vtkIdType numPoints)
 {
   const Shape& s = GetShape(kind);
-  vtkIdType* corners = g.Corners.data() + g.CornerOffsets[c];
+  // Shared cells: the corners are the ids themselves (nothing to write).
+  vtkIdType* own = g.SharedCells ? nullptr : g.Corners.data() + g.CornerOffsets[c];
+  const vtkIdType* corners = own ? own : ids;
   static const int voxelToHex[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
   double centre[3] = { 0, 0, 0 };
   for (int i = 0; i < s.NumCorners; ++i)
@@ -320,7 +323,10 @@ bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, const vtkIdType* id
     {
       return false;
     }
-    corners[i] = id;
+    if (own)
+    {
+      own[i] = id;
+    }
     const double* x = g.Point(id);
     if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
     {
@@ -359,6 +365,14 @@ bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, const vtkIdType* id
 
 void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
 {
+  if (!this->Build(input, model, true))
+  {
+    this->Build(input, model, false); // a bad cell among shared ones: own corners
+  }
+}
+
+bool Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells)
+{
   const vtkIdType numPoints = input->GetNumberOfPoints();
   const vtkIdType n = input->GetNumberOfCells();
   this->NumberOfCells = n;
@@ -388,17 +402,20 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   auto hasPlanes = [this](vtkIdType c) {
     return this->Kinds[c] != KindBad && this->Kinds[c] != KindTet;
   };
-  vtkSMPThreadLocal<vtkIdType> planeCells(0);
+  vtkSMPThreadLocal<vtkIdType> planeCells(0), notLinear(0);
   auto pass1 = [&](vtkIdType begin, vtkIdType end) {
     vtkIdType& withPlanes = planeCells.Local();
+    vtkIdType& others = notLinear.Local();
     for (vtkIdType c = begin; c < end; ++c)
     {
       const vtkIdType npts = source.Grid ? source.Grid->GetCells()->GetCellSize(c)
                                          : source.Ids(c)->GetNumberOfIds();
       int corners = 0;
-      this->Kinds[c] = KindOf(source.Type(c), npts, corners);
+      const int type = source.Type(c);
+      this->Kinds[c] = KindOf(type, npts, corners);
       this->CornerOffsets[c + 1] = corners;
       withPlanes += hasPlanes(c);
+      others += this->Kinds[c] == KindBad || corners != npts || type == VTK_VOXEL;
     }
   };
   if (source.Grid)
@@ -425,8 +442,31 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       first += MaxFaces;
     }
   }
-  // (Every corner is written below, in parallel: no serial zeroing first.)
-  this->Corners.resize(this->CornerOffsets[n]);
+  // Linear cells of a vtkIdType cell array: their corners are its ids.
+  vtkCellArray* cells = source.Grid ? source.Grid->GetCells() : nullptr;
+  vtkCellArray* shared = cells && cells->IsStorageShareable() ? cells : nullptr;
+  bool linear = shareCells && shared && n > 0;
+  for (vtkIdType count : notLinear)
+  {
+    linear = linear && count == 0;
+  }
+  if (linear)
+  {
+    this->SharedCells = shared;
+    this->CornerStart = static_cast<const vtkIdType*>(shared->GetOffsetsArray()->GetVoidPointer(0));
+    this->CornerIds =
+      static_cast<const vtkIdType*>(shared->GetConnectivityArray()->GetVoidPointer(0));
+    std::vector<vtkIdType>().swap(this->CornerOffsets);
+    FillBuffer<vtkIdType>().swap(this->Corners);
+  }
+  else
+  {
+    this->SharedCells = nullptr;
+    // (Every corner is written below, in parallel: no serial zeroing first.)
+    this->Corners.resize(this->CornerOffsets[n]);
+    this->CornerStart = this->CornerOffsets.data();
+    this->CornerIds = this->Corners.data();
+  }
   this->FaceCodes.assign(MaxFaces * n, FaceSkip);
   this->Planes.assign(planes, Plane{});
   this->Planes.shrink_to_fit(); // a tetrahedral mesh after a hexahedral one keeps nothing
@@ -434,8 +474,6 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   // Pass 2: corners, face orientation and planes.
   // A cell array whose storage is vtkIdType hands out its own ids (no copy,
   // no shared temporary: thread safe). A grid after Initialize() has none.
-  vtkCellArray* cells = source.Grid ? source.Grid->GetCells() : nullptr;
-  vtkCellArray* shared = cells && cells->IsStorageShareable() ? cells : nullptr;
   struct BadCells
   {
     vtkIdType Count = 0, First = -1;
@@ -468,6 +506,10 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       {
         bad.First = c;
       }
+      if (this->SharedCells)
+      {
+        continue; // built again with own corners
+      }
       vtkIdType* corners = this->Corners.data() + this->CornerOffsets[c];
       const vtkIdType count = this->CornerOffsets[c + 1] - this->CornerOffsets[c];
       for (vtkIdType i = 0; i < count; ++i)
@@ -495,5 +537,7 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
       this->FirstBadCell = bad.First;
     }
   }
+  // A bad cell's corners are its valid ids and -1: shared ids cannot say so.
+  return !(this->SharedCells && this->NumberOfBadCells > 0);
 }
 }

@@ -23,6 +23,7 @@
 #define hovSteinGeometry_h
 
 #include "hovSteinBuffers.h" // FillBuffer
+#include "vtkSmartPointer.h" // SharedCells
 #include "vtkType.h"         // vtkIdType
 
 #include <cstdint> // std::uint8_t
@@ -76,11 +77,25 @@ struct Plane
 
 struct Geometry
 {
+  Geometry() = default;
+  Geometry(const Geometry&) = delete; ///< CornerStart and CornerIds point into it
+  Geometry& operator=(const Geometry&) = delete;
   vtkIdType NumberOfCells = 0;
   FillBuffer<double> Points;           ///< world coordinates, 3 per input point
   std::vector<std::uint8_t> Kinds;     ///< per cell
-  std::vector<vtkIdType> CornerOffsets; ///< per cell + 1
-  FillBuffer<vtkIdType> Corners;       ///< corner point ids (bad cells: all their points)
+  /// Per cell + 1: where its corners start (CornerOffsets, or the input's
+  /// cell offsets: see SharedCells).
+  const vtkIdType* CornerStart = nullptr;
+  /// Corner point ids (bad cells: their valid point ids, -1 for the others):
+  /// Corners, or the input's connectivity (see SharedCells).
+  const vtkIdType* CornerIds = nullptr;
+  std::vector<vtkIdType> CornerOffsets; ///< own per-cell offsets (empty when shared)
+  FillBuffer<vtkIdType> Corners;        ///< own corner ids (empty when shared)
+  /// Set when every cell is a valid linear tetrahedron, hexahedron, wedge or
+  /// pyramid of a grid whose cell array stores vtkIdType: its offsets and
+  /// connectivity are then the corners, read in place (no copy: 80 MB less
+  /// for 2M tetrahedra), and this keeps that cell array alive.
+  vtkSmartPointer<vtkObjectBase> SharedCells;
   std::vector<std::uint8_t> FaceCodes; ///< MaxFaces per cell
   std::vector<Plane> Planes;           ///< MaxFaces per cell with a Newell face
   std::vector<vtkIdType> PlaneOffsets; ///< per cell: first plane, or -1 (empty without planes)
@@ -91,12 +106,15 @@ struct Geometry
 
   /// Build from @p input with points mapped by @p model (object to world; may be null).
   void Build(vtkDataSet* input, vtkMatrix4x4* model);
+  /// Build(), reading the corners from a shared cell array if @p shareCells
+  /// and possible; false if it did and found a bad cell (then build without).
+  bool Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells);
 
   const double* Point(vtkIdType id) const { return Points.data() + 3 * id; }
-  const vtkIdType* CellCorners(vtkIdType c) const { return Corners.data() + CornerOffsets[c]; }
+  const vtkIdType* CellCorners(vtkIdType c) const { return CornerIds + CornerStart[c]; }
   int NumberOfCorners(vtkIdType c) const
   {
-    return static_cast<int>(CornerOffsets[c + 1] - CornerOffsets[c]);
+    return static_cast<int>(CornerStart[c + 1] - CornerStart[c]);
   }
   std::uint8_t FaceCode(vtkIdType c, int f) const { return FaceCodes[MaxFaces * c + f]; }
   /// The three corners (point ids, outward counterclockwise) of an exact face.

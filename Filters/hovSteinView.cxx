@@ -133,8 +133,8 @@ void View::CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end)
   // compiler reload every vector's data pointer after each cell.
   const double* proj = this->Proj.data();
   const std::uint8_t* valid = this->Valid.data();
-  const vtkIdType* offsets = g.CornerOffsets.data();
-  const vtkIdType* corners = g.Corners.data();
+  const vtkIdType* offsets = g.CornerStart;
+  const vtkIdType* corners = g.CornerIds;
   const std::uint8_t* kinds = g.Kinds.data();
   std::uint8_t* status = this->Status.data();
   double* front = this->Front.data();

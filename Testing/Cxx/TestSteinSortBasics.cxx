@@ -424,6 +424,39 @@ int TestSteinSortBasics(int, char*[])
         sort->GetNumberOfUnorderedCells() == 1 && order.front() == tri,
       "unsupported cell: warning with its id, counted, output first");
   }
+  // Linear tetrahedra whose cell array is read in place, with one tet that
+  // names a point that does not exist and one with a NaN corner: both are
+  // bad (warning, output first) and the others sorted as without them.
+  {
+    MeshBuilder m = hovTest::UnitBlock(2);
+    const vtkIdType np = m.Grid(false)->GetNumberOfPoints();
+    const vtkIdType a = m.AddPoint(0, 0, 2, 0), b = m.AddPoint(1, 0, 2, 0), c = m.AddPoint(1, 1, 2, 0);
+    const vtkIdType nan = m.AddPoint(std::nan(""), 0, 3, 0);
+    m.AddCell(VTK_TETRA, { a, b, c, np + (vtkIdType(1) << 40) }); // read, it would crash
+    m.AddCell(VTK_TETRA, { a, b, c, nan });
+    auto grid = m.Grid(false);
+    vtkNew<vtkSteinVisibilitySort> sort;
+    vtkNew<vtkTest::ErrorObserver> obs;
+    sort->AddObserver(vtkCommand::WarningEvent, obs);
+    sort->SetInput(grid);
+    sort->SetCamera(cam);
+    SetCamera(cam, outside, centre, false);
+    const auto order = Traverse(sort, "tets with a missing point and a NaN corner");
+    const vtkIdType first = grid->GetNumberOfCells() - 2;
+    const bool badFirst = order.size() > 2 &&
+      std::set<vtkIdType>(order.begin(), order.begin() + 2) ==
+        std::set<vtkIdType>({ first, first + 1 });
+    vtkNew<vtkSteinVisibilitySort> clean;
+    clean->SetInput(hovTest::UnitBlock(2).Grid(false));
+    clean->SetCamera(cam);
+    const auto cleanOrder = Traverse(clean, "the same tets without them");
+    Check(obs->GetWarning() &&
+        obs->GetWarningMessage().find("first: cell " + std::to_string(first)) !=
+          std::string::npos &&
+        sort->GetNumberOfUnorderedCells() == 2 && badFirst &&
+        std::vector<vtkIdType>(order.begin() + 2, order.end()) == cleanOrder,
+      "missing point and NaN corner: warning, both output first, the rest as without them");
+  }
   std::cout << (Failures ? "FAILED: " : "passed, failures: ") << Failures << "\n";
   return Failures ? 1 : 0;
 }
