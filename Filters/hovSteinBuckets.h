@@ -123,28 +123,46 @@ void ParallelBuckets(vtkIdType numItems, vtkIdType numKeys, const ItemsFn& items
   const vtkIdType numBlocks =
     std::max<vtkIdType>(1, std::min<vtkIdType>(std::min<vtkIdType>(numItems, 2 * threads), 4));
   auto first = [&](vtkIdType block) { return block * numItems / numBlocks; };
-  // count[block * numKeys + k]: the block's items in bucket k, then its cursor there.
-  std::vector<vtkIdType> count(static_cast<size_t>(numBlocks) * numKeys, 0);
+  // count[block * numKeys + k]: the block's items in bucket k, then its cursor
+  // there (each block zeroes and counts its own row).
+  FillBuffer<vtkIdType> count(static_cast<size_t>(numBlocks) * numKeys);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType block = b0; block < b1; ++block)
     {
       vtkIdType* mine = count.data() + block * numKeys;
+      std::fill(mine, mine + numKeys, 0);
       items(first(block), first(block + 1), [mine](vtkIdType key, auto&&) { ++mine[key]; });
     }
   });
-  start.assign(numKeys + 1, 0);
-  vtkIdType total = 0;
-  for (vtkIdType k = 0; k < numKeys; ++k)
-  {
-    start[k] = total;
-    for (vtkIdType block = 0; block < numBlocks; ++block)
+  // Bucket sizes, their running sum, then each block's cursor per bucket
+  // (the blocks' items one after another within a bucket), in parallel over keys.
+  start.resize(numKeys + 1);
+  start[0] = 0;
+  vtkSMPTools::For(0, numKeys, 16384, [&](vtkIdType k0, vtkIdType k1) {
+    for (vtkIdType k = k0; k < k1; ++k)
     {
-      const vtkIdType c = count[block * numKeys + k];
-      count[block * numKeys + k] = total;
-      total += c;
+      vtkIdType size = 0;
+      for (vtkIdType block = 0; block < numBlocks; ++block)
+      {
+        size += count[block * numKeys + k];
+      }
+      start[k + 1] = size;
     }
-  }
-  start[numKeys] = total;
+  });
+  ParallelRunningSum(start.data(), numKeys);
+  const vtkIdType total = start[numKeys];
+  vtkSMPTools::For(0, numKeys, 16384, [&](vtkIdType k0, vtkIdType k1) {
+    for (vtkIdType k = k0; k < k1; ++k)
+    {
+      vtkIdType at = start[k];
+      for (vtkIdType block = 0; block < numBlocks; ++block)
+      {
+        const vtkIdType c = count[block * numKeys + k];
+        count[block * numKeys + k] = at;
+        at += c;
+      }
+    }
+  });
   out.resize(total);
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType block = b0; block < b1; ++block)
