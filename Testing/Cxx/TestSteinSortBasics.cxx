@@ -406,6 +406,16 @@ int TestSteinSortBasics(int, char*[])
                   : "empty input: nothing, no error");
   }
 
+  // Sorts a grid from outside, its warnings observed.
+  auto sortObserved = [&](vtkUnstructuredGrid* grid, vtkSteinVisibilitySort* sort,
+                        vtkTest::ErrorObserver* obs, const std::string& what) {
+    sort->AddObserver(vtkCommand::WarningEvent, obs);
+    sort->SetInput(grid);
+    sort->SetCamera(cam);
+    SetCamera(cam, outside, centre, false);
+    return Traverse(sort, what);
+  };
+
   // An unsupported cell among tetrahedra: a warning, output first, once.
   {
     MeshBuilder m = hovTest::UnitBlock(2);
@@ -414,34 +424,28 @@ int TestSteinSortBasics(int, char*[])
     auto grid = m.Grid(false);
     vtkNew<vtkSteinVisibilitySort> sort;
     vtkNew<vtkTest::ErrorObserver> obs;
-    sort->AddObserver(vtkCommand::WarningEvent, obs);
-    sort->SetInput(grid);
-    sort->SetCamera(cam);
-    SetCamera(cam, outside, centre, false);
-    const auto order = Traverse(sort, "unsupported cell");
+    const auto order = sortObserved(grid, sort, obs, "unsupported cell");
     const vtkIdType tri = grid->GetNumberOfCells() - 1;
     Check(obs->GetWarning() && obs->GetWarningMessage().find("first: cell " + std::to_string(tri)) != std::string::npos &&
         sort->GetNumberOfUnorderedCells() == 1 && order.front() == tri,
       "unsupported cell: warning with its id, counted, output first");
   }
+
   // Linear tetrahedra whose cell array is read in place, with one tet that
   // names a point that does not exist and one with a NaN corner: both are
   // bad (warning, output first) and the others sorted as without them.
   {
     MeshBuilder m = hovTest::UnitBlock(2);
     const vtkIdType np = m.Grid(false)->GetNumberOfPoints();
-    const vtkIdType a = m.AddPoint(0, 0, 2, 0), b = m.AddPoint(1, 0, 2, 0), c = m.AddPoint(1, 1, 2, 0);
+    const vtkIdType a = m.AddPoint(0, 0, 2, 0), b = m.AddPoint(1, 0, 2, 0);
+    const vtkIdType c = m.AddPoint(1, 1, 2, 0);
     const vtkIdType nan = m.AddPoint(std::nan(""), 0, 3, 0);
     m.AddCell(VTK_TETRA, { a, b, c, np + (vtkIdType(1) << 40) }); // read, it would crash
     m.AddCell(VTK_TETRA, { a, b, c, nan });
     auto grid = m.Grid(false);
     vtkNew<vtkSteinVisibilitySort> sort;
     vtkNew<vtkTest::ErrorObserver> obs;
-    sort->AddObserver(vtkCommand::WarningEvent, obs);
-    sort->SetInput(grid);
-    sort->SetCamera(cam);
-    SetCamera(cam, outside, centre, false);
-    const auto order = Traverse(sort, "tets with a missing point and a NaN corner");
+    const auto order = sortObserved(grid, sort, obs, "tets with a missing point and a NaN corner");
     const vtkIdType first = grid->GetNumberOfCells() - 2;
     const bool badFirst = order.size() > 2 &&
       std::set<vtkIdType>(order.begin(), order.begin() + 2) ==
