@@ -371,6 +371,21 @@ void Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model)
   }
 }
 
+bool Geometry::SharedCellsMoved(vtkDataSet* input) const
+{
+  if (!this->SharedCells)
+  {
+    return false;
+  }
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
+  return cells != this->SharedCells.Get() || !cells->IsStorageShareable() ||
+    cells->GetNumberOfCells() != this->NumberOfCells ||
+    cells->GetOffsetsArray()->GetVoidPointer(0) != this->CornerStart ||
+    cells->GetConnectivityArray()->GetVoidPointer(0) != this->CornerIds ||
+    cells->GetNumberOfConnectivityIds() != this->CornerStart[this->NumberOfCells];
+}
+
 bool Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();

@@ -109,6 +109,11 @@ struct Geometry
   /// Build(), reading the corners from a shared cell array if @p shareCells
   /// and possible; false if it did and found a bad cell (then build without).
   bool Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells);
+  /// True if the corners are read from @p input's cell array and it no longer
+  /// holds them where they were read (another cell array, storage moved or
+  /// resized, other cell count): build again (a grid whose cells are changed
+  /// in place need not change its MTime).
+  bool SharedCellsMoved(vtkDataSet* input) const;
 
   const double* Point(vtkIdType id) const { return Points.data() + 3 * id; }
   const vtkIdType* CellCorners(vtkIdType c) const { return CornerIds + CornerStart[c]; }

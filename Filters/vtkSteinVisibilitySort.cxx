@@ -77,7 +77,8 @@ void vtkSteinVisibilitySort::InitTraversal()
   const auto t0 = std::chrono::steady_clock::now();
   const bool rebuild = !im.GeometryValid || im.GeometryInput != this->Input ||
     im.GeometryInputTime != this->Input->GetMTime() ||
-    im.GeometryModelTime != this->ModelTransform->GetMTime();
+    im.GeometryModelTime != this->ModelTransform->GetMTime() ||
+    im.Geometry.SharedCellsMoved(this->Input);
   this->LastSetupSeconds = 0;
   if (rebuild)
   {

@@ -14,6 +14,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix4x4.h"
@@ -460,6 +461,31 @@ int TestSteinSortBasics(int, char*[])
         sort->GetNumberOfUnorderedCells() == 2 && badFirst &&
         std::vector<vtkIdType>(order.begin() + 2, order.end()) == cleanOrder,
       "missing point and NaN corner: warning, both output first, the rest as without them");
+  }
+  // Cells appended in place (the grid's MTime need not change, the cell
+  // array's storage moves): the sort reads its corners from that cell array,
+  // notices and sets up again: every cell, old and new, exactly once.
+  {
+    auto grid = hovTest::UnitBlock(3).Grid(false);
+    vtkNew<vtkSteinVisibilitySort> sort;
+    sort->SetInput(grid);
+    sort->SetCamera(cam);
+    SetCamera(cam, outside, centre, false);
+    const vtkIdType before = static_cast<vtkIdType>(Traverse(sort, "tet block 3^3").size());
+    const vtkMTimeType mtime = grid->GetMTime();
+    const void* old = grid->GetCells()->GetConnectivityArray()->GetVoidPointer(0);
+    const vtkIdType ids[4] = { 0, 1, 2, 3 };
+    while (grid->GetCells()->GetConnectivityArray()->GetVoidPointer(0) == old)
+    {
+      grid->InsertNextCell(VTK_TETRA, 4, ids); // the same tet again: a duplicate cell
+    }
+    const vtkIdType added = grid->GetNumberOfCells() - before;
+    std::cout << "     appended " << added << " cells, grid MTime "
+              << (grid->GetMTime() == mtime ? "unchanged" : "changed") << "\n";
+    SetCamera(cam, outside, centre, false);
+    const auto order = Traverse(sort, "after appending cells in place");
+    Check(added > 0 && static_cast<vtkIdType>(order.size()) == before + added,
+      "cells appended in place: set up again, every cell once");
   }
   std::cout << (Failures ? "FAILED: " : "passed, failures: ") << Failures << "\n";
   return Failures ? 1 : 0;
