@@ -36,7 +36,9 @@ void ParallelRunningSum(T* a, vtkIdType n)
   constexpr vtkIdType MinBlock = 1 << 16;
   const vtkIdType threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   const vtkIdType numBlocks = std::max<vtkIdType>(1, std::min(n / MinBlock, 4 * threads));
-  auto first = [&](vtkIdType block) { return block * n / numBlocks; };
+  auto first = [&](vtkIdType block) { // (64-bit product: no overflow with 32-bit ids)
+    return static_cast<vtkIdType>(static_cast<long long>(block) * n / numBlocks);
+  };
   std::vector<T> base(numBlocks + 1, 0);
   base[0] = a[0];
   if (numBlocks > 1)
@@ -72,7 +74,8 @@ void ParallelRunningSum(T* a, vtkIdType n)
 
 /**
  * Appends to @p out, in increasing order, every i in [0, @p n) with
- * @p keep(i) true: counted per block, then written, in parallel.
+ * @p keep(i) true: counted per block, then written, in parallel. keep(i) is
+ * called twice per i and must give the same answer both times.
  */
 template <class Keep>
 void ParallelSelect(vtkIdType n, const Keep& keep, std::vector<vtkIdType>& out)
@@ -122,7 +125,9 @@ void ParallelBuckets(vtkIdType numItems, vtkIdType numKeys, const ItemsFn& items
   const vtkIdType threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   const vtkIdType numBlocks =
     std::max<vtkIdType>(1, std::min<vtkIdType>(std::min<vtkIdType>(numItems, 2 * threads), 4));
-  auto first = [&](vtkIdType block) { return block * numItems / numBlocks; };
+  auto first = [&](vtkIdType block) {
+    return static_cast<vtkIdType>(static_cast<long long>(block) * numItems / numBlocks);
+  };
   // count[block * numKeys + k]: the block's items in bucket k, then its cursor
   // there (each block zeroes and counts its own row).
   FillBuffer<vtkIdType> count(static_cast<size_t>(numBlocks) * numKeys);

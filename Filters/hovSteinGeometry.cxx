@@ -4,9 +4,9 @@
 #include "hovGeometricPredicates.h" // exact Orient3d
 #include "hovSteinBuckets.h"         // ParallelRunningSum
 
+#include "vtkAOSDataArrayTemplate.h"
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
-#include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -22,6 +22,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace hovStein
@@ -259,6 +260,30 @@ void ReadPoints(vtkDataSet* input, vtkMatrix4x4* model, FillBuffer<double>& out,
   std::copy_n(all.Lo, 3, lo);
   std::copy_n(all.Hi, 3, hi);
 }
+
+/// The offsets and connectivity of a grid's cell array when they are plain
+/// vtkIdType arrays (read in place), else null.
+struct SharedIds
+{
+  vtkAOSDataArrayTemplate<vtkIdType>* Offsets = nullptr;
+  vtkAOSDataArrayTemplate<vtkIdType>* Connectivity = nullptr;
+  static SharedIds Of(vtkUnstructuredGrid* grid)
+  {
+    vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
+    SharedIds ids;
+    if (cells && cells->IsStorageShareable())
+    {
+      ids.Offsets = vtkAOSDataArrayTemplate<vtkIdType>::FastDownCast(cells->GetOffsetsArray());
+      ids.Connectivity =
+        vtkAOSDataArrayTemplate<vtkIdType>::FastDownCast(cells->GetConnectivityArray());
+    }
+    if (!ids.Offsets || !ids.Connectivity)
+    {
+      ids = SharedIds();
+    }
+    return ids;
+  }
+};
 }
 
 const Shape* const ShapeTable[5] = { &NoShape, &TetShape, &HexShape, &WedgeShape, &PyramidShape };
@@ -310,7 +335,9 @@ bool FillCell(Geometry& g, vtkIdType c, Kind kind, int type, const vtkIdType* id
   vtkIdType numIds, vtkIdType numPoints)
 {
   const Shape& s = GetShape(kind);
-  // Shared cells: the corners are the ids themselves (nothing to write).
+  // Shared cells: the corners are the ids themselves (nothing to write; never
+  // voxels, whose corners are reordered).
+  assert(!g.SharedCells || type != VTK_VOXEL);
   vtkIdType* own = g.SharedCells ? nullptr : g.Corners.data() + g.CornerOffsets[c];
   const vtkIdType* corners = own ? own : ids;
   static const int voxelToHex[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
@@ -377,13 +404,16 @@ bool Geometry::SharedCellsMoved(vtkDataSet* input) const
   {
     return false;
   }
+  // The arrays are held: a new array cannot take an old one's address.
   vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(input);
-  vtkCellArray* cells = grid ? grid->GetCells() : nullptr;
-  return cells != this->SharedCells.Get() || !cells->IsStorageShareable() ||
-    cells->GetNumberOfCells() != this->NumberOfCells ||
-    cells->GetOffsetsArray()->GetVoidPointer(0) != this->CornerStart ||
-    cells->GetConnectivityArray()->GetVoidPointer(0) != this->CornerIds ||
-    cells->GetNumberOfConnectivityIds() != this->CornerStart[this->NumberOfCells];
+  const SharedIds now = SharedIds::Of(grid);
+  return !now.Offsets || grid->GetCells() != this->SharedCells.Get() ||
+    now.Offsets != this->SharedOffsets.Get() ||
+    now.Connectivity != this->SharedConnectivity.Get() ||
+    now.Offsets->GetNumberOfValues() != this->NumberOfCells + 1 ||
+    now.Offsets->GetPointer(0) != this->CornerStart ||
+    now.Connectivity->GetPointer(0) != this->CornerIds ||
+    now.Connectivity->GetNumberOfValues() != this->CornerStart[this->NumberOfCells];
 }
 
 bool Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells)
@@ -441,7 +471,34 @@ bool Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells)
   {
     pass1(0, n);
   }
-  ParallelRunningSum(this->CornerOffsets.data(), n);
+  // Linear cells of a vtkIdType cell array: their corners are its ids.
+  const SharedIds sharedIds = shareCells ? SharedIds::Of(source.Grid) : SharedIds();
+  bool linear = sharedIds.Offsets && n > 0;
+  for (vtkIdType count : notLinear)
+  {
+    linear = linear && count == 0;
+  }
+  if (linear)
+  {
+    this->SharedCells = source.Grid->GetCells();
+    this->SharedOffsets = sharedIds.Offsets;
+    this->SharedConnectivity = sharedIds.Connectivity;
+    this->CornerStart = sharedIds.Offsets->GetPointer(0);
+    this->CornerIds = sharedIds.Connectivity->GetPointer(0);
+    std::vector<vtkIdType>().swap(this->CornerOffsets);
+    FillBuffer<vtkIdType>().swap(this->Corners);
+  }
+  else
+  {
+    this->SharedCells = nullptr;
+    this->SharedOffsets = nullptr;
+    this->SharedConnectivity = nullptr;
+    ParallelRunningSum(this->CornerOffsets.data(), n);
+    // (Every corner is written below, in parallel: no serial zeroing first.)
+    this->Corners.resize(this->CornerOffsets[n]);
+    this->CornerStart = this->CornerOffsets.data();
+    this->CornerIds = this->Corners.data();
+  }
   vtkIdType planes = 0;
   for (vtkIdType count : planeCells)
   {
@@ -457,31 +514,6 @@ bool Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells)
       first += MaxFaces;
     }
   }
-  // Linear cells of a vtkIdType cell array: their corners are its ids.
-  vtkCellArray* cells = source.Grid ? source.Grid->GetCells() : nullptr;
-  vtkCellArray* shared = cells && cells->IsStorageShareable() ? cells : nullptr;
-  bool linear = shareCells && shared && n > 0;
-  for (vtkIdType count : notLinear)
-  {
-    linear = linear && count == 0;
-  }
-  if (linear)
-  {
-    this->SharedCells = shared;
-    this->CornerStart = static_cast<const vtkIdType*>(shared->GetOffsetsArray()->GetVoidPointer(0));
-    this->CornerIds =
-      static_cast<const vtkIdType*>(shared->GetConnectivityArray()->GetVoidPointer(0));
-    std::vector<vtkIdType>().swap(this->CornerOffsets);
-    FillBuffer<vtkIdType>().swap(this->Corners);
-  }
-  else
-  {
-    this->SharedCells = nullptr;
-    // (Every corner is written below, in parallel: no serial zeroing first.)
-    this->Corners.resize(this->CornerOffsets[n]);
-    this->CornerStart = this->CornerOffsets.data();
-    this->CornerIds = this->Corners.data();
-  }
   this->FaceCodes.assign(MaxFaces * n, FaceSkip);
   this->Planes.assign(planes, Plane{});
   this->Planes.shrink_to_fit(); // a tetrahedral mesh after a hexahedral one keeps nothing
@@ -489,6 +521,8 @@ bool Geometry::Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells)
   // Pass 2: corners, face orientation and planes.
   // A cell array whose storage is vtkIdType hands out its own ids (no copy,
   // no shared temporary: thread safe). A grid after Initialize() has none.
+  vtkCellArray* cells = source.Grid ? source.Grid->GetCells() : nullptr;
+  vtkCellArray* shared = cells && cells->IsStorageShareable() ? cells : nullptr;
   struct BadCells
   {
     vtkIdType Count = 0, First = -1;

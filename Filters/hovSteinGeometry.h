@@ -94,8 +94,8 @@ struct Geometry
   /// Set when every cell is a valid linear tetrahedron, hexahedron, wedge or
   /// pyramid of a grid whose cell array stores vtkIdType: its offsets and
   /// connectivity are then the corners, read in place (no copy: 80 MB less
-  /// for 2M tetrahedra), and this keeps that cell array alive.
-  vtkSmartPointer<vtkObjectBase> SharedCells;
+  /// for 2M tetrahedra). These keep that cell array and both arrays alive.
+  vtkSmartPointer<vtkObjectBase> SharedCells, SharedOffsets, SharedConnectivity;
   std::vector<std::uint8_t> FaceCodes; ///< MaxFaces per cell
   std::vector<Plane> Planes;           ///< MaxFaces per cell with a Newell face
   std::vector<vtkIdType> PlaneOffsets; ///< per cell: first plane, or -1 (empty without planes)
@@ -106,9 +106,6 @@ struct Geometry
 
   /// Build from @p input with points mapped by @p model (object to world; may be null).
   void Build(vtkDataSet* input, vtkMatrix4x4* model);
-  /// Build(), reading the corners from a shared cell array if @p shareCells
-  /// and possible; false if it did and found a bad cell (then build without).
-  bool Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells);
   /// True if the corners are read from @p input's cell array and it no longer
   /// holds them where they were read (another cell array, storage moved or
   /// resized, other cell count): build again (a grid whose cells are changed
@@ -154,6 +151,12 @@ struct Geometry
   /// The corners of face f in outward counterclockwise order; returns their number.
   int OrientedFace(vtkIdType c, int f, vtkIdType ids[4]) const;
   const Plane& FacePlane(vtkIdType c, int f) const { return Planes[PlaneOffsets[c] + f]; }
+
+private:
+  /// Build(), reading the corners from a shared cell array if @p shareCells
+  /// and possible; false if it did and found a bad cell (whose corners the
+  /// shared ids cannot mark -1: Build() then builds again without sharing).
+  bool Build(vtkDataSet* input, vtkMatrix4x4* model, bool shareCells);
 };
 }
 

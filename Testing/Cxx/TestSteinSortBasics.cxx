@@ -2,19 +2,21 @@
 // right order (checked independently from face planes and the eye), two tets
 // in both directions and projections, a model transform that swaps them,
 // point coordinates stored as float, double or int, chunking, empty input, an
-// unsupported cell (warning), a cyclic triple of interleaved bars,
-// perspective from inside the mesh, and re-sorting after a camera change
-// without a new set-up.
+// unsupported cell (warning), tetrahedra with a missing point id and a NaN
+// corner (warning; the cell array read in place is not trusted for them),
+// cells appended in place (set up again), a cyclic triple of interleaved
+// bars, perspective from inside the mesh, and re-sorting after a camera
+// change without a new set-up.
 #include "hovSortMeshes.h"
 #include "hovTestMeshes.h"
 
 #include "vtkCamera.h"
 #include "vtkCell.h"
+#include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
-#include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix4x4.h"
@@ -337,11 +339,17 @@ int TestSteinSortBasics(int, char*[])
     {
       vtkSmartPointer<vtkDataArray> data;
       if (type == 0)
+      {
         data = vtkSmartPointer<vtkFloatArray>::New();
+      }
       else if (type == 1)
+      {
         data = vtkSmartPointer<vtkDoubleArray>::New();
+      }
       else
+      {
         data = vtkSmartPointer<vtkIntArray>::New();
+      }
       data->SetNumberOfComponents(3);
       data->SetNumberOfTuples(tets->GetNumberOfPoints());
       for (vtkIdType i = 0; i < tets->GetNumberOfPoints(); ++i)
@@ -438,10 +446,11 @@ int TestSteinSortBasics(int, char*[])
   {
     MeshBuilder m = hovTest::UnitBlock(2);
     const vtkIdType np = m.Grid(false)->GetNumberOfPoints();
+    const vtkIdType beyond = static_cast<vtkIdType>(std::min<long long>(VTK_ID_MAX / 4, 1LL << 40));
     const vtkIdType a = m.AddPoint(0, 0, 2, 0), b = m.AddPoint(1, 0, 2, 0);
     const vtkIdType c = m.AddPoint(1, 1, 2, 0);
     const vtkIdType nan = m.AddPoint(std::nan(""), 0, 3, 0);
-    m.AddCell(VTK_TETRA, { a, b, c, np + (vtkIdType(1) << 40) }); // read, it would crash
+    m.AddCell(VTK_TETRA, { a, b, c, np + beyond }); // read, it would crash
     m.AddCell(VTK_TETRA, { a, b, c, nan });
     auto grid = m.Grid(false);
     vtkNew<vtkSteinVisibilitySort> sort;

@@ -11,8 +11,8 @@
 // points or 512M cells, is exercised (also where a triangle's and a
 // quadrilateral's keys agree on three ids: overlapping cells).
 // ParallelBuckets (the counting sort of the set-up) gives a serial stable
-// counting sort's buckets for 0 to 20011 items (1 to 4 blocks) under 1 to 4
-// threads and the Sequential backend.
+// counting sort's buckets for 0 to 300001 items (1 to 4 blocks) and 997 or
+// 200003 keys under 1 to 4 threads and the Sequential backend.
 #include "hovSortMeshes.h"
 #include "hovSteinBuckets.h"
 #include "hovSteinTopology.h"
@@ -186,10 +186,9 @@ void Run(Checker& ck, const std::string& name, vtkUnstructuredGrid* grid, bool c
 /// ParallelBuckets against a serial stable counting sort on @p numItems
 /// random items (0 to 3 keys each, some keys never used) under several
 /// thread counts.
-void CheckBuckets(Checker& ck, vtkIdType numItems)
+void CheckBuckets(Checker& ck, vtkIdType numItems, vtkIdType numKeys)
 {
   std::mt19937 rng(17);
-  const vtkIdType numKeys = 997;
   std::vector<std::vector<vtkIdType>> keys(numItems);
   for (auto& k : keys)
   {
@@ -235,7 +234,8 @@ void CheckBuckets(Checker& ck, vtkIdType numItems)
         expected[k];
     }
     ck.Check(same,
-      "ParallelBuckets, " + std::to_string(numItems) + " items, " + setting.Backend + " " +
+      "ParallelBuckets, " + std::to_string(numItems) + " items, " + std::to_string(numKeys) +
+        " keys, " + setting.Backend + " " +
         std::to_string(setting.Threads) + " thread(s): a serial stable counting sort's buckets");
   }
 }
@@ -284,8 +284,10 @@ int TestSteinTopology(int, char*[])
   Checker ck;
   for (vtkIdType numItems : { 0, 1, 3, 20011 }) // 1, 3, 2 or 4 blocks
   {
-    CheckBuckets(ck, numItems);
+    CheckBuckets(ck, numItems, 997);
   }
+  CheckBuckets(ck, 300001, 200003); // the passes over keys in chunks
+
   const double o[3] = { -1.25, 0.5, 3.0 }, size[3] = { 2.0, 1.5, 0.75 };
   vtkSmartPointer<vtkUnstructuredGrid> tets = JitteredTetBlock(5, 4, 3, o, size, 0.3, 7).Grid();
   Run(ck, "jittered Kuhn tetrahedra", tets, true);
