@@ -3,7 +3,7 @@
  * @brief A counting sort in parallel for the Stein sort's set-up: items
  *        bucketed by integer keys (faces by point), in item order within
  *        each bucket whatever the number of threads; a running sum in parallel
- *        (CSR offsets) and a parallel selection of indices.
+ *        (CSR offsets) and parallel appends (lists per item, selections of indices).
  *
  * The items are cut into at most 4 blocks (2 per thread), each with its own
  * count per key: counting and scattering run in parallel, and the buckets
@@ -73,12 +73,13 @@ void ParallelRunningSum(T* a, vtkIdType n)
 }
 
 /**
- * Appends to @p out, in increasing order, every i in [0, @p n) with
- * @p keep(i) true: counted per block, then written, in parallel. keep(i) is
- * called twice per i and must give the same answer both times.
+ * Appends to @p out, item after item for i in [0, @p n), the @p count(i)
+ * elements that @p write(i, to) writes from @p to on (returning the end):
+ * counted per block, then written, in parallel. Both are called once per i
+ * and must agree.
  */
-template <class Keep>
-void ParallelSelect(vtkIdType n, const Keep& keep, std::vector<vtkIdType>& out)
+template <class Out, class Count, class Write>
+void ParallelAppend(vtkIdType n, const Count& count, const Write& write, Out& out)
 {
   constexpr vtkIdType Block = 16384;
   const vtkIdType numBlocks = (n + Block - 1) / Block;
@@ -87,12 +88,12 @@ void ParallelSelect(vtkIdType n, const Keep& keep, std::vector<vtkIdType>& out)
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
-      vtkIdType count = 0;
+      vtkIdType total = 0;
       for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
       {
-        count += keep(i) ? 1 : 0;
+        total += count(i);
       }
-      start[blk + 1] = count;
+      start[blk + 1] = total;
     }
   });
   ParallelRunningSum(start.data(), numBlocks);
@@ -100,16 +101,33 @@ void ParallelSelect(vtkIdType n, const Keep& keep, std::vector<vtkIdType>& out)
   vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
     for (vtkIdType blk = b0; blk < b1; ++blk)
     {
-      vtkIdType* to = out.data() + start[blk];
+      auto to = out.data() + start[blk];
       for (vtkIdType i = blk * Block; i < std::min(n, (blk + 1) * Block); ++i)
       {
-        if (keep(i))
-        {
-          *to++ = i;
-        }
+        to = write(i, to);
       }
     }
   });
+}
+
+/**
+ * Appends to @p out, in increasing order, every i in [0, @p n) with
+ * @p keep(i) true, in parallel (ParallelAppend). keep(i) is called twice per
+ * i and must give the same answer both times.
+ */
+template <class Keep>
+void ParallelSelect(vtkIdType n, const Keep& keep, std::vector<vtkIdType>& out)
+{
+  ParallelAppend(
+    n, [&keep](vtkIdType i) { return keep(i) ? 1 : 0; },
+    [&keep](vtkIdType i, vtkIdType* to) {
+      if (keep(i))
+      {
+        *to++ = i;
+      }
+      return to;
+    },
+    out);
 }
 
 /**

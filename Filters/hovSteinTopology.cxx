@@ -2,7 +2,7 @@
 #include "hovSteinTopology.h"
 
 #include "hovGeometricPredicates.h" // exact Orient3d
-#include "hovSteinBuckets.h"         // ParallelBuckets, FillBuffer
+#include "hovSteinBuckets.h"         // ParallelAppend, ParallelBuckets, FillBuffer
 
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -425,47 +425,33 @@ void Topology::BuildCellFaces(const Geometry& g)
 
 void Topology::BuildBoundary(const Geometry& g)
 {
-  // Per block of cells its boundary faces, counted then written in parallel.
-  const vtkIdType n = g.NumberOfCells;
-  constexpr vtkIdType Block = 16384;
-  const vtkIdType numBlocks = (n + Block - 1) / Block;
-  std::vector<vtkIdType> start(numBlocks + 1, 0);
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    for (vtkIdType blk = b0; blk < b1; ++blk)
-    {
-      vtkIdType count = 0;
-      for (vtkIdType c = blk * Block; c < std::min(n, (blk + 1) * Block); ++c)
+  // Each cell's boundary faces, counted then written per block, in parallel.
+  this->Boundary.clear();
+  ParallelAppend(
+    g.NumberOfCells, [this](vtkIdType c) { return BitCount(this->BoundaryFaces[c]); },
+    [this, &g](vtkIdType c, BoundaryFace* out) {
+      const std::uint8_t mask = this->BoundaryFaces[c];
+      for (int f = 0; mask >> f; ++f)
       {
-        count += BitCount(this->BoundaryFaces[c]);
-      }
-      start[blk + 1] = count;
-    }
-  });
-  ParallelRunningSum(start.data(), numBlocks);
-  this->NumberOfBoundaryCells = 0;
-  this->Boundary.resize(start[numBlocks]); // every face is written below
-  vtkSMPThreadLocal<vtkIdType> boundaryCells(0);
-  vtkSMPTools::For(0, numBlocks, 1, [&](vtkIdType b0, vtkIdType b1) {
-    vtkIdType& cellsWithFaces = boundaryCells.Local();
-    for (vtkIdType blk = b0; blk < b1; ++blk)
-    {
-      BoundaryFace* out = this->Boundary.data() + start[blk];
-      for (vtkIdType c = blk * Block; c < std::min(n, (blk + 1) * Block); ++c)
-      {
-        const std::uint8_t mask = this->BoundaryFaces[c];
-        cellsWithFaces += mask != 0;
-        for (int f = 0; mask >> f; ++f)
+        if (mask & (1 << f))
         {
-          if (mask & (1 << f))
-          {
-            *out++ = { c, static_cast<std::uint8_t>(f),
-              static_cast<std::uint8_t>(g.FaceCode(c, f) & 3) };
-          }
+          *out++ = { c, static_cast<std::uint8_t>(f),
+            static_cast<std::uint8_t>(g.FaceCode(c, f) & 3) };
         }
       }
+      return out;
+    },
+    this->Boundary);
+  vtkSMPThreadLocal<vtkIdType> cells(0);
+  vtkSMPTools::For(0, g.NumberOfCells, 16384, [&](vtkIdType begin, vtkIdType end) {
+    vtkIdType& local = cells.Local();
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      local += this->BoundaryFaces[c] != 0;
     }
   });
-  for (vtkIdType count : boundaryCells)
+  this->NumberOfBoundaryCells = 0;
+  for (vtkIdType count : cells)
   {
     this->NumberOfBoundaryCells += count;
   }
