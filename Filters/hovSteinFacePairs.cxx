@@ -131,9 +131,9 @@ void FillFaceData(const Geometry& g, const View& v, const ViewFace& vf, FaceData
   d.Screen = v.Status[c] == StatusVisible;
   if (!d.Screen)
   {
-    std::copy(v.Box.data() + 4 * c, v.Box.data() + 4 * c + 4, d.Box);
-    d.Front = v.Front[c];
-    d.Rear = v.Rear[c];
+    std::copy(v.BoxOf(c), v.BoxOf(c) + 4, d.Box);
+    d.Front = v.FrontOf(c);
+    d.Rear = v.RearOf(c);
     return;
   }
   double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };

@@ -128,7 +128,7 @@ void HullCache::Build(const Geometry& g, const View& v, const std::vector<vtkIdT
   {
     const vtkIdType c = cells[k];
     this->Slot[c] = static_cast<int>(k);
-    const int clip = v.ClipIndex[c];
+    const int clip = v.Clip(c);
     const vtkIdType bound = clip >= 0 ? static_cast<vtkIdType>(v.Clipped[clip].size() / 3)
                                       : g.NumberOfCorners(c);
     this->Entries[k].Start = start;

@@ -411,7 +411,7 @@ int Obstruction::RayTest(vtkIdType p, vtkIdType q) const
 
 int Obstruction::Evidence(vtkIdType a, vtkIdType b) const
 {
-  const bool clipped = this->V.ClipIndex[a] >= 0 || this->V.ClipIndex[b] >= 0;
+  const bool clipped = this->V.Clip(a) >= 0 || this->V.Clip(b) >= 0;
   if (!clipped)
   {
     bool crossed = false;

@@ -63,13 +63,22 @@ struct View
   std::vector<std::uint8_t> Valid;     ///< per point: in front of the near plane
   std::vector<std::uint8_t> Status;    ///< per cell
   bool AllOrdered = false; ///< every cell visible or straddling (none hidden or bad)
-  /// Per cell: depth range of the visible part and screen extents (xmin, xmax,
-  /// ymin, ymax, outward). For every cell after Setup(..., true); otherwise
-  /// only for straddling cells (use DepthRange()).
+  /// Depth range of the visible part and screen extents (xmin, xmax, ymin,
+  /// ymax, outward): per cell after Setup(..., true); otherwise only for the
+  /// straddling cells, by clip index (FrontOf(), RearOf(), BoxOf() read either).
   std::vector<double> Front, Rear;
   std::vector<float> Box;
-  std::vector<int> ClipIndex;          ///< per cell: index in Clipped, or -1
+  /// Per cell: index in Clipped, or -1; empty when no cell straddles (Clip()).
+  std::vector<int> ClipIndex;
   std::vector<std::vector<double>> Clipped; ///< visible parts: x, y, z per point
+
+  /// Index of cell @p c's visible part in Clipped, or -1 (not straddling).
+  int Clip(vtkIdType c) const { return this->ClipIndex.empty() ? -1 : this->ClipIndex[c]; }
+  /// Front, Rear and Box of cell @p c: of every cell after Setup(..., true),
+  /// else only of straddling cells (Clip(c) >= 0).
+  double FrontOf(vtkIdType c) const { return this->Front[this->ExtentSlot(c)]; }
+  double RearOf(vtkIdType c) const { return this->Rear[this->ExtentSlot(c)]; }
+  const float* BoxOf(vtkIdType c) const { return this->Box.data() + 4 * this->ExtentSlot(c); }
 
   /**
    * The view of @p camera. @p cellExtents: fill Front, Rear and Box for every
@@ -99,6 +108,7 @@ private:
   void ClipStraddling(const Geometry& g, bool cellExtents);
   /// Status only of cells [begin, end); @p allValid: every point is in front of the near plane.
   void CellStatus(const Geometry& g, vtkIdType begin, vtkIdType end, bool allValid);
+  vtkIdType ExtentSlot(vtkIdType c) const { return this->HasCellExtents ? c : this->ClipIndex[c]; }
   bool HasCellExtents = false;
 };
 }
