@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 namespace hovStein
 {
@@ -24,32 +25,15 @@ inline bool Disjoint(const float* a, const float* b)
 /// The tiles a face's extents cover: ix0, ix1, iy0, iy1 (inclusive).
 using TileRange = std::array<int, 4>;
 
-/// A face in the lists of the tiles: what the pair search rejects on, stored
-/// contiguously in tile order (the search streams through them).
-struct TileRecord
-{
-  float Box[4];
-  double Depth; ///< ENTRY: rear depth; EXIT: DepthBefore(front depth)
-  /// ENTRY: DepthBefore(front depth); EXIT: DepthAfter(rear depth) (the
-  /// covering sheets' tests; the ENTRY records' order where the faces overlap deeply).
-  double Far;
-  CellIndex Cell;
-  std::uint32_t Face; ///< index into the faces (at most 6 a cell: fits)
-  /// The face's tiles (TileRange; at most MaxGridSide a side): IX and
-  /// IY are monotone, so the tile of max(x0 of two faces) is the max of their
-  /// first tile columns, etc.
-  std::int16_t Tiles[4];
-};
-static_assert(sizeof(TileRecord) == 48, "compact records: the search streams through them");
-static_assert(MaxGridSide <= 32767, "tile columns and rows fit in 16 bits");
 static_assert(6 * static_cast<double>(MaxIndexedCells) < 4294967296.0, "face indices fit");
+static_assert(std::is_same<CellIndex, std::int32_t>::value, "TileRecord::Cell holds a CellIndex");
 
-/// Tile lists (CSR) of the EXIT ([0]) and ENTRY ([1]) faces, face indices in
-/// increasing order within each tile.
+/// Tile lists (CSR) of the EXIT ([0]) and ENTRY ([1]) faces as records, in
+/// increasing face order within each tile.
 struct TileLists
 {
   std::vector<vtkIdType> Start[2]; ///< per tile + 1
-  FillBuffer<vtkIdType> Items[2];
+  FillBuffer<TileRecord> Records[2];
 };
 
 /// Bands of tile rows for BinFaces: band b holds the tiles [Start(b), Start(b + 1)).
@@ -82,12 +66,16 @@ struct TileBands
 };
 
 /**
- * Bins the faces into the tiles they cover, in parallel over bands of tile
- * rows: each band scans all faces and keeps its own rows, so the lists come
- * out in face order whatever the number of bands and threads.
+ * Bins the faces into the tiles they cover as records (@p make(i, k, record)
+ * fills face i's EXIT (k = 0) or ENTRY (k = 1) record but its Tiles), in
+ * parallel over bands of tile rows: each band scans all faces and keeps its
+ * own rows, so the lists come out in face order whatever the number of bands
+ * and threads; each face's records are made once per band, from its data read
+ * in order (not gathered per tile).
  */
+template <class MakeRecord>
 void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
-  const FillBuffer<TileRange>& ranges, TileLists& lists)
+  const FillBuffer<TileRange>& ranges, TileLists& lists, MakeRecord&& make)
 {
   const vtkIdType nt = static_cast<vtkIdType>(grid.NX) * grid.NY;
   // Enough bands to balance the threads (each scans all faces).
@@ -114,10 +102,11 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
     {
       start[i + 1] += start[i];
     }
-    Refill(lists.Items[k], start[nt]);
+    Refill(lists.Records[k], start[nt]);
   }
   vtkSMPTools::For(0, bands.Count, 1, [&](vtkIdType b0, vtkIdType b1) {
     std::vector<vtkIdType> cursor[2];
+    TileRecord proto[2];
     for (vtkIdType b = b0; b < b1; ++b)
     {
       const vtkIdType first = bands.Start(b), last = bands.Start(b + 1);
@@ -125,12 +114,28 @@ void BinFaces(const PairGrid& grid, const std::vector<ViewFace>& faces,
       {
         cursor[k].assign(lists.Start[k].begin() + first, lists.Start[k].begin() + last);
       }
+      vtkIdType made = -1; // the face whose records proto holds
       bands.ForTiles(b, faces, ranges, [&](vtkIdType i, int roles, vtkIdType tile) {
+        if (i != made)
+        {
+          for (int k = 0; k < 2; ++k)
+          {
+            if (roles & (1 << k))
+            {
+              make(i, k, proto[k]);
+              for (int q = 0; q < 4; ++q)
+              {
+                proto[k].Tiles[q] = static_cast<std::int16_t>(ranges[i][q]);
+              }
+            }
+          }
+          made = i;
+        }
         for (int k = 0; k < 2; ++k)
         {
           if (roles & (1 << k))
           {
-            lists.Items[k][cursor[k][tile - first]++] = i;
+            lists.Records[k][cursor[k][tile - first]++] = proto[k];
           }
         }
       });
@@ -150,9 +155,6 @@ struct BoundaryPairs::Buffers
   std::vector<CellRange> BlockRange; ///< of the blocks' first cells
   std::vector<vtkIdType> BlockCount, BlockDropped, BlockKept;
   PairEdges Edges; ///< the blocks' cell pairs made unique and decided
-  /// EXIT, ENTRY records per tile (CSR of Lists.Start; the ENTRY records of
-  /// each tile by decreasing Far where the faces overlap deeply).
-  FillBuffer<TileRecord> Records[2];
   /// Where the faces overlap deeply, per tile: the largest Depth - Far of its
   /// ENTRY records, rounded up (a record's Depth is at most its Far plus that).
   FillBuffer<double> Thick;
@@ -223,15 +225,15 @@ void FindCellPairs(const Geometry& g, const PairGrid& grid, const SheetCover* sh
       for (vtkIdType tile = blk * nt / numBlocks; tile < (blk + 1) * nt / numBlocks; ++tile)
       {
         const int ix = static_cast<int>(tile % grid.NX), iy = static_cast<int>(tile / grid.NX);
-        const TileRecord* first = b.Records[1].data() + entryStart[tile];
-        const TileRecord* last = b.Records[1].data() + entryStart[tile + 1];
+        const TileRecord* first = b.Lists.Records[1].data() + entryStart[tile];
+        const TileRecord* last = b.Lists.Records[1].data() + entryStart[tile + 1];
         const double thick = depthSorted ? b.Thick[tile] : 0;
         for (vtkIdType i = exitStart[tile]; i < exitStart[tile + 1]; ++i)
         {
-          const TileRecord& F = b.Records[0][i];
+          const TileRecord& F = b.Lists.Records[0][i];
           if (i + 2 < exitStart[tile + 1])
           {
-            Prefetch(b.Data.data() + b.Records[0][i + 2].Face);
+            Prefetch(b.Data.data() + b.Lists.Records[0][i + 2].Face);
           }
           // An ENTRY face G with G.Far > nearest has a covering sheet between
           // it and F in this tile.
@@ -395,57 +397,20 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
       b.Ranges[i] = { grid.IX(box[0]), grid.IX(box[1]), grid.IY(box[2]), grid.IY(box[3]) };
     }
   });
-  BinFaces(grid, faces, b.Ranges, b.Lists);
   // The EXIT and ENTRY faces as contiguous records in tile order (the search
   // streams through them and rejects almost every candidate on them).
-  for (int k = 0; k < 2; ++k)
-  {
-    const FillBuffer<vtkIdType>& items = b.Lists.Items[k];
-    FillBuffer<TileRecord>& records = b.Records[k];
-    Refill(records, items.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(items.size()), 4096,
-      [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          const vtkIdType fi = items[i];
-          const FaceData& d = b.Data[fi];
-          TileRecord& r = records[i];
-          std::copy(d.Box, d.Box + 4, r.Box);
-          r.Depth = k == 1 ? d.Rear : DepthBefore(d.Front, g.Diagonal);
-          r.Far = k == 1 ? DepthBefore(d.Front, g.Diagonal) : DepthAfter(d.Rear, g.Diagonal);
-          r.Cell = static_cast<CellIndex>(faces[fi].Cell);
-          r.Face = static_cast<std::uint32_t>(fi);
-          for (int q = 0; q < 4; ++q)
-          {
-            r.Tiles[q] = static_cast<std::int16_t>(b.Ranges[fi][q]);
-          }
-        }
-      });
-  }
-  // Where the faces overlap deeply: each tile's ENTRY records by decreasing
-  // Far (their front depth), so that the search can skip those behind a
-  // covering sheet and stop once the rest lie in front of an EXIT face (the
-  // pairs found do not depend on the order: they are sorted and made unique
-  // afterwards), and the covering sheets.
-  const bool deep = DeepOverlap(grid, b.Lists, nf);
-  const vtkIdType* entryStart = b.Lists.Start[1].data();
-  Refill(b.Thick, deep ? grid.NumberOfTiles() : 0); // every tile is set below
-  vtkSMPTools::For(0, deep ? grid.NumberOfTiles() : 0, 256, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType tile = begin; tile < end; ++tile)
-    {
-      const auto records = b.Records[1].begin();
-      std::sort(records + entryStart[tile], records + entryStart[tile + 1],
-        [](const TileRecord& x, const TileRecord& y) {
-          return x.Far > y.Far || (x.Far == y.Far && x.Face < y.Face);
-        });
-      double thick = 0;
-      for (vtkIdType i = entryStart[tile]; i < entryStart[tile + 1]; ++i)
-      {
-        thick = std::max(thick, b.Records[1][i].Depth - b.Records[1][i].Far);
-      }
-      b.Thick[tile] = thick * (1 + 1e-12);
-    }
+  const double diagonal = g.Diagonal;
+  BinFaces(grid, faces, b.Ranges, b.Lists, [&](vtkIdType i, int k, TileRecord& r) {
+    const FaceData& d = b.Data[i];
+    std::copy(d.Box, d.Box + 4, r.Box);
+    r.Depth = k == 1 ? d.Rear : DepthBefore(d.Front, diagonal);
+    r.Far = k == 1 ? DepthBefore(d.Front, diagonal) : DepthAfter(d.Rear, diagonal);
+    r.Cell = static_cast<CellIndex>(faces[i].Cell);
+    r.Face = static_cast<std::uint32_t>(i);
   });
+  // Where the faces overlap deeply: the covering sheets, then each tile's
+  // ENTRY records by decreasing Far.
+  const bool deep = DeepOverlap(grid, b.Lists, nf);
   const SheetCover* sheets = nullptr;
   if (this->SheetCulling == CullAlways || (this->SheetCulling == CullWhereDeep && deep))
   {
@@ -458,11 +423,34 @@ void BoundaryPairs::Edges(const Geometry& g, const Topology& t, const View& v,
     {
       adjacency.Build(g, t); // once per topology: kept by ReleaseBuffers()
     }
+    // (From the ENTRY records still in face order within each tile.)
     b.Sheets.Build(g, t, v, adjacency, faces, b.Data, grid, b.Lists.Start[1].data(),
-      b.Lists.Items[1].data());
+      b.Lists.Records[1].data());
     stats.Sheets = b.Sheets.GetStats();
     sheets = &b.Sheets;
   }
+  // Each tile's ENTRY records by decreasing Far (their front depth), so that
+  // the search can skip those behind a covering sheet and stop once the rest
+  // lie in front of an EXIT face (the pairs found do not depend on the order:
+  // they are sorted and made unique afterwards).
+  const vtkIdType* entryStart = b.Lists.Start[1].data();
+  Refill(b.Thick, deep ? grid.NumberOfTiles() : 0); // every tile is set below
+  vtkSMPTools::For(0, deep ? grid.NumberOfTiles() : 0, 256, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType tile = begin; tile < end; ++tile)
+    {
+      const auto records = b.Lists.Records[1].begin();
+      std::sort(records + entryStart[tile], records + entryStart[tile + 1],
+        [](const TileRecord& x, const TileRecord& y) {
+          return x.Far > y.Far || (x.Far == y.Far && x.Face < y.Face);
+        });
+      double thick = 0;
+      for (vtkIdType i = entryStart[tile]; i < entryStart[tile + 1]; ++i)
+      {
+        thick = std::max(thick, b.Lists.Records[1][i].Depth - b.Lists.Records[1][i].Far);
+      }
+      b.Thick[tile] = thick * (1 + 1e-12);
+    }
+  });
   FindCellPairs(g, grid, sheets, deep, this->CertifiedEdges, faces, this->DroppedLog, b, stats);
   b.Edges.Collect(b.BlockPairs, b.BlockRange);
   stats.Tests += b.Edges.Decide(g, v, offsets, targets);

@@ -17,7 +17,7 @@
 #include "vtkType.h" // vtkIdType
 
 #include <cmath>   // std::abs
-#include <cstdint> // std::uint8_t
+#include <cstdint> // std::uint8_t, std::int16_t, std::int32_t
 
 namespace hovStein
 {
@@ -85,6 +85,26 @@ struct View;
 /// Tiles about the mean extent of the faces @p data, within the view
 /// window of @p v, at most ~4 per face.
 PairGrid MakePairGrid(const View& v, const FillBuffer<FaceData>& data);
+
+/// A face in the lists of the tiles: what the pair search rejects on, stored
+/// contiguously in tile order (the search streams through them; the covering
+/// sheets read their ENTRY faces from them).
+struct TileRecord
+{
+  float Box[4];
+  double Depth; ///< ENTRY: rear depth; EXIT: DepthBefore(front depth)
+  /// ENTRY: DepthBefore(front depth); EXIT: DepthAfter(rear depth) (the
+  /// covering sheets' tests; the ENTRY records' order where the faces overlap deeply).
+  double Far;
+  std::int32_t Cell; ///< (a CellIndex)
+  std::uint32_t Face; ///< index into the faces (at most 6 a cell: fits)
+  /// The face's tiles (TileRange; at most MaxGridSide a side): IX and
+  /// IY are monotone, so the tile of max(x0 of two faces) is the max of their
+  /// first tile columns, etc.
+  std::int16_t Tiles[4];
+};
+static_assert(sizeof(TileRecord) == 48, "compact records: the search streams through them");
+static_assert(MaxGridSide <= 32767, "tile columns and rows fit in 16 bits");
 }
 
 #endif

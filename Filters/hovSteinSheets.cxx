@@ -112,7 +112,7 @@ int Root(std::vector<int>& parent, int a)
 }
 
 void SheetCover::Cover(const FillBuffer<FaceData>& data, const PairGrid& grid,
-  const vtkIdType* entryStart, const vtkIdType* entryFaces)
+  const vtkIdType* entryStart, const TileRecord* entryRecords)
 {
   const vtkIdType nt = grid.NumberOfTiles();
   const vtkIdType numBlocks = std::min<vtkIdType>(nt, 256);
@@ -142,7 +142,7 @@ void SheetCover::Cover(const FillBuffer<FaceData>& data, const PairGrid& grid,
         members.clear();
         for (vtkIdType s = entryStart[tile]; s < entryStart[tile + 1]; ++s)
         {
-          const vtkIdType i = entryFaces[s];
+          const vtkIdType i = entryRecords[s].Face;
           if (this->Border[i] & SheetFace)
           {
             members.push_back(i);
@@ -258,7 +258,7 @@ void SheetCover::Cover(const FillBuffer<FaceData>& data, const PairGrid& grid,
 void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
   const BoundaryAdjacency& adjacency, const std::vector<ViewFace>& faces,
   const FillBuffer<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
-  const vtkIdType* entryFaces)
+  const TileRecord* entryRecords)
 {
   this->Stats = SheetStats();
   this->NX = grid.NX;
@@ -323,7 +323,7 @@ void SheetCover::Build(const Geometry& g, const Topology& t, const View& v,
       this->Border[i] = border;
     }
   });
-  this->Cover(data, grid, entryStart, entryFaces);
+  this->Cover(data, grid, entryStart, entryRecords);
 }
 
 double SheetCover::NearestRear(vtkIdType tile, double after) const

@@ -52,7 +52,7 @@
 #define hovSteinSheets_h
 
 #include "hovSteinBoundaryPairs.h" // ViewFace, SheetStats
-#include "hovSteinPairGrid.h"      // FaceData, PairGrid
+#include "hovSteinPairGrid.h"      // FaceData, PairGrid, TileRecord
 #include "hovSteinTopology.h"      // Topology
 
 #include <cstdint> // std::int32_t
@@ -79,13 +79,14 @@ public:
   /**
    * The covering local sheets of view @p v in the tiles of @p grid. @p faces and
    * @p data: the pair search's faces and their data; @p entryStart and
-   * @p entryFaces: the CSR lists of the ENTRY faces (indices into @p faces) of
-   * every tile. With @p adjacency built for @p t.
+   * @p entryRecords: the CSR lists of the ENTRY faces' records of every tile
+   * (TileRecord::Face: indices into @p faces, increasing within each tile).
+   * With @p adjacency built for @p t.
    */
   void Build(const Geometry& g, const Topology& t, const View& v,
     const BoundaryAdjacency& adjacency, const std::vector<ViewFace>& faces,
     const FillBuffer<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
-    const vtkIdType* entryFaces);
+    const TileRecord* entryRecords);
 
   /**
    * The least rear depth of the covering sheets of @p tile whose front depth
@@ -109,7 +110,7 @@ public:
 
 private:
   void Cover(const FillBuffer<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
-    const vtkIdType* entryFaces);
+    const TileRecord* entryRecords);
 
   int NX = 0;
   /// Per boundary face: its face index in the view's faces if it is a sheet
