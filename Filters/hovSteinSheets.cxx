@@ -8,6 +8,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <functional>
 
@@ -151,6 +152,8 @@ void SheetCover::Cover(const FillBuffer<FaceData>& data, const PairGrid& grid,
             Prefetch(this->Across.data() + 3 * i);
           }
         }
+        // (Build() runs before the records are sorted by depth: face order.)
+        assert(std::is_sorted(members.begin(), members.end()));
         const int m = static_cast<int>(members.size());
         if (m == 0)
         {

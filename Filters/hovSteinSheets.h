@@ -109,6 +109,8 @@ public:
   const SheetStats& GetStats() const { return this->Stats; }
 
 private:
+  /// The covers of every tile; @p entryRecords in increasing face order within
+  /// each tile (the records before the pair search sorts them by depth).
   void Cover(const FillBuffer<FaceData>& data, const PairGrid& grid, const vtkIdType* entryStart,
     const TileRecord* entryRecords);
 

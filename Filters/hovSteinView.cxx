@@ -254,6 +254,13 @@ void View::Setup(const Geometry& g, vtkCamera* camera, bool cellExtents)
   this->Front.resize(cellExtents ? n : 0);
   this->Rear.resize(cellExtents ? n : 0);
   this->Box.resize(cellExtents ? 4 * n : 0);
+  if (!cellExtents)
+  {
+    // (Frees per-cell arrays left by a merge's view.)
+    this->Front.shrink_to_fit();
+    this->Rear.shrink_to_fit();
+    this->Box.shrink_to_fit();
+  }
   this->Clipped.clear();
   this->HasCellExtents = cellExtents;
   // Every point in front of the near plane and no bad cell: all cells visible.

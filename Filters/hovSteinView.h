@@ -19,6 +19,7 @@
 #include "hovGeometricPredicates.h" // Orient3d, Orient3dDirection
 #include "hovSteinGeometry.h"        // Geometry
 
+#include <cassert> // assert
 #include <cstdint> // std::uint8_t
 #include <vector>  // storage
 
@@ -82,8 +83,9 @@ struct View
 
   /**
    * The view of @p camera. @p cellExtents: fill Front, Rear and Box for every
-   * cell (the multitiled merge needs them; the adjacency graph needs them only
-   * for a few cells and calls DepthRange()).
+   * cell (the multitiled merge needs them; the adjacency graph reads them only
+   * for the faces of cut cells, FrontOf() / RearOf() / BoxOf(), and otherwise
+   * computes a depth range where it needs one, DepthRange()).
    */
   void Setup(const Geometry& g, vtkCamera* camera, bool cellExtents = true);
   /// Front and Rear of cell @p c (read, or computed as Setup computes them).
@@ -108,7 +110,11 @@ private:
   void ClipStraddling(const Geometry& g, bool cellExtents);
   /// Status only of cells [begin, end); @p allValid: every point is in front of the near plane.
   void CellStatus(const Geometry& g, vtkIdType begin, vtkIdType end, bool allValid);
-  vtkIdType ExtentSlot(vtkIdType c) const { return this->HasCellExtents ? c : this->ClipIndex[c]; }
+  vtkIdType ExtentSlot(vtkIdType c) const
+  {
+    assert(this->HasCellExtents || this->Clip(c) >= 0); // kept only for cut cells
+    return this->HasCellExtents ? c : this->ClipIndex[c];
+  }
   bool HasCellExtents = false;
 };
 }
