@@ -127,49 +127,6 @@ std::vector<double> ClipCell(const Geometry& g, const View& v, vtkIdType c)
 }
 }
 
-namespace
-{
-/**
- * Status, depth range and screen extents (outward) of one cell from the
- * projected points @p proj and their near-plane validity @p valid.
- */
-inline void CellExtent(const double* proj, const std::uint8_t* valid, const vtkIdType* ids, int m,
-  bool bad, std::uint8_t& status, double& front, double& rear, float* b)
-{
-  double zmin = VTK_DOUBLE_MAX, zmax = -VTK_DOUBLE_MAX;
-  double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  int numValid = 0;
-  for (int i = 0; i < m; ++i)
-  {
-    if (ids[i] < 0)
-    {
-      continue;
-    }
-    const double* p = proj + 3 * ids[i];
-    zmin = std::min(zmin, p[2]);
-    zmax = std::max(zmax, p[2]);
-    if (valid[ids[i]])
-    {
-      ++numValid;
-      box[0] = std::min(box[0], p[0]);
-      box[1] = std::max(box[1], p[0]);
-      box[2] = std::min(box[2], p[1]);
-      box[3] = std::max(box[3], p[1]);
-    }
-  }
-  front = zmin;
-  rear = std::isnan(zmax) ? VTK_DOUBLE_MAX : zmax;
-  status = bad     ? StatusBad
-    : numValid == m ? StatusVisible
-    : numValid == 0 ? StatusHidden
-                    : StatusStraddle;
-  b[0] = FloatDown(box[0]);
-  b[1] = FloatUp(box[1]);
-  b[2] = FloatDown(box[2]);
-  b[3] = FloatUp(box[3]);
-}
-}
-
 void View::CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end)
 {
   // Local pointers: the byte stores to Status would otherwise make the
@@ -185,8 +142,40 @@ void View::CellExtents(const Geometry& g, vtkIdType begin, vtkIdType end)
   float* boxes = this->Box.data();
   for (vtkIdType c = begin; c < end; ++c)
   {
-    CellExtent(proj, valid, corners + offsets[c], static_cast<int>(offsets[c + 1] - offsets[c]),
-      kinds[c] == KindBad, status[c], front[c], rear[c], boxes + 4 * c);
+    const vtkIdType* ids = corners + offsets[c];
+    const int m = static_cast<int>(offsets[c + 1] - offsets[c]);
+    double zmin = VTK_DOUBLE_MAX, zmax = -VTK_DOUBLE_MAX;
+    double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    int numValid = 0;
+    for (int i = 0; i < m; ++i)
+    {
+      if (ids[i] < 0)
+      {
+        continue;
+      }
+      const double* p = proj + 3 * ids[i];
+      zmin = std::min(zmin, p[2]);
+      zmax = std::max(zmax, p[2]);
+      if (valid[ids[i]])
+      {
+        ++numValid;
+        box[0] = std::min(box[0], p[0]);
+        box[1] = std::max(box[1], p[0]);
+        box[2] = std::min(box[2], p[1]);
+        box[3] = std::max(box[3], p[1]);
+      }
+    }
+    front[c] = zmin;
+    rear[c] = std::isnan(zmax) ? VTK_DOUBLE_MAX : zmax;
+    status[c] = kinds[c] == KindBad ? StatusBad
+      : numValid == m               ? StatusVisible
+      : numValid == 0               ? StatusHidden
+                                    : StatusStraddle;
+    float* b = boxes + 4 * c;
+    b[0] = FloatDown(box[0]);
+    b[1] = FloatUp(box[1]);
+    b[2] = FloatDown(box[2]);
+    b[3] = FloatUp(box[3]);
   }
 }
 
@@ -254,12 +243,12 @@ void View::Setup(const Geometry& g, vtkCamera* camera, bool cellExtents)
   this->Front.resize(cellExtents ? n : 0);
   this->Rear.resize(cellExtents ? n : 0);
   this->Box.resize(cellExtents ? 4 * n : 0);
-  if (!cellExtents)
+  if (!cellExtents && this->Front.capacity() >= static_cast<size_t>(n))
   {
-    // (Frees per-cell arrays left by a merge's view.)
-    this->Front.shrink_to_fit();
-    this->Rear.shrink_to_fit();
-    this->Box.shrink_to_fit();
+    // Per-cell arrays left by a merge's view: freed (not every view).
+    std::vector<double>().swap(this->Front);
+    std::vector<double>().swap(this->Rear);
+    std::vector<float>().swap(this->Box);
   }
   this->Clipped.clear();
   this->HasCellExtents = cellExtents;
@@ -328,18 +317,17 @@ void View::ClipStraddling(const Geometry& g, bool cellExtents)
     {
       continue;
     }
-    const int slot = static_cast<int>(this->Clipped.size());
-    this->ClipIndex[c] = slot;
     if (!cellExtents)
     {
-      // Rear (Front and Box follow), in the straddling cells' own slots.
-      this->Front.push_back(0);
-      this->Rear.push_back(0);
-      this->Box.insert(this->Box.end(), 4, 0.0f);
-      std::uint8_t status;
-      CellExtent(this->Proj.data(), this->Valid.data(), g.CellCorners(c), g.NumberOfCorners(c),
-        false, status, this->Front[slot], this->Rear[slot], this->Box.data() + 4 * slot);
+      // Its own slots: Rear from the corners (DepthRange() before the clip
+      // index is set), Front and Box below.
+      double front, rear;
+      this->DepthRange(g, c, front, rear);
+      this->Front.push_back(f.Near);
+      this->Rear.push_back(rear);
+      this->Box.resize(this->Box.size() + 4);
     }
+    this->ClipIndex[c] = static_cast<int>(this->Clipped.size());
     this->Clipped.push_back(ClipCell(g, *this, c));
     const std::vector<double>& pts = this->Clipped.back();
     double box[4] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
