@@ -10,10 +10,17 @@
  * more than the fill. With this allocator the first touch is the fill's, on
  * all threads. Only for element types with a trivial default constructor
  * whose every element the caller writes before reading.
+ *
+ * A block of LargeBufferBytes or more is also advised for transparent huge
+ * pages (AdviseHugePages): one fault per 2 MiB instead of 512, and fewer TLB
+ * misses where a step reads at random. On a virtual machine where a first
+ * touch costs 1.6-2.9 us a page, the 2M-cell heatsink's first sort and
+ * re-sorts, which allocate their buffers anew, ran 10-16% faster (README).
  */
 #ifndef hovSteinBuffers_h
 #define hovSteinBuffers_h
 
+#include <cstddef>     // std::size_t
 #include <memory>      // std::allocator, std::allocator_traits
 #include <new>         // placement new
 #include <type_traits> // std::is_trivially_default_constructible
@@ -22,7 +29,18 @@
 
 namespace hovStein
 {
-/// std::allocator that default-initialises (no zeroing) on resize().
+/// Blocks from this size on are advised for transparent huge pages.
+constexpr std::size_t LargeBufferBytes = std::size_t(4) << 20;
+
+/**
+ * Asks the kernel to back the whole pages of [@p p, @p p + @p bytes)
+ * with transparent huge pages where it can (Linux: madvise MADV_HUGEPAGE;
+ * nothing elsewhere, or where the kernel refuses). Contents are unchanged.
+ */
+void AdviseHugePages(void* p, std::size_t bytes);
+
+/// std::allocator that default-initialises (no zeroing) on resize() and
+/// advises large blocks for huge pages.
 template <class T>
 struct DefaultInitAllocator : std::allocator<T>
 {
@@ -39,6 +57,15 @@ struct DefaultInitAllocator : std::allocator<T>
   {
     using other = DefaultInitAllocator<U>;
   };
+  T* allocate(std::size_t n)
+  {
+    T* p = std::allocator<T>::allocate(n);
+    if (n >= LargeBufferBytes / sizeof(T))
+    {
+      AdviseHugePages(p, n * sizeof(T));
+    }
+    return p;
+  }
   template <class U>
   void construct(U* p) noexcept
   {

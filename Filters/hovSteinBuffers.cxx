@@ -1,0 +1,32 @@
+// Huge-page advice for the Stein sort's large buffers (see hovSteinBuffers.h).
+#include "hovSteinBuffers.h"
+
+#include <cstdint> // std::uintptr_t
+
+#if defined(__linux__)
+#include <sys/mman.h> // madvise
+#include <unistd.h>   // sysconf
+#endif
+
+namespace hovStein
+{
+void AdviseHugePages(void* p, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  // The whole pages inside the block: its first and last partial pages may
+  // be shared with other allocations and keep their own advice.
+  static const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(page - 1);
+  if (end > begin)
+  {
+    // Advice only: if the kernel has no huge pages to give, the block keeps
+    // its small pages, as without the call.
+    (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+  }
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+}
