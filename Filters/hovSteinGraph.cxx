@@ -3,6 +3,7 @@
 
 #include "hovSteinBoundaryPairs.h"  // BoundaryPairs
 #include "hovSteinBuckets.h"        // ParallelSelect
+#include "hovSteinBuffers.h"        // AdviseHugePages
 #include "hovSteinMerge.h"          // RadixSortDescending
 
 #include "vtkSMPTools.h"
@@ -206,6 +207,10 @@ void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& 
   if (buildPlanes)
   {
     this->BoundaryPlanes.reset(new FilteredPlane[nb]); // default-initialised
+    if (nb * sizeof(FilteredPlane) >= LargeBufferBytes)
+    {
+      AdviseHugePages(this->BoundaryPlanes.get(), nb * sizeof(FilteredPlane));
+    }
   }
   const vtkIdType numBlocks = (nb + BoundaryBlock - 1) / BoundaryBlock;
   this->Roles.resize(nb);

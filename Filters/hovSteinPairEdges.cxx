@@ -35,7 +35,7 @@ void PairEdges::Collect(const std::vector<CellPairs>& blocks, const std::vector<
     return;
   }
   const vtkIdType nb = hi - lo + 1;
-  std::vector<vtkIdType>& end = this->End;
+  FillBuffer<vtkIdType>& end = this->End;
   end.assign(nb + 1, 0); // the counts, then each bucket's start, then its end
   for (const CellPairs& block : blocks)
   {

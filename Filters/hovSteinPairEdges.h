@@ -17,8 +17,9 @@
 #ifndef hovSteinPairEdges_h
 #define hovSteinPairEdges_h
 
-#include "hovSteinHulls.h" // HullCache
-#include "hovSteinView.h"  // Geometry, View
+#include "hovSteinBuffers.h" // FillBuffer
+#include "hovSteinHulls.h"   // HullCache
+#include "hovSteinView.h"    // Geometry, View
 
 #include <cstdint> // std::uint8_t, std::uint32_t
 #include <utility> // std::pair
@@ -51,10 +52,10 @@ private:
   /// The buckets are over the first cells [Lo, Lo + Kept.size()).
   vtkIdType Lo = 0;
   /// Bucket i's entries (second cells) are Second[End[i - 1] (0 for i = 0), End[i]).
-  std::vector<vtkIdType> End, Second;
-  std::vector<std::uint32_t> Kept; ///< per bucket: distinct second cells, then edges
-  std::vector<std::uint8_t> Used;  ///< per cell: tested
-  std::vector<vtkIdType> Cells;    ///< the tested cells
+  FillBuffer<vtkIdType> End, Second;
+  FillBuffer<std::uint32_t> Kept; ///< per bucket: distinct second cells, then edges
+  FillBuffer<std::uint8_t> Used;  ///< per cell: tested
+  std::vector<vtkIdType> Cells;   ///< the tested cells
   HullCache Hulls;
 };
 }
