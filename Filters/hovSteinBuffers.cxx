@@ -13,9 +13,14 @@ namespace hovStein
 void AdviseHugePages(void* p, std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-  // The whole pages inside the block: its first and last partial pages may
-  // be shared with other allocations and keep their own advice.
-  static const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  static const long pageSize = sysconf(_SC_PAGESIZE);
+  if (bytes < LargeBufferBytes || pageSize <= 0)
+  {
+    return;
+  }
+  // The whole pages inside the block: the first and last may be shared with
+  // other allocations (malloc's header, a neighbour) and keep their advice.
+  const std::uintptr_t page = static_cast<std::uintptr_t>(pageSize);
   const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1);
   const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(page - 1);
   if (end > begin)

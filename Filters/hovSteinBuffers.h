@@ -1,8 +1,9 @@
 /**
  * @file hovSteinBuffers.h
  * @brief Per-view buffers of the Stein sort that every step fills completely:
- *        std::vector whose resize() leaves trivial elements uninitialised;
- *        a prefetch hint for the steps that read them at random.
+ *        std::vector whose resize() leaves trivial elements uninitialised
+ *        and whose largest blocks ask for transparent huge pages; a prefetch
+ *        hint for the steps that read them at random.
  *
  * A value-initialising resize() zeroes the new memory on one thread, touching
  * (and faulting in) every page before the parallel fill touches it again; on
@@ -13,9 +14,9 @@
  *
  * A block of LargeBufferBytes or more is also advised for transparent huge
  * pages (AdviseHugePages): one fault per 2 MiB instead of 512, and fewer TLB
- * misses where a step reads at random. On a virtual machine where a first
- * touch costs 1.6-2.9 us a page, the 2M-cell heatsink's first sort and
- * re-sorts, which allocate their buffers anew, ran 10-16% faster (README).
+ * misses where a step reads at random (measured in the README). glibc
+ * normally gives a block of that size a mapping of its own, so the advice
+ * ends with the block instead of staying on memory malloc hands out later.
  */
 #ifndef hovSteinBuffers_h
 #define hovSteinBuffers_h
@@ -29,13 +30,19 @@
 
 namespace hovStein
 {
-/// Blocks from this size on are advised for transparent huge pages.
-constexpr std::size_t LargeBufferBytes = std::size_t(4) << 20;
+/**
+ * Blocks from this size on are advised for transparent huge pages: glibc's
+ * largest threshold for giving a block a mapping of its own (its threshold
+ * rises towards it as mapped blocks are freed, never above it).
+ */
+constexpr std::size_t LargeBufferBytes = std::size_t(32) << 20;
 
 /**
- * Asks the kernel to back the whole pages of [@p p, @p p + @p bytes)
- * with transparent huge pages where it can (Linux: madvise MADV_HUGEPAGE;
- * nothing elsewhere, or where the kernel refuses). Contents are unchanged.
+ * If @p bytes >= LargeBufferBytes, asks the kernel to back the whole pages of
+ * [@p p, @p p + @p bytes) with transparent huge pages where it can (Linux:
+ * madvise MADV_HUGEPAGE; nothing elsewhere, or where the kernel refuses).
+ * The pages holding the block's first and last bytes are left as they are
+ * unless the block covers them whole. Contents are unchanged.
  */
 void AdviseHugePages(void* p, std::size_t bytes);
 
@@ -57,13 +64,10 @@ struct DefaultInitAllocator : std::allocator<T>
   {
     using other = DefaultInitAllocator<U>;
   };
-  T* allocate(std::size_t n)
+  [[nodiscard]] T* allocate(std::size_t n)
   {
-    T* p = std::allocator<T>::allocate(n);
-    if (n >= LargeBufferBytes / sizeof(T))
-    {
-      AdviseHugePages(p, n * sizeof(T));
-    }
+    T* p = std::allocator<T>::allocate(n); // n * sizeof(T) fits: it succeeded
+    AdviseHugePages(p, n * sizeof(T));
     return p;
   }
   template <class U>

@@ -207,10 +207,7 @@ void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& 
   if (buildPlanes)
   {
     this->BoundaryPlanes.reset(new FilteredPlane[nb]); // default-initialised
-    if (nb * sizeof(FilteredPlane) >= LargeBufferBytes)
-    {
-      AdviseHugePages(this->BoundaryPlanes.get(), nb * sizeof(FilteredPlane));
-    }
+    AdviseHugePages(this->BoundaryPlanes.get(), nb * sizeof(FilteredPlane));
   }
   const vtkIdType numBlocks = (nb + BoundaryBlock - 1) / BoundaryBlock;
   this->Roles.resize(nb);
