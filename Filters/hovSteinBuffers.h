@@ -17,6 +17,10 @@
  * misses where a step reads at random (measured in the README). glibc
  * normally gives a block of that size a mapping of its own, so the advice
  * ends with the block instead of staying on memory malloc hands out later.
+ * Where the kernel gives huge pages only to advised memory ("madvise" mode),
+ * blocks from HeapBufferBytes on are advised too, and those below
+ * LargeBufferBytes, which may lie in malloc's heap, have the advice withdrawn
+ * when they are freed (WithdrawHugePageAdvice), so that it ends with them too.
  */
 #ifndef hovSteinBuffers_h
 #define hovSteinBuffers_h
@@ -38,7 +42,8 @@ namespace hovStein
 constexpr std::size_t LargeBufferBytes = std::size_t(32) << 20;
 
 /**
- * If @p bytes >= LargeBufferBytes, asks the kernel to back the whole pages of
+ * If @p bytes >= LargeBufferBytes (or >= HeapBufferBytes where
+ * HugePagesOnlyWhereAdvised()), asks the kernel to back the whole pages of
  * [@p p, @p p + @p bytes) with transparent huge pages where it can (Linux:
  * madvise MADV_HUGEPAGE; nothing elsewhere, or where the kernel refuses).
  * The pages holding the block's first and last bytes are left as they are
@@ -46,8 +51,28 @@ constexpr std::size_t LargeBufferBytes = std::size_t(32) << 20;
  */
 void AdviseHugePages(void* p, std::size_t bytes);
 
-/// std::allocator that default-initialises (no zeroing) on resize() and
-/// advises large blocks for huge pages.
+/**
+ * Where huge pages go only to advised memory (HugePagesOnlyWhereAdvised()),
+ * blocks from this size on are advised as well; below LargeBufferBytes
+ * their advice is withdrawn when they are freed.
+ */
+constexpr std::size_t HeapBufferBytes = std::size_t(4) << 20;
+
+/// True if the kernel's transparent huge pages are in "madvise" mode (Linux:
+/// /sys/kernel/mm/transparent_hugepage/enabled; read once). False elsewhere.
+bool HugePagesOnlyWhereAdvised();
+
+/**
+ * Before a block of [@p p, @p p + @p bytes) is freed: if HeapBufferBytes <=
+ * @p bytes < LargeBufferBytes and HugePagesOnlyWhereAdvised(), marks its whole
+ * pages MADV_NOHUGEPAGE, which in that mode is how memory never advised
+ * behaves, so the advice of AdviseHugePages() does not stay on heap memory
+ * that malloc hands out later. Nothing otherwise.
+ */
+void WithdrawHugePageAdvice(void* p, std::size_t bytes);
+
+/// std::allocator that default-initialises (no zeroing) on resize(), advises
+/// large blocks for huge pages, and withdraws the advice where it must.
 template <class T>
 struct DefaultInitAllocator : std::allocator<T>
 {
@@ -69,6 +94,11 @@ struct DefaultInitAllocator : std::allocator<T>
     T* p = std::allocator<T>::allocate(n); // n * sizeof(T) fits: it succeeded
     AdviseHugePages(p, n * sizeof(T));
     return p;
+  }
+  void deallocate(T* p, std::size_t n)
+  {
+    WithdrawHugePageAdvice(p, n * sizeof(T));
+    std::allocator<T>::deallocate(p, n);
   }
   template <class U>
   void construct(U* p) noexcept

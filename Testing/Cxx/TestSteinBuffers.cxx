@@ -2,22 +2,29 @@
 // or more is advised for transparent huge pages (on Linux: the "hg" flag of
 // the memory it lies in, /proc/self/smaps), from its first whole page to its
 // last, but not the pages holding its first and last bytes when it shares
-// them (malloc's header); a smaller block is not advised; and the advice
-// changes no element: buffers filled, grown (resize keeps the old elements)
-// and refilled (Refill keeps none) hold what was written. The checks that a
-// page is not advised are skipped where plain std::allocator memory is.
+// them (malloc's header); in the kernel's "madvise" mode a block from
+// HeapBufferBytes on is advised too, and once freed its pages (kept in
+// malloc's heap here) carry "nh" instead of "hg"; in the other modes it is not
+// advised; a block below HeapBufferBytes never is; and the advice changes no
+// element: buffers filled, grown (resize keeps the old elements) and refilled
+// (Refill keeps none) hold what was written. The checks that a page is not
+// advised are skipped where plain std::allocator memory is.
 #include "hovSteinBuffers.h"
 #include "hovTestScenes.h"
 
 #include <cstdint>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #if defined(__linux__)
 #include <unistd.h> // sysconf
+#endif
+#if defined(__GLIBC__)
+#include <malloc.h> // mallopt: keep a freed block in the heap
 #endif
 
 using namespace hovTest;
@@ -60,12 +67,15 @@ int TestSteinBuffers(int, char*[])
   Checker ck;
   using hovStein::FillBuffer;
   constexpr std::size_t threshold = hovStein::LargeBufferBytes;
-  // Below the threshold, allocated first (a fresh process: malloc maps it on
-  // its own, so no neighbour's advice can reach it).
-  FillBuffer<char> small(threshold / 2);
+  constexpr std::size_t heapThreshold = hovStein::HeapBufferBytes;
+  // Below both thresholds, allocated first (a fresh process: malloc maps it
+  // on its own, so no neighbour's advice can reach it).
+  FillBuffer<char> small(heapThreshold / 2);
   // The same size from plain std::allocator: if the environment advises it
   // (a malloc tuned for huge pages), the negative check means nothing.
-  std::vector<char> control(threshold / 2);
+  std::vector<char> control(heapThreshold / 2);
+  // Between the thresholds, also mapped on its own.
+  FillBuffer<char> middle(2 * heapThreshold);
 
   // Elements written and read back; the advice must not change any.
   const std::size_t n = 5 * threshold / 4 / sizeof(double);
@@ -140,6 +150,52 @@ int TestSteinBuffers(int, char*[])
       "a " + std::to_string(small.size() >> 20) +
         " MiB buffer is not advised for huge pages (VmFlags:" + flags + ")");
   }
+  const bool advisedOnly = hovStein::HugePagesOnlyWhereAdvised();
+  std::cout << "Huge pages only where advised (\"madvise\" mode): " << (advisedOnly ? "yes" : "no")
+            << "\n";
+  if (!advisedOnly)
+  {
+    if (!environmentAdvises)
+    {
+      ck.Check(!HugeAdvised(middle.data() + middle.size() / 2),
+        "outside \"madvise\" mode a " + std::to_string(middle.size() >> 20) +
+          " MiB buffer is not advised");
+    }
+    return ck.Result();
+  }
+  ck.Check(HugeAdvised(middle.data() + middle.size() / 2),
+    "in \"madvise\" mode a " + std::to_string(middle.size() >> 20) +
+      " MiB buffer is advised for huge pages");
+  FillBuffer<std::uint8_t> atHeapThreshold(heapThreshold);
+  ck.Check(HugeAdvised(atHeapThreshold.data() + heapThreshold / 2),
+    "in \"madvise\" mode a buffer of exactly HeapBufferBytes is advised");
+#if defined(__GLIBC__)
+  // A block in malloc's heap (no mapping of its own below 64 MiB from here
+  // on), kept off the heap's top by a later allocation so that freeing it
+  // returns nothing to the system: its pages stay mapped, with the advice
+  // withdrawn.
+  if (mallopt(M_MMAP_THRESHOLD, static_cast<int>(2 * threshold)) == 1)
+  {
+    auto heapBlock = std::make_unique<FillBuffer<char>>(3 * heapThreshold);
+    std::vector<char> guard(heapThreshold / 4, 1);
+    const auto mid =
+      reinterpret_cast<std::uintptr_t>(heapBlock->data() + heapBlock->size() / 2) & ~(page - 1);
+    ck.Check(HugeAdvised(reinterpret_cast<const void*>(mid)),
+      "a " + std::to_string(heapBlock->size() >> 20) + " MiB buffer in malloc's heap is advised");
+    heapBlock.reset(); // freed: malloc keeps the block, the pages stay mapped
+    const std::string flags = FlagsAt(reinterpret_cast<const void*>(mid));
+    if (flags.empty())
+    {
+      std::cout << "The freed block's pages were unmapped: withdrawal not checked.\n";
+    }
+    else
+    {
+      ck.Check(flags.find(" hg ") == std::string::npos && flags.find(" nh ") != std::string::npos,
+        "a freed buffer's pages are no longer advised (VmFlags:" + flags + ")");
+    }
+    ck.Check(guard[0] == 1, "the guard keeps its contents");
+  }
+#endif
 #endif
   return ck.Result();
 }
