@@ -58,8 +58,11 @@ void AdviseHugePages(void* p, std::size_t bytes)
 void WithdrawHugePageAdvice(void* p, std::size_t bytes)
 {
   // In "madvise" mode memory advised MADV_NOHUGEPAGE is treated as memory
-  // never advised (no huge pages, khugepaged leaves it alone).
-  if (bytes >= HeapBufferBytes && bytes < LargeBufferBytes && HugePagesOnlyWhereAdvised())
+  // never advised (no huge pages, khugepaged leaves it alone). Also for
+  // blocks of LargeBufferBytes or more: malloc may have taken one from its
+  // heap, and for a block with a mapping of its own the call only precedes
+  // its unmapping.
+  if (bytes >= HeapBufferBytes && HugePagesOnlyWhereAdvised())
   {
     AdviseWholePages(p, bytes, MADV_NOHUGEPAGE);
   }

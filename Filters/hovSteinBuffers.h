@@ -18,9 +18,12 @@
  * normally gives a block of that size a mapping of its own, so the advice
  * ends with the block instead of staying on memory malloc hands out later.
  * Where the kernel gives huge pages only to advised memory ("madvise" mode),
- * blocks from HeapBufferBytes on are advised too, and those below
- * LargeBufferBytes, which may lie in malloc's heap, have the advice withdrawn
- * when they are freed (WithdrawHugePageAdvice), so that it ends with them too.
+ * blocks from HeapBufferBytes on are advised too, and every advised block
+ * has the advice withdrawn when it is freed (WithdrawHugePageAdvice): one that
+ * lies in malloc's heap does not pass it on to memory malloc hands out later.
+ * (Huge pages already backing such memory stay until it is unmapped; the mode
+ * is read once per process; kernels whose per-size settings give smaller huge
+ * pages to all memory in "madvise" mode do not give them to withdrawn ranges.)
  */
 #ifndef hovSteinBuffers_h
 #define hovSteinBuffers_h
@@ -47,7 +50,8 @@ constexpr std::size_t LargeBufferBytes = std::size_t(32) << 20;
  * [@p p, @p p + @p bytes) with transparent huge pages where it can (Linux:
  * madvise MADV_HUGEPAGE; nothing elsewhere, or where the kernel refuses).
  * The pages holding the block's first and last bytes are left as they are
- * unless the block covers them whole. Contents are unchanged.
+ * unless the block covers them whole. Contents are unchanged. For allocators:
+ * the block must pass through WithdrawHugePageAdvice() before it is freed.
  */
 void AdviseHugePages(void* p, std::size_t bytes);
 
@@ -63,11 +67,11 @@ constexpr std::size_t HeapBufferBytes = std::size_t(4) << 20;
 bool HugePagesOnlyWhereAdvised();
 
 /**
- * Before a block of [@p p, @p p + @p bytes) is freed: if HeapBufferBytes <=
- * @p bytes < LargeBufferBytes and HugePagesOnlyWhereAdvised(), marks its whole
- * pages MADV_NOHUGEPAGE, which in that mode is how memory never advised
- * behaves, so the advice of AdviseHugePages() does not stay on heap memory
- * that malloc hands out later. Nothing otherwise.
+ * Before a block of [@p p, @p p + @p bytes) that AdviseHugePages() saw is
+ * freed: if @p bytes >= HeapBufferBytes and HugePagesOnlyWhereAdvised(),
+ * marks its whole pages MADV_NOHUGEPAGE, which in that mode is how memory
+ * never advised behaves, so the advice does not stay on heap memory that
+ * malloc hands out later. Nothing otherwise.
  */
 void WithdrawHugePageAdvice(void* p, std::size_t bytes);
 

@@ -3,7 +3,7 @@
 
 #include "hovSteinBoundaryPairs.h"  // BoundaryPairs
 #include "hovSteinBuckets.h"        // ParallelSelect
-#include "hovSteinBuffers.h"        // AdviseHugePages
+#include "hovSteinBuffers.h"        // FillBuffer
 #include "hovSteinMerge.h"          // RadixSortDescending
 
 #include "vtkSMPTools.h"
@@ -206,8 +206,8 @@ void GraphSort::BoundaryRoles(const Geometry& g, const Topology& t, const View& 
   const vtkIdType nb = static_cast<vtkIdType>(t.Boundary.size());
   if (buildPlanes)
   {
-    this->BoundaryPlanes.reset(new FilteredPlane[nb]); // default-initialised
-    AdviseHugePages(this->BoundaryPlanes.get(), nb * sizeof(FilteredPlane));
+    // A fresh block (default-initialised; huge-page advice as FillBuffer's).
+    FillBuffer<FilteredPlane>(nb).swap(this->BoundaryPlanes);
   }
   const vtkIdType numBlocks = (nb + BoundaryBlock - 1) / BoundaryBlock;
   this->Roles.resize(nb);

@@ -48,7 +48,6 @@
 #include "hovSteinView.h"          // Geometry, View
 
 #include <cstdint> // std::int32_t, std::uint8_t
-#include <memory>  // std::unique_ptr
 #include <utility> // std::pair
 #include <vector>  // storage
 
@@ -143,7 +142,7 @@ private:
   /// view from the points its exact predicates read anyway, by the threads
   /// that use them (not zeroed on allocation). Interior faces keep no plane:
   /// FaceDirections tests their corners (Topology::TripleA) each view.
-  std::unique_ptr<FilteredPlane[]> BoundaryPlanes;
+  FillBuffer<FilteredPlane> BoundaryPlanes;
   unsigned long PlanesGeneration = 0;
   FillBuffer<std::int8_t> Directions; ///< per interior face: 1 A -> B, -1 B -> A, 0, 2 undecided
   std::vector<std::uint8_t> Roles;     ///< per boundary face: its role in step 2 (0: none)
