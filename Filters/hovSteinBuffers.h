@@ -57,8 +57,8 @@ void AdviseHugePages(void* p, std::size_t bytes);
 
 /**
  * Where huge pages go only to advised memory (HugePagesOnlyWhereAdvised()),
- * blocks from this size on are advised as well; below LargeBufferBytes
- * their advice is withdrawn when they are freed.
+ * blocks from this size on are advised as well, and every advised block has
+ * its advice withdrawn when it is freed.
  */
 constexpr std::size_t HeapBufferBytes = std::size_t(4) << 20;
 
