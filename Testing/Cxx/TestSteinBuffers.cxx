@@ -2,14 +2,14 @@
 // or more is advised for transparent huge pages (on Linux: the "hg" flag of
 // the memory it lies in, /proc/self/smaps), from its first whole page to its
 // last, but not the pages holding its first and last bytes when it shares
-// them (malloc's header); in the kernel's "madvise" mode a block from
+// them (malloc's header). In the kernel's "madvise" mode a block from
 // HeapBufferBytes on is advised too, and once freed its pages (kept in
-// malloc's heap here, where mallopt allows) carry "nh" instead of "hg" but the
-// page it shares does not; in the other modes it is not advised; a block below
-// HeapBufferBytes never is; and the advice changes no
-// element: buffers filled, grown (resize keeps the old elements) and refilled
-// (Refill keeps none) hold what was written. The checks that a page is not
-// advised are skipped where plain std::allocator memory is.
+// malloc's heap here, where mallopt allows) carry "nh" instead of "hg", but
+// the page it shares does not; in the other modes it is not advised. A block
+// below HeapBufferBytes never is. The advice changes no element: buffers
+// filled, grown (resize keeps the old elements) and refilled (Refill keeps
+// none) hold what was written. The checks that a page is not advised are
+// skipped where plain std::allocator memory is.
 #include "hovSteinBuffers.h"
 #include "hovTestScenes.h"
 
