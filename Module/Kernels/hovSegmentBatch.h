@@ -15,10 +15,11 @@
  * series terms among them (hov::detail::ThinTerms, the count the scalar kernel
  * uses) and each lane's extra terms replaced by exact zeros, which leaves every
  * lane's bits unchanged; the other thin segments are grouped by their number of
- * terms and evaluated four at a time (no fused multiply-add is introduced: the
- * module targets baseline x86-64 and the extra AVX2 clone does not enable FMA;
- * note that GCC contracts a*b+c even under -std=c++17 wherever FMA is enabled,
- * e.g. with -march=native).
+ * terms and evaluated four at a time. The series' Horner steps are fused
+ * multiply-adds where the CPU has them, in both kernels alike
+ * (hov::detail::FusedSeries); no other multiply-add is contracted (the kernels
+ * are compiled with -ffp-contract=off: GCC contracts a*b+c even under
+ * -std=c++17 wherever FMA is enabled, as in the x86-64-v3 clone).
  *
  * The transfer function is evaluated four segments at a time where four
  * consecutive segments lie in one interior interval (the segments of one

@@ -8,14 +8,16 @@ namespace hov
 {
 namespace detail
 {
-// With GCC or Clang on x86-64 the lane loops are also compiled for AVX2 (four
-// lanes per instruction) and the variant is chosen at load time; both variants
-// perform the same IEEE operations (the "avx2" target does not enable FMA, so
-// nothing is contracted into fused multiply-adds; -std=c++17 alone would not
-// prevent it: GCC 12 contracts wherever FMA is enabled), so the result does
-// not depend on the CPU.
+// With GCC or Clang on x86-64 the lane loops are also compiled for
+// x86-64-v3 (AVX2 and FMA: four lanes per instruction) and the variant is
+// chosen at load time. Both variants perform the same IEEE operations: the
+// kernels are compiled with -ffp-contract=off (Kernels/CMakeLists.txt), so
+// the only fused multiply-adds are the thin series' explicit ones
+// (FusedMulAdd, chosen per process by FusedSeries() as in the scalar kernel;
+// in the default variant std::fma). So the result does not depend on which
+// variant runs.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
-#define HOV_LANES_TARGET_CLONES __attribute__((target_clones("avx2", "default")))
+#define HOV_LANES_TARGET_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define HOV_LANES_TARGET_CLONES
 #endif
@@ -28,27 +30,27 @@ static_assert(Lanes == 4, "one V4 per block");
 
 /// The thin series (hovThinSeries.h: ThinWilliamsMaxSeries) of Lanes segments
 /// with N terms: each lane's w = WFront (before clamping) and alpha equal the
-/// scalar kernel's bit for bit.
-template <int N>
+/// scalar kernel's bit for bit (each Horner step rounded as @p Mad).
+template <int N, typename Mad>
 inline __attribute__((always_inline)) void ThinWilliamsMaxLanes(
   const double* a, const double* d1, double* w, double* alpha)
 {
   V4 va, vd1, vw, valpha;
   std::memcpy(&va, a, sizeof(V4));
   std::memcpy(&vd1, d1, sizeof(V4));
-  ThinWilliamsMaxSeries<N>(va, vd1, vw, valpha);
+  ThinWilliamsMaxSeries<N, Mad>(va, vd1, vw, valpha);
   std::memcpy(w, &vw, sizeof(V4));
   std::memcpy(alpha, &valpha, sizeof(V4));
 }
 
-/// ThinWilliamsMaxLanes<N>() on @p blocks consecutive blocks of Lanes segments.
-template <int N>
+/// ThinWilliamsMaxLanes<N, Mad>() on @p blocks consecutive blocks of Lanes segments.
+template <int N, typename Mad>
 inline __attribute__((always_inline)) void ThinBlocks(
   const double* a, const double* d1, int blocks, double* w, double* alpha)
 {
   for (int b = 0; b < blocks; ++b)
   {
-    ThinWilliamsMaxLanes<N>(a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
+    ThinWilliamsMaxLanes<N, Mad>(a + b * Lanes, d1 + b * Lanes, w + b * Lanes, alpha + b * Lanes);
   }
 }
 
@@ -94,6 +96,7 @@ struct KeepOwnTerms
  * every segment is valid and thin (the caller takes the others one by one):
  * nothing of these lanes is left for the sorted series.
  */
+template <typename Mad>
 inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction& tf, int k,
   const SegmentBatch::Arrays& jobs, int i, const ThinTermByExponent& thinTerms,
   const SegmentBatch::ThinArrays& t, RGBA* out)
@@ -130,7 +133,7 @@ inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction&
   V4 w, alpha;
   const KeepOwnTerms keep{ d1, thinTerms.AtLeast };
   ForTermCount(thinTerms(deepest), [&](auto n) __attribute__((always_inline)) {
-    ThinWilliamsMaxSeries<decltype(n)::value>(a, d1, w, alpha, keep);
+    ThinWilliamsMaxSeries<decltype(n)::value, Mad>(a, d1, w, alpha, keep);
   });
   // WriteThin(): wf = std::max(0.0, w), wb = std::max(0.0, alpha - w).
   const V4 back = alpha - w;
@@ -154,13 +157,22 @@ inline __attribute__((always_inline)) bool EvaluateBlock(const TransferFunction&
 
 }
 
-/// The thin series of @p blocks blocks of Lanes segments, all with @p terms terms.
+/// The thin series of @p blocks blocks of Lanes segments, all with @p terms
+/// terms, each step rounded as FusedSeries() says.
 HOV_LANES_TARGET_CLONES
 void ThinWilliamsMaxBlocks(
   int terms, const double* a, const double* d1, int blocks, double* w, double* alpha)
 {
+  const bool fused = FusedSeries();
   ForTermCount(terms, [&](auto n) __attribute__((always_inline)) {
-    ThinBlocks<decltype(n)::value>(a, d1, blocks, w, alpha);
+    if (fused)
+    {
+      ThinBlocks<decltype(n)::value, FusedMulAdd>(a, d1, blocks, w, alpha);
+    }
+    else
+    {
+      ThinBlocks<decltype(n)::value, SeparateMulAdd>(a, d1, blocks, w, alpha);
+    }
   });
 }
 
@@ -172,7 +184,7 @@ void ThinWilliamsMaxBlocks(
  * in #{X <= lo} - 1, a downward one in #{X < hi} - 1, and either stays in its
  * interval iff no node lies strictly between its ends: #{X < hi} <= #{X <= lo}.
  * So two comparisons per node and block, exact counts in doubles, and no
- * branch per segment. Compiled also for AVX2.
+ * branch per segment. Compiled also for x86-64-v3.
  */
 HOV_LANES_TARGET_CLONES
 int CountIntervals(const double* x, int n, const SegmentBatch::Arrays& jobs, int count,
@@ -253,12 +265,12 @@ inline __attribute__((always_inline)) void EvaluateSegment(const TransferFunctio
   }
   EvaluatePiece(tf, resolved[i], s0, s1, length, thinTerms, t, i, out[i]);
 }
-}
 
-/// EvaluateSegments(): blocks through EvaluateBlock(). Compiled also for AVX2.
-HOV_LANES_TARGET_CLONES
-void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
-  const SegmentBatch::Arrays& jobs, int count, const SegmentBatch::ThinArrays& t, RGBA* out)
+/// EvaluateSegments() with the series' steps rounded as @p Mad.
+template <typename Mad>
+inline __attribute__((always_inline)) void EvaluateSegmentsWith(const TransferFunction& tf,
+  const int* resolved, int skip, const SegmentBatch::Arrays& jobs, int count,
+  const SegmentBatch::ThinArrays& t, RGBA* out)
 {
   const ThinTermByExponent& thinTerms = ThinTerms();
   const int last = tf.GetNumberOfNodes() - 2; // the last interior interval
@@ -267,7 +279,7 @@ void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
   {
     const int k = resolved[i];
     const bool same = (resolved[i + 1] == k) & (resolved[i + 2] == k) & (resolved[i + 3] == k);
-    if (same && k >= 0 && k <= last && EvaluateBlock(tf, k, jobs, i, thinTerms, t, out))
+    if (same && k >= 0 && k <= last && EvaluateBlock<Mad>(tf, k, jobs, i, thinTerms, t, out))
     {
       continue;
     }
@@ -279,6 +291,22 @@ void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
   for (; i < count; ++i)
   {
     EvaluateSegment(tf, resolved, skip, jobs, i, thinTerms, t, out);
+  }
+}
+}
+
+/// EvaluateSegments(): blocks through EvaluateBlock(). Compiled also for x86-64-v3.
+HOV_LANES_TARGET_CLONES
+void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
+  const SegmentBatch::Arrays& jobs, int count, const SegmentBatch::ThinArrays& t, RGBA* out)
+{
+  if (FusedSeries())
+  {
+    EvaluateSegmentsWith<FusedMulAdd>(tf, resolved, skip, jobs, count, t, out);
+  }
+  else
+  {
+    EvaluateSegmentsWith<SeparateMulAdd>(tf, resolved, skip, jobs, count, t, out);
   }
 }
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm> // std::max, std::min
 #include <array>     // coefficient tables
+#include <atomic>    // the series' rounding, set once per process
 #include <cmath>     // exp, expm1, sqrt, isfinite
 #include <cstdint>   // exponent bits
 #include <cstring>   // memcpy
@@ -52,17 +53,34 @@ inline double BernsteinSum(const double* coef, int n, const double* powA, const 
   return sum;
 }
 
-/// The thin series with N terms (hovThinSeries.h: ThinWilliamsMaxSeries);
-/// WBack = A - WFront with A = sum (-1)^(n+1) D1^n/n! (WFront <= 2A/3: at most
-/// 2 bits lost). The hot path of the CPU renderer.
-template <int N>
+/// The thin series with N terms (hovThinSeries.h: ThinWilliamsMaxSeries),
+/// each Horner step rounded as @p Mad; WBack = A - WFront with
+/// A = sum (-1)^(n+1) D1^n/n! (WFront <= 2A/3: at most 2 bits lost). The hot
+/// path of the CPU renderer.
+template <int N, typename Mad>
 inline void ThinWilliamsMax(double a, double d1, double& wFront, double& wBack, double& alphaOut)
 {
   double w, alpha;
-  detail::ThinWilliamsMaxSeries<N>(a, d1, w, alpha);
+  detail::ThinWilliamsMaxSeries<N, Mad>(a, d1, w, alpha);
   wFront = w;
   wBack = alpha - w;
   alphaOut = alpha; // a function of D1 only: symmetric under reversal
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define HOV_FMA_TARGET __attribute__((target("fma")))
+#else
+#define HOV_FMA_TARGET
+#endif
+
+/// ThinWilliamsMax() with fused steps, compiled for the CPU's FMA
+/// instructions (std::fma is then one instruction); called only where
+/// FusedSeries() found them.
+template <int N>
+HOV_FMA_TARGET void ThinWilliamsMaxFused(
+  double a, double d1, double& wFront, double& wBack, double& alpha)
+{
+  ThinWilliamsMax<N, detail::FusedMulAdd>(a, d1, wFront, wBack, alpha);
 }
 
 template <int... N>
@@ -70,8 +88,28 @@ inline void ThinWilliamsMaxDispatch(int terms, double a, double d1, double& wFro
   double& alpha, std::integer_sequence<int, N...>)
 {
   using Fn = void (*)(double, double, double&, double&, double&);
-  static constexpr Fn table[] = { &ThinWilliamsMax<N + 1>... };
-  table[terms - 1](a, d1, wFront, wBack, alpha);
+  static constexpr Fn separate[] = { &ThinWilliamsMax<N + 1, detail::SeparateMulAdd>... };
+  static constexpr Fn fused[] = { &ThinWilliamsMaxFused<N + 1>... };
+  (detail::FusedSeries() ? fused : separate)[terms - 1](a, d1, wFront, wBack, alpha);
+}
+
+/// Whether this CPU has fused multiply-add instructions (and the OS their registers).
+bool HardwareFma()
+{
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("fma");
+#elif defined(__aarch64__)
+  return true;
+#else
+  return false;
+#endif
+}
+
+std::atomic<bool>& FusedSeriesSetting()
+{
+  static std::atomic<bool> fused{ HardwareFma() };
+  return fused;
 }
 
 /// Thin segment (D1 <= ThinDepth): all weights from the Taylor series in D.
@@ -269,5 +307,19 @@ RGBA IntegrateSegment(double length, const SegmentEnd& front, const SegmentEnd& 
   out.G = wf * front.Color[1] + wb * back.Color[1];
   out.B = wf * front.Color[2] + wb * back.Color[2];
   return out;
+}
+
+namespace detail
+{
+bool FusedSeries()
+{
+  return FusedSeriesSetting().load(std::memory_order_relaxed);
+}
+
+bool SetFusedSeries(bool fused)
+{
+  FusedSeriesSetting().store(fused && HardwareFma(), std::memory_order_relaxed);
+  return FusedSeries();
+}
 }
 }

@@ -13,7 +13,7 @@
 #define hovThinSeries_h
 
 #include <algorithm> // std::min
-#include <cmath>     // std::ldexp, std::pow
+#include <cmath>     // std::fma, std::ldexp, std::pow
 #include <cstdint>   // exponent bits
 #include <cstring>   // memcpy
 #include <limits>    // infinity
@@ -95,6 +95,11 @@ inline constexpr ThinTables Thin = MakeThinTables();
  * Outputs @p w = WFront before clamping and @p alpha (WBack = alpha - w).
  * N is a compile-time constant so that both loops unroll completely.
  *
+ * @p Mad is how each Horner step x * y + z is rounded: FusedMulAdd (once,
+ * std::fma: the CPU's fused multiply-add where it has one) or
+ * SeparateMulAdd (twice). The kernels pick one per process (FusedSeries()),
+ * so the scalar and batched kernels round alike on any one machine.
+ *
  * @p keep(n, c) sets term n's coefficient c as it enters the outer sums:
  * c as it is (AllTerms, the default), or an exact zero for lanes that need
  * fewer than n terms (the lane kernels' blocks of mixed term counts: a lane's
@@ -109,10 +114,38 @@ struct AllTerms
   }
 };
 
-template <int N, typename T, typename Keep = AllTerms>
+/// x = x * y + z, rounded twice (after the product and after the sum).
+struct SeparateMulAdd
+{
+  template <typename T>
+  HOV_THIN_INLINE void operator()(T& x, const T& y, const T& z) const
+  {
+    x = x * y + z;
+  }
+};
+
+/// x = x * y + z, rounded once (std::fma per value). Where the compiler may
+/// use the CPU's FMA instructions (the kernels' x86-64-v3 clones, AArch64)
+/// that is one instruction for four lanes; elsewhere a call to the C
+/// library's fma, which is correctly rounded with or without hardware support.
+struct FusedMulAdd
+{
+  HOV_THIN_INLINE void operator()(double& x, double y, double z) const { x = std::fma(x, y, z); }
+  template <typename V>
+  HOV_THIN_INLINE void operator()(V& x, const V& y, const V& z) const
+  {
+    for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+    {
+      x[l] = std::fma(x[l], y[l], z[l]);
+    }
+  }
+};
+
+template <int N, typename Mad, typename T, typename Keep = AllTerms>
 HOV_THIN_INLINE void ThinWilliamsMaxSeries(
   const T& a, const T& d1, T& w, T& alpha, const Keep& keep = Keep())
 {
+  const Mad mad;
   const T r = a / d1;
   const T d2 = d1 * d1;
   T wOdd = T{}, wEven = T{}, aOdd = T{}, aEven = T{};
@@ -124,26 +157,44 @@ HOV_THIN_INLINE void ThinWilliamsMaxSeries(
 #pragma GCC unroll 16
     for (int j = 1; j <= n; ++j)
     {
-      h = h * r + p[j];
+      mad(h, r, T{} + p[j]);
     }
     T f = T{} + Thin.InvFactorial[n]; // 0 + f is f
     keep(n, h);
     keep(n, f);
     if (n % 2)
     {
-      wOdd = wOdd * d2 + h;
-      aOdd = aOdd * d2 + f;
+      mad(wOdd, d2, h);
+      mad(aOdd, d2, f);
     }
     else
     {
-      wEven = wEven * d2 + h;
-      aEven = aEven * d2 + f;
+      mad(wEven, d2, h);
+      mad(aEven, d2, f);
     }
   }
   // sum_n (-1)^(n+1) c_n d^n = d (odd part in d^2) - d^2 (even part in d^2).
   w = d1 * wOdd - d2 * wEven;
   alpha = d1 * aOdd - d2 * aEven;
 }
+
+/**
+ * Whether the thin series rounds each Horner step once (FusedMulAdd) or twice
+ * (SeparateMulAdd), for the whole process: once where the CPU has fused
+ * multiply-add instructions (every x86-64 CPU with AVX2, AArch64), twice
+ * elsewhere, so no machine runs a software fma. Both are within the series'
+ * 2^-56 bound; the scalar kernel (hovSegmentIntegral.cxx) and the batched one
+ * (hovSegmentBatchLanes.cxx) read this same setting, so they agree bit for bit
+ * on any one machine, and every machine with FMA gives the same bits.
+ */
+bool FusedSeries();
+
+/**
+ * For tests and comparisons across machines: round the series as @p fused
+ * asks where that is available (fused needs the CPU's FMA) and return the
+ * setting now in force. Not to be called while segments are being integrated.
+ */
+bool SetFusedSeries(bool fused);
 
 /// Number of series terms that reach 2^-56 relative accuracy for total depth
 /// d1: the first terms of WFront and WBack are both >= d1/3 and term n is

@@ -3,10 +3,12 @@
 // a known interval, IntegrateLinearScalar otherwise), for every emission model and
 // method, on a mix of thin, thick, multi-interval, opaque, zero-length and
 // non-finite segments, in batches of every size (so that every lane and padding
-// pattern of the thin-series blocks occurs).
+// pattern of the thin-series blocks occurs), under each rounding of the thin
+// series the CPU offers (hovThinSeries.h: FusedSeries).
 
 #include "hovSegmentBatch.h"
 
+#include "hovKernelTestUtilities.h" // RoundingScope
 #include "hovRayIntegrator.h"
 #include "hovThinSeries.h" // ThinTerms, AtLeast
 #include "hovTransferFunction.h"
@@ -70,8 +72,9 @@ std::vector<hov::SegmentJob> MakeJobs(const hov::TransferFunction& tf, std::mt19
   return jobs;
 }
 
-void ExpectSameAsScalar(const hov::TransferFunction& tf, const hov::IntegrationSettings& settings,
-  const std::vector<hov::SegmentJob>& jobs, hov::SegmentBatch& batch)
+void ExpectSameAsScalarWithRounding(const hov::TransferFunction& tf,
+  const hov::IntegrationSettings& settings, const std::vector<hov::SegmentJob>& jobs,
+  hov::SegmentBatch& batch)
 {
   for (int count : { 1, 2, 3, 4, 5, 7, 8, 9, 31, static_cast<int>(jobs.size()) })
   {
@@ -104,6 +107,23 @@ void ExpectSameAsScalar(const hov::TransferFunction& tf, const hov::IntegrationS
       ASSERT_EQ(out[i].A, ref.A) << "segment " << i;
     }
     EXPECT_EQ(pieces, expectedPieces) << count << " segments";
+  }
+}
+
+/// The comparison above under each rounding of the thin series this CPU
+/// offers (separate always, fused with FMA): both kernels must follow the
+/// process's setting alike.
+void ExpectSameAsScalar(const hov::TransferFunction& tf, const hov::IntegrationSettings& settings,
+  const std::vector<hov::SegmentJob>& jobs, hov::SegmentBatch& batch)
+{
+  for (const bool fused : { false, true })
+  {
+    const hovtest::RoundingScope rounding(fused);
+    if (rounding.Active)
+    {
+      SCOPED_TRACE(fused ? "fused series" : "separate series");
+      ExpectSameAsScalarWithRounding(tf, settings, jobs, batch);
+    }
   }
 }
 }

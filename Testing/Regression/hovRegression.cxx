@@ -4,6 +4,8 @@
 #include "vtkHighOrderOffscreenWindow.h" // the window: X or Mesa EGL
 #include "vtkHighOrderVolumeMapper.h" // the mapper under test
 
+#include "hovThinSeries.h" // SetFusedSeries: "-separate-series"
+
 #include "vtkCallbackCommand.h" // the mapper's warnings, printed without VTK's "ERROR:" header
 #include "vtkCamera.h" // the default fit
 #include "vtkColorTransferFunction.h" // the transfer function
@@ -237,6 +239,17 @@ int Run(int argc, char* argv[], const Scene& scene)
   const std::string baseline =
     testing->IsValidImageSpecified() ? testing->GetValidImageFileName() : "";
   const double perturb = std::atof(ArgAfter(argc, argv, "-perturb", "0").c_str());
+  // "-separate-series": the thin series rounded as on a CPU without FMA
+  // (hovThinSeries.h), to check that such a CPU reproduces the baselines.
+  bool separateSeries = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    separateSeries = separateSeries || std::string(argv[i]) == "-separate-series";
+  }
+  if (separateSeries)
+  {
+    hov::detail::SetFusedSeries(false);
+  }
 
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   if (data.empty() || !vtksys::SystemTools::FileExists(data, true))
@@ -286,7 +299,7 @@ int Run(int argc, char* argv[], const Scene& scene)
   std::cout << scene.Name << ": " << scene.Width << " x " << scene.Height << ", render window "
             << factory->GetBackendName() << " (" << window->GetClassName() << ")"
             << (perturb != 0.0 ? ", unit distance perturbed by " + std::to_string(perturb) : "")
-            << "\n";
+            << ", thin series " << (hov::detail::FusedSeries() ? "fused" : "separate") << "\n";
   window->SetMultiSamples(0);
   window->AddRenderer(renderer);
 
