@@ -19,11 +19,14 @@
  *
  * Strict tolerances (Tolerance(); measured and argued in the README,
  * "Regression tests"): CPU_ACCURATE and RAY_CAST must reproduce their baseline
- * exactly. Their float image is computed with the same instructions on every
- * x86-64 CPU (baseline x86-64, no fused multiply-add anywhere: the AVX2 clones
- * do not enable FMA); glibc's libm may pick FMA variants of exp/log/pow, which
- * could differ in the last bit of a double, and the float image is unchanged
- * with those variants disabled (measured); the display of the float image by
+ * exactly. Their float image is computed with the same operations on every
+ * x86-64 CPU (baseline x86-64, kernels compiled with -ffp-contract=off) but
+ * one: the thin series' Horner steps are fused multiply-adds where the CPU has
+ * FMA (hovThinSeries.h: FusedSeries); "-separate-series" forces the rounding
+ * of a CPU without, and hov.RegressionSeparateSeries-* checks that it
+ * reproduces every baseline. glibc's libm may pick FMA variants of
+ * exp/log/pow, which could differ in the last bit of a double, and the float
+ * image is unchanged with those variants disabled (measured); the display of the float image by
  * llvmpipe is a conversion to 8 bits. OPENGL_PROJECTION: llvmpipe compiles the
  * shaders for the host CPU (vector width, instruction set), which moves a few
  * pixels by one level: at most 1 level on at most 0.2% of the pixels.
