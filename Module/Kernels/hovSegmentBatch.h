@@ -19,7 +19,7 @@
  * multiply-adds where the CPU has them, in both kernels alike
  * (hov::detail::FusedSeries); no other multiply-add is contracted (the kernels
  * are compiled with -ffp-contract=off: GCC contracts a*b+c even under
- * -std=c++17 wherever FMA is enabled, as in the x86-64-v3 clone).
+ * -std=c++17 wherever FMA is enabled, as in the FMA clone).
  *
  * The transfer function is evaluated four segments at a time where four
  * consecutive segments lie in one interior interval (the segments of one

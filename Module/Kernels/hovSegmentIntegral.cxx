@@ -67,7 +67,7 @@ inline void ThinWilliamsMax(double a, double d1, double& wFront, double& wBack, 
   alphaOut = alpha; // a function of D1 only: symmetric under reversal
 }
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if HOV_FMA_CLONES
 #define HOV_FMA_TARGET __attribute__((target("fma")))
 #else
 #define HOV_FMA_TARGET
@@ -83,20 +83,11 @@ HOV_FMA_TARGET void ThinWilliamsMaxFused(
   ThinWilliamsMax<N, detail::FusedMulAdd>(a, d1, wFront, wBack, alpha);
 }
 
-template <int... N>
-inline void ThinWilliamsMaxDispatch(int terms, double a, double d1, double& wFront, double& wBack,
-  double& alpha, std::integer_sequence<int, N...>)
-{
-  using Fn = void (*)(double, double, double&, double&, double&);
-  static constexpr Fn separate[] = { &ThinWilliamsMax<N + 1, detail::SeparateMulAdd>... };
-  static constexpr Fn fused[] = { &ThinWilliamsMaxFused<N + 1>... };
-  (detail::FusedSeries() ? fused : separate)[terms - 1](a, d1, wFront, wBack, alpha);
-}
-
-/// Whether this CPU has fused multiply-add instructions (and the OS their registers).
+/// Whether this CPU has FMA3 instructions (and the OS their registers) and
+/// the kernels code for them (hovThinSeries.h: HOV_FMA_CLONES).
 bool HardwareFma()
 {
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if HOV_FMA_CLONES
   __builtin_cpu_init();
   return __builtin_cpu_supports("fma");
 #elif defined(__aarch64__)
@@ -110,6 +101,17 @@ std::atomic<bool>& FusedSeriesSetting()
 {
   static std::atomic<bool> fused{ HardwareFma() };
   return fused;
+}
+
+template <int... N>
+inline void ThinWilliamsMaxDispatch(int terms, double a, double d1, double& wFront, double& wBack,
+  double& alpha, std::integer_sequence<int, N...>)
+{
+  using Fn = void (*)(double, double, double&, double&, double&);
+  static constexpr Fn separate[] = { &ThinWilliamsMax<N + 1, detail::SeparateMulAdd>... };
+  static constexpr Fn fused[] = { &ThinWilliamsMaxFused<N + 1>... };
+  const bool useFused = FusedSeriesSetting().load(std::memory_order_relaxed);
+  (useFused ? fused : separate)[terms - 1](a, d1, wFront, wBack, alpha);
 }
 
 /// Thin segment (D1 <= ThinDepth): all weights from the Taylor series in D.

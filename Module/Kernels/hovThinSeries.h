@@ -12,6 +12,8 @@
 #ifndef hovThinSeries_h
 #define hovThinSeries_h
 
+#include "hovConfig.h" // HOV_EXPORT
+
 #include <algorithm> // std::min
 #include <cmath>     // std::fma, std::ldexp, std::pow
 #include <cstdint>   // exponent bits
@@ -114,7 +116,9 @@ struct AllTerms
   }
 };
 
-/// x = x * y + z, rounded twice (after the product and after the sum).
+/// x = x * y + z, rounded twice (after the product and after the sum): only
+/// where the including file is compiled without contraction
+/// (-ffp-contract=off, as the kernels are: Kernels/CMakeLists.txt).
 struct SeparateMulAdd
 {
   template <typename T>
@@ -124,10 +128,12 @@ struct SeparateMulAdd
   }
 };
 
-/// x = x * y + z, rounded once (std::fma per value). Where the compiler may
-/// use the CPU's FMA instructions (the kernels' x86-64-v3 clones, AArch64)
-/// that is one instruction for four lanes; elsewhere a call to the C
-/// library's fma, which is correctly rounded with or without hardware support.
+/// x = x * y + z, rounded once (std::fma per value). In the kernels' FMA
+/// code (the scalar kernel's target("fma") copies, the lane kernels' "fma"
+/// clones, AArch64) that is one instruction, for four lanes in the lane
+/// kernels; compiled without FMA it is a call to the C library's fma, which
+/// the kernels never make in practice (FusedSeries() is true only where the
+/// FMA code runs).
 struct FusedMulAdd
 {
   HOV_THIN_INLINE void operator()(double& x, double y, double z) const { x = std::fma(x, y, z); }
@@ -178,23 +184,33 @@ HOV_THIN_INLINE void ThinWilliamsMaxSeries(
   alpha = d1 * aOdd - d2 * aEven;
 }
 
+/// Whether the kernels have FMA code for this platform: x86-64 with GCC or
+/// Clang (target attributes and target_clones, not on Apple) or AArch64.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__APPLE__)
+#define HOV_FMA_CLONES 1
+#else
+#define HOV_FMA_CLONES 0
+#endif
+
 /**
  * Whether the thin series rounds each Horner step once (FusedMulAdd) or twice
- * (SeparateMulAdd), for the whole process: once where the CPU has fused
- * multiply-add instructions (every x86-64 CPU with AVX2, AArch64), twice
- * elsewhere, so no machine runs a software fma. Both are within the series'
- * 2^-56 bound; the scalar kernel (hovSegmentIntegral.cxx) and the batched one
+ * (SeparateMulAdd), for the whole process: once where the CPU has FMA3
+ * instructions (x86-64 CPUs since 2012-2013, AMD Piledriver and Intel Haswell
+ * on, checked with __builtin_cpu_supports("fma"), the same test that picks the
+ * lane kernels' "fma" clone) and on AArch64; twice elsewhere, so no machine
+ * runs a software fma. Both are within the series' 2^-56 bound; the scalar
+ * kernel (hovSegmentIntegral.cxx) and the batched one
  * (hovSegmentBatchLanes.cxx) read this same setting, so they agree bit for bit
  * on any one machine, and every machine with FMA gives the same bits.
  */
-bool FusedSeries();
+HOV_EXPORT bool FusedSeries();
 
 /**
  * For tests and comparisons across machines: round the series as @p fused
  * asks where that is available (fused needs the CPU's FMA) and return the
  * setting now in force. Not to be called while segments are being integrated.
  */
-bool SetFusedSeries(bool fused);
+HOV_EXPORT bool SetFusedSeries(bool fused);
 
 /// Number of series terms that reach 2^-56 relative accuracy for total depth
 /// d1: the first terms of WFront and WBack are both >= d1/3 and term n is

@@ -8,8 +8,8 @@
 
 #include "hovSegmentBatch.h"
 
-#include "hovKernelTestUtilities.h" // RoundingScope
 #include "hovRayIntegrator.h"
+#include "hovRoundingScope.h"
 #include "hovThinSeries.h" // ThinTerms, AtLeast
 #include "hovTransferFunction.h"
 

@@ -8,7 +8,6 @@
 #define hovKernelTestUtilities_h
 
 #include "hovCompositing.h"
-#include "hovThinSeries.h" // FusedSeries, SetFusedSeries
 #include "hovTransferFunction.h"
 
 #include "hovKernelTestReference.h"
@@ -36,28 +35,6 @@ struct Worst
       this->Where = where;
     }
   }
-};
-
-/// Rounds the kernels' thin series as asked (hov::detail::SetFusedSeries)
-/// while in scope, then restores the process's setting. Active: whether the
-/// requested rounding is in force (fused needs the CPU's FMA).
-class RoundingScope
-{
-public:
-  explicit RoundingScope(bool fused)
-    : Saved(hov::detail::FusedSeries())
-    , Active(hov::detail::SetFusedSeries(fused) == fused)
-  {
-  }
-  ~RoundingScope() { hov::detail::SetFusedSeries(this->Saved); }
-  RoundingScope(const RoundingScope&) = delete;
-  RoundingScope& operator=(const RoundingScope&) = delete;
-
-private:
-  const bool Saved;
-
-public:
-  const bool Active;
 };
 
 /// Prints "[measured] name = value (at ...)" and records it in the test's

@@ -31,7 +31,9 @@ function (run step)
 endfunction ()
 
 # Unoptimised: this checks the build, not the speed (the strict image
-# comparison holds at any optimisation level: no fused multiply-adds either way).
+# comparison holds at any optimisation level: the kernels are compiled without
+# contraction, and their only fused multiply-adds are explicit std::fma, the
+# same at any -O).
 run(configure "${CMAKE_COMMAND}" -S "${src}" -B "${WORK_DIR}/build" -G "${GENERATOR}"
   -DCMAKE_BUILD_TYPE= -DPython3_EXECUTABLE=/usr/bin/python3)
 cmake_host_system_information(RESULT cores QUERY NUMBER_OF_LOGICAL_CORES)
