@@ -8,6 +8,8 @@ namespace hov
 {
 namespace detail
 {
+inline namespace HOV_LANES_NAMESPACE
+{
 // With GCC or Clang on x86-64 (HOV_FMA_CLONES) the lane loops are also
 // compiled for FMA3 (with it AVX: four lanes per instruction), chosen at load
 // time by the same test as FusedSeries(), and, where the compiler knows
@@ -18,7 +20,14 @@ namespace detail
 // multiply-adds are the thin series' explicit ones (FusedMulAdd, used where
 // FusedSeries() says so, as in the scalar kernel, hence only in the FMA
 // variants in practice). So the result does not depend on which one runs.
-#if HOV_FMA_CLONES && ((defined(__clang__) && __clang_major__ >= 18) ||                          \
+//
+// A test build of one variant (HOV_LANES_ONLY, see hovSegmentBatchLanes.h):
+// the same functions with what target_clones gives that clone.
+#if defined(HOV_LANES_ONLY) && HOV_LANES_ONLY == 1
+#define HOV_LANES_TARGET_CLONES
+#elif defined(HOV_LANES_ONLY) && HOV_LANES_ONLY == 2
+#define HOV_LANES_TARGET_CLONES __attribute__((target("fma")))
+#elif HOV_FMA_CLONES && ((defined(__clang__) && __clang_major__ >= 18) ||                        \
                        (!defined(__clang__) && __GNUC__ >= 12))
 #define HOV_LANES_TARGET_CLONES                                                                    \
   __attribute__((target_clones("arch=x86-64-v3", "fma", "default")))
@@ -314,6 +323,7 @@ void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
   {
     EvaluateSegmentsWith<SeparateMulAdd>(tf, resolved, skip, jobs, count, t, out);
   }
+}
 }
 }
 }

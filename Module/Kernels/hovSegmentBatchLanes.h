@@ -23,12 +23,31 @@
 #define HOV_LANES_HIDDEN
 #endif
 
+// Which build of hovSegmentBatchLanes.cxx this is. The module's is "cloned":
+// one copy per instruction set, picked for the CPU at load time. The kernel
+// tests also build the file as one variant at a time (HOV_LANES_ONLY: 1 =
+// baseline x86-64, 2 = FMA3, see the .cxx) to run the variants this CPU would
+// not pick (TestLaneVariants.cxx). Each build's functions live in a namespace
+// of their own, so one test program can hold them all.
+#if !defined(HOV_LANES_ONLY)
+#define HOV_LANES_NAMESPACE cloned
+#elif HOV_LANES_ONLY == 1
+#define HOV_LANES_NAMESPACE baseline
+#elif HOV_LANES_ONLY == 2
+#define HOV_LANES_NAMESPACE fma3
+#else
+#error "HOV_LANES_ONLY: 1 (baseline) or 2 (FMA3)"
+#endif
+
 namespace hov
 {
 namespace detail
 {
 /// Segments evaluated side by side (one V4 of the lane kernels).
 constexpr int Lanes = 4;
+
+inline namespace HOV_LANES_NAMESPACE
+{
 
 /**
  * IntegrateLinearScalarInInterval() -> IntegrateSegment() ->
@@ -107,6 +126,7 @@ HOV_LANES_HIDDEN int CountIntervals(const double* x, int n, const SegmentBatch::
  */
 HOV_LANES_HIDDEN void EvaluateSegments(const TransferFunction& tf, const int* resolved, int skip,
   const SegmentBatch::Arrays& jobs, int count, const SegmentBatch::ThinArrays& t, RGBA* out);
+}
 }
 }
 
