@@ -26,7 +26,11 @@ inline namespace HOV_LANES_NAMESPACE
 #if defined(HOV_LANES_ONLY) && HOV_LANES_ONLY == 1
 #define HOV_LANES_TARGET_CLONES
 #elif defined(HOV_LANES_ONLY) && HOV_LANES_ONLY == 2
+#if HOV_FMA_CLONES
 #define HOV_LANES_TARGET_CLONES __attribute__((target("fma")))
+#else
+#define HOV_LANES_TARGET_CLONES // no clones here: the module's one variant
+#endif
 #elif HOV_FMA_CLONES && ((defined(__clang__) && __clang_major__ >= 18) ||                        \
                        (!defined(__clang__) && __GNUC__ >= 12))
 #define HOV_LANES_TARGET_CLONES                                                                    \
