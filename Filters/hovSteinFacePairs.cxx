@@ -26,15 +26,15 @@ double Margin(const FaceData& d, const FaceData& e, double relative)
 /**
  * Edge k of a screen triangle set up once for side tests with a margin:
  * Side(x) is the signed distance of @p x times |q - p| (positive on the third
- * corner's side), Tol the margin times |ex| + |ey| (>= margin * |q - p|). x
- * lies inside by more than the margin iff Side(x) > Tol, outside by more iff
- * Side(x) < -Tol; an edge without area (Sign 0) has neither.
+ * corner's side); for a margin m, x lies inside by more than m iff
+ * Side(x) > m * Norm, outside by more iff Side(x) < -m * Norm (Norm = |ex| +
+ * |ey| >= |q - p|); an edge without area (Sign 0) has neither.
  */
 struct EdgeLine
 {
-  double PX, PY, EX, EY, Tol, Sign;
+  double PX, PY, EX, EY, Norm, Sign;
   EdgeLine() = default;
-  EdgeLine(const double t[3][2], int k, double margin)
+  EdgeLine(const double t[3][2], int k)
   {
     const double* p = t[k];
     const double* q = t[(k + 1) % 3];
@@ -44,12 +44,99 @@ struct EdgeLine
     this->EX = q[0] - p[0];
     this->EY = q[1] - p[1];
     const double c = this->EX * (r[1] - p[1]) - this->EY * (r[0] - p[0]);
-    this->Tol = margin * (std::abs(this->EX) + std::abs(this->EY));
+    this->Norm = std::abs(this->EX) + std::abs(this->EY);
     this->Sign = c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0);
   }
   double Side(const double x[2]) const
   {
     return this->Sign * (this->EX * (x[1] - this->PY) - this->EY * (x[0] - this->PX));
+  }
+};
+
+/**
+ * The six edge lines of two screen triangles (@p f's, then @p e's), set up
+ * once for both screen tests of a face pair (Apart(), then the points of
+ * InFrontOnScreen()).
+ */
+struct PairLines
+{
+  const FaceData& F;
+  const FaceData& E;
+  EdgeLine Lines[6];
+  bool Areas = true; ///< both triangles have area
+  PairLines(const FaceData& f, const FaceData& e)
+    : F(f)
+    , E(e)
+  {
+    for (int k = 0; k < 6; ++k)
+    {
+      this->Lines[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3);
+      this->Areas = this->Areas && this->Lines[k].Sign != 0;
+    }
+  }
+  /// ApartOnScreen() with the margin @p margin.
+  bool Apart(double margin) const
+  {
+    for (int k = 0; k < 6; ++k)
+    {
+      // Every corner of the other triangle outside edge k by more than the margin.
+      const EdgeLine& line = this->Lines[k];
+      const double(*b)[2] = k < 3 ? this->E.Corners : this->F.Corners;
+      const double tol = margin * line.Norm;
+      bool apart = line.Sign != 0;
+      for (int j = 0; j < 3 && apart; ++j)
+      {
+        apart = line.Side(b[j]) < -tol;
+      }
+      if (apart)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  /// @p x inside both triangles by more than the margin @p margin.
+  bool InsideBoth(const double x[2], double margin) const
+  {
+    for (const EdgeLine& line : this->Lines)
+    {
+      if (!(line.Side(x) > margin * line.Norm))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  /// A point of the first four InFrontOnScreen() tries inside both by more than @p margin.
+  bool SomePointInside(double margin) const
+  {
+    double c[2][2], lo[2][2], hi[2][2];
+    for (int t = 0; t < 2; ++t)
+    {
+      const double(*a)[2] = t ? this->E.Corners : this->F.Corners;
+      for (int i = 0; i < 2; ++i)
+      {
+        c[t][i] = (a[0][i] + a[1][i] + a[2][i]) / 3;
+        lo[t][i] = std::min({ a[0][i], a[1][i], a[2][i] });
+        hi[t][i] = std::max({ a[0][i], a[1][i], a[2][i] });
+      }
+    }
+    for (int t = 0; t < 4; ++t)
+    {
+      double x[2];
+      for (int i = 0; i < 2; ++i)
+      {
+        // The centroids, their midpoint, the centre of the extents' overlap.
+        x[i] = t < 2 ? c[t][i]
+          : t == 2   ? 0.5 * (c[0][i] + c[1][i])
+                     : 0.5 * (std::max(lo[0][i], lo[1][i]) + std::min(hi[0][i], hi[1][i]));
+      }
+      if (this->InsideBoth(x, margin))
+      {
+        return true;
+      }
+    }
+    return false;
   }
 };
 
@@ -200,105 +287,66 @@ bool SomeCornerOutside(const Geometry& g, const FaceData& d, const FaceData& oth
 
 bool ApartOnScreen(const FaceData& d, const FaceData& e)
 {
-  if (!ScreenTriangles(d, e))
-  {
-    return false;
-  }
-  const double margin = Margin(d, e, 1e-9);
-  for (int t = 0; t < 2; ++t)
-  {
-    const double(*a)[2] = t ? e.Corners : d.Corners;
-    const double(*b)[2] = t ? d.Corners : e.Corners;
-    for (int k = 0; k < 3; ++k)
-    {
-      // Every corner of b outside edge k of a by more than the margin.
-      const EdgeLine line(a, k, margin);
-      bool apart = line.Sign != 0;
-      for (int j = 0; j < 3 && apart; ++j)
-      {
-        apart = line.Side(b[j]) < -line.Tol;
-      }
-      if (apart)
-      {
-        return true;
-      }
-    }
-  }
-  return false;
+  return ScreenTriangles(d, e) && PairLines(d, e).Apart(Margin(d, e, 1e-9));
+}
+
+namespace
+{
+/// InFrontOnScreen()'s conditions but the point inside both triangles.
+bool MayProve(const FaceData& f, double fAfter, const FaceData& e, double eBefore)
+{
+  return fAfter < eBefore && ScreenTriangles(f, e) && f.Exact && e.Exact;
+}
+
+/// The last point InFrontOnScreen() tries, inside both by more than @p margin.
+bool OverlapInside(const PairLines& lines, double margin)
+{
+  double x[2];
+  return OverlapCentroid(lines.F.Corners, lines.E.Corners, x) && lines.InsideBoth(x, margin);
+}
 }
 
 bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double eBefore)
 {
-  if (!(fAfter < eBefore) || !ScreenTriangles(f, e) || !f.Exact || !e.Exact)
+  if (!MayProve(f, fAfter, e, eBefore))
   {
     return false;
   }
   // Inside by 1e-4 of the extents: the overlap holds a disc far larger than
   // what Obstructs() treats as touching (1e-10 of the cells' hull areas).
   const double margin = Margin(f, e, 1e-4);
-  // Inside both triangles by more than the margin: the six edges set up once.
-  EdgeLine edges[6];
-  for (int k = 0; k < 6; ++k)
-  {
-    edges[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3, margin);
-    if (edges[k].Sign == 0)
-    {
-      return false; // a triangle without area proves nothing
-    }
-  }
-  auto insideBoth = [&edges](const double x[2]) {
-    for (const EdgeLine& line : edges)
-    {
-      if (!(line.Side(x) > line.Tol))
-      {
-        return false;
-      }
-    }
-    return true;
-  };
-  double c[2][2], lo[2][2], hi[2][2];
-  for (int t = 0; t < 2; ++t)
-  {
-    const double(*a)[2] = t ? e.Corners : f.Corners;
-    for (int i = 0; i < 2; ++i)
-    {
-      c[t][i] = (a[0][i] + a[1][i] + a[2][i]) / 3;
-      lo[t][i] = std::min({ a[0][i], a[1][i], a[2][i] });
-      hi[t][i] = std::max({ a[0][i], a[1][i], a[2][i] });
-    }
-  }
-  for (int t = 0; t < 4; ++t)
-  {
-    double x[2];
-    for (int i = 0; i < 2; ++i)
-    {
-      // The centroids, their midpoint, the centre of the extents' overlap.
-      x[i] = t < 2 ? c[t][i]
-        : t == 2   ? 0.5 * (c[0][i] + c[1][i])
-                   : 0.5 * (std::max(lo[0][i], lo[1][i]) + std::min(hi[0][i], hi[1][i]));
-    }
-    if (insideBoth(x))
-    {
-      return true;
-    }
-  }
-  // Last: the area centroid of the triangles' intersection (inside both
-  // wherever they overlap by more than slivers; checked like the others).
-  double x[2];
-  return OverlapCentroid(f.Corners, e.Corners, x) && insideBoth(x);
+  const PairLines lines(f, e);
+  // A triangle without area proves nothing.
+  return lines.Areas && (lines.SomePointInside(margin) || OverlapInside(lines, margin));
 }
 
 int ClassifyFacePair(const Geometry& g, const FaceData& f, double fAfter, const FaceData& e,
   double eBefore, bool certify)
 {
-  if (ApartOnScreen(f, e))
+  // The same as !ApartOnScreen() && InFrontOnScreen() for a proved edge, with
+  // the lines set up once and the cheap points of the proof tried before the
+  // apart test: a point inside both triangles by 1e-4 of the extents cannot
+  // exist when an edge of one has the other's corners outside by 1e-9 (the
+  // side is affine, the point is a convex combination of those corners).
+  if (ScreenTriangles(f, e))
   {
-    return NoCandidate;
-  }
-  if (certify && InFrontOnScreen(f, fAfter, e, eBefore))
-  {
-    return ProvedEdge;
+    const PairLines lines(f, e);
+    const bool prove = certify && lines.Areas && MayProve(f, fAfter, e, eBefore);
+    const double proofMargin = Margin(f, e, 1e-4);
+    if (prove && lines.SomePointInside(proofMargin))
+    {
+      return ProvedEdge;
+    }
+    if (lines.Apart(Margin(f, e, 1e-9)))
+    {
+      return NoCandidate;
+    }
+    if (prove && OverlapInside(lines, proofMargin))
+    {
+      return ProvedEdge;
+    }
   }
   return SomeCornerOutside(g, f, e) && SomeCornerOutside(g, e, f) ? NeedsTest : NoCandidate;
 }
 }
+

@@ -67,9 +67,13 @@ enum FacePairKind
 
 /**
  * The tests on the EXIT face @p f (DepthAfter of its rear @p fAfter) and the
- * ENTRY face @p e (DepthBefore of its front @p eBefore), cheapest first. A
- * proved pair has a corner of each face beyond the other's plane (rays pass
- * f, then e), so SomeCornerOutside() is asked only for the others.
+ * ENTRY face @p e (DepthBefore of its front @p eBefore): NoCandidate if
+ * ApartOnScreen(), else ProvedEdge if @p certify and InFrontOnScreen(), else
+ * as SomeCornerOutside() both ways. A proved pair has a corner of each face
+ * beyond the other's plane (rays pass f, then e), so SomeCornerOutside() is
+ * asked only for the others. The six screen lines are set up once, and the
+ * proof's first four points are tried before the apart test (a proof
+ * excludes it: 60% of the face pairs of the 0.5M heatsink are proved).
  */
 int ClassifyFacePair(const Geometry& g, const FaceData& f, double fAfter, const FaceData& e,
   double eBefore, bool certify);
