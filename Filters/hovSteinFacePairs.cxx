@@ -25,33 +25,43 @@ double Margin(const FaceData& d, const FaceData& e, double relative)
 
 /**
  * Edge k of a screen triangle set up once for side tests with a margin:
- * Side(x) is the signed distance of @p x times |q - p| (positive on the third
- * corner's side); for a margin m, x lies inside by more than m iff
+ * Side(x) is the signed distance of @p x times |q - p| (positive on the
+ * triangle's side); for a margin m, x lies inside by more than m iff
  * Side(x) > m * Norm, outside by more iff Side(x) < -m * Norm (Norm = |ex| +
- * |ey| >= |q - p|); an edge without area (Sign 0) has neither.
+ * |ey| >= |q - p|); an edge of a triangle without area (Sign 0) has neither.
+ * The side is the triangle's orientation, one sign for its three edges
+ * (Orientation()): the three products of a sliver, whose area is rounding,
+ * can disagree in sign, and edges that each took their own would put a point
+ * far outside the sliver inside all three.
  */
 struct EdgeLine
 {
   double PX, PY, EX, EY, Norm, Sign;
   EdgeLine() = default;
-  EdgeLine(const double t[3][2], int k)
+  EdgeLine(const double t[3][2], int k, double sign)
   {
     const double* p = t[k];
     const double* q = t[(k + 1) % 3];
-    const double* r = t[(k + 2) % 3];
     this->PX = p[0];
     this->PY = p[1];
     this->EX = q[0] - p[0];
     this->EY = q[1] - p[1];
-    const double c = this->EX * (r[1] - p[1]) - this->EY * (r[0] - p[0]);
     this->Norm = std::abs(this->EX) + std::abs(this->EY);
-    this->Sign = c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0);
+    this->Sign = sign;
   }
   double Side(const double x[2]) const
   {
     return this->Sign * (this->EX * (x[1] - this->PY) - this->EY * (x[0] - this->PX));
   }
 };
+
+/// The orientation of the screen triangle @p t: 1 counterclockwise, -1 clockwise, 0 no area.
+double Orientation(const double t[3][2])
+{
+  const double c = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
+    (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
+  return c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0);
+}
 
 /**
  * The six edge lines of two screen triangles (@p f's, then @p e's), set up
@@ -68,11 +78,12 @@ struct PairLines
     : F(f)
     , E(e)
   {
+    const double sign[2] = { Orientation(f.Corners), Orientation(e.Corners) };
     for (int k = 0; k < 6; ++k)
     {
-      this->Lines[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3);
-      this->Areas = this->Areas && this->Lines[k].Sign != 0;
+      this->Lines[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3, sign[k / 3]);
     }
+    this->Areas = sign[0] != 0 && sign[1] != 0;
   }
   /// ApartOnScreen() with the margin @p margin.
   bool Apart(double margin) const
@@ -143,9 +154,8 @@ struct PairLines
 /// @p t's corners counterclockwise into @p out; false if it has no area.
 bool CounterClockwise(const double t[3][2], double out[][2])
 {
-  const double c = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
-    (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
-  if (!(c != 0))
+  const double c = Orientation(t);
+  if (c == 0)
   {
     return false;
   }
