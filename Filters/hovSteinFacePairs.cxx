@@ -25,43 +25,33 @@ double Margin(const FaceData& d, const FaceData& e, double relative)
 
 /**
  * Edge k of a screen triangle set up once for side tests with a margin:
- * Side(x) is the signed distance of @p x times |q - p| (positive on the
- * triangle's side); for a margin m, x lies inside by more than m iff
- * Side(x) > m * Norm, outside by more iff Side(x) < -m * Norm (Norm = |ex| +
- * |ey| >= |q - p|); an edge of a triangle without area (Sign 0) has neither.
- * The side is the triangle's orientation, one sign for its three edges
- * (Orientation()): the three products of a sliver, whose area is rounding,
- * can disagree in sign, and edges that each took their own would put a point
- * far outside the sliver inside all three.
+ * Side(x) is the signed distance of @p x times |q - p| (positive on the third
+ * corner's side); for a margin m, x lies inside by more than m if
+ * Side(x) > m * Norm, outside by more if Side(x) < -m * Norm (Norm = |ex| +
+ * |ey| >= |q - p|); an edge without area (Sign 0) has neither.
  */
 struct EdgeLine
 {
   double PX, PY, EX, EY, Norm, Sign;
   EdgeLine() = default;
-  EdgeLine(const double t[3][2], int k, double sign)
+  EdgeLine(const double t[3][2], int k)
   {
     const double* p = t[k];
     const double* q = t[(k + 1) % 3];
+    const double* r = t[(k + 2) % 3];
     this->PX = p[0];
     this->PY = p[1];
     this->EX = q[0] - p[0];
     this->EY = q[1] - p[1];
+    const double c = this->EX * (r[1] - p[1]) - this->EY * (r[0] - p[0]);
     this->Norm = std::abs(this->EX) + std::abs(this->EY);
-    this->Sign = sign;
+    this->Sign = c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0);
   }
   double Side(const double x[2]) const
   {
     return this->Sign * (this->EX * (x[1] - this->PY) - this->EY * (x[0] - this->PX));
   }
 };
-
-/// The orientation of the screen triangle @p t: 1 counterclockwise, -1 clockwise, 0 no area.
-double Orientation(const double t[3][2])
-{
-  const double c = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
-    (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
-  return c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0);
-}
 
 /**
  * The six edge lines of two screen triangles (@p f's, then @p e's), set up
@@ -73,17 +63,26 @@ struct PairLines
   const FaceData& F;
   const FaceData& E;
   EdgeLine Lines[6];
-  bool Areas = true; ///< both triangles have area
+  bool Areas = true; ///< both triangles have area, each edge of a triangle the same sign
   PairLines(const FaceData& f, const FaceData& e)
     : F(f)
     , E(e)
   {
-    const double sign[2] = { Orientation(f.Corners), Orientation(e.Corners) };
     for (int k = 0; k < 6; ++k)
     {
-      this->Lines[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3, sign[k / 3]);
+      this->Lines[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3);
     }
-    this->Areas = sign[0] != 0 && sign[1] != 0;
+    // One orientation for the three edges of each triangle: a sliver, whose
+    // area is rounding, can give its edges different signs, and a point far
+    // outside it would then be inside all three lines. Each edge keeps its
+    // own sign for Apart(), where any sign is sound (every corner of the
+    // other triangle outside one line: that line separates them).
+    for (int t = 0; t < 6; t += 3)
+    {
+      const double s = this->Lines[t].Sign;
+      this->Areas = this->Areas && s != 0 && this->Lines[t + 1].Sign == s &&
+        this->Lines[t + 2].Sign == s;
+    }
   }
   /// ApartOnScreen() with the margin @p margin.
   bool Apart(double margin) const
@@ -154,8 +153,9 @@ struct PairLines
 /// @p t's corners counterclockwise into @p out; false if it has no area.
 bool CounterClockwise(const double t[3][2], double out[][2])
 {
-  const double c = Orientation(t);
-  if (c == 0)
+  const double c = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
+    (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
+  if (!(c != 0))
   {
     return false;
   }
@@ -335,9 +335,10 @@ int ClassifyFacePair(const Geometry& g, const FaceData& f, double fAfter, const 
 {
   // The same as !ApartOnScreen() && InFrontOnScreen() for a proved edge, with
   // the lines set up once and the cheap points of the proof tried before the
-  // apart test: a point inside both triangles by 1e-4 of the extents cannot
-  // exist when an edge of one has the other's corners outside by 1e-9 (the
-  // side is affine, the point is a convex combination of those corners).
+  // apart test: a point inside both triangles by 1e-4 of the extents (inside
+  // all six lines, each triangle's three with one sign: Areas) cannot exist
+  // when an edge of one has the other's corners outside by 1e-9 (the side is
+  // affine, the point a convex combination of those corners).
   if (ScreenTriangles(f, e))
   {
     const PairLines lines(f, e);
@@ -359,4 +360,3 @@ int ClassifyFacePair(const Geometry& g, const FaceData& f, double fAfter, const 
   return SomeCornerOutside(g, f, e) && SomeCornerOutside(g, e, f) ? NeedsTest : NoCandidate;
 }
 }
-

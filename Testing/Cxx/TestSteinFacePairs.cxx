@@ -13,9 +13,13 @@
 // Pairs: triangles of sizes 1e-3 to 1e3 at offsets up to 1e6 from the
 // origin; the second one random nearby, shifted, scaled about the first's
 // centroid (nested), a mirror sharing an edge (touching), far away,
-// collinear, or tiny inside; random depths (the proof needs the EXIT face
-// in front), exact or not, quads, and faces of cells cut by the near plane
-// (not on screen). Each class and each oracle case must occur often.
+// collinear up to rounding, tiny inside, or a needle (two corners a few units
+// in the last place apart, the third far: its orientation is rounding);
+// random depths (the proof needs the EXIT face in front), exact or not,
+// quads, and faces of cells cut by the near plane (not on screen). Each class
+// and each oracle case must occur often. Also two fixed pairs with a
+// collinear ENTRY triangle that the test proved when each edge line took its
+// own sign (2026-12-06): no proof.
 #include "hovSteinFacePairs.h"
 #include "hovSteinGeometry.h"
 #include "hovSteinRounding.h"
@@ -148,12 +152,49 @@ void Partner(const double f[3][2], int kind, double size, std::mt19937_64& rng, 
         e[i][0] = cx + (i == 0 ? -1.0 : i == 1 ? 1.0 / 3 : 1.0) * sx;
         e[i][1] = cy + (i == 0 ? -1.0 : i == 1 ? 1.0 / 3 : 1.0) * sy;
         break;
-      default: // tiny, inside (about the centroid)
+      case 6: // tiny, inside (about the centroid)
         e[i][0] = cx + 1e-3 * (f[i][0] - cx);
         e[i][1] = cy + 1e-3 * (f[i][1] - cy);
         break;
+      default: // a needle through the centroid: corners 1 and 2 a few ulps apart
+      {
+        // Corner 1 outside f's extents, corner 0 opposite it (the needle crosses f).
+        const double h = std::hypot(sx, sy) > 0 ? std::hypot(sx, sy) : 1.0;
+        const double ux = sx / h, uy = sy / h;
+        if (i < 2)
+        {
+          const double r = i == 0 ? -1.6 * size : 1.6 * size;
+          e[i][0] = cx + r * ux;
+          e[i][1] = cy + r * uy;
+        }
+        else
+        {
+          e[2][0] = e[1][0];
+          e[2][1] = e[1][1];
+          for (int c = 0; c < 2; ++c)
+          {
+            const int steps = static_cast<int>(4 + 4 * unit(rng));
+            for (int u = 0; u < steps; ++u)
+            {
+              e[2][c] = std::nextafter(e[2][c], sx > 0 ? VTK_DOUBLE_MAX : -VTK_DOUBLE_MAX);
+            }
+          }
+        }
+        break;
+      }
     }
   }
+}
+
+/// A screen triangle of a visible cell with an exact plane (corner ids 0-2).
+hovStein::FaceData FixedFace(const double t[3][2])
+{
+  std::mt19937_64 rng(1);
+  hovStein::FaceData d = MakeFace(t, rng);
+  d.NumIds = 3;
+  d.Exact = 1;
+  d.Screen = 1;
+  return d;
 }
 }
 
@@ -180,7 +221,7 @@ int TestSteinFacePairs(int, char*[])
 
   long long pairs = 0, classified = 0, mismatches = 0, classes[3] = { 0, 0, 0 };
   long long apart = 0, apartOverlapping = 0, proved = 0, provedDisjoint = 0;
-  long long provedByKind[7] = { 0, 0, 0, 0, 0, 0, 0 };
+  long long provedByKind[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
   std::string firstMismatch;
   for (const double offset : { 0.0, 1e3, 1e6 })
   {
@@ -195,7 +236,7 @@ int TestSteinFacePairs(int, char*[])
           f[k][0] = ox + size * unit(rng);
           f[k][1] = oy + size * unit(rng);
         }
-        const int kind = i % 7;
+        const int kind = i % 8;
         Partner(f, kind, size, rng, e);
         const hovStein::FaceData df = MakeFace(f, rng), de = MakeFace(e, rng);
         // The proof needs the EXIT face's far depth before the ENTRY face's near one.
@@ -232,7 +273,8 @@ int TestSteinFacePairs(int, char*[])
     }
   }
   ck.Check(mismatches == 0,
-    "ClassifyFacePair as its definition on " + std::to_string(classified) + " pairs: " +
+    "ClassifyFacePair as its definition in " + std::to_string(classified) +
+      " classifications (" + std::to_string(pairs) + " pairs, certify on and off): " +
       std::to_string(mismatches) + " differ" + firstMismatch);
   ck.Check(apartOverlapping == 0,
     std::to_string(apart) + " pairs apart on screen, of which " +
@@ -249,12 +291,36 @@ int TestSteinFacePairs(int, char*[])
   }
   ck.Check(apart > pairs / 20 && proved > pairs / 20,
     std::to_string(apart) + " apart and " + std::to_string(proved) + " proved pairs");
+  std::string byKind;
+  for (int k = 0; k < 8; ++k)
+  {
+    byKind += (k ? ", " : "") + std::to_string(provedByKind[k]);
+  }
   ck.Check(provedByKind[1] > 0 && provedByKind[2] > 0 && provedByKind[6] > 0 &&
-      provedByKind[3] == 0 && provedByKind[4] == 0 && provedByKind[5] == 0,
-    "proved by kind (nearby, shifted, nested, touching, far, collinear, tiny): " +
-      std::to_string(provedByKind[0]) + ", " + std::to_string(provedByKind[1]) + ", " +
-      std::to_string(provedByKind[2]) + ", " + std::to_string(provedByKind[3]) + ", " +
-      std::to_string(provedByKind[4]) + ", " + std::to_string(provedByKind[5]) + ", " +
-      std::to_string(provedByKind[6]) + " (touching, far and collinear: none)");
+      provedByKind[3] == 0 && provedByKind[4] == 0 && provedByKind[5] == 0 &&
+      provedByKind[7] == 0,
+    "proved by kind (nearby, shifted, nested, touching, far, collinear, tiny, needle): " +
+      byKind + " (touching, far, collinear and needles: none)");
+
+  // The pairs proved with per-edge signs (size 1e3 at offsets 0 and 1e3).
+  const double fixed[2][2][3][2] = {
+    { { { -131.81038233326646, -387.85541002620852 }, { 296.47646058679334, 205.34981061191669 },
+        { -705.48448733473526, -582.54790729388924 } },
+      { { -1167.6241331580695, -529.64956861318967 }, { 148.84430701659716, -163.47392455479505 },
+        { 807.07852710393047, 19.613897474402279 } } },
+    { { { 32.42204860394213, -19.757048535252068 }, { -30.451997175644351, -19.251540496089774 },
+        { 436.15710375192396, -1015.2914870449684 } },
+      { { 586.11840866561238, 162.66679546529485 }, { -0.64962280843892017, -522.80007674456942 },
+        { -294.03363854546461, -865.53351284950168 } } }
+  };
+  for (int k = 0; k < 2; ++k)
+  {
+    const hovStein::FaceData df = FixedFace(fixed[k][0]), de = FixedFace(fixed[k][1]);
+    const bool inFront = hovStein::InFrontOnScreen(df, 1.0, de, 2.0);
+    const int kind = hovStein::ClassifyFacePair(g, df, 1.0, de, 2.0, true);
+    ck.Check(!inFront && kind != hovStein::ProvedEdge,
+      "fixed pair " + std::to_string(k) + " (a collinear ENTRY triangle): " +
+        (inFront ? "proved" : "not proved") + ", class " + std::to_string(kind));
+  }
   return ck.Result();
 }
