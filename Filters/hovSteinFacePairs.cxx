@@ -28,7 +28,8 @@ double Margin(const FaceData& d, const FaceData& e, double relative)
  * Side(x) is the signed distance of @p x times |q - p| (positive on the third
  * corner's side); for a margin m, x lies inside by more than m if
  * Side(x) > m * Norm, outside by more if Side(x) < -m * Norm (Norm = |ex| +
- * |ey| >= |q - p|); an edge without area (Sign 0) has neither.
+ * |ey| >= |q - p|); an edge whose third corner is on its line (Sign 0) has
+ * neither.
  */
 struct EdgeLine
 {
@@ -72,7 +73,7 @@ struct PairLines
     {
       this->Lines[k] = EdgeLine(k < 3 ? f.Corners : e.Corners, k % 3);
     }
-    // One orientation for the three edges of each triangle: a sliver, whose
+    // A proof needs the three signs of each triangle to agree: a sliver, whose
     // area is rounding, can give its edges different signs, and a point far
     // outside it would then be inside all three lines. Each edge keeps its
     // own sign for Apart(), where any sign is sound (every corner of the
@@ -326,7 +327,8 @@ bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double
   // what Obstructs() treats as touching (1e-10 of the cells' hull areas).
   const double margin = Margin(f, e, 1e-4);
   const PairLines lines(f, e);
-  // A triangle without area proves nothing.
+  // A triangle without area, or whose edges disagree on its orientation
+  // (Areas), proves nothing.
   return lines.Areas && (lines.SomePointInside(margin) || OverlapInside(lines, margin));
 }
 

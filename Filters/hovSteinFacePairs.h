@@ -47,15 +47,13 @@ bool ApartOnScreen(const FaceData& d, const FaceData& e);
  * after e's (some ray meets it first; in a mesh of disjoint convex cells none
  * meets them in the other order, and the overlap, a disc of 1e-4 of the
  * extents, is far above what Obstructs() treats as touching, so Obstructs()
- * holds as well): both triangles of visible cells
- * with exact planes (the eye strictly inside f's, strictly outside e's),
- * @p fAfter = DepthAfter(f's rear) < @p eBefore = DepthBefore(e's front),
- * and a point inside both by more than the margin (a triangle whose edges
- * disagree on its orientation, a sliver of rounding-level area, proves
- * nothing; tried: the centroids,
- * their midpoint, the centre of the extents' overlap, the area centroid of
- * the triangles' intersection).
- * False when it cannot tell.
+ * holds as well): both triangles of visible cells with exact planes (the eye
+ * strictly inside f's, strictly outside e's), @p fAfter = DepthAfter(f's
+ * rear) < @p eBefore = DepthBefore(e's front), and a point inside both by
+ * more than the margin (tried: the centroids, their midpoint, the centre of
+ * the extents' overlap, the area centroid of the triangles' intersection).
+ * A triangle whose edges disagree on its orientation (a sliver of
+ * rounding-level area) proves nothing. False when it cannot tell.
  */
 bool InFrontOnScreen(const FaceData& f, double fAfter, const FaceData& e, double eBefore);
 

@@ -9,7 +9,7 @@
 //   apart must have an edge axis on which the triangles' projections are
 //   disjoint (for two triangles, disjoint iff one of their edge axes separates
 //   them); a proved pair must overlap on all six unit axes by 1e-5 of the
-//   extents (the proof is a point inside both by 1e-4 of them).
+//   larger extent (the proof is a point inside both by 1e-4 of it).
 // Pairs: triangles of sizes 1e-3 to 1e3 at offsets up to 1e6 from the
 // origin; the second one random nearby, shifted, scaled about the first's
 // centroid (nested), a mirror sharing an edge (touching), far away,
@@ -17,9 +17,10 @@
 // in the last place apart, the third far: its orientation is rounding);
 // random depths (the proof needs the EXIT face in front), exact or not,
 // quads, and faces of cells cut by the near plane (not on screen). Each class
-// and each oracle case must occur often. Also two fixed pairs with a
-// collinear ENTRY triangle that the test proved when each edge line took its
-// own sign (2026-12-06): no proof.
+// and each oracle case must occur often. Also fixed pairs: two with a
+// collinear ENTRY triangle that the original code proved (586c770: per-edge
+// signs, no agreement check), and a needle that one sign per triangle
+// (31361b4) called apart from a triangle it crosses.
 #include "hovSteinFacePairs.h"
 #include "hovSteinGeometry.h"
 #include "hovSteinRounding.h"
@@ -158,12 +159,13 @@ void Partner(const double f[3][2], int kind, double size, std::mt19937_64& rng, 
         break;
       default: // a needle through the centroid: corners 1 and 2 a few ulps apart
       {
-        // Corner 1 outside f's extents, corner 0 opposite it (the needle crosses f).
+        // Corner 1 outside f's extents (3 sizes from its centroid), corner 0
+        // opposite it: the needle crosses f.
         const double h = std::hypot(sx, sy) > 0 ? std::hypot(sx, sy) : 1.0;
         const double ux = sx / h, uy = sy / h;
         if (i < 2)
         {
-          const double r = i == 0 ? -1.6 * size : 1.6 * size;
+          const double r = i == 0 ? -3 * size : 3 * size;
           e[i][0] = cx + r * ux;
           e[i][1] = cy + r * uy;
         }
@@ -173,7 +175,7 @@ void Partner(const double f[3][2], int kind, double size, std::mt19937_64& rng, 
           e[2][1] = e[1][1];
           for (int c = 0; c < 2; ++c)
           {
-            const int steps = static_cast<int>(4 + 4 * unit(rng));
+            const int steps = std::uniform_int_distribution<int>(1, 8)(rng);
             for (int u = 0; u < steps; ++u)
             {
               e[2][c] = std::nextafter(e[2][c], sx > 0 ? VTK_DOUBLE_MAX : -VTK_DOUBLE_MAX);
@@ -207,7 +209,8 @@ int TestSteinFacePairs(int, char*[])
   vtkNew<vtkPoints> points;
   for (int i = 0; i < NumPoints; ++i)
   {
-    points->InsertNextPoint(unit(rng), unit(rng), unit(rng));
+    const double x = unit(rng), y = unit(rng), z = unit(rng); // in this order
+    points->InsertNextPoint(x, y, z);
   }
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
@@ -221,7 +224,7 @@ int TestSteinFacePairs(int, char*[])
 
   long long pairs = 0, classified = 0, mismatches = 0, classes[3] = { 0, 0, 0 };
   long long apart = 0, apartOverlapping = 0, proved = 0, provedDisjoint = 0;
-  long long provedByKind[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  long long provedByKind[8] = { 0, 0, 0, 0, 0, 0, 0, 0 }, needlesOnScreen = 0;
   std::string firstMismatch;
   for (const double offset : { 0.0, 1e3, 1e6 })
   {
@@ -240,7 +243,8 @@ int TestSteinFacePairs(int, char*[])
         Partner(f, kind, size, rng, e);
         const hovStein::FaceData df = MakeFace(f, rng), de = MakeFace(e, rng);
         // The proof needs the EXIT face's far depth before the ENTRY face's near one.
-        const double fAfter = df.Rear, eBefore = unit(rng) < 0.8 ? fAfter + 0.5 : fAfter - 0.5;
+        const bool inOrder = std::uniform_real_distribution<double>(0.0, 1.0)(rng) < 0.8;
+        const double fAfter = df.Rear, eBefore = inOrder ? fAfter + 0.5 : fAfter - 0.5;
         const bool isApart = hovStein::ApartOnScreen(df, de);
         const bool inFront = hovStein::InFrontOnScreen(df, fAfter, de, eBefore);
         for (const bool certify : { true, false })
@@ -269,6 +273,8 @@ int TestSteinFacePairs(int, char*[])
         // every unit axis overlaps by twice that (1e-5 leaves room for rounding).
         provedDisjoint += inFront && !(overlap > 1e-5 * std::max(df.Extent, de.Extent));
         provedByKind[kind] += inFront;
+        needlesOnScreen += kind == 7 && df.Screen && de.Screen && df.NumIds == 3 &&
+          de.NumIds == 3;
       }
     }
   }
@@ -300,9 +306,12 @@ int TestSteinFacePairs(int, char*[])
       provedByKind[3] == 0 && provedByKind[4] == 0 && provedByKind[5] == 0 &&
       provedByKind[7] == 0,
     "proved by kind (nearby, shifted, nested, touching, far, collinear, tiny, needle): " +
-      byKind + " (touching, far, collinear and needles: none)");
+      byKind + " (touching, far, collinear and needles: none); " +
+      std::to_string(needlesOnScreen) + " needle pairs of two screen triangles");
+  ck.Check(needlesOnScreen > pairs / 20,
+    std::to_string(needlesOnScreen) + " needle pairs of two screen triangles");
 
-  // The pairs proved with per-edge signs (size 1e3 at offsets 0 and 1e3).
+  // The pairs the original code proved (size 1e3 at offsets 0 and 1e3).
   const double fixed[2][2][3][2] = {
     { { { -131.81038233326646, -387.85541002620852 }, { 296.47646058679334, 205.34981061191669 },
         { -705.48448733473526, -582.54790729388924 } },
@@ -313,6 +322,20 @@ int TestSteinFacePairs(int, char*[])
       { { 586.11840866561238, 162.66679546529485 }, { -0.64962280843892017, -522.80007674456942 },
         { -294.03363854546461, -865.53351284950168 } } }
   };
+  // The needle that one sign per triangle called apart (size 1e-3 at offset 0).
+  const double needle[2][3][2] = { { { 0.00015613023791965453, 0.00049824903986727385 },
+                                     { -0.00065196578930710807, 0.00028278203016138769 },
+                                     { -0.00020516622065066393, 0.00093345882249119393 } },
+    { { -0.0022318565644616336, -0.0016661895609503315 },
+      { 0.0017645220497695556, 0.0028091828226302351 },
+      { 0.0017645220497695571, 0.0028091828226302364 } } };
+  const bool needleApart =
+    hovStein::ApartOnScreen(FixedFace(needle[0]), FixedFace(needle[1]));
+  const double needleOverlap = LeastOverlap(needle[0], needle[1]);
+  ck.Check(!needleApart && needleOverlap >= 0,
+    std::string("fixed needle crossing a triangle (") +
+      (needleOverlap >= 0 ? "no separating axis" : "separated?") +
+      "): " + (needleApart ? "apart" : "not apart"));
   for (int k = 0; k < 2; ++k)
   {
     const hovStein::FaceData df = FixedFace(fixed[k][0]), de = FixedFace(fixed[k][1]);
