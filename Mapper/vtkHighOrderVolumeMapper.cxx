@@ -266,6 +266,7 @@ void vtkHighOrderVolumeMapper::InitFrame(hov::RenderFrame& frame, vtkCamera* cam
   s.TerminationTransmittance = this->TerminationTransmittance;
   s.TileSize = this->TileSize;
   s.CellRecordMemory = this->CellRecordMemory;
+  s.SkipTransparentCells = this->SkipTransparentCells;
   s.UseDepthBuffer = this->UseDepthBuffer;
   s.ViewDepthClipping = this->ViewDepthClipping;
   s.ViewDepthRange[0] = this->ViewDepthRange[0];
@@ -375,6 +376,7 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
   this->NumberOfSegments = st.Segments;
   this->NumberOfPieces = st.Pieces;
   this->NumberOfCellRecords = st.CellRecords;
+  this->NumberOfTransparentCells = st.TransparentCells;
   this->NumberOfRays = st.Rays;
   this->NumberOfSplattedCells = st.SplattedCells;
   this->LastRenderAborted = st.Aborted;
@@ -559,6 +561,7 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseDepthBuffer: " << this->UseDepthBuffer << "\n";
   os << indent << "TileSize: " << this->TileSize << "\n";
   os << indent << "CellRecordMemory: " << this->CellRecordMemory << " MiB\n";
+  os << indent << "SkipTransparentCells: " << this->SkipTransparentCells << "\n";
   os << indent << "ViewDepthClipping: " << this->ViewDepthClipping << " ["
      << this->ViewDepthRange[0] << ", " << this->ViewDepthRange[1] << "]\n";
   os << indent << "VisibilitySort: " << this->VisibilitySort << "\n";
@@ -586,6 +589,7 @@ void vtkHighOrderVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSegments: " << this->NumberOfSegments << "\n";
   os << indent << "NumberOfPieces: " << this->NumberOfPieces << "\n";
   os << indent << "NumberOfCellRecords: " << this->NumberOfCellRecords << "\n";
+  os << indent << "NumberOfTransparentCells: " << this->NumberOfTransparentCells << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "NumberOfSplattedCells: " << this->NumberOfSplattedCells << "\n";
   os << indent << "NumberOfProjectedTriangles: " << this->NumberOfProjectedTriangles << "\n";

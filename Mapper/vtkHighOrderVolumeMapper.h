@@ -187,6 +187,21 @@ public:
   ///@}
 
   ///@{
+  /// CPU_ACCURATE with composite blending and Williams-Max emission, no
+  /// isosurface, separate colour array or splatting (default on): skip each
+  /// tetrahedron whose scalar range lies where the transfer function has no
+  /// extinction. Its segments would each add exactly zero (the field is
+  /// linear, so its scalars stay in that range), so the image is the same up
+  /// to round-off in the scalars at a range's edge, at none of their cost.
+  /// Off: every cell is integrated (for timing or checks).
+  /// GetNumberOfTransparentCells(): the tetrahedra skipped by the last render.
+  vtkSetMacro(SkipTransparentCells, bool);
+  vtkGetMacro(SkipTransparentCells, bool);
+  vtkBooleanMacro(SkipTransparentCells, bool);
+  vtkGetMacro(NumberOfTransparentCells, vtkIdType);
+  ///@}
+
+  ///@{
   /// Clip rays at the depth of opaque geometry already drawn (default on).
   vtkSetMacro(UseDepthBuffer, bool);
   vtkGetMacro(UseDepthBuffer, bool);
@@ -503,6 +518,7 @@ protected:
   double ViewDepthRange[2] = { 0.0, 1.0 };
   int TileSize = 32;
   int CellRecordMemory = 256;
+  bool SkipTransparentCells = true;
   vtkVisibilitySort* VisibilitySort = nullptr;
   std::vector<double> Isosurfaces; ///< value, r, g, b, opacity per surface
   char* ColorArrayName = nullptr;
@@ -518,6 +534,7 @@ protected:
   vtkIdType NumberOfSkippedCells = 0;
   vtkIdType NumberOfSegments = 0;
   vtkIdType NumberOfCellRecords = 0;
+  vtkIdType NumberOfTransparentCells = 0;
   vtkIdType NumberOfPieces = 0;
   vtkIdType NumberOfRays = 0;
   double LastImageTime = 0.0;

@@ -141,7 +141,8 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   general.Projectable = buf.Points.Projectable.data();
   general.TF = &tf;
   general.Segment.Emission = settings.Integration.Emission;
-  buf.Records.Build(setup, order, buf.Points, tf, width, height, general, settings.RecordBudget);
+  const vtkIdType transparent = buf.Records.Build(setup, order, buf.Points, tf, width, height,
+    general, settings.RecordBudget, settings.SkipTransparent);
   buf.Bins.Build(buf.Records.GetBoxes(), width, height, TileSizeOf(settings));
 
   // Tiles in parallel; every pixel is composited by one thread in a fixed order.
@@ -159,6 +160,7 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   frame.General = setup.GetGeneralCells().GetCells().empty() ? nullptr : &general;
   Statistics stats = RunTiles(buf.Bins, width, height, settings.Progress, buf.Tiles, frame, rgba);
   stats.Content = buf.Bins.ContentBox(width, height); // tiles without cells are written zero
+  stats.TransparentCells = transparent;
   if (buf.Records.IsWhole())
   {
     stats.Records = static_cast<vtkIdType>(buf.Records.GetRecords().size());

@@ -9,6 +9,7 @@
 #include "vtkSMPTools.h" // the per-frame pass
 
 #include <algorithm> // std::min, std::max
+#include <atomic>    // the count of transparent cells
 
 namespace
 {
@@ -78,9 +79,9 @@ hov::CellBox hov::CellRecords::TetraBox(
   return hov::PixelBoxOf(x0, x1, y0, y1, width, height, hov::BoxMargin);
 }
 
-void hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkIdType>& order,
+vtkIdType hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkIdType>& order,
   const ProjectedPoints& points, const TransferFunction& tf, int width, int height,
-  GeneralCellTile::FrameData& general, size_t budgetBytes)
+  GeneralCellTile::FrameData& general, size_t budgetBytes, bool skipTransparent)
 {
   this->Setup = &setup;
   this->Order = &order;
@@ -108,8 +109,12 @@ void hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkIdType
   // Per cell, in that order and in one pass, its pixel box and (whole) its
   // record: most cells of a fine mesh get the transfer-function interval
   // holding their whole scalar range (their segments skip the search).
+  // A table without a node of zero extinction has no transparent cell.
+  skipTransparent = skipTransparent && tf.HasZeroExtinctionNode();
+  std::atomic<vtkIdType> transparent(0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(numCells), [&](vtkIdType b, vtkIdType e) {
     CellRecord scratch;
+    vtkIdType skipped = 0;
     for (vtkIdType k = b; k < e; ++k)
     {
       CellRecord& cell = this->Whole ? this->Records[k] : scratch;
@@ -129,13 +134,21 @@ void hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkIdType
         this->PrefetchCell(k + RecordPrefetch);
       }
       const Tetra& tet = tets[order[k]];
+      if (skipTransparent && tf.ZeroExtinctionOver(tet.ScalarMin, tet.ScalarMax))
+      {
+        this->Boxes[k] = CellBox{ 0, -1, 0, -1 }; // in no tile
+        ++skipped;
+        continue;
+      }
       this->Boxes[k] = TetraBox(tet.Points, points, width, height);
       if (this->Whole)
       {
         TetraRecord(setup, tet, this->Boxes[k], points, tf, cell);
       }
     }
+    transparent += skipped;
   });
+  return transparent;
 }
 
 void hov::CellRecords::EndFrame()

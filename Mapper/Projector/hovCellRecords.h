@@ -47,10 +47,17 @@ public:
    * points @p points, and their records if they take at most @p budgetBytes.
    * @p general's GeneralOf is pointed at this object's general-cell indices.
    * The arguments must outlive the frame (Make() reads them).
+   *
+   * With @p skipTransparent, a tetrahedron whose scalar range lies where
+   * @p tf has no extinction (TransferFunction::ZeroExtinctionOver: the field
+   * is linear in it, so its exact scalars stay in that range) gets an empty
+   * box: it is binned nowhere and none of its segments, each exactly zero
+   * under Williams-Max emission, is computed. Returns the number of such
+   * cells.
    */
-  void Build(const CellSetup& setup, const std::vector<vtkIdType>& order,
+  vtkIdType Build(const CellSetup& setup, const std::vector<vtkIdType>& order,
     const ProjectedPoints& points, const TransferFunction& tf, int width, int height,
-    GeneralCellTile::FrameData& general, size_t budgetBytes);
+    GeneralCellTile::FrameData& general, size_t budgetBytes, bool skipTransparent = false);
 
   /// True if every record was built (GetRecords()); false: tiles use Make().
   bool IsWhole() const { return this->Whole; }

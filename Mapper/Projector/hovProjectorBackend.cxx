@@ -104,6 +104,9 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
     frame.Settings.Ordering == CellOrdering::PerPixelSort || scene.OrderHasCycles();
   settings.TileSize = frame.Settings.TileSize;
   settings.RecordBudget = static_cast<size_t>(std::max(frame.Settings.CellRecordMemory, 0)) << 20;
+  // Segments without extinction are exactly zero only where emission needs extinction.
+  settings.SkipTransparent =
+    frame.Settings.SkipTransparentCells && frame.Settings.Emission == EmissionModel::WilliamsMax;
   settings.Progress = frame.Progress;
   const int features = this->PrepareFeatures(frame);
   frame.Stats.FixedSeconds =
@@ -138,6 +141,7 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   frame.Stats.Segments = st.Segments;
   frame.Stats.Pieces = st.Pieces;
   frame.Stats.CellRecords = st.Records;
+  frame.Stats.TransparentCells = st.TransparentCells;
   frame.Stats.ShadingErrorEstimate = st.ShadingErrorEstimate;
   return ok ? 1 : 0;
 }

@@ -91,6 +91,7 @@ struct FrameSettings
   double TerminationTransmittance = 1e-9;
   int TileSize = 32;
   int CellRecordMemory = 256; ///< MiB (vtkHighOrderVolumeMapper::SetCellRecordMemory)
+  bool SkipTransparentCells = true;
   bool UseDepthBuffer = true;
   bool ViewDepthClipping = false;
   double ViewDepthRange[2] = { 0.0, 1.0 };
@@ -132,6 +133,7 @@ struct FrameStatistics
   vtkIdType Rays = 0;
   vtkIdType SplattedCells = 0;
   vtkIdType CellRecords = 0;
+  vtkIdType TransparentCells = 0;
   bool Aborted = false;
   /// Set by the mode they belong to only (-1 / 0: not reported by this frame).
   vtkIdType ProjectedTriangles = -1;

@@ -292,6 +292,19 @@ bool TransferFunction::Build(const TransferFunctionSpec& spec, std::vector<std::
   return true;
 }
 
+bool TransferFunction::ZeroExtinctionOver(double lo, double hi) const
+{
+  const int n = static_cast<int>(this->X.size());
+  if (n == 0 || !std::isfinite(lo) || !std::isfinite(hi) || !(lo <= hi))
+  {
+    return false;
+  }
+  // Nodes first..last (inclusive) hold [lo, hi] between them or clamp it.
+  const int first = std::max(this->FindIntervalDownward(lo), 0);
+  const int last = std::min(this->FindIntervalUpward(hi) + 1, n - 1);
+  return this->ExtinctionBefore[last + 1] == this->ExtinctionBefore[first];
+}
+
 void TransferFunction::BuildLookup()
 {
   // Interval lookup grid (4 buckets per node, at most 2^20).
@@ -333,6 +346,13 @@ void TransferFunction::BuildLookup()
         p.Tau = Infinity; // both ends of an opaque interval are +inf by construction
       }
     }
+  }
+  // Last: the loop above may set an opaque interval's first tau to +inf.
+  this->ExtinctionBefore.assign(this->Nodes.size() + 1, 0);
+  for (size_t k = 0; k < this->Nodes.size(); ++k)
+  {
+    // (NaN is not 0: it counts as extinction.)
+    this->ExtinctionBefore[k + 1] = this->ExtinctionBefore[k] + !(this->Nodes[k].Tau == 0.0);
   }
 }
 

@@ -107,6 +107,23 @@ public:
   int GetNumberOfRefinementNodes() const { return this->RefinementNodes; }
   /// True if some opacity is non-zero (else the volume is invisible).
   bool HasExtinction() const { return this->AnyExtinction; }
+  /**
+   * True if the extinction is exactly zero for every s in [@p lo, @p hi]
+   * (finite, lo <= hi): every node from the last one below lo (or the first
+   * node) to the first one above hi (or the last node) has tau = 0, so tau,
+   * linear between them and clamped beyond, is zero there. A conservative
+   * test (an end exactly on a node also reads the next node out); false for
+   * NaN, infinite or reversed ends and for a table without nodes. Emission
+   * aside (Wilhelms-Van Gelder), a segment whose exact scalars stay in such a
+   * range adds nothing: alpha and colour are 0.
+   */
+  bool ZeroExtinctionOver(double lo, double hi) const;
+  /// True if some node has tau = 0 (else ZeroExtinctionOver() is always false).
+  bool HasZeroExtinctionNode() const
+  {
+    return !this->ExtinctionBefore.empty() &&
+      this->ExtinctionBefore.back() < static_cast<int>(this->Nodes.size());
+  }
   OpacitySemantics GetSemantics() const { return this->Semantics; }
   /// Factor from colour to Wilhelms-Van Gelder emission per unit length.
   double GetEmissionFactor() const { return this->EmissionFactor; }
@@ -144,6 +161,8 @@ private:
   /// O(1) interval search: bucket b of a uniform grid over [X0, Xn-1] holds
   /// the interval containing its left end.
   std::vector<int> Buckets;
+  /// ExtinctionBefore[k]: the number of nodes before node k with tau != 0.
+  std::vector<int> ExtinctionBefore;
   double BucketScale = 0.0;
   OpacitySemantics Semantics = OpacitySemantics::GPUCompatible;
   double EmissionFactor = 1.0;

@@ -336,6 +336,10 @@ void vtkHighOrderVolumeRepresentation::SetUseDepthBuffer(int use)
 {
   this->Mapper->SetUseDepthBuffer(use != 0);
 }
+void vtkHighOrderVolumeRepresentation::SetSkipTransparentCells(int skip)
+{
+  this->Mapper->SetSkipTransparentCells(skip != 0);
+}
 void vtkHighOrderVolumeRepresentation::AddIsosurface(
   double value, double r, double g, double b, double opacity)
 {

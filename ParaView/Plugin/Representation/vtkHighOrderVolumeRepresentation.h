@@ -82,6 +82,7 @@ public:
   void SetProjectionColorMethod(int method);
   void SetProjectionOrder(int order);
   void SetUseDepthBuffer(int use);
+  void SetSkipTransparentCells(int skip);
   ///@}
 
   ///@{

@@ -19,8 +19,13 @@
 // Every timed frame is renderWindow->Render() followed by WaitForCompletion() (glFinish),
 // so asynchronous OpenGL work is counted.
 //
+// With --transparent-below F the transfer function has no opacity over the lowest fraction
+// F of the scalar range, and a row hov_full renders as hov_vis with SkipTransparentCells off
+// (every cell integrated): what skipping the cells that lie there saves.
+//
 // Usage: hovBenchRender [--data DIR] [--frames N] [--size S] [--extent E] [--azimuth DEG]
 //                       [--mesh bracket|rt|all] [--skip-raycast-large] [--out DIR]
+//                       [--transparent-below F] [--only KEYS]
 // Run under xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" (Debian's VTK renders only via GLX).
 // Exit status: 0 if every render succeeded without VTK errors and gave a non-black image.
 //
@@ -65,8 +70,10 @@ void Usage(const char* argv0)
        "  --mesh M              bracket, rt or all (default all)\n"
        "  --skip-raycast-large  skip vtkUnstructuredGridVolumeRayCastMapper on the generated mesh\n"
        "  --out DIR             write the last frame of every run as PNG into DIR\n"
+       "  --transparent-below F no opacity over the lowest fraction F of the scalar range\n"
+       "                        (our mapper skips the cells that lie there: hov_full does not)\n"
        "  --only KEYS           run only these mappers (comma-separated: hov_vis, hov_pix,\n"
-       "                        pt, rc; e.g. to profile one of them)\n"
+       "                        hov_full, pt, rc; e.g. to profile one of them)\n"
        "Run under xvfb-run -a -s \"-screen 0 1280x1024x24 -noreset\".\n";
 }
 /// True if --only is not given or lists @p key.
@@ -126,11 +133,22 @@ int main(int argc, char* argv[])
       for (size_t at; (at = list.find(',')) != std::string::npos; list.erase(0, at + 1))
       {
         const std::string key = list.substr(0, at);
-        if (key != "hov_vis" && key != "hov_pix" && key != "pt" && key != "rc")
+        if (key != "hov_vis" && key != "hov_pix" && key != "hov_full" && key != "pt" &&
+          key != "rc")
         {
-          std::cerr << "--only: unknown mapper key '" << key << "' (hov_vis, hov_pix, pt, rc)\n";
+          std::cerr << "--only: unknown mapper key '" << key
+                    << "' (hov_vis, hov_pix, hov_full, pt, rc)\n";
           return 2;
         }
+      }
+    }
+    else if (a == "--transparent-below")
+    {
+      opt.TransparentBelow = std::atof(next("a fraction"));
+      if (!(opt.TransparentBelow >= 0.0 && opt.TransparentBelow < 1.0))
+      {
+        std::cerr << "--transparent-below must be in [0, 1)\n";
+        return 2;
       }
     }
     else if (a == "--out")
@@ -207,6 +225,16 @@ int main(int argc, char* argv[])
         std::string("vtkHighOrderVolumeMapper (exact, VTK-unstructured, ") +
           (perPixel ? "per-pixel" : "visibility") + " sort)",
         m, errors));
+    }
+    if (opt.TransparentBelow > 0.0 && Wanted(opt, "hov_full"))
+    {
+      // Every cell integrated, the transparent ones too: what the skip saves.
+      auto m = vtkSmartPointer<vtkHighOrderVolumeMapper>::New();
+      m->SetIntegrationMethodToExact();
+      m->SetOpacitySemanticsToVTKUnstructured();
+      m->SkipTransparentCellsOff();
+      runs.push_back(Prepare(opt, mesh, "hov_full",
+        "vtkHighOrderVolumeMapper (as hov_vis, SkipTransparentCells off)", m, errors));
     }
     if (Wanted(opt, "pt"))
     {

@@ -42,6 +42,8 @@ struct Options
   double AzimuthStep = 7.0;
   bool SkipRayCastLarge = false;
   std::string Only; // comma-separated row keys to run (empty: all)
+  /// > 0: no opacity over the lowest fraction of the scalar range (MakeProperty()).
+  double TransparentBelow = 0.0;
 };
 
 struct Mesh
@@ -100,7 +102,10 @@ vtkIdType CountTetras(vtkUnstructuredGrid* grid);
 
 /// The demo's transfer function (Utilities/hov_demo.py): 7 colour and opacity nodes at the
 /// same scalars, low faint blue -> cyan -> green -> yellow -> orange -> red, opacity rising.
-vtkSmartPointer<vtkVolumeProperty> MakeProperty(const double range[2], double unitDistance);
+/// With @p transparentBelow = f in (0, 1): opacity 0 from the start of the range to the
+/// fraction f of it (the nodes there set to 0, one added at f), the rest as before.
+vtkSmartPointer<vtkVolumeProperty> MakeProperty(
+  const double range[2], double unitDistance, double transparentBelow = 0.0);
 
 /// Oblique view (azimuth 35, elevation 30 from +z) of the bounding box, fitted like
 /// vtkRenderer::ResetCamera, with a fixed clipping range enclosing the bounding sphere.

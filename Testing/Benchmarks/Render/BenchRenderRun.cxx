@@ -123,7 +123,8 @@ std::unique_ptr<Run> Prepare(const Options& opt, const Mesh& mesh, const std::st
   run->Mapper = mapper;
   errors.Watch(mapper);
   mapper->SetInputDataObject(mesh.Grid);
-  vtkSmartPointer<vtkVolumeProperty> prop = MakeProperty(mesh.Range, mesh.UnitDistance);
+  vtkSmartPointer<vtkVolumeProperty> prop =
+    MakeProperty(mesh.Range, mesh.UnitDistance, opt.TransparentBelow);
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(prop);

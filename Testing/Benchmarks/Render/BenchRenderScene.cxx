@@ -29,7 +29,8 @@ vtkIdType CountTetras(vtkUnstructuredGrid* grid)
   return n;
 }
 
-vtkSmartPointer<vtkVolumeProperty> MakeProperty(const double range[2], double unitDistance)
+vtkSmartPointer<vtkVolumeProperty> MakeProperty(
+  const double range[2], double unitDistance, double transparentBelow)
 {
   static const double nodes[7][5] = {
     { 0.00, 0.15, 0.25, 0.90, 0.02 },
@@ -47,7 +48,11 @@ vtkSmartPointer<vtkVolumeProperty> MakeProperty(const double range[2], double un
   {
     const double s = range[0] + n[0] * span;
     ctf->AddRGBPoint(s, n[1], n[2], n[3]);
-    otf->AddPoint(s, n[4]);
+    otf->AddPoint(s, n[0] <= transparentBelow ? 0.0 : n[4]);
+  }
+  if (transparentBelow > 0.0 && transparentBelow < 1.0)
+  {
+    otf->AddPoint(range[0] + transparentBelow * span, 0.0);
   }
   auto prop = vtkSmartPointer<vtkVolumeProperty>::New();
   prop->SetColor(ctf);

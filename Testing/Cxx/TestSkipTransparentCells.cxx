@@ -1,0 +1,197 @@
+// vtkHighOrderVolumeMapper::SkipTransparentCells (CPU_ACCURATE, default on)
+// skips each tetrahedron whose scalar range lies where the transfer function
+// has no extinction. On the bundled bracket (von Mises stress, 203 x 157) with
+// no opacity below 17.3 MPa, against the same render with the option off:
+//  - in each opacity semantics, both cell orderings and both ways of building
+//    the cell records, many cells are skipped (and none with the option off),
+//    fewer segments are integrated, and the double images agree to 1e-12
+//    (each skipped segment is exactly zero; only the round-off of a computed
+//    scalar just outside a cell's range can differ);
+//  - under Wilhelms-Van Gelder emission (glow without extinction) and with a
+//    transfer function that absorbs everywhere nothing is skipped and the
+//    images are bit for bit the same;
+//  - with no extinction over the whole data range every cell is skipped, the
+//    image is empty, and the mapper says why, as it does with the option off.
+#include "hovTestImages.h"
+#include "hovTestMixed.h"
+#include "hovTestScenes.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkPiecewiseFunction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+using namespace hovTest;
+
+namespace
+{
+/// Largest |a - b| over all values (+inf if the sizes differ), and how many differ.
+double MaxDiff(const Image& a, const Image& b, size_t& differ)
+{
+  differ = 0;
+  if (a.V.size() != b.V.size())
+  {
+    return HUGE_VAL;
+  }
+  double worst = 0;
+  for (size_t i = 0; i < a.V.size(); ++i)
+  {
+    worst = std::max(worst, std::abs(a.V[i] - b.V[i]));
+    differ += a.V[i] != b.V[i];
+  }
+  return worst;
+}
+
+/// The bracket's opacity with none below @p zeroBelow (nodes 0 and that value at 0).
+void SetOpacity(VolumeScene& scene, double zeroBelow)
+{
+  vtkPiecewiseFunction* o = scene.Tf.Opacity;
+  o->RemoveAllPoints();
+  o->AddPoint(0.0, 0.0);
+  o->AddPoint(zeroBelow, 0.0);
+  const double nodes[3][2] = { { 30.0, 0.3 }, { 80.0, 0.6 }, { 170.0, 0.9 } };
+  for (const auto& n : nodes)
+  {
+    if (n[0] > zeroBelow)
+    {
+      o->AddPoint(n[0], n[1]);
+    }
+  }
+}
+
+struct Pair
+{
+  Image On, Off;
+  vtkIdType SkippedOn = -1, SkippedOff = -1, SegmentsOn = -1, SegmentsOff = -1;
+  int Status[2] = { 0, 0 };
+};
+
+Pair RenderBoth(VolumeScene& scene, vtkCamera* camera)
+{
+  Pair p;
+  vtkHighOrderVolumeMapper* mapper = scene.Mapper;
+  mapper->SkipTransparentCellsOn();
+  p.On = RenderDouble(mapper, camera, scene.Volume, 203, 157, &p.Status[0]);
+  p.SkippedOn = mapper->GetNumberOfTransparentCells();
+  p.SegmentsOn = mapper->GetNumberOfSegments();
+  mapper->SkipTransparentCellsOff();
+  p.Off = RenderDouble(mapper, camera, scene.Volume, 203, 157, &p.Status[1]);
+  p.SkippedOff = mapper->GetNumberOfTransparentCells();
+  p.SegmentsOff = mapper->GetNumberOfSegments();
+  mapper->SkipTransparentCellsOn();
+  return p;
+}
+}
+
+int TestSkipTransparentCells(int argc, char* argv[])
+{
+  Checker ck;
+  std::unique_ptr<VolumeScene> bracket = BracketScene(ck, argc, argv);
+  if (!bracket)
+  {
+    return ck.Result();
+  }
+  vtkHighOrderVolumeMapper* mapper = bracket->Mapper;
+  mapper->SetRenderModeToCPUAccurate();
+  ck.Check(mapper->GetSkipTransparentCells(), "on by default");
+  vtkNew<vtkCamera> camera;
+  BracketCamera(camera);
+  const vtkIdType cells = 56071; // the bracket's tetrahedra
+
+  SetOpacity(*bracket, 17.3);
+  for (const int semantics : { vtkHighOrderVolumeMapper::GPU_COMPATIBLE,
+         vtkHighOrderVolumeMapper::VTK_UNSTRUCTURED, vtkHighOrderVolumeMapper::RAW_EXTINCTION })
+  {
+    mapper->SetOpacitySemantics(semantics);
+    for (const int order :
+      { vtkHighOrderVolumeMapper::VISIBILITY_SORT, vtkHighOrderVolumeMapper::PER_PIXEL_SORT })
+    {
+      mapper->SetCellOrdering(order);
+      for (const int memory : { 256, 0 })
+      {
+        mapper->SetCellRecordMemory(memory);
+        const std::string what = "semantics " + std::to_string(semantics) + ", ordering " +
+          std::to_string(order) + ", records " + std::to_string(memory) + " MiB";
+        const Pair p = RenderBoth(*bracket, camera);
+        const Sanity sane = CheckImage(p.On);
+        ck.Check(p.Status[0] == 1 && p.Status[1] == 1 && sane.NonFinite == 0 &&
+            sane.Covered > 1000,
+          what + ": rendered, " + std::to_string(sane.Covered) + " covered pixels");
+        ck.Check(p.SkippedOn > cells / 4 && p.SkippedOn < cells && p.SkippedOff == 0,
+          what + ": " + std::to_string(p.SkippedOn) + " cells skipped (" +
+            std::to_string(p.SkippedOff) + " with the option off)");
+        ck.Check(p.SegmentsOn > 0 && p.SegmentsOn < p.SegmentsOff,
+          what + ": " + std::to_string(p.SegmentsOn) + " segments against " +
+            std::to_string(p.SegmentsOff));
+        size_t differ = 0;
+        const double worst = MaxDiff(p.On, p.Off, differ);
+        ck.Check(worst <= 1e-12,
+          what + ": images agree, max |diff| " + std::to_string(worst) + " (" +
+            std::to_string(differ) + " values differ)");
+      }
+    }
+  }
+  mapper->SetOpacitySemantics(vtkHighOrderVolumeMapper::GPU_COMPATIBLE);
+  mapper->SetCellOrdering(vtkHighOrderVolumeMapper::VISIBILITY_SORT);
+  mapper->SetCellRecordMemory(256);
+  ck.Check(bracket->NoMessages(),
+    "no messages ('" + Msg(bracket->Observer->GetWarningMessage()) + "')");
+
+  // Nothing to skip: glow without extinction, and a function with none zero.
+  mapper->SetEmissionModel(vtkHighOrderVolumeMapper::WILHELMS_VAN_GELDER);
+  {
+    const Pair p = RenderBoth(*bracket, camera);
+    size_t differ = 0;
+    MaxDiff(p.On, p.Off, differ);
+    // Pixels that only glow (colour, no opacity): the transparent cells' share.
+    size_t glow = 0;
+    for (size_t i = 0; i + 3 < p.On.V.size(); i += 4)
+    {
+      glow += p.On.V[i + 3] == 0 && p.On.V[i] + p.On.V[i + 1] + p.On.V[i + 2] > 0;
+    }
+    ck.Check(p.SkippedOn == 0 && differ == 0 && glow > 1000,
+      "Wilhelms-Van Gelder: none skipped (" + std::to_string(p.SkippedOn) + "), " +
+        std::to_string(differ) + " values differ, " + std::to_string(glow) +
+        " pixels glow without opacity");
+  }
+  mapper->SetEmissionModel(vtkHighOrderVolumeMapper::WILLIAMS_MAX);
+  SetOpacity(*bracket, 0.0);
+  bracket->Tf.Opacity->AddPoint(0.0, 0.02);
+  {
+    const Pair p = RenderBoth(*bracket, camera);
+    size_t differ = 0;
+    MaxDiff(p.On, p.Off, differ);
+    const size_t covered = CheckImage(p.On).Covered;
+    ck.Check(p.SkippedOn == 0 && differ == 0 && covered > 1000,
+      "opacity everywhere: none skipped (" + std::to_string(p.SkippedOn) + "), " +
+        std::to_string(differ) + " values differ, " + std::to_string(covered) + " covered");
+  }
+  ck.Check(bracket->NoMessages(),
+    "no messages ('" + Msg(bracket->Observer->GetWarningMessage()) + "')");
+
+  // No extinction over the data range (the bracket's stress stays below 1e4):
+  // an empty image either way, and a message either way.
+  vtkPiecewiseFunction* o = bracket->Tf.Opacity;
+  o->RemoveAllPoints();
+  o->AddPoint(0.0, 0.0);
+  o->AddPoint(1e4, 0.0);
+  o->AddPoint(2e4, 0.5);
+  for (const bool skip : { true, false })
+  {
+    bracket->Observer->Clear();
+    mapper->SetSkipTransparentCells(skip);
+    int status = 0;
+    const Image img = RenderDouble(mapper, camera, bracket->Volume, 203, 157, &status);
+    const std::string warning = Msg(bracket->Observer->GetWarningMessage());
+    ck.Check(CheckImage(img).Covered == 0 && !warning.empty() &&
+        mapper->GetNumberOfTransparentCells() == (skip ? cells : 0),
+      std::string("transparent over the data range, skip ") + (skip ? "on" : "off") + ": " +
+        std::to_string(CheckImage(img).Covered) + " covered pixels, " +
+        std::to_string(mapper->GetNumberOfTransparentCells()) + " skipped, warning '" +
+        warning + "'");
+  }
+  return ck.Result();
+}
