@@ -229,7 +229,8 @@ def standalone_render(case, camera, size, catcher=None):
         "AccurateBlendMode": lambda v: mapper.SetBlendMode(
             ["Composite", "Maximum intensity", "Minimum intensity", "Average intensity"].index(v)),
         "CellOrdering": lambda v: mapper.SetCellOrdering(
-            ["Visibility sort", "Per-pixel sort"].index(v))}
+            ["Visibility sort", "Per-pixel sort"].index(v)),
+        "SkipTransparentCells": lambda v: mapper.SetSkipTransparentCells(bool(v))}
     for name, value in case["properties"].items():
         if name in setters:
             setters[name](value)

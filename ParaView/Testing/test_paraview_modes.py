@@ -3,7 +3,7 @@ through ParaView's "Accurate Volume" (pvbatch, one rank), each compared with the
 module's own float image of the same camera and property (this process).
 
 Two more render the bracket's maximum (CPU) and average (ray cast) intensity through the
-AccurateBlendMode property. Another renders the bracket with ParaView's default colour map (Cool to Warm: Diverging,
+AccurateBlendMode property, one the bracket (CPU) with SkipTransparentCells off. Another renders the bracket with ParaView's default colour map (Cool to Warm: Diverging,
 discretized to 256 steps); its standalone reference uses the same map continuous, linearised
 to 1e-4 (what the plugin does with it).
 
@@ -36,6 +36,12 @@ def main():
     for mode, blend in ((0, "Maximum intensity"), (2, "Average intensity")):
         cases.append(hpt.make_case(args, "bracket", mode, tag="bracket_%d_%s" % (
             mode, blend.split()[0].lower()), properties={"AccurateBlendMode": blend}))
+    # The representation's SkipTransparentCells property reaches the mapper (off: every
+    # cell integrated; this function absorbs everywhere, so the image is the same). The
+    # bracket's representation is shared by its cases: the blend mode is set back.
+    cases.append(hpt.make_case(args, "bracket", 0, tag="bracket_0_all_cells",
+                               properties={"SkipTransparentCells": 0,
+                                           "AccurateBlendMode": "Composite"}))
     out = os.path.join(args.temp, "paraview_modes")
     results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
     messages = hpt.messages_by_case(stderr)
