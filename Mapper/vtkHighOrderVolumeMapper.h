@@ -189,12 +189,14 @@ public:
   ///@{
   /// CPU_ACCURATE with composite blending and Williams-Max emission, no
   /// isosurface, separate colour array or splatting (default on): skip each
-  /// tetrahedron whose scalar range lies where the transfer function has no
-  /// extinction. Its segments would each add exactly zero (the field is
-  /// linear, so its scalars stay in that range), so the image is the same up
-  /// to round-off in the scalars at a range's edge, at none of their cost.
+  /// tetrahedron or linear cell (voxel, hexahedron, wedge, pyramid) whose
+  /// scalar range lies where the transfer function has no extinction. Its
+  /// segments would each add exactly zero (shape functions >= 0: the field
+  /// stays within the node values), so the image is the same up to round-off
+  /// in the scalars at a range's edge, at none of their cost. Quadratic cells
+  /// are never skipped.
   /// Off: every cell is integrated (for timing or checks).
-  /// GetNumberOfTransparentCells(): the tetrahedra skipped by the last render.
+  /// GetNumberOfTransparentCells(): the cells skipped by the last render.
   vtkSetMacro(SkipTransparentCells, bool);
   vtkGetMacro(SkipTransparentCells, bool);
   vtkBooleanMacro(SkipTransparentCells, bool);

@@ -1,6 +1,7 @@
 #include "hovCellRecords.h"
 
-#include "hovCellSetup.h" // the cells
+#include "hovCellSetup.h"    // the cells
+#include "hovGeneralCells.h" // their shapes and node ranges
 
 #include "hovPixelRange.h"       // pixel boxes of far-off cells
 #include "hovRayIntegrator.h"    // IntervalOfRange
@@ -30,6 +31,22 @@ void GeneralRecord(const hov::GeneralCellTile::FrameData& general, int g, int wi
   cell.PixelBox = hov::GeneralCellTile::PixelBox(general, g, width, height, projectable);
   cell.Projectable = projectable;
   cell.Interval = -2;
+}
+
+/**
+ * True if general cell @p g is linear (voxel, hexahedron, wedge, pyramid:
+ * shape functions >= 0 in the cell, so the field stays within its node
+ * values) and @p tf has no extinction over that range. A quadratic cell's
+ * field can leave its node range: never skipped.
+ */
+bool TransparentGeneral(
+  const hov::GeneralCellTile::FrameData& general, int g, const hov::TransferFunction& tf)
+{
+  const hov::GeneralCells::Cell& cell = general.Cells->GetCells()[g];
+  const bool linear = cell.Shape == hov::CellShape::Voxel ||
+    cell.Shape == hov::CellShape::Hexahedron || cell.Shape == hov::CellShape::Wedge ||
+    cell.Shape == hov::CellShape::Pyramid;
+  return linear && tf.ZeroExtinctionOver(cell.ScalarMin, cell.ScalarMax);
 }
 
 /// The record of tetrahedron @p tet with pixel box @p box (see
@@ -123,6 +140,12 @@ vtkIdType hov::CellRecords::Build(const CellSetup& setup, const std::vector<vtkI
         this->GeneralOf[k] = order[k] < numTets ? -1 : static_cast<int>(order[k] - numTets);
         if (this->GeneralOf[k] >= 0)
         {
+          if (skipTransparent && TransparentGeneral(general, this->GeneralOf[k], tf))
+          {
+            this->Boxes[k] = CellBox{ 0, -1, 0, -1 }; // in no tile
+            ++skipped;
+            continue;
+          }
           GeneralRecord(general, this->GeneralOf[k], width, height, cell);
           this->Boxes[k] = cell.PixelBox;
           continue;

@@ -48,9 +48,10 @@ public:
    * @p general's GeneralOf is pointed at this object's general-cell indices.
    * The arguments must outlive the frame (Make() reads them).
    *
-   * With @p skipTransparent, a tetrahedron whose scalar range lies where
-   * @p tf has no extinction (TransferFunction::ZeroExtinctionOver: the field
-   * is linear in it, so its exact scalars stay in that range) gets an empty
+   * With @p skipTransparent, a tetrahedron or a linear general cell (voxel,
+   * hexahedron, wedge, pyramid) whose scalar range lies where @p tf has no
+   * extinction (TransferFunction::ZeroExtinctionOver; their shape functions
+   * are >= 0, so the exact field stays within the node values) gets an empty
    * box: it is binned nowhere and none of its segments, each exactly zero
    * under Williams-Max emission, is computed. Returns the number of such
    * cells.

@@ -51,8 +51,9 @@ struct ProjectorSettings
   /// Order each pixel's segments by entry distance instead of trusting the
   /// cell order (exact for any set of non-overlapping cells).
   bool PerPixelSort = false;
-  /// Bin no tetrahedron whose scalar range has no extinction (hov::CellRecords;
-  /// only where each of its segments is exactly zero: Williams-Max emission).
+  /// Bin no tetrahedron or linear cell whose scalar range has no extinction
+  /// (hov::CellRecords; only where each of its segments is exactly zero:
+  /// Williams-Max emission).
   bool SkipTransparent = false;
   /// If set: called between tile batches with the fraction done; true aborts (hovTileBatches.h).
   ProgressFunction Progress;
@@ -65,7 +66,7 @@ struct ProjectorStatistics
   vtkIdType Segments = 0;          ///< ray-cell segments integrated
   vtkIdType Pieces = 0;            ///< pieces integrated (>= Segments)
   vtkIdType Records = 0;           ///< cell records built (hov::CellRecords)
-  vtkIdType TransparentCells = 0;  ///< tetrahedra skipped: no extinction over their range
+  vtkIdType TransparentCells = 0;  ///< cells skipped: no extinction over their range
   double ShadingErrorEstimate = 0.0; ///< worst estimate of a shaded quadrature segment
   bool Aborted = false;            ///< Progress returned true: unrendered tiles are zero
   /// Columns [x0, x1) and rows [y0, y1), {x0, x1, y0, y1}, outside of which

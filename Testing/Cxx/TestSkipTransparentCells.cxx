@@ -11,7 +11,12 @@
 //    transfer function that absorbs everywhere nothing is skipped and the
 //    images are bit for bit the same;
 //  - with no extinction over the whole data range every cell is skipped, the
-//    image is empty, and the mapper says why, as it does with the option off.
+//    image is empty, and the mapper says why, as it does with the option off;
+//  - on a lattice of hexahedra, wedges and pyramids (linear: the field stays
+//    within the node values) the low cells are skipped too, with the same
+//    image to 1e-12; on a lattice of quadratic tetrahedra (whose field can
+//    leave the node range) none is, and the images are bit for bit the same.
+#include "hovTestAnalytic.h"
 #include "hovTestImages.h"
 #include "hovTestMixed.h"
 #include "hovTestScenes.h"
@@ -69,19 +74,72 @@ struct Pair
   int Status[2] = { 0, 0 };
 };
 
-Pair RenderBoth(VolumeScene& scene, vtkCamera* camera)
+Pair RenderBoth(VolumeScene& scene, vtkCamera* camera, int w = 203, int h = 157)
 {
   Pair p;
   vtkHighOrderVolumeMapper* mapper = scene.Mapper;
   mapper->SkipTransparentCellsOn();
-  p.On = RenderDouble(mapper, camera, scene.Volume, 203, 157, &p.Status[0]);
+  p.On = RenderDouble(mapper, camera, scene.Volume, w, h, &p.Status[0]);
   p.SkippedOn = mapper->GetNumberOfTransparentCells();
   p.SegmentsOn = mapper->GetNumberOfSegments();
   mapper->SkipTransparentCellsOff();
-  p.Off = RenderDouble(mapper, camera, scene.Volume, 203, 157, &p.Status[1]);
+  p.Off = RenderDouble(mapper, camera, scene.Volume, w, h, &p.Status[1]);
   p.SkippedOff = mapper->GetNumberOfTransparentCells();
   p.SegmentsOff = mapper->GetNumberOfSegments();
   mapper->SkipTransparentCellsOn();
+  return p;
+}
+
+double Field(double x, double y, double z)
+{
+  return 0.5 + 0.4 * x - 0.3 * y + 0.25 * z + 0.2 * x * y;
+}
+
+/// A 4x4x4 lattice of skewed cubes, each split as @p splits (in turn).
+MeshBuilder Lattice(const std::vector<CubeSplit>& splits)
+{
+  MeshBuilder m;
+  const double o[3] = { -0.9, -0.8, -0.85 };
+  const double a[3][3] = { { 0.45, 0.04, 0.0 }, { -0.03, 0.41, 0.05 }, { 0.04, 0.0, 0.44 } };
+  const std::vector<vtkIdType> ids = AddLattice(m, 4, 4, 4, o, a, Field);
+  size_t n = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        AddCube(m, LatticeCube(ids, 4, 4, i, j, k), splits[n++ % splits.size()], Field);
+      }
+    }
+  }
+  return m;
+}
+
+/// Renders @p lattice with no opacity below 0.45 both ways; returns the pair.
+Pair RenderLattice(Checker& ck, const MeshBuilder& lattice, const std::string& label)
+{
+  VolumeScene scene(lattice.Grid());
+  DefaultTF(scene.Tf, 0.5);
+  vtkPiecewiseFunction* o = scene.Tf.Opacity;
+  o->RemoveAllPoints();
+  o->AddPoint(-1.0, 0.0);
+  o->AddPoint(0.45, 0.0);
+  o->AddPoint(0.6, 0.5);
+  o->AddPoint(1.75, 0.8);
+  scene.Mapper->SetRenderModeToCPUAccurate();
+  vtkNew<vtkCamera> cam;
+  const double focal[3] = { 0.0, 0.0, 0.0 };
+  const double dir[3] = { 0.5, -0.62, 0.6 };
+  const double up[3] = { 0, 0, 1 };
+  PlaceCamera(cam, focal, dir, 5.0, up, false, 36.0);
+  cam->SetClippingRange(1.0, 20.0);
+  const Pair p = RenderBoth(scene, cam, 96, 80);
+  ck.Check(p.Status[0] == 1 && p.Status[1] == 1 && CheckImage(p.On).Covered > 96 * 80 / 10 &&
+      scene.NoMessages(),
+    label + ": rendered, " + std::to_string(CheckImage(p.On).Covered) + " covered pixels, " +
+      std::to_string(scene.Mapper->GetNumberOfRenderedCells()) + " cells, messages '" +
+      Msg(scene.Observer->GetWarningMessage()) + "'");
   return p;
 }
 }
@@ -192,6 +250,27 @@ int TestSkipTransparentCells(int argc, char* argv[])
         std::to_string(CheckImage(img).Covered) + " covered pixels, " +
         std::to_string(mapper->GetNumberOfTransparentCells()) + " skipped, warning '" +
         warning + "'");
+  }
+
+  // General cells: linear ones skipped, quadratic ones not.
+  {
+    const Pair p = RenderLattice(ck,
+      Lattice({ CubeSplit::Hexahedron, CubeSplit::Wedges, CubeSplit::Pyramids }), "linear lattice");
+    size_t differ = 0;
+    const double worst = MaxDiff(p.On, p.Off, differ);
+    ck.Check(p.SkippedOn > 10 && p.SkippedOff == 0 && p.SegmentsOn < p.SegmentsOff &&
+        worst <= 1e-12,
+      "linear lattice: " + std::to_string(p.SkippedOn) + " cells skipped, segments " +
+        std::to_string(p.SegmentsOn) + " against " + std::to_string(p.SegmentsOff) +
+        ", max |diff| " + std::to_string(worst));
+  }
+  {
+    const Pair p = RenderLattice(ck, Lattice({ CubeSplit::QuadraticTetras }), "quadratic lattice");
+    size_t differ = 0;
+    MaxDiff(p.On, p.Off, differ);
+    ck.Check(p.SkippedOn == 0 && differ == 0,
+      "quadratic lattice: none skipped (" + std::to_string(p.SkippedOn) + "), " +
+        std::to_string(differ) + " values differ");
   }
   return ck.Result();
 }
