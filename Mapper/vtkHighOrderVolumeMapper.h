@@ -187,14 +187,16 @@ public:
   ///@}
 
   ///@{
-  /// CPU_ACCURATE with composite blending and Williams-Max emission, no
-  /// isosurface, separate colour array or splatting (default on): skip each
+  /// CPU_ACCURATE with composite blending and Williams-Max emission, on the
+  /// plain volume path (not with isosurfaces, a separate colour or isosurface
+  /// array, splatting, volume shading or gradient opacity) (default on): skip each
   /// tetrahedron or linear cell (voxel, hexahedron, wedge, pyramid) whose
   /// scalar range lies where the transfer function has no extinction. Its
   /// segments would each add exactly zero (shape functions >= 0: the field
-  /// stays within the node values), so the image is the same up to round-off
-  /// in the scalars at a range's edge, at none of their cost. Quadratic cells
-  /// are never skipped.
+  /// stays within the node values), so the image is the same, at none of
+  /// their cost, but where integrating them rounds a scalar past a node
+  /// (README, "Transparent cells"). Quadratic cells are never skipped. The
+  /// witness (GetWitnessViolations) then checks the order of the other cells.
   /// Off: every cell is integrated (for timing or checks).
   /// GetNumberOfTransparentCells(): the cells skipped by the last render.
   vtkSetMacro(SkipTransparentCells, bool);

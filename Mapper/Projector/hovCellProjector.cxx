@@ -163,7 +163,7 @@ hov::CellProjector::Statistics hov::CellProjector::Render(const CellSetup& setup
   stats.TransparentCells = transparent;
   if (buf.Records.IsWhole())
   {
-    stats.Records = static_cast<vtkIdType>(buf.Records.GetRecords().size());
+    stats.Records = static_cast<vtkIdType>(buf.Records.GetRecords().size()) - transparent;
   }
   if (!buf.Records.IsWhole())
   {

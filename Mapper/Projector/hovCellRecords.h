@@ -60,7 +60,8 @@ public:
     const ProjectedPoints& points, const TransferFunction& tf, int width, int height,
     GeneralCellTile::FrameData& general, size_t budgetBytes, bool skipTransparent = false);
 
-  /// True if every record was built (GetRecords()); false: tiles use Make().
+  /// True if every record was built (GetRecords(); but those of skipped,
+  /// transparent cells, which no tile reads); false: tiles use Make().
   bool IsWhole() const { return this->Whole; }
   /// The records of the ordered cells (IsWhole() only; empty otherwise).
   const std::vector<CellRecord>& GetRecords() const { return this->Records; }
@@ -74,7 +75,8 @@ public:
    * the boxes), frees the boxes and general-cell indices.
    */
   void EndFrame();
-  /// The record of ordered cell @p k, as Build() would have made it.
+  /// The record of ordered cell @p k, as Build() would have made it (for a
+  /// cell that Build() did not skip: only those are binned).
   void Make(vtkIdType k, CellRecord& record) const;
   /// Make() reads scattered memory: fetch ordered cell @p k's cell, then (a
   /// few cells later, once the cell has arrived) its points.

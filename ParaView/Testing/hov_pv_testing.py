@@ -256,6 +256,7 @@ def standalone_render(case, camera, size, catcher=None):
     rgba = vtk_to_numpy(img.GetPointData().GetArray("RGBA")).reshape(h, w, 4).astype(np.float64)
     info = {"RenderedCells": mapper.GetNumberOfRenderedCells(),
             "SkippedCells": mapper.GetNumberOfSkippedCells(),
+            "TransparentCells": mapper.GetNumberOfTransparentCells(),
             "WitnessViolations": mapper.GetWitnessViolations(),
             "LastImageTime": mapper.GetLastImageTime()}
     messages = catcher.take() if catcher else ""

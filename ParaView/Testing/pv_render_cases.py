@@ -25,7 +25,8 @@ from paraview.simple import (ColorBy, GetColorTransferFunction, GetOpacityTransf
                              Hide, LoadPlugin, Render, SaveScreenshot, Show,
                              XMLUnstructuredGridReader, CreateView, Delete)
 
-INFO = ["WitnessViolations", "RenderedCells", "SkippedCells", "PieceCells", "PieceCellTypes",
+INFO = ["WitnessViolations", "RenderedCells", "SkippedCells", "TransparentCells", "PieceCells",
+        "PieceCellTypes",
         "LastImageTime", "LastFrameTime", "RayCastErrorEstimate", "RenderCalls"]
 
 

@@ -3,7 +3,9 @@ through ParaView's "Accurate Volume" (pvbatch, one rank), each compared with the
 module's own float image of the same camera and property (this process).
 
 Two more render the bracket's maximum (CPU) and average (ray cast) intensity through the
-AccurateBlendMode property, one the bracket (CPU) with SkipTransparentCells off. Another renders the bracket with ParaView's default colour map (Cool to Warm: Diverging,
+AccurateBlendMode property. Two render the bracket (CPU) with no opacity over the lowest 30% of
+its range, SkipTransparentCells on and off: the same image, and the transparent cells (the
+TransparentCells information property) counted as the standalone mapper counts them. Another renders the bracket with ParaView's default colour map (Cool to Warm: Diverging,
 discretized to 256 steps); its standalone reference uses the same map continuous, linearised
 to 1e-4 (what the plugin does with it).
 
@@ -36,12 +38,18 @@ def main():
     for mode, blend in ((0, "Maximum intensity"), (2, "Average intensity")):
         cases.append(hpt.make_case(args, "bracket", mode, tag="bracket_%d_%s" % (
             mode, blend.split()[0].lower()), properties={"AccurateBlendMode": blend}))
-    # The representation's SkipTransparentCells property reaches the mapper (off: every
-    # cell integrated; this function absorbs everywhere, so the image is the same). The
-    # bracket's representation is shared by its cases: the blend mode is set back.
-    cases.append(hpt.make_case(args, "bracket", 0, tag="bracket_0_all_cells",
-                               properties={"SkipTransparentCells": 0,
-                                           "AccurateBlendMode": "Composite"}))
+    # SkipTransparentCells through the representation: no opacity over the lowest 30% of
+    # the range, the skip on (the default) and off; the same image, the transparent cells
+    # counted only with it on (TransparentCells, against the standalone mapper's count).
+    # The bracket's representation is shared by its cases: the blend mode is set back.
+    for skip in (1, 0):
+        case = hpt.make_case(args, "bracket", 0, tag="bracket_0_skip_%d" % skip,
+                             properties={"SkipTransparentCells": skip,
+                                         "AccurateBlendMode": "Composite"})
+        lo, hi = case["opacity"][0][0], case["opacity"][-1][0]
+        cut = lo + 0.3 * (hi - lo)
+        case["opacity"] = [[lo, 0.0], [cut, 0.0]] + [n for n in case["opacity"] if n[0] > cut]
+        cases.append(case)
     out = os.path.join(args.temp, "paraview_modes")
     results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
     messages = hpt.messages_by_case(stderr)
@@ -81,6 +89,11 @@ def main():
                   "%s: rendered/skipped cells %d/%d, standalone %d/%d" % (
                       name, info["RenderedCells"], info["SkippedCells"],
                       ref_info["RenderedCells"], ref_info["SkippedCells"]))
+        skip = case["properties"].get("SkipTransparentCells")
+        hpt.check(failures, info["TransparentCells"] == ref_info["TransparentCells"] and
+                  (skip is None or (info["TransparentCells"] > 0) == (skip == 1)),
+                  "%s: transparent cells %d, standalone %d" % (
+                      name, info["TransparentCells"], ref_info["TransparentCells"]))
         # One representation (and mapper) per dataset in the view: a message the mapper
         # prints once per input appears under the dataset's first case.
         pv_lines = [line for c in cases if c["dataset"] == case["dataset"]

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm> // std::max, std::swap
 #include <random>
 
 using namespace hovtest::tf;
@@ -86,6 +87,15 @@ TEST(TransferFunctionZeroExtinction, FixedRanges)
     EXPECT_FALSE(tf.ZeroExtinctionOver(2.0, Inf));
     EXPECT_FALSE(tf.ZeroExtinctionOver(-Inf, 0.25));
   }
+  // Opaque: a = 1 on [0.6, 1] (tau = +inf there), 0 below 0.5.
+  hov::TransferFunction opaque;
+  ASSERT_TRUE(opaque.Build(Spec({ { 0.0, 1, 1, 1 } },
+    { { 0.0, 0.0 }, { 0.5, 0.0 }, { 0.6, 1.0 }, { 1.0, 1.0 } },
+    hov::OpacitySemantics::GPUCompatible)));
+  EXPECT_TRUE(opaque.ZeroExtinctionOver(0.1, 0.4));
+  EXPECT_FALSE(opaque.ZeroExtinctionOver(0.1, 0.55));
+  EXPECT_FALSE(opaque.ZeroExtinctionOver(0.7, 0.8));
+  EXPECT_FALSE(opaque.ZeroExtinctionOver(2.0, 3.0));
   // No zero node, and no table.
   hov::TransferFunction positive;
   ASSERT_TRUE(positive.Build(Spec({ { 0.0, 1, 1, 1 } }, { { 0.0, 0.1 }, { 1.0, 0.2 } },
@@ -99,9 +109,11 @@ TEST(TransferFunctionZeroExtinction, FixedRanges)
 
 TEST(TransferFunctionZeroExtinction, SoundOnRandomTables)
 {
-  // Random tables with runs of zero opacity (some nodes repeated: jumps),
-  // random ranges, some ends exactly on nodes: every range called zero has
-  // tau == 0 wherever the oracle looks, and the zero answers are many.
+  // Random tables with runs of zero opacity (some nodes repeated: jumps; some
+  // opacities 1: opaque intervals, tau = +inf, in the GPU-compatible
+  // semantics), random ranges from below the first node to beyond the last,
+  // some ends exactly on nodes: every range called zero has tau == 0
+  // wherever the oracle looks, and the zero answers are many.
   std::mt19937_64 rng(20261206);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int zero = 0, ranges = 0;
@@ -112,7 +124,7 @@ TEST(TransferFunctionZeroExtinction, SoundOnRandomTables)
     const int n = 2 + static_cast<int>(12 * u(rng));
     for (int i = 0; i < n; ++i)
     {
-      const double a = u(rng) < 0.5 ? 0.0 : u(rng);
+      const double a = u(rng) < 0.5 ? 0.0 : (u(rng) < 0.2 ? 1.0 : u(rng));
       opacity.push_back({ x, a });
       if (u(rng) < 0.15)
       {
@@ -128,7 +140,7 @@ TEST(TransferFunctionZeroExtinction, SoundOnRandomTables)
     {
       auto pick = [&]() {
         return u(rng) < 0.3 ? nodes[static_cast<size_t>(u(rng) * nodes.size())]
-                            : -1.5 + (x + 1.0) * u(rng);
+                            : -1.5 + (x + 2.0) * u(rng); // to 0.5 past the last node
       };
       double lo = pick(), hi = pick();
       if (hi < lo)

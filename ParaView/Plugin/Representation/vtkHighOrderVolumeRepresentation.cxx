@@ -393,6 +393,10 @@ vtkIdType vtkHighOrderVolumeRepresentation::GetNumberOfSkippedCells()
 {
   return this->Mapper->GetNumberOfSkippedCells();
 }
+vtkIdType vtkHighOrderVolumeRepresentation::GetNumberOfTransparentCells()
+{
+  return this->Mapper->GetNumberOfTransparentCells();
+}
 double vtkHighOrderVolumeRepresentation::GetLastImageTime()
 {
   return this->Mapper->GetLastImageTime();

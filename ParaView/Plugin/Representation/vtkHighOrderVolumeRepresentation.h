@@ -117,6 +117,7 @@ public:
   vtkIdType GetWitnessViolations();
   vtkIdType GetNumberOfRenderedCells();
   vtkIdType GetNumberOfSkippedCells();
+  vtkIdType GetNumberOfTransparentCells();
   double GetLastImageTime();
   double GetLastFrameTime();
   double GetRayCastErrorEstimate();

@@ -144,8 +144,11 @@ int main(int argc, char* argv[])
     }
     else if (a == "--transparent-below")
     {
-      opt.TransparentBelow = std::atof(next("a fraction"));
-      if (!(opt.TransparentBelow >= 0.0 && opt.TransparentBelow < 1.0))
+      const char* text = next("a fraction");
+      char* end = nullptr;
+      opt.TransparentBelow = std::strtod(text, &end);
+      const double f = opt.TransparentBelow;
+      if (end == text || *end != '\0' || !(f >= 0.0 && f < 1.0))
       {
         std::cerr << "--transparent-below must be in [0, 1)\n";
         return 2;
@@ -226,7 +229,9 @@ int main(int argc, char* argv[])
           (perPixel ? "per-pixel" : "visibility") + " sort)",
         m, errors));
     }
-    if (opt.TransparentBelow > 0.0 && Wanted(opt, "hov_full"))
+    // (By default only with --transparent-below; --only hov_full asks for it anyway.)
+    if ((opt.TransparentBelow > 0.0 && Wanted(opt, "hov_full")) ||
+      ("," + opt.Only + ",").find(",hov_full,") != std::string::npos)
     {
       // Every cell integrated, the transparent ones too: what the skip saves.
       auto m = vtkSmartPointer<vtkHighOrderVolumeMapper>::New();
