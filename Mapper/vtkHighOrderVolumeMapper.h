@@ -197,6 +197,13 @@ public:
   /// their cost, but where integrating them rounds a scalar past a node
   /// (README, "Transparent cells"). Quadratic cells are never skipped. The
   /// witness (GetWitnessViolations) then checks the order of the other cells.
+  /// RAY_CAST with composite blending, without volume shading or gradient
+  /// opacity, under either emission model: a ray computes no interval (no
+  /// face search, no inversion) in a cell, curved or not, whose rigorous
+  /// field hull (Bernstein, not the node values) is invisible: no extinction
+  /// there and, under Wilhelms-Van Gelder, no colour. Such a segment is
+  /// exactly zero; the image changes only within the per-pixel tolerance, as
+  /// the field error budget is then spread over the visible segments.
   /// Off: every cell is integrated (for timing or checks).
   /// GetNumberOfTransparentCells(): the cells skipped by the last render.
   vtkSetMacro(SkipTransparentCells, bool);

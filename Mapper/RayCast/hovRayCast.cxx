@@ -55,7 +55,8 @@ bool hov::RayCast::SetInput(vtkUnstructuredGrid* grid, vtkDataArray* scalars, in
 
 bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
   const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
-  Issues* issues, const hov::ProgressFunction& progress, const hov::BlendSettings* blend) const
+  Issues* issues, const hov::ProgressFunction& progress, const hov::BlendSettings* blend,
+  const unsigned char* skipCells) const
 {
   std::atomic<long long> notConverged(0), notFinite(0), traced(0), segments(0), breakpoints(0);
   if (!this->Ready || !rgba)
@@ -89,7 +90,7 @@ bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction
           }
           else
           {
-            c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e, &stats);
+            c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e, &stats, skipCells);
           }
           if (!stats.Converged)
           {
@@ -130,4 +131,25 @@ bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction
     issues->Aborted = rowsDone < height;
   }
   return true;
+}
+
+long long hov::RayCast::MarkInvisibleCells(const hov::TransferFunction& tf,
+  hov::EmissionModel emission, std::vector<unsigned char>& flags) const
+{
+  const vtkIdType n = this->Ready ? static_cast<vtkIdType>(this->Caster.GetNumberOfCells()) : 0;
+  flags.assign(static_cast<size_t>(n), 0);
+  std::atomic<long long> count(0);
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    long long local = 0;
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      if (this->Caster.IsCellInvisible(c, tf, emission))
+      {
+        flags[static_cast<size_t>(c)] = 1;
+        ++local;
+      }
+    }
+    count += local;
+  });
+  return count.load();
 }

@@ -18,6 +18,10 @@
  * float RGBA, and optionally the per-pixel error estimate (ElVis's
  * "pixel-exact" target is an estimate below 1e-3 per channel).
  *
+ * MarkInvisibleCells() flags the cells a composite ray can skip under a
+ * table (their whole field hull invisible); Render() then computes no
+ * interval in them.
+ *
  * Used by vtkHighOrderVolumeMapper's RAY_CAST render mode.
  *
  * Thread safety: SetInput() is not thread safe; Render() runs its own
@@ -35,6 +39,7 @@
 #include "vtkType.h" // vtkMTimeType
 
 #include <string> // messages
+#include <vector> // cell flags
 
 class vtkDataArray;
 namespace hov
@@ -96,7 +101,17 @@ public:
   bool Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
     const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
     Issues* issues = nullptr, const hov::ProgressFunction& progress = {},
-    const hov::BlendSettings* blend = nullptr) const;
+    const hov::BlendSettings* blend = nullptr, const unsigned char* skipCells = nullptr) const;
+
+  /**
+   * One flag per caster cell in @p flags: 1 where the cell's rigorous field
+   * hull is invisible under @p tf (hov::CurvedRayCaster::IsCellInvisible;
+   * vtkSMPTools over the cells). Returns the number flagged. Pass the flags
+   * to Render() (composite, unshaded rays only: the caster ignores them
+   * otherwise).
+   */
+  long long MarkInvisibleCells(const hov::TransferFunction& tf, hov::EmissionModel emission,
+    std::vector<unsigned char>& flags) const;
 
 private:
   hov::CurvedRayCaster Caster;

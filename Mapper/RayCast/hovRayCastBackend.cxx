@@ -47,6 +47,7 @@ void hov::RayCastBackend::PrepareCaster(const RenderFrame& frame, vtkUnstructure
          << " cells): nothing rendered.";
     frame.Warning(text.str());
   }
+  this->InvisibleValid = false; // a new caster: its cells' flags are computed again
   this->Valid = true; // cached also when nothing is usable: one warning per input
   this->Key = key;
   this->Skipped = ok ? grid->GetNumberOfCells() - this->Caster.GetNumberOfCells() : -1;
@@ -93,6 +94,10 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   this->TransferFunction->SetRefinementBudget(QuadratureTableBudget);
   const bool visible = frame.UpdateTransferFunction(this->TransferFunction,
     std::max(s.GPUOpacityTolerance, 0.1 * s.RayCastTolerance), rebuilt);
+  if (rebuilt)
+  {
+    this->InvisibleValid = false; // a new table: the invisible cells change
+  }
   if (frame.Stats.RenderedCells == 0)
   {
     return 1; // nothing to render (warned above)
@@ -137,10 +142,23 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   const BlendSettings blend = BlendSettingsOf(frame);
   const bool blending = blend.Mode != BlendMode::Composite;
+  // Cells whose whole field hull is invisible compute no interval (composite,
+  // unshaded rays; SkipTransparentCells). The flags follow the table and the
+  // caster: recomputed when either was rebuilt or the emission model changed.
+  const bool shaded = (settings.Shading && settings.Shading->Shade) || settings.GradientOpacity;
+  const bool skip = s.SkipTransparentCells && !blending && !shaded;
+  if (skip && (!this->InvisibleValid || this->InvisibleEmission != s.Emission))
+  {
+    this->InvisibleCount = this->Caster.MarkInvisibleCells(
+      this->TransferFunction->GetTable(), s.Emission, this->Invisible);
+    this->InvisibleValid = true;
+    this->InvisibleEmission = s.Emission;
+  }
+  frame.Stats.TransparentCells = skip ? this->InvisibleCount : 0;
   this->Caster.Render(rays,
     blending ? this->TransferFunction->GetBlendTable() : this->TransferFunction->GetTable(),
     settings, this->RGBA.data(), error.data(), rayDepth, &issues, frame.Progress,
-    blending ? &blend : nullptr);
+    blending ? &blend : nullptr, skip && this->InvisibleCount > 0 ? this->Invisible.data() : nullptr);
   frame.Stats.Aborted = issues.Aborted;
   frame.Stats.Rays = issues.Rays;
   frame.Stats.Segments = issues.Segments;

@@ -11,7 +11,10 @@
  * tolerance: a finer table only adds breakpoints to locate); interactive
  * frames (RenderFrame::Interactive, chosen by the facade from the allocated
  * render time: hov::InteractionBudget) trace one ray per f x f block of
- * pixels at tolerance x10; rays stop at TerminationTransmittance. Output:
+ * pixels at tolerance x10; rays stop at TerminationTransmittance. With
+ * SkipTransparentCells, composite unshaded rays compute no interval in a
+ * cell whose rigorous field hull is invisible under the table (they would
+ * add exactly zero). Output:
  * the frame's image and the per-pixel error estimate (GetErrorImage()).
  *
  * Thread safety: rendering thread only (the caster runs vtkSMPTools).
@@ -63,6 +66,13 @@ private:
   vtkIdType Skipped = -1; ///< cells of the input the caster leaves out
   bool FeatureWarned = false;
   vtkNew<vtkHighOrderTransferFunction> TransferFunction;
+  /// Per caster cell: invisible over its whole field hull under the table
+  /// (hov::RayCast::MarkInvisibleCells), valid for InvisibleEmission until the
+  /// table or the caster is rebuilt.
+  std::vector<unsigned char> Invisible;
+  long long InvisibleCount = 0;
+  bool InvisibleValid = false;
+  EmissionModel InvisibleEmission = EmissionModel::WilliamsMax;
   vtkNew<vtkImageData> ErrorImage;
   std::vector<float> RGBA, Error, Depth;
 };

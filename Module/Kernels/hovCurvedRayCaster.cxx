@@ -287,8 +287,20 @@ void CurvedRayCaster::CollectCandidates(
   }
 }
 
+bool CurvedRayCaster::IsCellInvisible(
+  std::int64_t cell, const TransferFunction& tf, EmissionModel emission) const
+{
+  if (cell < 0 || cell >= static_cast<std::int64_t>(this->Cells.size()))
+  {
+    return false;
+  }
+  const Cell& c = this->Cells[static_cast<size_t>(cell)];
+  return CategorizeSegment(tf, c.FieldLo, c.FieldHi, emission).Category == SegmentCategory::Empty;
+}
+
 void CurvedRayCaster::CollectSegments(const double origin[3], const double direction[3],
-  double tMin, double tMax, std::vector<Segment>& segments, CurvedRayStats& st) const
+  double tMin, double tMax, std::vector<Segment>& segments, CurvedRayStats& st,
+  const unsigned char* skip) const
 {
   segments.clear();
   std::vector<int> candidates;
@@ -299,6 +311,10 @@ void CurvedRayCaster::CollectSegments(const double origin[3], const double direc
   cache.Clear();
   for (int c : candidates)
   {
+    if (skip && skip[c])
+    {
+      continue; // invisible over its whole field hull (IsCellInvisible)
+    }
     const Cell& cell = this->Cells[c];
     double t0, t1;
     if (!ClipRayToBox(cell.Faces.Bounds, origin, direction, tMin, tMax, t0, t1))
@@ -356,13 +372,15 @@ void CurvedRayCaster::CollectSegments(const double origin[3], const double direc
 
 RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3], double tMin,
   double tMax, const TransferFunction& tf, const CurvedSegmentSettings& settings,
-  double* errorEstimate, CurvedRayStats* stats) const
+  double* errorEstimate, CurvedRayStats* stats, const unsigned char* skipCells) const
 {
   RGBA accum;
   double error = 0.0;
   CurvedRayStats st;
   std::vector<Segment> segments;
-  this->CollectSegments(origin, direction, tMin, tMax, segments, st);
+  const bool shaded = (settings.Shading && settings.Shading->Shade) || settings.GradientOpacity;
+  this->CollectSegments(
+    origin, direction, tMin, tMax, segments, st, shaded ? nullptr : skipCells);
   // The tolerance is per pixel: each segment is integrated to it, and if the
   // transmittance-weighted sum of the segments' estimates exceeds it (many
   // segments along the ray), the ray is integrated again with every segment's
@@ -394,7 +412,6 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
       }
       const Cell& cell = this->Cells[s.Cell];
       const LagrangeCellView view = this->View(cell);
-      const bool shaded = (pass.Shading && pass.Shading->Shade) || pass.GradientOpacity;
       CurvedSegmentResult r;
       if (shaded)
       {

@@ -152,12 +152,25 @@ public:
   }
 
   /**
+   * Whether cell @p cell (0 .. GetNumberOfCells() - 1) can add nothing to an
+   * unshaded composite ray under @p tf: CategorizeSegment over the cell's
+   * rigorous field hull is Empty (no extinction on the whole hull, and under
+   * Wilhelms-Van Gelder no colour either). IntegrateCurvedSegment returns
+   * exactly zero for every segment of such a cell.
+   */
+  bool IsCellInvisible(std::int64_t cell, const TransferFunction& tf, EmissionModel emission) const;
+
+  /**
    * Premultiplied RGBA of the ray o + t d, t in [@p tMin, @p tMax] (t = 0
    * at the eye side), and the summed error estimate in @p errorEstimate.
+   * With @p skipCells (one flag per cell; only without shading or gradient
+   * opacity, where those cells are exactly zero: IsCellInvisible), the
+   * flagged cells' intervals are not computed (no face search, no inversion)
+   * and the field error budget is spread over the other segments only.
    */
   RGBA TraceRay(const double origin[3], const double direction[3], double tMin, double tMax,
     const TransferFunction& tf, const CurvedSegmentSettings& settings, double* errorEstimate = nullptr,
-    CurvedRayStats* stats = nullptr) const;
+    CurvedRayStats* stats = nullptr, const unsigned char* skipCells = nullptr) const;
 
   /**
    * The blend modes (hovBlendModes.h): every segment of the ray o + t d,
@@ -182,9 +195,11 @@ private:
     int Cell;
     double PC0[3], PC1[3]; ///< parametric coordinates at T0 and T1
   };
-  /// The ray's inside intervals, sorted, each part of the ray once (file doc).
+  /// The ray's inside intervals, sorted, each part of the ray once (file doc);
+  /// cells flagged in @p skip (may be null) are left out.
   void CollectSegments(const double origin[3], const double direction[3], double tMin,
-    double tMax, std::vector<Segment>& segments, CurvedRayStats& st) const;
+    double tMax, std::vector<Segment>& segments, CurvedRayStats& st,
+    const unsigned char* skip = nullptr) const;
 
   struct Cell
   {
