@@ -203,9 +203,12 @@ public:
   /// field hull (Bernstein, not the node values) is invisible: no extinction
   /// there and, under Wilhelms-Van Gelder, no colour. Such a segment is
   /// exactly zero; the image changes only within the per-pixel tolerance, as
-  /// the field error budget is then spread over the visible segments.
+  /// the field error budget is then spread over the visible segments (except
+  /// where a ray lies in a face shared with a visible cell and the field
+  /// jumps there: README, "Transparent cells").
   /// Off: every cell is integrated (for timing or checks).
-  /// GetNumberOfTransparentCells(): the cells skipped by the last render.
+  /// GetNumberOfTransparentCells(): the cells skipped by the last render
+  /// (RAY_CAST: the cells flagged, met by a ray or not).
   vtkSetMacro(SkipTransparentCells, bool);
   vtkGetMacro(SkipTransparentCells, bool);
   vtkBooleanMacro(SkipTransparentCells, bool);

@@ -56,8 +56,13 @@ bool hov::RayCast::SetInput(vtkUnstructuredGrid* grid, vtkDataArray* scalars, in
 bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
   const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
   Issues* issues, const hov::ProgressFunction& progress, const hov::BlendSettings* blend,
-  const unsigned char* skipCells) const
+  const std::vector<unsigned char>* skipCells) const
 {
+  // Flags of another caster (a stale cache) would be read out of bounds.
+  const unsigned char* skip = skipCells &&
+      static_cast<long long>(skipCells->size()) == this->Caster.GetNumberOfCells()
+    ? skipCells->data()
+    : nullptr;
   std::atomic<long long> notConverged(0), notFinite(0), traced(0), segments(0), breakpoints(0);
   if (!this->Ready || !rgba)
   {
@@ -90,7 +95,7 @@ bool hov::RayCast::Render(const hov::ViewRays& rays, const hov::TransferFunction
           }
           else
           {
-            c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e, &stats, skipCells);
+            c = this->Caster.TraceRay(o, d, 0.0, tMax, tf, settings, &e, &stats, skip);
           }
           if (!stats.Converged)
           {

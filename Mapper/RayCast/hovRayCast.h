@@ -101,14 +101,15 @@ public:
   bool Render(const hov::ViewRays& rays, const hov::TransferFunction& tf,
     const hov::CurvedSegmentSettings& settings, float* rgba, float* error, const float* depth,
     Issues* issues = nullptr, const hov::ProgressFunction& progress = {},
-    const hov::BlendSettings* blend = nullptr, const unsigned char* skipCells = nullptr) const;
+    const hov::BlendSettings* blend = nullptr,
+    const std::vector<unsigned char>* skipCells = nullptr) const;
 
   /**
    * One flag per caster cell in @p flags: 1 where the cell's rigorous field
    * hull is invisible under @p tf (hov::CurvedRayCaster::IsCellInvisible;
    * vtkSMPTools over the cells). Returns the number flagged. Pass the flags
    * to Render() (composite, unshaded rays only: the caster ignores them
-   * otherwise).
+   * otherwise; Render() ignores flags not sized to the current caster).
    */
   long long MarkInvisibleCells(const hov::TransferFunction& tf, hov::EmissionModel emission,
     std::vector<unsigned char>& flags) const;

@@ -158,7 +158,7 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   this->Caster.Render(rays,
     blending ? this->TransferFunction->GetBlendTable() : this->TransferFunction->GetTable(),
     settings, this->RGBA.data(), error.data(), rayDepth, &issues, frame.Progress,
-    blending ? &blend : nullptr, skip && this->InvisibleCount > 0 ? this->Invisible.data() : nullptr);
+    blending ? &blend : nullptr, skip && this->InvisibleCount > 0 ? &this->Invisible : nullptr);
   frame.Stats.Aborted = issues.Aborted;
   frame.Stats.Rays = issues.Rays;
   frame.Stats.Segments = issues.Segments;

@@ -6,7 +6,9 @@
  * location and exact-depth quadrature (hovCurvedSegment.h), composited front
  * to back in ray order. No global visibility sort: every ray sorts its own
  * segments, so non-convex meshes and rays that leave and re-enter a cell
- * need nothing special.
+ * need nothing special. Cells a table makes invisible over their whole
+ * field hull (IsCellInvisible) can be left out of a ray's intervals
+ * (TraceRay's skipCells).
  *
  * The pure C++ core of issue 6's ray-cast render mode (the VTK adapter,
  * Mapper/RayCast/hovRayCast*, converts a vtkUnstructuredGrid into a

@@ -445,6 +445,10 @@ void hovRobustness::Build(std::uint64_t seed, Case& c)
   c.Width = sizes[d.Int(0, 6)];
   c.Height = d.Chance(0.5) ? c.Width : sizes[d.Int(0, 6)];
   c.InWindow = d.Chance(0.3);
-  d.Text << "image: " << c.Width << " x " << c.Height << (c.InWindow ? " in a window" : "") << "\n";
+  // Drawn last, so that the cases recorded before this draw existed keep
+  // every earlier draw (and reproduce with --case).
+  c.Mapper->SetSkipTransparentCells(d.Chance(0.8));
+  d.Text << "image: " << c.Width << " x " << c.Height << (c.InWindow ? " in a window" : "")
+         << ", skip transparent cells " << c.Mapper->GetSkipTransparentCells() << "\n";
   c.Description = d.Text.str();
 }
