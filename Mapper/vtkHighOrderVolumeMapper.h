@@ -197,8 +197,10 @@ public:
   /// their cost, but where integrating them rounds a scalar past a node
   /// (README, "Transparent cells"). Quadratic cells are never skipped. The
   /// witness (GetWitnessViolations) then checks the order of the other cells.
-  /// RAY_CAST with composite blending, without volume shading or gradient
-  /// opacity, under either emission model: a ray computes no interval (no
+  /// RAY_CAST with composite blending (unshaded rays under either emission
+  /// model; with volume shading or gradient opacity under Williams-Max only,
+  /// since under Wilhelms-Van Gelder the specular term glows without colour
+  /// or extinction): a ray computes no interval (no
   /// face search, no inversion) in a cell, curved or not, whose rigorous
   /// field hull (Bernstein, not the node values) is invisible: no extinction
   /// there and, under Wilhelms-Van Gelder, no colour. Such a segment is

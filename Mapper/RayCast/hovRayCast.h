@@ -108,8 +108,8 @@ public:
    * One flag per caster cell in @p flags: 1 where the cell's rigorous field
    * hull is invisible under @p tf (hov::CurvedRayCaster::IsCellInvisible;
    * vtkSMPTools over the cells). Returns the number flagged. Pass the flags
-   * to Render() (composite, unshaded rays only: the caster ignores them
-   * otherwise; Render() ignores flags not sized to the current caster).
+   * to Render() (composite rays; the caster ignores them for shaded rays
+   * under Wilhelms-Van Gelder; Render() ignores flags not sized to the current caster).
    */
   long long MarkInvisibleCells(const hov::TransferFunction& tf, hov::EmissionModel emission,
     std::vector<unsigned char>& flags) const;

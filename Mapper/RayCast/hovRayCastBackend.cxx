@@ -142,11 +142,12 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   const BlendSettings blend = BlendSettingsOf(frame);
   const bool blending = blend.Mode != BlendMode::Composite;
-  // Cells whose whole field hull is invisible compute no interval (composite,
-  // unshaded rays; SkipTransparentCells). The flags follow the table and the
+  // Cells whose whole field hull is invisible compute no interval (composite
+  // rays, shaded ones only under Williams-Max; SkipTransparentCells). The flags follow the table and the
   // caster: recomputed when either was rebuilt or the emission model changed.
   const bool shaded = (settings.Shading && settings.Shading->Shade) || settings.GradientOpacity;
-  const bool skip = s.SkipTransparentCells && !blending && !shaded;
+  const bool skip = s.SkipTransparentCells && !blending &&
+    (!shaded || s.Emission == EmissionModel::WilliamsMax);
   if (skip && (!this->InvisibleValid || this->InvisibleEmission != s.Emission))
   {
     this->InvisibleCount = this->Caster.MarkInvisibleCells(

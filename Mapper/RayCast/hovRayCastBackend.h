@@ -12,10 +12,10 @@
  * frames (RenderFrame::Interactive, chosen by the facade from the allocated
  * render time: hov::InteractionBudget) trace one ray per f x f block of
  * pixels at tolerance x10; rays stop at TerminationTransmittance. With
- * SkipTransparentCells, composite unshaded rays compute no interval in a
- * cell whose rigorous field hull is invisible under the table (they would
- * add exactly zero). Output:
- * the frame's image and the per-pixel error estimate (GetErrorImage()).
+ * SkipTransparentCells, composite rays (shaded ones only under Williams-Max)
+ * compute no interval in a cell whose rigorous field hull is invisible under
+ * the table (they would add exactly zero). Output: the frame's image and the
+ * per-pixel error estimate (GetErrorImage()).
  *
  * Thread safety: rendering thread only (the caster runs vtkSMPTools).
  * @sa hov::RayCast, hov::Backend, vtkHighOrderVolumeMapper (RenderMode)

@@ -379,8 +379,12 @@ RGBA CurvedRayCaster::TraceRay(const double origin[3], const double direction[3]
   CurvedRayStats st;
   std::vector<Segment> segments;
   const bool shaded = (settings.Shading && settings.Shading->Shade) || settings.GradientOpacity;
+  // A shaded medium glows without colour or extinction under Wilhelms-Van
+  // Gelder (the specular term): invisible cells are exactly zero otherwise.
+  const bool skip =
+    !shaded || settings.Quadrature.Emission == EmissionModel::WilliamsMax;
   this->CollectSegments(
-    origin, direction, tMin, tMax, segments, st, shaded ? nullptr : skipCells);
+    origin, direction, tMin, tMax, segments, st, skip ? skipCells : nullptr);
   // The tolerance is per pixel: each segment is integrated to it, and if the
   // transmittance-weighted sum of the segments' estimates exceeds it (many
   // segments along the ray), the ray is integrated again with every segment's

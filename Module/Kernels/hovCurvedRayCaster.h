@@ -154,19 +154,22 @@ public:
   }
 
   /**
-   * Whether cell @p cell (0 .. GetNumberOfCells() - 1) can add nothing to an
-   * unshaded composite ray under @p tf: CategorizeSegment over the cell's
-   * rigorous field hull is Empty (no extinction on the whole hull, and under
+   * Whether cell @p cell (0 .. GetNumberOfCells() - 1) can add nothing to a
+   * composite ray under @p tf: CategorizeSegment over the cell's rigorous
+   * field hull is Empty (no extinction on the whole hull, and under
    * Wilhelms-Van Gelder no colour either). IntegrateCurvedSegment returns
-   * exactly zero for every segment of such a cell.
+   * exactly zero for every segment of such a cell; so does the shaded
+   * integral under Williams-Max (emission = shaded colour x extinction, and
+   * gradient opacity scales a zero extinction), but not under Wilhelms-Van
+   * Gelder, where the specular term glows without colour or extinction.
    */
   bool IsCellInvisible(std::int64_t cell, const TransferFunction& tf, EmissionModel emission) const;
 
   /**
    * Premultiplied RGBA of the ray o + t d, t in [@p tMin, @p tMax] (t = 0
    * at the eye side), and the summed error estimate in @p errorEstimate.
-   * With @p skipCells (one flag per cell; only without shading or gradient
-   * opacity, where those cells are exactly zero: IsCellInvisible), the
+   * With @p skipCells (one flag per cell; ignored for shaded or
+   * gradient-opacity rays under Wilhelms-Van Gelder: IsCellInvisible), the
    * flagged cells' intervals are not computed (no face search, no inversion)
    * and the field error budget is spread over the other segments only.
    */

@@ -8,9 +8,11 @@
 //    two renders' per-pixel error estimates (the field error budget is spread
 //    over the visible segments only, so the images may differ below it);
 //  - under Wilhelms-Van Gelder emission with colour where there is no
-//    opacity (glow), with volume shading, and with maximum intensity
-//    blending nothing is flagged and the images are bit for bit the same;
-//    under Wilhelms-Van Gelder with black colour there, cells are flagged;
+//    opacity (glow), with volume shading under Wilhelms-Van Gelder (whose
+//    specular term glows without colour or opacity), and with maximum
+//    intensity blending nothing is flagged and the images are bit for bit the
+//    same; under Wilhelms-Van Gelder with black colour there, and with
+//    shading or gradient opacity under Williams-Max, cells are flagged;
 //  - on a lattice of quadratic tetrahedra whose field (a paraboloid) peaks
 //    between nodes, with opacity only above every node value: a cell is
 //    flagged only if its Bernstein hull, not its node values, proves it
@@ -116,6 +118,17 @@ std::string Counts(const Pair& p)
   return std::to_string(p.FlaggedOn) + " cells flagged (" + std::to_string(p.FlaggedOff) +
     " with the option off), segments " + std::to_string(p.SegmentsOn) + " against " +
     std::to_string(p.SegmentsOff);
+}
+
+/// Pixels with colour but no opacity (glow).
+size_t GlowPixels(const Image& img)
+{
+  size_t glow = 0;
+  for (size_t i = 0; i + 3 < img.V.size(); i += 4)
+  {
+    glow += img.V[i + 3] == 0 && img.V[i] + img.V[i + 1] + img.V[i + 2] > 0;
+  }
+  return glow;
 }
 
 /// Checks a pair in which nothing may be flagged: the same image bit for bit.
@@ -289,10 +302,28 @@ int TestRayCastSkipTransparent(int argc, char* argv[])
     CheckNothingFlagged(ck, RenderBoth(scene, cam, size, size), "plate, Wilhelms-Van Gelder, glow");
     PlateFunction(scene, lo, hi, true);
     CheckFlagged(ck, RenderBoth(scene, cam, size, size), "plate, Wilhelms-Van Gelder, black", 20);
-    mapper->SetEmissionModelToWilliamsMax();
+    // Shaded under Wilhelms-Van Gelder: the specular term glows where there is
+    // neither colour nor opacity, so nothing may be skipped.
     scene.Tf.Property->ShadeOn();
-    CheckNothingFlagged(ck, RenderBoth(scene, cam, size, size), "plate, shaded");
+    scene.Tf.Property->SetSpecular(0.6);
+    {
+      const Pair p = RenderBoth(scene, cam, size, size);
+      CheckNothingFlagged(ck, p, "plate, shaded, Wilhelms-Van Gelder");
+      ck.Check(GlowPixels(p.Off) > 50,
+        "plate, shaded, Wilhelms-Van Gelder: " + std::to_string(GlowPixels(p.Off)) +
+          " pixels glow without opacity");
+    }
+    mapper->SetEmissionModelToWilliamsMax();
+    CheckFlagged(ck, RenderBoth(scene, cam, size, size), "plate, shaded, Williams-Max", 20);
     scene.Tf.Property->ShadeOff();
+    vtkNew<vtkPiecewiseFunction> gradient;
+    gradient->AddPoint(0.0, 0.2);
+    gradient->AddPoint(50.0, 1.0);
+    scene.Tf.Property->SetGradientOpacity(gradient);
+    scene.Tf.Property->DisableGradientOpacityOff();
+    CheckFlagged(ck, RenderBoth(scene, cam, size, size), "plate, gradient opacity", 20);
+    scene.Tf.Property->DisableGradientOpacityOn();
+    PlateFunction(scene, lo, hi, false);
     mapper->SetBlendModeToMaximumIntensity();
     CheckNothingFlagged(ck, RenderBoth(scene, cam, size, size), "plate, maximum intensity");
     mapper->SetBlendModeToComposite();
