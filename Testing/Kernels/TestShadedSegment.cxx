@@ -175,3 +175,72 @@ TEST(ShadedSegment, DegenerateInput)
   EXPECT_TRUE(hovtest::AllFinite(z.Color));
   EXPECT_GT(z.Color.A, 0.0);
 }
+
+// A table refined to a tight GPU tolerance has thousands of nodes and a steep
+// field crosses them all: each crossing used to cost a piece with its own
+// panel (17 samples: for a general cell each one a Newton inversion), so the
+// cost grew with the table. Now a segment takes at most MaxPanels / 2 pieces
+// (evenly spaced breakpoints) and MaxPanels panels, and stays within its
+// error estimate of the integral with every breakpoint kept.
+TEST(ShadedSegment, ManyBreakpointsHaveABoundedCost)
+{
+  hov::TransferFunctionSpec spec;
+  spec.Color = { { 0.0, 0.9, 0.2, 0.1 }, { 0.5, 0.2, 0.8, 0.3 }, { 1.0, 0.1, 0.3, 0.9 } };
+  spec.Opacity = { { 0.0, 0.0 }, { 0.45, 0.6 }, { 0.7, 0.95 }, { 1.0, 0.1 } };
+  spec.Semantics = hov::OpacitySemantics::GPUCompatible;
+  spec.UnitDistance = 0.5;
+  spec.GPUTolerance = 1e-8;
+  spec.RefinementBudget = 16384;
+  hov::TransferFunction tf;
+  tf.Build(spec);
+  ASSERT_GT(tf.GetNumberOfNodes(), 2000);
+  hov::VolumeShadingSettings vs;
+  const hov::ShadingLight light = Directional(0.3, 0.2, -1);
+  vs.Shade = true;
+  vs.Material.Ambient = 0.2;
+  vs.Material.Diffuse = 0.7;
+  vs.Material.Specular = 0.3;
+  vs.Material.SpecularPower = 10;
+  vs.Lights = &light;
+  vs.LightCount = 1;
+  // s from 0 to 1 and back down to 0.3 over the segment: it crosses most nodes twice.
+  const double L = 0.8;
+  const hov::Polynomial s = hov::Polynomial::FromCoefficients({ 0.0, 4.25, -4.3 });
+  const hov::Polynomial g[3] = { hov::Polynomial::FromCoefficients({ 0.4, -1.0 }),
+    hov::Polynomial::FromCoefficients({ 0.1 }), hov::Polynomial::FromCoefficients({ 1.0, 0.5 }) };
+  const hov::SegmentRay ray;
+  std::vector<double> breaks;
+  const int crossings = hov::ShadedBreakpoints(tf, s, g, nullptr, L, breaks);
+  ASSERT_GT(crossings, 3000);
+  for (hov::EmissionModel em : { hov::EmissionModel::WilliamsMax, hov::EmissionModel::WilhelmsVanGelder })
+  {
+    const std::string where = em == hov::EmissionModel::WilliamsMax ? "WM" : "WVG";
+    hov::ShadedSegmentSettings every; // every breakpoint its own piece
+    every.Emission = em;
+    every.Tolerance = 1e-12;
+    every.MaxPanels = 1 << 20;
+    const hov::ShadedSegmentResult ref = hov::IntegrateShadedPolynomial(tf, s, g, L, vs, nullptr, ray, every);
+    EXPECT_EQ(ref.SkippedBreakpoints, 0) << where;
+    EXPECT_GE(ref.Panels, crossings) << where;
+    for (int maxPanels : { 256, 4096 })
+    {
+      hov::ShadedSegmentSettings settings;
+      settings.Emission = em;
+      settings.Tolerance = 1e-6;
+      settings.MaxPanels = maxPanels;
+      const hov::ShadedSegmentResult r = hov::IntegrateShadedPolynomial(tf, s, g, L, vs, nullptr, ray, settings);
+      const std::string at = where + " MaxPanels " + std::to_string(maxPanels);
+      EXPECT_EQ(r.SkippedBreakpoints, crossings - (maxPanels / 2 - 1)) << at;
+      EXPECT_LE(r.Panels, maxPanels) << at;
+      EXPECT_LE(r.Samples, 17 * maxPanels + maxPanels / 2) << at;
+      const double e = hovtest::MaxAbsDiff(r.Color, ref.Color);
+      std::cout << "[measured] ShadedSegment many breakpoints " << at << ": " << crossings
+                << " crossings, " << r.Panels << " panels, " << r.Samples << " samples (every breakpoint: "
+                << ref.Samples << "), error " << e << ", estimate " << r.ErrorEstimate
+                << (r.Converged ? "" : ", not converged") << "\n";
+      EXPECT_TRUE(hovtest::AllFinite(r.Color)) << at;
+      EXPECT_LE(e, r.ErrorEstimate + ref.ErrorEstimate + 1e-14) << at;
+      EXPECT_LE(e, 1e-4) << at;
+    }
+  }
+}
