@@ -120,17 +120,6 @@ std::string Counts(const Pair& p)
     std::to_string(p.SegmentsOff);
 }
 
-/// Pixels with colour but no opacity (glow).
-size_t GlowPixels(const Image& img)
-{
-  size_t glow = 0;
-  for (size_t i = 0; i + 3 < img.V.size(); i += 4)
-  {
-    glow += img.V[i + 3] == 0 && img.V[i] + img.V[i + 1] + img.V[i + 2] > 0;
-  }
-  return glow;
-}
-
 /// Checks a pair in which nothing may be flagged: the same image bit for bit.
 void CheckNothingFlagged(Checker& ck, const Pair& p, const std::string& what)
 {

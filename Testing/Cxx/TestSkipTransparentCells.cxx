@@ -186,11 +186,7 @@ int TestSkipTransparentCells(int argc, char* argv[])
     const Pair p = RenderBoth(*bracket, camera);
     const DiffStats d = Diff(p.On, p.Off, 0, 4, 0.0);
     // Pixels that only glow (colour, no opacity): the transparent cells' share.
-    size_t glow = 0;
-    for (size_t i = 0; i + 3 < p.On.V.size(); i += 4)
-    {
-      glow += p.On.V[i + 3] == 0 && p.On.V[i] + p.On.V[i + 1] + p.On.V[i + 2] > 0;
-    }
+    const size_t glow = GlowPixels(p.On);
     ck.Check(p.Status[0] == 1 && p.Status[1] == 1 && p.SkippedOn == 0 && d.Max == 0 && glow > 1000,
       "Wilhelms-Van Gelder: none skipped (" + std::to_string(p.SkippedOn) + "), " +
         std::to_string(d.Above) + " pixels differ, " + std::to_string(glow) +

@@ -106,6 +106,16 @@ std::string Sanity::Str() const
   return s.str();
 }
 
+size_t GlowPixels(const Image& img)
+{
+  size_t glow = 0;
+  for (size_t i = 0; i + 3 < img.V.size(); i += 4)
+  {
+    glow += img.V[i + 3] == 0 && img.V[i] + img.V[i + 1] + img.V[i + 2] > 0;
+  }
+  return glow;
+}
+
 Sanity CheckImage(const Image& img)
 {
   Sanity s;

@@ -58,6 +58,9 @@ struct Sanity
 
 Sanity CheckImage(const Image& img);
 
+/// Pixels with colour but no opacity (glow: Wilhelms-Van Gelder emission).
+size_t GlowPixels(const Image& img);
+
 struct DiffStats
 {
   double Max = 0, Mean = 0, P99 = 0;
