@@ -69,7 +69,6 @@ struct Context
   double MaxColor = 1.0;
   int Samples = 0;
   bool Bad = false;
-  bool SawOpaque = false; ///< a sample with infinite extinction (an opaque table interval)
 };
 
 /// Interval of the table for s: @p hint if s lies in it (a piece's interval), else a search.
@@ -117,7 +116,6 @@ void Sample(Context& ctx, double t, int hint, double& tau, double e[3], double c
     ctx.MaxColor = std::max(ctx.MaxColor, std::fabs(c[i]));
     e[i] = ctx.Emission ? ctx.EmissionFactor * c[i] : c[i] * tau;
   }
-  ctx.SawOpaque = ctx.SawOpaque || (std::isinf(tau) && tau > 0.0);
   if (!std::isfinite(tau) || !std::isfinite(e[0] + e[1] + e[2]))
   {
     ctx.Bad = true; // infinite extinction inside a finite piece: missing breakpoints
@@ -197,15 +195,9 @@ Panel IntegratePanel(Context& ctx, double a, double b, int hint)
   return out;
 }
 
-/**
- * Integrates the piece [p0, p1] into @p res; false once nothing behind can
- * show. A @p merged piece (breakpoints skipped inside it) that meets an opaque
- * interval stops at once with ctx.SawOpaque set: the caller takes it again
- * piece by piece (neither its midpoint nor its samples say where the medium
- * turns opaque).
- */
+/// Integrates the piece [p0, p1] into @p res; false once nothing behind can show.
 bool IntegratePiece(Context& ctx, double p0, double p1, double length, double budgetPerLength,
-  int maxDepth, int& panelsLeft, ShadedSegmentResult& res, bool merged = false)
+  int maxDepth, int& panelsLeft, ShadedSegmentResult& res)
 {
   // The piece's table interval, and the opaque case, from its midpoint.
   double sMid = 0.0, gMid[3];
@@ -219,11 +211,6 @@ bool IntegratePiece(Context& ctx, double p0, double p1, double length, double bu
     const double gamma = ctx.GO ? ctx.GO->EvaluateGradient(gMid) : 1.0;
     if (std::isinf(v.Tau) && gamma > 0.0)
     {
-      if (merged)
-      {
-        ctx.SawOpaque = true;
-        return false;
-      }
       double tau, e[3], c[3];
       const bool bad = ctx.Bad;
       Sample(ctx, p0, hint, tau, e, c); // tau = +inf here is expected
@@ -243,10 +230,6 @@ bool IntegratePiece(Context& ctx, double p0, double p1, double length, double bu
   {
     const double b = ends[top];
     const Panel panel = IntegratePanel(ctx, a, b, hint);
-    if (merged && ctx.SawOpaque)
-    {
-      return false;
-    }
     const double transmit = 1.0 - res.Color.A;
     const double behind = ctx.Emission
       ? ctx.EmissionFactor * ctx.MaxColor * (length - b) + 1.0
@@ -342,56 +325,19 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
   const long long maxPieces = std::max(panelsLeft / 2, 1);
   const bool thin = pieces > maxPieces;
   double prev = 0.0;
-  int firstMerged = -1, merged = 0; // the current piece's skipped breakpoints
   for (int i = 0; i <= breakpointCount; ++i)
   {
     const double next = i < breakpointCount && breakpoints ? breakpoints[i] : length;
     if (i < breakpointCount && thin && (i + 1LL) * maxPieces / pieces == i * maxPieces / pieces)
     {
-      firstMerged = firstMerged < 0 ? i : firstMerged;
-      ++merged;
+      ++res.SkippedBreakpoints;
       continue; // inside a merged piece
     }
     if (i < breakpointCount && (!(next > prev) || !(next < length)))
     {
       continue; // outside (prev, length) or unsorted
     }
-    bool more;
-    if (merged == 0)
-    {
-      more = IntegratePiece(ctx, prev, next, length, budgetPerLength, maxDepth, panelsLeft, res);
-    }
-    else
-    {
-      const ShadedSegmentResult before = res;
-      const int panelsBefore = panelsLeft;
-      const bool badBefore = ctx.Bad;
-      ctx.SawOpaque = false;
-      res.SkippedBreakpoints += merged;
-      more = IntegratePiece(ctx, prev, next, length, budgetPerLength, maxDepth, panelsLeft, res, true);
-      if (ctx.SawOpaque)
-      {
-        // An opaque interval inside: again, with every breakpoint of the piece.
-        res = before;
-        panelsLeft = panelsBefore;
-        ctx.Bad = badBefore;
-        double a = prev;
-        more = true;
-        for (int j = firstMerged; j <= i && more; ++j)
-        {
-          const double b = j < i && breakpoints ? breakpoints[j] : next;
-          if (j < i && (!(b > a) || !(b < next)))
-          {
-            continue;
-          }
-          more = IntegratePiece(ctx, a, b, length, budgetPerLength, maxDepth, panelsLeft, res);
-          a = b;
-        }
-      }
-    }
-    firstMerged = -1;
-    merged = 0;
-    if (!more)
+    if (!IntegratePiece(ctx, prev, next, length, budgetPerLength, maxDepth, panelsLeft, res))
     {
       break;
     }

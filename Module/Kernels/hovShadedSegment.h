@@ -42,11 +42,7 @@
  * (by index) and counts the others in SkippedBreakpoints; their kinks then lie
  * inside panels, where the adaptivity and its error estimate see them. So a
  * segment takes at most MaxPanels panels, 17 MaxPanels + MaxPanels / 2
- * samples (before, each of 16,384 pieces took a panel of 17 samples). A
- * merged piece that meets an opaque interval (a sample, or its midpoint, with
- * infinite extinction) is undone and taken again with every breakpoint inside
- * it, so the medium turns opaque exactly where the table says; that adds at
- * most its own pieces, and the ray ends there.
+ * samples (before, each of 16,384 pieces took a panel of 17 samples).
  *
  * A piece whose midpoint has infinite extinction (an opaque table interval,
  * GPU-compatible a = 1) absorbs everything: C += T c_sh(front) (WM), A = 1.
