@@ -319,20 +319,10 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
   const double budgetPerLength = tol / length;
   const int maxDepth = std::min(std::max(settings.MaxDepth, 0), StackSize - 2);
   int panelsLeft = std::max(settings.MaxPanels, 1);
-  // At most half the panel budget in pieces (file doc): beyond it, evenly
-  // spaced breakpoints are kept (i where floor(i P / N) steps up).
-  const long long pieces = breakpoints ? std::max(breakpointCount, 0) + 1LL : 1LL;
-  const long long maxPieces = std::max(panelsLeft / 2, 1);
-  const bool thin = pieces > maxPieces;
   double prev = 0.0;
   for (int i = 0; i <= breakpointCount; ++i)
   {
     const double next = i < breakpointCount && breakpoints ? breakpoints[i] : length;
-    if (i < breakpointCount && thin && (i + 1LL) * maxPieces / pieces == i * maxPieces / pieces)
-    {
-      ++res.SkippedBreakpoints;
-      continue; // inside a merged piece
-    }
     if (i < breakpointCount && (!(next > prev) || !(next < length)))
     {
       continue; // outside (prev, length) or unsorted

@@ -36,14 +36,6 @@
  * Integration stops when the transmittance drops below
  * 1e-3 Tolerance / R (the rest is added to ErrorEstimate).
  *
- * A bounded cost: at most MaxPanels / 2 pieces. A segment that crosses more
- * breakpoints (a table refined to a tight GPU tolerance has up to 16,384
- * nodes, and a steep field crosses them all) keeps only evenly spaced ones
- * (by index) and counts the others in SkippedBreakpoints; their kinks then lie
- * inside panels, where the adaptivity and its error estimate see them. So a
- * segment takes at most MaxPanels panels, 17 MaxPanels + MaxPanels / 2
- * samples (before, each of 16,384 pieces took a panel of 17 samples).
- *
  * A piece whose midpoint has infinite extinction (an opaque table interval,
  * GPU-compatible a = 1) absorbs everything: C += T c_sh(front) (WM), A = 1.
  * A non-finite sample inside a finite piece (missing breakpoints, a failed
@@ -112,7 +104,6 @@ struct ShadedSegmentResult
   double ErrorEstimate = 0.0;
   int Panels = 0;     ///< accepted panels
   int Samples = 0;    ///< sampler calls
-  int SkippedBreakpoints = 0; ///< breakpoints inside merged pieces (more than MaxPanels / 2 pieces)
   bool Converged = true;
   bool ExactPath = false; ///< the closed form was used (IntegrateShadedPolynomial)
 };
