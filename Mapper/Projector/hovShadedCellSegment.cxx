@@ -139,13 +139,13 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
     else
     {
       // Breakpoints: the table-node crossings of the restricted scalar.
-      hov::ShadedBreakpoints(tf, s, g, nullptr, length, this->Breaks);
+      hov::ShadedBreakpoints(tf, s, g, nullptr, length, this->Breaks, &this->Smooth);
       CellSampler sampler{ &f, c.Shape, nodes, scalars, ray.Origin + t0 * ray.Direction,
         ray.Direction, { 0.0, 0.0, 0.0 } };
       hov::CellParametricCenter(c.Shape, sampler.PC);
       r = hov::IntegrateShadedSegment(tf, &CellSampler::Sample, &sampler, length,
         this->Breaks.data(), static_cast<int>(this->Breaks.size()), f.VolumeShading, go, wray,
-        settings);
+        settings, this->Smooth.data());
     }
   }
   pieces += std::max(r.Panels, 1);

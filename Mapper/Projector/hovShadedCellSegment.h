@@ -82,6 +82,7 @@ public:
 
 private:
   std::vector<double> Breaks;
+  std::vector<unsigned char> Smooth; ///< per breakpoint: mergeable (hovShadedSegment.h)
   double WorstError = 0.0;
 };
 }

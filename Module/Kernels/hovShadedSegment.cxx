@@ -299,7 +299,7 @@ bool Finite(const Polynomial& p)
 ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGradientSampler sampler,
   void* user, double length, const double* breakpoints, int breakpointCount,
   const VolumeShadingSettings& shading, const GradientOpacityFunction* gradientOpacity,
-  const SegmentRay& ray, const ShadedSegmentSettings& settings)
+  const SegmentRay& ray, const ShadedSegmentSettings& settings, const unsigned char* mergeable)
 {
   ShadedSegmentResult res;
   if (!(length > 0.0) || !std::isfinite(length) || !sampler || tf.GetNumberOfNodes() == 0)
@@ -319,11 +319,34 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
   const double budgetPerLength = tol / length;
   const int maxDepth = std::min(std::max(settings.MaxDepth, 0), StackSize - 2);
   int panelsLeft = std::max(settings.MaxPanels, 1);
-  double prev = 0.0;
-  for (int i = 0; i <= breakpointCount; ++i)
+  // More pieces than MaxPanels / 2: step over evenly spaced ones of the
+  // mergeable breakpoints (file doc); rank r of M is kept iff
+  // floor((r + 1) B / M) > floor(r B / M), B of them in all.
+  const int count = breakpoints ? std::max(breakpointCount, 0) : 0;
+  long long numMergeable = 0;
+  for (int i = 0; mergeable && i < count; ++i)
   {
-    const double next = i < breakpointCount && breakpoints ? breakpoints[i] : length;
-    if (i < breakpointCount && (!(next > prev) || !(next < length)))
+    numMergeable += mergeable[i] != 0;
+  }
+  const long long maxPieces = std::max(panelsLeft / 2, 1);
+  const bool thin = numMergeable > 0 && count + 1LL > maxPieces;
+  const long long keepMergeable =
+    thin ? std::max(0LL, maxPieces - 1 - (count - numMergeable)) : numMergeable;
+  long long rank = 0;
+  double prev = 0.0;
+  for (int i = 0; i <= count; ++i)
+  {
+    const double next = i < count ? breakpoints[i] : length;
+    if (i < count && thin && mergeable[i])
+    {
+      const long long r = rank++;
+      if ((r + 1) * keepMergeable / numMergeable == r * keepMergeable / numMergeable)
+      {
+        ++res.SkippedBreakpoints;
+        continue; // stepped over
+      }
+    }
+    if (i < count && (!(next > prev) || !(next < length)))
     {
       continue; // outside (prev, length) or unsorted
     }
@@ -339,9 +362,26 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
 }
 
 int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Polynomial gradient[3],
-  const GradientOpacityFunction* gradientOpacity, double length, std::vector<double>& out)
+  const GradientOpacityFunction* gradientOpacity, double length, std::vector<double>& out,
+  std::vector<unsigned char>* mergeable)
 {
   out.clear();
+  if (mergeable)
+  {
+    mergeable->clear();
+  }
+  // With @p mergeable: one flag per breakpoint, kept beside it through the sort.
+  std::vector<std::pair<double, unsigned char>> flagged;
+  auto add = [&](double t, bool smooth) {
+    if (mergeable)
+    {
+      flagged.emplace_back(t, smooth ? 1 : 0);
+    }
+    else
+    {
+      out.push_back(t);
+    }
+  };
   if (!(length > 0.0) || !std::isfinite(length))
   {
     return 0;
@@ -361,12 +401,12 @@ int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Pol
     {
       if (x[k] > lo && (k == 0 || x[k] != x[k - 1]))
       {
-        out.push_back(SolveMonotone(s, x[k], ta, tb));
+        add(SolveMonotone(s, x[k], ta, tb), tf.IsSmoothNode(k));
       }
     }
     if (r < m)
     {
-      out.push_back(tb);
+      add(tb, true); // an extremum of s: the integrand stays smooth there
     }
     ta = tb;
     sa = sb;
@@ -396,9 +436,32 @@ int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Pol
       for (double kink : gradientOpacity->GetKinks())
       {
         const int c = FindRoots(q, kink * kink, 0.0, length, roots);
-        out.insert(out.end(), roots, roots + c);
+        for (int i = 0; i < c; ++i)
+        {
+          add(roots[i], false);
+        }
       }
     }
+  }
+  if (mergeable)
+  {
+    // Sorted by t; of equal t (one kept), smooth only if every one is.
+    std::sort(flagged.begin(), flagged.end());
+    for (const auto& f : flagged)
+    {
+      if (!(f.first > 0.0 && f.first < length))
+      {
+        continue;
+      }
+      if (!out.empty() && out.back() == f.first)
+      {
+        mergeable->back() &= f.second;
+        continue;
+      }
+      out.push_back(f.first);
+      mergeable->push_back(f.second);
+    }
+    return static_cast<int>(out.size());
   }
   std::sort(out.begin(), out.end());
   out.erase(std::remove_if(out.begin(), out.end(), [&](double t) { return !(t > 0.0 && t < length); }),
@@ -434,9 +497,10 @@ ShadedSegmentResult IntegrateShadedPolynomial(const TransferFunction& tf, const 
     return res;
   }
   std::vector<double> cuts;
-  ShadedBreakpoints(tf, s, gradient, gradientOpacity, length, cuts);
+  std::vector<unsigned char> smooth;
+  ShadedBreakpoints(tf, s, gradient, gradientOpacity, length, cuts, &smooth);
   PolynomialField field{ &s, gradient };
   return IntegrateShadedSegment(tf, &SamplePolynomial, &field, length, cuts.data(),
-    static_cast<int>(cuts.size()), shading, gradientOpacity, ray, settings);
+    static_cast<int>(cuts.size()), shading, gradientOpacity, ray, settings, smooth.data());
 }
 }

@@ -36,6 +36,18 @@
  * Integration stops when the transmittance drops below
  * 1e-3 Tolerance / R (the rest is added to ErrorEstimate).
  *
+ * Mergeable breakpoints (optional, one flag each): where the integrand is
+ * known to hide nothing narrow (TransferFunction::IsSmoothNode(): tau convex
+ * and the colour linear across the node; an extremum of s). When there are
+ * more than MaxPanels / 2 pieces, evenly spaced ones of the mergeable
+ * breakpoints are stepped over (SkippedBreakpoints) so that at most
+ * MaxPanels / 2 pieces remain, or all of them are if the others alone are
+ * that many; every other breakpoint is kept. A table refined to a tight
+ * GPU-compatible tolerance (up to 16,384 nodes, nearly all added inside the
+ * user's intervals) then costs panels for its shape, not one per node; an
+ * opaque interval, a jump or a narrow band of the user's function is always
+ * cut out exactly. Without flags (nullptr) every breakpoint is kept.
+ *
  * A piece whose midpoint has infinite extinction (an opaque table interval,
  * GPU-compatible a = 1) absorbs everything: C += T c_sh(front) (WM), A = 1.
  * A non-finite sample inside a finite piece (missing breakpoints, a failed
@@ -104,6 +116,7 @@ struct ShadedSegmentResult
   double ErrorEstimate = 0.0;
   int Panels = 0;     ///< accepted panels
   int Samples = 0;    ///< sampler calls
+  int SkippedBreakpoints = 0; ///< mergeable breakpoints stepped over (file doc)
   bool Converged = true;
   bool ExactPath = false; ///< the closed form was used (IntegrateShadedPolynomial)
 };
@@ -117,12 +130,17 @@ HOV_EXPORT ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf
   FieldGradientSampler sampler, void* user, double length, const double* breakpoints,
   int breakpointCount, const VolumeShadingSettings& shading,
   const GradientOpacityFunction* gradientOpacity, const SegmentRay& ray,
-  const ShadedSegmentSettings& settings);
+  const ShadedSegmentSettings& settings, const unsigned char* mergeable = nullptr);
 
-/// The breakpoints IntegrateShadedPolynomial uses (file doc), sorted, into @p out.
+/**
+ * The breakpoints IntegrateShadedPolynomial uses (file doc), sorted, into
+ * @p out; with @p mergeable, one flag per breakpoint: 1 for a crossing of a
+ * TransferFunction::IsSmoothNode() node or an extremum of s, 0 for other
+ * nodes and gradient-opacity kinks (a breakpoint found twice: 1 only if both).
+ */
 HOV_EXPORT int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s,
   const Polynomial gradient[3], const GradientOpacityFunction* gradientOpacity, double length,
-  std::vector<double>& out);
+  std::vector<double>& out, std::vector<unsigned char>* mergeable = nullptr);
 
 /// The integral for s(t) and grad s(t) given as polynomials in t (file doc).
 HOV_EXPORT ShadedSegmentResult IntegrateShadedPolynomial(const TransferFunction& tf,

@@ -347,6 +347,24 @@ void TransferFunction::BuildLookup()
       }
     }
   }
+  // Nodes a segment integral may step over (IsSmoothNode()): after the slopes.
+  this->SmoothNodes.assign(this->Nodes.size(), 0);
+  for (size_t k = 1; k + 1 < this->Nodes.size(); ++k)
+  {
+    const Node& a = this->Nodes[k - 1];
+    const Node& b = this->Nodes[k];
+    // A change of slope d moves the function by at most d w over the wider
+    // neighbouring interval w: below 1e-12 (relative to max(1, |value|)) it
+    // is rounding (slopes of intervals 1e-8 wide carry errors of ~1e-8).
+    const double w = std::max(this->X[k] - this->X[k - 1], this->X[k + 1] - this->X[k]);
+    auto same = [w](double u, double v, double value) {
+      return std::fabs(u - v) * w <= 1e-12 * std::max(1.0, std::fabs(value));
+    };
+    this->SmoothNodes[k] = this->X[k - 1] < this->X[k] && this->X[k] < this->X[k + 1] &&
+      std::isfinite(a.Tau) && std::isfinite(b.Tau) && std::isfinite(this->Nodes[k + 1].Tau) &&
+      (b.DTau >= a.DTau || same(a.DTau, b.DTau, b.Tau)) && same(a.DR, b.DR, b.R) &&
+      same(a.DG, b.DG, b.G) && same(a.DB, b.DB, b.B);
+  }
   // Last: the loop above may set an opaque interval's first tau to +inf.
   this->ExtinctionBefore.assign(this->Nodes.size() + 1, 0);
   for (size_t k = 0; k < this->Nodes.size(); ++k)

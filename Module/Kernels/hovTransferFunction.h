@@ -124,6 +124,22 @@ public:
     return !this->ExtinctionBefore.empty() &&
       this->ExtinctionBefore.back() < static_cast<int>(this->Nodes.size());
   }
+  /**
+   * True if nothing narrow can hide at node @p k (0 < k < n - 1): both
+   * neighbouring intervals have width > 0 (no jump) and finite extinction,
+   * the colour's slope is the same on both and the extinction's slope does
+   * not decrease (convex there), each up to a change that moves the value by
+   * 1e-12 max(1, |value|) over the wider interval (rounding). Over a run of such
+   * nodes tau is convex and the colour linear in s, so no band narrower than
+   * a quadrature's sample spacing can hide between its samples: the nodes the
+   * GPU-compatible refinement adds inside one interval of the user's function
+   * qualify (-ln(1 - a)/u is convex for a linear in s). Adaptive quadratures
+   * may step over them (hovShadedSegment.h); every other node is a breakpoint.
+   */
+  bool IsSmoothNode(int k) const
+  {
+    return k > 0 && k < static_cast<int>(this->SmoothNodes.size()) && this->SmoothNodes[k];
+  }
   OpacitySemantics GetSemantics() const { return this->Semantics; }
   /// Factor from colour to Wilhelms-Van Gelder emission per unit length.
   double GetEmissionFactor() const { return this->EmissionFactor; }
@@ -161,6 +177,8 @@ private:
   /// O(1) interval search: bucket b of a uniform grid over [X0, Xn-1] holds
   /// the interval containing its left end.
   std::vector<int> Buckets;
+  /// IsSmoothNode() per node.
+  std::vector<unsigned char> SmoothNodes;
   /// ExtinctionBefore[k]: the number of nodes before node k with tau != 0.
   std::vector<int> ExtinctionBefore;
   double BucketScale = 0.0;

@@ -175,3 +175,134 @@ TEST(ShadedSegment, DegenerateInput)
   EXPECT_TRUE(hovtest::AllFinite(z.Color));
   EXPECT_GT(z.Color.A, 0.0);
 }
+
+// A table refined to a tight GPU tolerance has thousands of nodes and a steep
+// field crosses them all: each crossing used to cost a piece with its own
+// panel (17 samples: for a general cell each one a Newton inversion). The
+// refinement's nodes are smooth (TransferFunction::IsSmoothNode: tau convex,
+// colour linear), so the integral steps over evenly spaced ones of them and
+// keeps every other breakpoint; it stays within its error estimate of the
+// integral with every breakpoint kept, also with an opaque interval entered
+// by a jump, a narrow opaque band with the same opacity on both sides, and a
+// narrow spike without jumps (the bands a merged piece could step over if
+// their nodes were not kept).
+namespace
+{
+void CheckManyBreakpoints(const std::vector<hov::OpacityNode>& opacity, const std::string& name)
+{
+  hov::TransferFunctionSpec spec;
+  spec.Color = { { 0.0, 0.9, 0.2, 0.1 }, { 0.5, 0.2, 0.8, 0.3 }, { 1.0, 0.1, 0.3, 0.9 } };
+  spec.Opacity = opacity;
+  spec.Semantics = hov::OpacitySemantics::GPUCompatible;
+  spec.UnitDistance = 0.5;
+  spec.GPUTolerance = 1e-8;
+  spec.RefinementBudget = 16384;
+  hov::TransferFunction tf;
+  tf.Build(spec);
+  ASSERT_GT(tf.GetNumberOfNodes(), 2000);
+  // The refinement's nodes are smooth; a jump (two user nodes at one X) and
+  // a peak of the opacity (tau concave there) never are.
+  const std::vector<double>& x = tf.GetNodes();
+  int smoothNodes = 0;
+  for (int k = 0; k < tf.GetNumberOfNodes(); ++k)
+  {
+    smoothNodes += tf.IsSmoothNode(k);
+  }
+  EXPECT_GT(smoothNodes, tf.GetNumberOfNodes() * 9 / 10) << name;
+  int sharp = 0;
+  for (size_t j = 1; j + 1 < opacity.size(); ++j)
+  {
+    const bool jump = opacity[j].X == opacity[j - 1].X || opacity[j].X == opacity[j + 1].X;
+    const bool peak =
+      opacity[j].Opacity > opacity[j - 1].Opacity && opacity[j].Opacity > opacity[j + 1].Opacity;
+    for (int k = 0; (jump || peak) && k < tf.GetNumberOfNodes(); ++k)
+    {
+      if (x[k] == opacity[j].X)
+      {
+        EXPECT_FALSE(tf.IsSmoothNode(k)) << name << ": node " << k << " at " << x[k];
+        ++sharp;
+      }
+    }
+  }
+  EXPECT_GT(sharp, 0) << name; // every case has a peak or a jump
+  hov::VolumeShadingSettings vs;
+  const hov::ShadingLight light = Directional(0.3, 0.2, -1);
+  vs.Shade = true;
+  vs.Material.Ambient = 0.2;
+  vs.Material.Diffuse = 0.7;
+  vs.Material.Specular = 0.3;
+  vs.Material.SpecularPower = 10;
+  vs.Lights = &light;
+  vs.LightCount = 1;
+  // s from 0 to 1 and back down to 0.3 over the segment: it crosses most nodes twice.
+  const double L = 0.8;
+  const hov::Polynomial s = hov::Polynomial::FromCoefficients({ 0.0, 4.25, -4.3 });
+  const hov::Polynomial g[3] = { hov::Polynomial::FromCoefficients({ 0.4, -1.0 }),
+    hov::Polynomial::FromCoefficients({ 0.1 }), hov::Polynomial::FromCoefficients({ 1.0, 0.5 }) };
+  const hov::SegmentRay ray;
+  std::vector<double> breaks;
+  const int crossings = hov::ShadedBreakpoints(tf, s, g, nullptr, L, breaks);
+  ASSERT_GT(crossings, 3000);
+  for (hov::EmissionModel em : { hov::EmissionModel::WilliamsMax, hov::EmissionModel::WilhelmsVanGelder })
+  {
+    const std::string where = name + (em == hov::EmissionModel::WilliamsMax ? " WM" : " WVG");
+    hov::ShadedSegmentSettings every; // every breakpoint its own piece
+    every.Emission = em;
+    every.Tolerance = 1e-10;
+    every.MaxPanels = 1 << 17; // 65,536 pieces: none merged
+    const hov::ShadedSegmentResult ref = hov::IntegrateShadedPolynomial(tf, s, g, L, vs, nullptr, ray, every);
+    EXPECT_EQ(ref.SkippedBreakpoints, 0) << where;
+    if (name == "smooth")
+    {
+      EXPECT_GE(ref.Panels, crossings) << where; // one piece per crossing at least
+    }
+    for (int maxPanels : { 256, 4096 })
+    {
+      hov::ShadedSegmentSettings settings;
+      settings.Emission = em;
+      settings.Tolerance = 1e-6;
+      settings.MaxPanels = maxPanels;
+      const hov::ShadedSegmentResult r = hov::IntegrateShadedPolynomial(tf, s, g, L, vs, nullptr, ray, settings);
+      const std::string at = where + " MaxPanels " + std::to_string(maxPanels);
+      // Pieces: the kept breakpoints + 1 <= MaxPanels / 2 (the user's
+      // nodes here are few; a ray that turns opaque stops counting there).
+      // Accepted panels: one per piece at least, bisections while the budget
+      // lasts (up to MaxDepth waiting on the stack), so under MaxPanels +
+      // MaxPanels / 2 + MaxDepth (41 by default); 17 samples per panel tried
+      // (at most twice the accepted ones) and one per piece.
+      if (name == "smooth")
+      {
+        EXPECT_EQ(r.SkippedBreakpoints, crossings - (maxPanels / 2 - 1)) << at;
+      }
+      EXPECT_GT(r.SkippedBreakpoints, 0) << at;
+      EXPECT_LE(r.SkippedBreakpoints, crossings - (maxPanels / 2 - 1)) << at;
+      EXPECT_LE(r.Panels, maxPanels + maxPanels / 2 + 41) << at;
+      EXPECT_LE(r.Samples, 34 * r.Panels + maxPanels / 2) << at;
+      EXPECT_LE(r.Samples * 4, ref.Samples) << at;
+      const double e = hovtest::MaxAbsDiff(r.Color, ref.Color);
+      std::cout << "[measured] ShadedSegment many breakpoints " << at << ": " << crossings
+                << " crossings, " << r.Panels << " panels, " << r.Samples << " samples (every breakpoint: "
+                << ref.Samples << "), error " << e << ", estimate " << r.ErrorEstimate
+                << (r.Converged ? "" : ", not converged") << "\n";
+      EXPECT_TRUE(hovtest::AllFinite(r.Color)) << at;
+      EXPECT_LE(e, r.ErrorEstimate + ref.ErrorEstimate + 1e-14) << at;
+      EXPECT_LE(e, 1e-4) << at;
+    }
+  }
+}
+}
+
+TEST(ShadedSegment, ManyBreakpointsHaveABoundedCost)
+{
+  CheckManyBreakpoints({ { 0.0, 0.0 }, { 0.45, 0.6 }, { 0.7, 0.95 }, { 1.0, 0.1 } }, "smooth");
+  CheckManyBreakpoints({ { 0.0, 0.0 }, { 0.45, 0.3 }, { 0.62, 0.3 }, { 0.62, 1.0 }, { 0.66, 1.0 },
+                         { 0.66, 0.2 }, { 1.0, 0.1 } },
+    "opaque");
+  // 2e-4 wide, far narrower than a merged piece's sample spacing.
+  CheckManyBreakpoints({ { 0.0, 0.0 }, { 0.45, 0.5 }, { 0.62, 0.3 }, { 0.62, 1.0 }, { 0.6202, 1.0 },
+                         { 0.6202, 0.3 }, { 1.0, 0.1 } },
+    "narrow opaque band");
+  CheckManyBreakpoints({ { 0.0, 0.0 }, { 0.45, 0.5 }, { 0.6199, 0.3 }, { 0.62, 0.999 },
+                         { 0.6201, 0.3 }, { 1.0, 0.1 } },
+    "narrow spike");
+}
