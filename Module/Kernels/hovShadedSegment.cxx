@@ -406,7 +406,11 @@ int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Pol
     }
     if (r < m)
     {
-      add(tb, true); // an extremum of s: the integrand stays smooth there
+      // An extremum of s: never stepped over. Beyond it s comes back, so a
+      // piece across it could hold a narrow bump of tau(s(t)) (s peaking just
+      // past a convex node) that no sample sees; with s monotone in every
+      // piece, tau convex in s peaks at the piece's ends, which are sampled.
+      add(tb, false);
     }
     ta = tb;
     sa = sb;

@@ -38,7 +38,9 @@
  *
  * Mergeable breakpoints (optional, one flag each): where the integrand is
  * known to hide nothing narrow (TransferFunction::IsSmoothNode(): tau convex
- * and the colour linear across the node; an extremum of s). When there are
+ * and the colour linear across the node; extrema of s are never mergeable, so
+ * s is monotone in every piece and tau, convex in s, peaks at a piece's ends,
+ * which are sampled). When there are
  * more than MaxPanels / 2 pieces, evenly spaced ones of the mergeable
  * breakpoints are stepped over (SkippedBreakpoints) so that at most
  * MaxPanels / 2 pieces remain, or all of them are if the others alone are
@@ -135,8 +137,8 @@ HOV_EXPORT ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf
 /**
  * The breakpoints IntegrateShadedPolynomial uses (file doc), sorted, into
  * @p out; with @p mergeable, one flag per breakpoint: 1 for a crossing of a
- * TransferFunction::IsSmoothNode() node or an extremum of s, 0 for other
- * nodes and gradient-opacity kinks (a breakpoint found twice: 1 only if both).
+ * TransferFunction::IsSmoothNode() node, 0 for other nodes, the extrema of s
+ * and gradient-opacity kinks (a breakpoint found twice: 1 only if both).
  */
 HOV_EXPORT int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s,
   const Polynomial gradient[3], const GradientOpacityFunction* gradientOpacity, double length,

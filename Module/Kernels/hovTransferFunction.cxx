@@ -348,22 +348,30 @@ void TransferFunction::BuildLookup()
     }
   }
   // Nodes a segment integral may step over (IsSmoothNode()): after the slopes.
+  // A change of slope d at a node moves the function by at most d w over the
+  // wider neighbouring interval w; up to 1e-15 of the table's largest finite
+  // value it is the rounding of the slopes (differences of rounded values
+  // over w), not a kink. Over a piece of k nodes such changes move it by at
+  // most k^2 1e-15 of that (1e-9 for k = 1000).
+  double tauScale = 1e-300, colourScale = 1e-300;
+  for (const Node& node : this->Nodes)
+  {
+    tauScale = std::isfinite(node.Tau) ? std::max(tauScale, std::fabs(node.Tau)) : tauScale;
+    colourScale = std::max({ colourScale, std::fabs(node.R), std::fabs(node.G), std::fabs(node.B) });
+  }
   this->SmoothNodes.assign(this->Nodes.size(), 0);
   for (size_t k = 1; k + 1 < this->Nodes.size(); ++k)
   {
     const Node& a = this->Nodes[k - 1];
     const Node& b = this->Nodes[k];
-    // A change of slope d moves the function by at most d w over the wider
-    // neighbouring interval w: below 1e-12 (relative to max(1, |value|)) it
-    // is rounding (slopes of intervals 1e-8 wide carry errors of ~1e-8).
     const double w = std::max(this->X[k] - this->X[k - 1], this->X[k + 1] - this->X[k]);
-    auto same = [w](double u, double v, double value) {
-      return std::fabs(u - v) * w <= 1e-12 * std::max(1.0, std::fabs(value));
+    auto same = [w](double u, double v, double scale) {
+      return std::fabs(u - v) * w <= 1e-15 * scale;
     };
     this->SmoothNodes[k] = this->X[k - 1] < this->X[k] && this->X[k] < this->X[k + 1] &&
       std::isfinite(a.Tau) && std::isfinite(b.Tau) && std::isfinite(this->Nodes[k + 1].Tau) &&
-      (b.DTau >= a.DTau || same(a.DTau, b.DTau, b.Tau)) && same(a.DR, b.DR, b.R) &&
-      same(a.DG, b.DG, b.G) && same(a.DB, b.DB, b.B);
+      (b.DTau >= a.DTau || same(a.DTau, b.DTau, tauScale)) && same(a.DR, b.DR, colourScale) &&
+      same(a.DG, b.DG, colourScale) && same(a.DB, b.DB, colourScale);
   }
   // Last: the loop above may set an opaque interval's first tau to +inf.
   this->ExtinctionBefore.assign(this->Nodes.size() + 1, 0);

@@ -129,7 +129,8 @@ public:
    * neighbouring intervals have width > 0 (no jump) and finite extinction,
    * the colour's slope is the same on both and the extinction's slope does
    * not decrease (convex there), each up to a change that moves the value by
-   * 1e-12 max(1, |value|) over the wider interval (rounding). Over a run of such
+   * 1e-15 of the table's largest finite value over the wider interval
+   * (rounding; k such nodes move it by at most k^2 1e-15). Over a run of such
    * nodes tau is convex and the colour linear in s, so no band narrower than
    * a quadrature's sample spacing can hide between its samples: the nodes the
    * GPU-compatible refinement adds inside one interval of the user's function
