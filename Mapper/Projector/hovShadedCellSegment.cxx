@@ -138,8 +138,10 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
     }
     else
     {
-      // Breakpoints: the table-node crossings of the restricted scalar.
-      hov::ShadedBreakpoints(tf, s, g, nullptr, length, this->Breaks, &this->Smooth);
+      // Breakpoints: the table-node crossings of the restricted scalar (the
+      // ones the integral would step over left out).
+      hov::ShadedBreakpoints(
+        tf, s, g, nullptr, length, this->Breaks, &this->Smooth, MaxPanels / 2);
       CellSampler sampler{ &f, c.Shape, nodes, scalars, ray.Origin + t0 * ray.Direction,
         ray.Direction, { 0.0, 0.0, 0.0 } };
       hov::CellParametricCenter(c.Shape, sampler.PC);

@@ -62,7 +62,9 @@ public:
                     : (this->K >= 0 && this->X[this->K] > this->SEnd);
   }
   /// The node where the current interval ends (if CrossesNode()).
-  double Node() const { return this->Up ? this->X[this->K + 1] : this->X[this->K]; }
+  double Node() const { return this->X[this->NodeIndex()]; }
+  /// Its index in the table.
+  int NodeIndex() const { return this->Up ? this->K + 1 : this->K; }
   /// On to the next interval (across Node()).
   void Next() { this->K += this->Up ? 1 : -1; }
 

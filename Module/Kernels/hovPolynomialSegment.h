@@ -59,6 +59,21 @@
  * quadratic segment through a 10-node table costs ~5 us (8 pieces; the
  * linear path ~0.3 us for 4 pieces), see hovBenchPolynomial.
  *
+ * Many smooth nodes (the sampled route): when the runs cross more table
+ * nodes than MaxPanels / 2 pieces allow and some of them are smooth
+ * (TransferFunction::IsSmoothNode(): a table refined to a tight
+ * GPU-compatible tolerance has thousands, nearly all smooth), one exact piece
+ * per node would cost a root, a composition and a quadrature each: a 48^2
+ * image took 55 s (hovRobustness case 4603043616, up to 24,388 pieces per
+ * segment). The segment then goes to IntegrateShadedPolynomial without
+ * shading (hovShadedSegment.h), which cuts at every other node and at the
+ * extrema of s, steps over evenly spaced smooth crossings (never locating
+ * them) so that 128 pieces remain (MaxPieces), and integrates by adaptive
+ * Clenshaw-Curtis panels, bisected as the estimate asks, with the same
+ * Tolerance, MaxPanels and emission model: the optical depth is then
+ * within the error estimate, not exact (Sampled = true, Pieces = panels).
+ * That case now takes 7.6 s, every segment converged (estimates <= 3e-10).
+ *
  * Exact paths and degenerate input:
  *  - effective degree <= 1: IntegrateLinearScalar (the linear cells' exact
  *    path; bitwise the same result); zero or negative or non-finite length,
@@ -106,6 +121,7 @@ struct PolynomialSegmentResult
   int Pieces = 0;             ///< monotone one-interval pieces integrated
   int Panels = 0;             ///< quadrature panels (0 on exact paths)
   bool Converged = true;      ///< false if the tolerance could not be met
+  bool Sampled = false;       ///< the sampled route past many smooth nodes (file doc)
 };
 
 /// Integral over [0, @p length] of the table @p tf along s(t) (see file doc).

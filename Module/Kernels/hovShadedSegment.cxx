@@ -283,6 +283,42 @@ void SamplePolynomial(void* user, double t, double& value, double gradient[3])
   }
 }
 
+/**
+ * Which mergeable breakpoints are kept (file doc): with @p count breakpoints,
+ * @p mergeable of them mergeable, and at most @p maxPieces pieces, rank r (in
+ * t order) of the M mergeable ones is kept iff
+ * floor((r + 1) B / M) > floor(r B / M), B of them in all. The one rule of
+ * IntegrateShadedSegment and of ShadedBreakpoints (which applies it before
+ * locating the crossings).
+ */
+class Thinning
+{
+public:
+  Thinning(long long count, long long mergeable, long long maxPieces)
+    : M(mergeable)
+    , Thin(mergeable > 0 && count + 1 > maxPieces)
+  {
+    this->B = this->Thin ? std::max(0LL, maxPieces - 1 - (count - mergeable)) : mergeable;
+  }
+  /// True if the mergeable breakpoint of rank @p r is kept.
+  bool Keeps(long long r) const
+  {
+    return !this->Thin || (r + 1) * this->B / this->M != r * this->B / this->M;
+  }
+
+private:
+  long long M;
+  bool Thin;
+  long long B = 0;
+};
+
+/// The pieces left when mergeable breakpoints are stepped over (file doc).
+int PiecesAllowed(const ShadedSegmentSettings& settings)
+{
+  const int half = std::max(std::max(settings.MaxPanels, 1) / 2, 1);
+  return settings.MaxPieces > 0 ? std::min(settings.MaxPieces, half) : half;
+}
+
 bool Finite(const Polynomial& p)
 {
   for (int i = 0; i <= std::min(std::max(p.Degree, 0), Polynomial::MaxDegree); ++i)
@@ -320,31 +356,24 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
   const int maxDepth = std::min(std::max(settings.MaxDepth, 0), StackSize - 2);
   int panelsLeft = std::max(settings.MaxPanels, 1);
   // More pieces than MaxPanels / 2: step over evenly spaced ones of the
-  // mergeable breakpoints (file doc); rank r of M is kept iff
-  // floor((r + 1) B / M) > floor(r B / M), B of them in all.
+  // mergeable breakpoints (file doc).
   const int count = breakpoints ? std::max(breakpointCount, 0) : 0;
   long long numMergeable = 0;
-  for (int i = 0; mergeable && i < count; ++i)
+  const int maxPieces = PiecesAllowed(settings);
+  for (int i = 0; mergeable && count + 1 > maxPieces && i < count; ++i)
   {
     numMergeable += mergeable[i] != 0;
   }
-  const long long maxPieces = std::max(panelsLeft / 2, 1);
-  const bool thin = numMergeable > 0 && count + 1LL > maxPieces;
-  const long long keepMergeable =
-    thin ? std::max(0LL, maxPieces - 1 - (count - numMergeable)) : numMergeable;
+  const Thinning thinning(count, numMergeable, maxPieces);
   long long rank = 0;
   double prev = 0.0;
   for (int i = 0; i <= count; ++i)
   {
     const double next = i < count ? breakpoints[i] : length;
-    if (i < count && thin && mergeable[i])
+    if (i < count && numMergeable > 0 && mergeable[i] && !thinning.Keeps(rank++))
     {
-      const long long r = rank++;
-      if ((r + 1) * keepMergeable / numMergeable == r * keepMergeable / numMergeable)
-      {
-        ++res.SkippedBreakpoints;
-        continue; // stepped over
-      }
+      ++res.SkippedBreakpoints;
+      continue; // stepped over
     }
     if (i < count && (!(next > prev) || !(next < length)))
     {
@@ -363,16 +392,25 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
 
 int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Polynomial gradient[3],
   const GradientOpacityFunction* gradientOpacity, double length, std::vector<double>& out,
-  std::vector<unsigned char>* mergeable)
+  std::vector<unsigned char>* mergeable, int maxPieces, int* skipped)
 {
   out.clear();
   if (mergeable)
   {
     mergeable->clear();
   }
-  // With @p mergeable: one flag per breakpoint, kept beside it through the sort.
+  if (skipped)
+  {
+    *skipped = 0;
+  }
+  // With @p mergeable: one flag per breakpoint, kept beside it through the
+  // sort. Only t in (0, length) is kept (never a NaN: it would upset the sort).
   std::vector<std::pair<double, unsigned char>> flagged;
   auto add = [&](double t, bool smooth) {
+    if (!(t > 0.0 && t < length))
+    {
+      return;
+    }
     if (mergeable)
     {
       flagged.emplace_back(t, smooth ? 1 : 0);
@@ -386,35 +424,7 @@ int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Pol
   {
     return 0;
   }
-  // Table nodes crossed on each monotone run of s.
   double roots[Polynomial::MaxDegree];
-  const int m = EffectiveDegree(s) >= 2 ? FindRoots(Derivative(s), 0.0, 0.0, length, roots) : 0;
-  const std::vector<double>& x = tf.GetNodes();
-  const int n = static_cast<int>(x.size());
-  double ta = 0.0, sa = Evaluate(s, 0.0);
-  for (int r = 0; r <= m; ++r)
-  {
-    const double tb = r < m ? roots[r] : length;
-    const double sb = Evaluate(s, tb);
-    const double lo = std::min(sa, sb), hi = std::max(sa, sb);
-    for (int k = std::max(tf.FindIntervalUpward(lo), 0); k < n && x[k] < hi; ++k)
-    {
-      if (x[k] > lo && (k == 0 || x[k] != x[k - 1]))
-      {
-        add(SolveMonotone(s, x[k], ta, tb), tf.IsSmoothNode(k));
-      }
-    }
-    if (r < m)
-    {
-      // An extremum of s: never stepped over. Beyond it s comes back, so a
-      // piece across it could hold a narrow bump of tau(s(t)) (s peaking just
-      // past a convex node) that no sample sees; with s monotone in every
-      // piece, tau convex in s peaks at the piece's ends, which are sampled.
-      add(tb, false);
-    }
-    ta = tb;
-    sa = sb;
-  }
   // Gradient-opacity kinks: |g|^2 = kink^2, when |g|^2 fits a Polynomial.
   if (gradientOpacity && !gradientOpacity->IsIdentity() && !gradientOpacity->GetKinks().empty())
   {
@@ -447,16 +457,83 @@ int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Pol
       }
     }
   }
+  // Monotone runs of s (between the roots of s'), each with the table nodes
+  // strictly inside its range of s: [K0, K1), distinct values, in t order
+  // (descending k where s decreases).
+  struct Run
+  {
+    double T0, T1, Lo; // Lo: the least s on the run
+    int K0, K1;
+    bool Up;
+  };
+  Run runs[Polynomial::MaxDegree + 1];
+  const int m = EffectiveDegree(s) >= 2 ? FindRoots(Derivative(s), 0.0, 0.0, length, roots) : 0;
+  const std::vector<double>& x = tf.GetNodes();
+  const int n = static_cast<int>(x.size());
+  long long crossings = 0, smooth = 0;
+  double ta = 0.0, sa = Evaluate(s, 0.0);
+  for (int r = 0; r <= m; ++r)
+  {
+    const double tb = r < m ? roots[r] : length;
+    const double sb = Evaluate(s, tb);
+    const double lo = std::min(sa, sb), hi = std::max(sa, sb);
+    Run& run = runs[r];
+    run = Run{ ta, tb, lo, std::max(tf.FindIntervalUpward(lo), 0), 0, sb > sa };
+    for (run.K1 = run.K0; run.K1 < n && x[run.K1] < hi; ++run.K1)
+    {
+    }
+    for (int k = run.K0; k < run.K1; ++k)
+    {
+      if (x[k] > lo && (k == 0 || x[k] != x[k - 1]))
+      {
+        ++crossings;
+        smooth += mergeable && tf.IsSmoothNode(k);
+      }
+    }
+    ta = tb;
+    sa = sb;
+  }
+  // Pre-thinned (IntegrateShadedSegment's rule): a stepped-over crossing is
+  // never solved for. The count includes the GO kinks added above.
+  const long long count = crossings + m + static_cast<long long>(flagged.size() + out.size());
+  const Thinning thinning(count, maxPieces > 0 ? smooth : 0, std::max(maxPieces, 1));
+  long long rank = 0;
+  for (int r = 0; r <= m; ++r)
+  {
+    const Run& run = runs[r];
+    for (int i = 0; i < run.K1 - run.K0; ++i)
+    {
+      const int k = run.Up ? run.K0 + i : run.K1 - 1 - i;
+      if (!(x[k] > run.Lo && (k == 0 || x[k] != x[k - 1])))
+      {
+        continue;
+      }
+      const bool isSmooth = mergeable && tf.IsSmoothNode(k);
+      if (isSmooth && maxPieces > 0 && !thinning.Keeps(rank++))
+      {
+        if (skipped)
+        {
+          ++*skipped;
+        }
+        continue;
+      }
+      add(SolveMonotone(s, x[k], run.T0, run.T1), isSmooth);
+    }
+    if (r < m)
+    {
+      // An extremum of s: never stepped over. Beyond it s comes back, so a
+      // piece across it could hold a narrow bump of tau(s(t)) (s peaking just
+      // past a convex node) that no sample sees; with s monotone in every
+      // piece, tau convex in s peaks at the piece's ends, which are sampled.
+      add(run.T1, false);
+    }
+  }
   if (mergeable)
   {
     // Sorted by t; of equal t (one kept), smooth only if every one is.
     std::sort(flagged.begin(), flagged.end());
     for (const auto& f : flagged)
     {
-      if (!(f.first > 0.0 && f.first < length))
-      {
-        continue;
-      }
       if (!out.empty() && out.back() == f.first)
       {
         mergeable->back() &= f.second;
@@ -468,8 +545,6 @@ int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s, const Pol
     return static_cast<int>(out.size());
   }
   std::sort(out.begin(), out.end());
-  out.erase(std::remove_if(out.begin(), out.end(), [&](double t) { return !(t > 0.0 && t < length); }),
-    out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return static_cast<int>(out.size());
 }
@@ -502,9 +577,13 @@ ShadedSegmentResult IntegrateShadedPolynomial(const TransferFunction& tf, const 
   }
   std::vector<double> cuts;
   std::vector<unsigned char> smooth;
-  ShadedBreakpoints(tf, s, gradient, gradientOpacity, length, cuts, &smooth);
+  int skipped = 0;
+  ShadedBreakpoints(tf, s, gradient, gradientOpacity, length, cuts, &smooth,
+    PiecesAllowed(settings), &skipped);
   PolynomialField field{ &s, gradient };
-  return IntegrateShadedSegment(tf, &SamplePolynomial, &field, length, cuts.data(),
+  res = IntegrateShadedSegment(tf, &SamplePolynomial, &field, length, cuts.data(),
     static_cast<int>(cuts.size()), shading, gradientOpacity, ray, settings, smooth.data());
+  res.SkippedBreakpoints += skipped;
+  return res;
 }
 }

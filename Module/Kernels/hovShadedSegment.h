@@ -40,11 +40,12 @@
  * known to hide nothing narrow (TransferFunction::IsSmoothNode(): tau convex
  * and the colour linear across the node; extrema of s are never mergeable, so
  * s is monotone in every piece and tau, convex in s, peaks at a piece's ends,
- * which are sampled). When there are
- * more than MaxPanels / 2 pieces, evenly spaced ones of the mergeable
- * breakpoints are stepped over (SkippedBreakpoints) so that at most
- * MaxPanels / 2 pieces remain, or all of them are if the others alone are
- * that many; every other breakpoint is kept. A table refined to a tight
+ * which are sampled). When there are more than P = MaxPieces (default and
+ * at most MaxPanels / 2) pieces, evenly spaced ones of the mergeable
+ * breakpoints are stepped over (SkippedBreakpoints) so that at most P pieces
+ * remain, or all of them are if the others alone are that many; every other
+ * breakpoint is kept. IntegrateShadedPolynomial leaves the stepped-over
+ * crossings out before locating them (ShadedBreakpoints). A table refined to a tight
  * GPU-compatible tolerance (up to 16,384 nodes, nearly all added inside the
  * user's intervals) then costs panels for its shape, not one per node; an
  * opaque interval, a jump or a narrow band of the user's function is always
@@ -110,6 +111,9 @@ struct ShadedSegmentSettings
   double Tolerance = 1e-9; ///< absolute per channel of the premultiplied RGBA
   int MaxPanels = 4096;
   int MaxDepth = 40;
+  /// Pieces left when mergeable breakpoints are stepped over (file doc); at
+  /// most MaxPanels / 2, which is also the default (0).
+  int MaxPieces = 0;
 };
 
 struct ShadedSegmentResult
@@ -135,14 +139,20 @@ HOV_EXPORT ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf
   const ShadedSegmentSettings& settings, const unsigned char* mergeable = nullptr);
 
 /**
- * The breakpoints IntegrateShadedPolynomial uses (file doc), sorted, into
- * @p out; with @p mergeable, one flag per breakpoint: 1 for a crossing of a
- * TransferFunction::IsSmoothNode() node, 0 for other nodes, the extrema of s
- * and gradient-opacity kinks (a breakpoint found twice: 1 only if both).
+ * The breakpoints IntegrateShadedPolynomial uses (file doc), sorted, in
+ * (0, @p length), into @p out; with @p mergeable, one flag per breakpoint: 1
+ * for a crossing of a TransferFunction::IsSmoothNode() node, 0 for other
+ * nodes, the extrema of s and gradient-opacity kinks (a breakpoint found
+ * twice: 1 only if both). With @p mergeable and @p maxPieces > 0, the
+ * mergeable crossings IntegrateShadedSegment would step over for at most
+ * @p maxPieces pieces (see MaxPieces) are left out before they are located
+ * (their count in @p skipped): a table of thousands of nodes costs no root
+ * finding for them.
  */
 HOV_EXPORT int ShadedBreakpoints(const TransferFunction& tf, const Polynomial& s,
   const Polynomial gradient[3], const GradientOpacityFunction* gradientOpacity, double length,
-  std::vector<double>& out, std::vector<unsigned char>* mergeable = nullptr);
+  std::vector<double>& out, std::vector<unsigned char>* mergeable = nullptr, int maxPieces = 0,
+  int* skipped = nullptr);
 
 /// The integral for s(t) and grad s(t) given as polynomials in t (file doc).
 HOV_EXPORT ShadedSegmentResult IntegrateShadedPolynomial(const TransferFunction& tf,

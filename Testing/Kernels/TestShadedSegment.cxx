@@ -11,6 +11,7 @@
 
 #include "hovShadedSegment.h"
 
+#include "hovPolynomialSegment.h" // the unshaded route past many crossings
 #include "hovGradientOpacity.h"
 #include "hovTransferFunction.h"
 #include "hovVolumeShading.h"
@@ -185,7 +186,8 @@ TEST(ShadedSegment, DegenerateInput)
 // integral with every breakpoint kept, also with an opaque interval entered
 // by a jump, a narrow opaque band with the same opacity on both sides, and a
 // narrow spike without jumps (the bands a merged piece could step over if
-// their nodes were not kept).
+// their nodes were not kept). Unshaded polynomial segments take the same
+// route past MaxPanels / 2 crossings (hovPolynomialSegment.h).
 namespace
 {
 void CheckManyBreakpoints(const std::vector<hov::OpacityNode>& opacity, const std::string& name)
@@ -287,6 +289,55 @@ void CheckManyBreakpoints(const std::vector<hov::OpacityNode>& opacity, const st
       EXPECT_TRUE(hovtest::AllFinite(r.Color)) << at;
       EXPECT_LE(e, r.ErrorEstimate + ref.ErrorEstimate + 1e-14) << at;
       EXPECT_LE(e, 1e-4) << at;
+    }
+  }
+  // Unshaded, IntegratePolynomialScalar: past MaxPanels / 2 crossings the
+  // sampled route (128 pieces, bisected as needed) is tried within a panel
+  // budget of about one exact walk's cost; if it does not converge there the
+  // exact walk (one exact piece per crossing) is taken after all.
+  for (hov::EmissionModel em : { hov::EmissionModel::WilliamsMax, hov::EmissionModel::WilhelmsVanGelder })
+  {
+    hov::PolynomialSegmentSettings exact;
+    exact.Emission = em;
+    exact.MaxPanels = 1 << 20; // room for every crossing: the exact walk
+    const hov::PolynomialSegmentResult ref = hov::IntegratePolynomialScalar(tf, s, L, exact);
+    EXPECT_FALSE(ref.Sampled) << name;
+    if (name == "smooth")
+    {
+      EXPECT_GE(ref.Pieces, crossings) << name;
+    }
+    for (double tolerance : { 1e-9, 1e-6 })
+    {
+      const std::string at = name + (em == hov::EmissionModel::WilliamsMax ? " WM" : " WVG") +
+        " unshaded tolerance " + std::to_string(tolerance);
+      hov::PolynomialSegmentSettings settings; // MaxPanels 4096
+      settings.Emission = em;
+      settings.Tolerance = tolerance;
+      const hov::PolynomialSegmentResult r = hov::IntegratePolynomialScalar(tf, s, L, settings);
+      const double e = hovtest::MaxAbsDiff(r.Color, ref.Color);
+      std::cout << "[measured] ShadedSegment many breakpoints " << at << ": exact walk " << ref.Pieces
+                << " pieces; " << (r.Sampled ? "sampled, " : "exact walk, ") << r.Panels
+                << " panels, error " << e << ", estimate " << r.ErrorEstimate << "\n";
+      EXPECT_TRUE(hovtest::AllFinite(r.Color)) << at;
+      if (r.Sampled)
+      {
+        EXPECT_TRUE(r.Converged) << at; // else the exact walk
+        EXPECT_LE(r.Panels, std::max(ref.Pieces / 32, 256)) << at;
+        EXPECT_LE(e, r.ErrorEstimate + ref.ErrorEstimate + 1e-14) << at;
+        EXPECT_LE(e, tolerance) << at;
+      }
+      else
+      {
+        EXPECT_EQ(e, 0.0) << at;
+      }
+      // Where the sampled route converges (measured): the opaque case (few
+      // pieces in front of the opaque medium) and, at 1e-6, every case but
+      // the narrow opaque band, whose edges exhaust the bisection depth as
+      // in the shaded results above (so it takes the exact walk).
+      if (name == "opaque" || (tolerance == 1e-6 && name != "narrow opaque band"))
+      {
+        EXPECT_TRUE(r.Sampled) << at;
+      }
     }
   }
 }
