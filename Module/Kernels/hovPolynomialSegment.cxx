@@ -20,13 +20,13 @@ constexpr int MaxFieldDegree = Polynomial::MaxDegree - 1;
 
 using detail::PieceOutput;
 
-/// Pieces of the sampled route (the CPU path's shaded cells keep as many:
-/// MaxPanels 256 there); panels are bisected from them as the estimate asks.
-/// On hovRobustness case 4603043616: 7.6 s (2048 pieces: 27 s, 32: 6.0 s),
-/// every segment converged.
-constexpr int SampledPieces = 128;
-/// Exact pieces per panel of the sampled route, in time (17 samples, DCTs).
-constexpr long long SampledPanelCost = 32;
+/// The sampled route (file doc): pieces left when smooth crossings are
+/// stepped over, panels bisected from them as the estimate asks.
+constexpr int SampledPieces = 64;
+/// Its panel budget is the exact walk's pieces / this, at least 2 SampledPieces:
+/// a panel (17 samples, four DCTs) costs as much as 10-17 exact pieces, so a
+/// try that does not converge adds at most about a quarter of the walk.
+constexpr long long SampledBudgetDivisor = 64;
 
 /// Relative distance to a table node below which a field value is taken to be
 /// at the node: the rounding of a field that reaches a node value (a maximum
@@ -113,12 +113,18 @@ bool ProvablyMonotone(const Polynomial& s, double length)
 
 /**
  * The pieces the exact walk would take over the runs from @p sRun[0] through
- * @p sRun[@p runs] if it is worth trying the sampled route first (more than
- * MaxPanels / 2, some of their nodes smooth: TransferFunction::IsSmoothNode(),
- * as in a table refined to a tight GPU-compatible tolerance), else 0.
+ * @p sRun[@p runs] if it is worth trying the sampled route first, else 0:
+ * more than MaxPanels / 2 of them, and so many at smooth nodes
+ * (TransferFunction::IsSmoothNode(), as in a table refined to a tight
+ * GPU-compatible tolerance) that the others fit in the sampled route's pieces.
  */
 long long PiecesWorthSampling(const TransferFunction& tf, const double* sRun, int runs, int maxPanels)
 {
+  const long long maxPieces = std::max(std::max(maxPanels, 1) / 2, 1);
+  if (static_cast<long long>(runs) * (tf.GetNumberOfNodes() + 1) <= maxPieces)
+  {
+    return 0; // too few nodes for that many (the usual table: no walk)
+  }
   long long all = runs, smooth = 0; // the extrema cut too
   for (int r = 0; r < runs; ++r)
   {
@@ -128,7 +134,8 @@ long long PiecesWorthSampling(const TransferFunction& tf, const double* sRun, in
       smooth += tf.IsSmoothNode(w.NodeIndex());
     }
   }
-  return smooth > 0 && all > std::max(std::max(maxPanels, 1) / 2, 1) ? all : 0;
+  const bool many = all > maxPieces;
+  return many && all - smooth <= SampledPieces / 2 ? all : 0;
 }
 
 /**
@@ -144,6 +151,7 @@ PolynomialSegmentResult IntegrateSampled(const TransferFunction& tf, const Polyn
   sampled.Tolerance = settings.Tolerance;
   sampled.MaxPanels = panels;
   sampled.MaxPieces = SampledPieces;
+  sampled.StopWhenUnconverged = true; // then the exact walk
   const Polynomial noGradient[3] = {};
   const ShadedSegmentResult r = IntegrateShadedPolynomial(
     tf, s, noGradient, length, VolumeShadingSettings(), nullptr, SegmentRay(), sampled);
@@ -281,16 +289,23 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
   ends[nEnds++] = length;
 
   double sRun[Polynomial::MaxDegree + 2];
+  bool snapped = false; // an end of a run rounded onto a node: the exact walk
   sRun[0] = SnapToNode(tf, field.C[0]);
+  snapped = sRun[0] != field.C[0];
   for (int run = 0; run + 1 < nEnds; ++run)
   {
-    sRun[run + 1] = SnapToNode(tf, EvaluateCompensated(field, ends[run + 1]));
+    const double v = EvaluateCompensated(field, ends[run + 1]);
+    sRun[run + 1] = SnapToNode(tf, v);
+    snapped = snapped || sRun[run + 1] != v;
   }
-  if (const long long pieces = PiecesWorthSampling(tf, sRun, nEnds - 1, settings.MaxPanels))
+  // The sampled route (file doc): it samples s unrounded, and has no meaning
+  // for a tolerance that is not a positive number.
+  const bool mayTrySampled = !snapped && settings.Tolerance > 0.0 && std::isfinite(settings.Tolerance);
+  if (const long long pieces =
+        mayTrySampled ? PiecesWorthSampling(tf, sRun, nEnds - 1, settings.MaxPanels) : 0)
   {
-    // A panel costs about 8 exact pieces: the budget costs about one walk.
     const int budget = static_cast<int>(std::min<long long>(
-      std::max<long long>(pieces / SampledPanelCost, 2 * SampledPieces), std::max(settings.MaxPanels, 1)));
+      std::max<long long>(pieces / SampledBudgetDivisor, 2 * SampledPieces), std::max(settings.MaxPanels, 1)));
     const PolynomialSegmentResult sampled = IntegrateSampled(tf, field, length, settings, budget);
     if (sampled.Converged)
     {

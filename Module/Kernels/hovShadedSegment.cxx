@@ -35,15 +35,34 @@ double CosIndex(int m)
   return m <= N ? CosTable[m] : CosTable[2 * N - m];
 }
 
+/// CosIndex(k j) for k in [0, N + 1], j in [0, N], looked up once (the DCTs
+/// and the depth evaluation of every panel use it: the same values).
+struct CosProducts
+{
+  double V[N + 2][N + 1];
+  CosProducts()
+  {
+    for (int k = 0; k <= N + 1; ++k)
+    {
+      for (int j = 0; j <= N; ++j)
+      {
+        this->V[k][j] = CosIndex(k * j);
+      }
+    }
+  }
+};
+const CosProducts CosKJ;
+
 /// DCT-I: coefficients a[0..N] of the interpolant of v at the Lobatto points x_j = cos(pi j/N).
 void Chebyshev(const double v[N + 1], double a[N + 1])
 {
   for (int k = 0; k <= N; ++k)
   {
-    double sum = 0.5 * (v[0] + v[N] * CosIndex(N * k));
+    const double* c = CosKJ.V[k];
+    double sum = 0.5 * (v[0] + v[N] * c[N]);
     for (int j = 1; j < N; ++j)
     {
-      sum += v[j] * CosIndex(j * k);
+      sum += v[j] * c[j];
     }
     a[k] = sum * (2.0 / N);
   }
@@ -65,6 +84,7 @@ struct Context
   const GradientOpacityFunction* GO;
   const SegmentRay* Ray;
   bool Emission = false; // Wilhelms-Van Gelder
+  bool StopUnconverged = false;
   double EmissionFactor = 1.0;
   double MaxColor = 1.0;
   int Samples = 0;
@@ -170,7 +190,7 @@ Panel IntegratePanel(Context& ctx, double a, double b, int hint)
     double sum = 0.0;
     for (int k = 0; k <= N + 1; ++k)
     {
-      sum += bc[k] * CosIndex(k * j);
+      sum += bc[k] * CosKJ.V[k][j];
     }
     depth[j] = half * sum;
   }
@@ -251,6 +271,10 @@ bool IntegratePiece(Context& ctx, double p0, double p1, double length, double bu
       continue;
     }
     res.Converged = res.Converged && ok;
+    if (!ok && ctx.StopUnconverged)
+    {
+      return false; // the caller has another route
+    }
     --panelsLeft;
     ++res.Panels;
     res.ErrorEstimate += transmit * err;
@@ -351,6 +375,7 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
   ctx.Ray = &ray;
   ctx.Emission = settings.Emission == EmissionModel::WilhelmsVanGelder;
   ctx.EmissionFactor = tf.GetEmissionFactor();
+  ctx.StopUnconverged = settings.StopWhenUnconverged;
   const double tol = settings.Tolerance > 0.0 && std::isfinite(settings.Tolerance) ? settings.Tolerance : 1e-9;
   const double budgetPerLength = tol / length;
   const int maxDepth = std::min(std::max(settings.MaxDepth, 0), StackSize - 2);

@@ -8,7 +8,13 @@
 //    segment);
 //  - Cubic_WM: cubic fields (a trilinear hexahedron's restriction);
 //  - Linear_WM_ViaPolynomial: degree-1 input (delegates to IntegrateLinearScalar);
-//  - FindRoots_Quadratic / FindRoots_Cubic: one root isolation on [0, 1].
+//  - FindRoots_Quadratic / FindRoots_Cubic: one root isolation on [0, 1];
+//  - RefinedTable/<tolerance exponent>/<route>: the 10-node table refined to
+//    GPUTolerance 1e-8 (GPU-compatible, thousands of nodes), quadratic fields
+//    with values in [0, 1]; route 0 = default (past MaxPanels / 2 crossings
+//    the sampled route is tried first), 1 = the exact walk forced (MaxPanels
+//    large enough for every crossing). Counter sampled_fraction: segments
+//    the sampled route took.
 
 #include "hovPolynomial.h"
 #include "hovPolynomialSegment.h"
@@ -18,6 +24,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath> // pow
 #include <random>
 #include <vector>
 
@@ -118,6 +125,47 @@ void Linear_WM_ViaPolynomial(benchmark::State& state)
   RunSegments(state, 1, hov::EmissionModel::WilliamsMax);
 }
 
+void RefinedTable(benchmark::State& state)
+{
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = hov::OpacitySemantics::GPUCompatible;
+  spec.UnitDistance = 0.5;
+  spec.GPUTolerance = 1e-8;
+  spec.RefinementBudget = 16384;
+  std::mt19937_64 rng(777); // TenNodeTable's values
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (int k = 0; k < 10; ++k)
+  {
+    const double x = k / 9.0;
+    spec.Color.push_back({ x, u01(rng), u01(rng), u01(rng) });
+    spec.Opacity.push_back({ x, 0.9 * u01(rng) });
+  }
+  hov::TransferFunction tf;
+  tf.Build(spec);
+  const std::vector<Segment> segs = Segments(2);
+  hov::PolynomialSegmentSettings settings;
+  settings.Tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  if (state.range(1))
+  {
+    settings.MaxPanels = 1 << 20;
+  }
+  size_t i = 0;
+  int64_t pieces = 0, sampled = 0;
+  for (auto _ : state)
+  {
+    const Segment& s = segs[i++ & Mask];
+    const hov::PolynomialSegmentResult r = hov::IntegratePolynomialScalar(tf, s.S, s.L, settings);
+    benchmark::DoNotOptimize(r);
+    pieces += r.Pieces;
+    sampled += r.Sampled;
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+  state.counters["table_nodes"] = tf.GetNumberOfNodes();
+  state.counters["pieces_per_segment"] = static_cast<double>(pieces) / state.iterations();
+  state.counters["sampled_fraction"] = static_cast<double>(sampled) / state.iterations();
+  state.SetLabel("ns/segment = Time");
+}
+
 void RunRoots(benchmark::State& state, int degree)
 {
   const std::vector<Segment> segs = Segments(degree);
@@ -146,3 +194,4 @@ BENCHMARK(Cubic_WM);
 BENCHMARK(Linear_WM_ViaPolynomial);
 BENCHMARK(FindRoots_Quadratic);
 BENCHMARK(FindRoots_Cubic);
+BENCHMARK(RefinedTable)->ArgsProduct({ { 9, 6 }, { 0, 1 } });
