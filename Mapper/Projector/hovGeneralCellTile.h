@@ -28,7 +28,8 @@
  * Restriction.RelativeTolerance x the cell's scalar range otherwise), each
  * piece integrated by hov::IntegratePolynomialScalar (exact optical depth,
  * Gauss-Kronrod colour with error estimate <= Segment.Tolerance per channel;
- * degree <= 1 is the linear cells' closed form), pieces composited front to
+ * degree <= 1 is the linear cells' closed form; past thousands of smooth
+ * table nodes its sampled route, both within the estimate), pieces composited front to
  * back. A cell with a constant scalar (e.g. cell scalars) is one constant
  * piece per interval, with no restriction at all (exact).
  * Accuracy per interval: colour and opacity within Segment.Tolerance plus

@@ -59,7 +59,9 @@
  *
  * IntegrateShadedPolynomial (affine cells: s and g polynomials in t):
  * breakpoints at every table-node crossing of s (monotone runs between the
- * roots of s', SolveMonotone) and, when |g|^2 has degree <= 9, every
+ * roots of s', SolveMonotone; but the mergeable ones stepped over are left
+ * out before they are located: ShadedBreakpoints with MaxPieces), the
+ * extrema of s, and, when |g|^2 has degree <= 9, every
  * crossing of a GO kink (FindRoots on |g|^2 = m^2); shading clamp kinks are
  * left to the adaptivity. If s is linear, g constant, every light directional
  * (and GO, shading then constant), it returns the exact closed form
