@@ -22,10 +22,10 @@ using detail::PieceOutput;
 
 /// The sampled route (file doc): pieces left when smooth crossings are
 /// stepped over, panels bisected from them as the estimate asks.
-constexpr int SampledPieces = 64;
-/// Its panel budget is the exact walk's pieces / this, at least 2 SampledPieces:
-/// a panel (17 samples, four DCTs) costs as much as 10-17 exact pieces, so a
-/// try that does not converge adds at most about a quarter of the walk.
+constexpr int SampledPieces = 32;
+/// Its budget of panel evaluations (accepted or bisected) is the exact walk's
+/// pieces / this: an evaluation (17 samples, four DCTs) costs as much as
+/// 10-17 exact pieces, so a try that fails adds about a quarter of the walk.
 constexpr long long SampledBudgetDivisor = 64;
 
 /// Relative distance to a table node below which a field value is taken to be
@@ -47,6 +47,34 @@ double SnapToNode(const TransferFunction& tf, double v)
     }
   }
   return v;
+}
+
+/// True if a table node lies within @p bound (absolute) or NodeSnap (relative) of @p v.
+bool NearNode(const TransferFunction& tf, double v, double bound)
+{
+  const std::vector<double>& x = tf.GetNodes();
+  const auto it = std::lower_bound(x.begin(), x.end(), v);
+  for (auto c : { it, it == x.begin() ? it : it - 1 })
+  {
+    if (c != x.end() &&
+      std::abs(*c - v) <= bound + NodeSnap * std::max(std::abs(*c), std::abs(v)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// A bound on the rounding of Horner's rule for @p s at @p t: 2 n eps sum |c_i t^i|, doubled.
+double HornerBound(const Polynomial& s, double t)
+{
+  double sum = 0.0, power = 1.0;
+  for (int i = 0; i <= s.Degree; ++i)
+  {
+    sum += std::abs(s.C[i]) * power;
+    power *= std::abs(t);
+  }
+  return 4.0 * (s.Degree + 1) * 2.220446049250313e-16 * sum;
 }
 
 /**
@@ -134,7 +162,10 @@ long long PiecesWorthSampling(const TransferFunction& tf, const double* sRun, in
       smooth += tf.IsSmoothNode(w.NodeIndex());
     }
   }
-  const bool many = all > maxPieces;
+  // Worth it: more pieces than MaxPanels / 2, a budget of at least two
+  // evaluations per sampled piece, and at most half of those pieces bounded
+  // by nodes that are not smooth (or by extrema of s).
+  const bool many = all > maxPieces && all / SampledBudgetDivisor >= 2 * SampledPieces;
   return many && all - smooth <= SampledPieces / 2 ? all : 0;
 }
 
@@ -289,23 +320,24 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
   ends[nEnds++] = length;
 
   double sRun[Polynomial::MaxDegree + 2];
-  bool snapped = false; // an end of a run rounded onto a node: the exact walk
+  // The sampled route (file doc) evaluates s by plain Horner and unrounded:
+  // not tried if an end of a run lies within that rounding (or the snap) of
+  // a node, where the two routes could put s on different sides of it, nor
+  // for a tolerance that is not a positive number.
   sRun[0] = SnapToNode(tf, field.C[0]);
-  snapped = sRun[0] != field.C[0];
+  bool nearNode = sRun[0] != field.C[0]; // at t = 0 both read C[0] exactly
   for (int run = 0; run + 1 < nEnds; ++run)
   {
     const double v = EvaluateCompensated(field, ends[run + 1]);
     sRun[run + 1] = SnapToNode(tf, v);
-    snapped = snapped || sRun[run + 1] != v;
+    nearNode = nearNode || NearNode(tf, v, HornerBound(field, ends[run + 1]));
   }
-  // The sampled route (file doc): it samples s unrounded, and has no meaning
-  // for a tolerance that is not a positive number.
-  const bool mayTrySampled = !snapped && settings.Tolerance > 0.0 && std::isfinite(settings.Tolerance);
+  const bool mayTrySampled = !nearNode && settings.Tolerance > 0.0 && std::isfinite(settings.Tolerance);
   if (const long long pieces =
         mayTrySampled ? PiecesWorthSampling(tf, sRun, nEnds - 1, settings.MaxPanels) : 0)
   {
-    const int budget = static_cast<int>(std::min<long long>(
-      std::max<long long>(pieces / SampledBudgetDivisor, 2 * SampledPieces), std::max(settings.MaxPanels, 1)));
+    const int budget = static_cast<int>(
+      std::min<long long>(pieces / SampledBudgetDivisor, std::max(settings.MaxPanels, 1)));
     const PolynomialSegmentResult sampled = IntegrateSampled(tf, field, length, settings, budget);
     if (sampled.Converged)
     {

@@ -66,24 +66,27 @@
  * linear and extinction convex across the node), and one exact piece per
  * node crossed costs a root, a composition and a quadrature each: a 48^2
  * image took 55 s (hovRobustness case 4603043616, up to 24,388 pieces per
- * segment). So when the runs cross more than MaxPanels / 2 nodes, no more
- * than 32 of them not smooth, no end of a run was rounded onto a node
- * (NodeSnap: the route samples s unrounded) and Tolerance is a positive
- * number, the segment first goes to IntegrateShadedPolynomial without
- * shading (hovShadedSegment.h). That keeps every non-smooth node and every
- * extremum of s as a breakpoint, steps over evenly spaced smooth crossings
- * (never locating them) so that 64 pieces remain, and integrates them by
- * adaptive Clenshaw-Curtis panels, bisected as the estimate asks, with the
- * same Tolerance and emission model, within a budget of (pieces of the
- * exact walk) / 64 panels, at least 128 and at most MaxPanels. It stops at
- * the first panel that misses its budget; then the exact walk runs after
+ * segment). So when the runs cross more than MaxPanels / 2 and at least
+ * 4,096 nodes, the pieces not bounded by smooth nodes (or by extrema of s)
+ * are at most 16, no end of a run lies within Horner's rounding or NodeSnap
+ * of a node (the route evaluates s by plain Horner and unrounded), and
+ * Tolerance is a positive number, the segment first goes to
+ * IntegrateShadedPolynomial without shading (hovShadedSegment.h). That
+ * keeps every non-smooth node and every extremum of s as a breakpoint, steps
+ * over evenly spaced smooth crossings (never locating them) so that 32
+ * pieces remain, and integrates them by adaptive Clenshaw-Curtis panels,
+ * bisected as the estimate asks, with the same Tolerance and emission
+ * model, within (pieces of the exact walk) / 64 panel evaluations, accepted
+ * or bisected (at most MaxPanels). It stops at the first panel that misses
+ * its budget or when the evaluations run out; then the exact walk runs after
  * all, so the result is either converged (colour and opacity within the
- * estimate: Sampled = true, Pieces = Panels = the panels) or the exact one.
- * A panel costs as much as 10-17 exact pieces, so a try that fails adds at
- * most about a quarter of the walk (hovBenchPolynomial RefinedTable: 16,394
- * nodes, 11,000 crossings per segment; at tolerance 1e-9 no try converges,
- * 5.7 ms per segment instead of 5.0; at 1e-6 97% converge, 0.25 ms instead of
- * 5.6). Case 4603043616 (every try converged) now takes 6.2 s.
+ * estimate: Sampled = true, Pieces = Panels = the accepted panels) or the
+ * exact one. An evaluation costs as much as 10-17 exact pieces, so a try
+ * that fails adds about a quarter of the walk. Measured (hovBenchPolynomial
+ * RefinedTable: 16,394 nodes, about 11,000 crossings per segment): at
+ * tolerance 1e-9 no try converges, 5.2 ms per segment instead of 4.7; at
+ * 1e-6, 89% converge, 0.40 ms instead of 4.5. Case 4603043616 now takes
+ * 9.8 s; TestShadedSegment checks the route against the exact walk.
  *
  * Exact paths and degenerate input:
  *  - effective degree <= 1: IntegrateLinearScalar (the linear cells' exact

@@ -51,14 +51,20 @@ struct CosProducts
     }
   }
 };
-const CosProducts CosKJ;
+/// The table, built once (thread-safe initialisation).
+const CosProducts& CosKJ()
+{
+  static const CosProducts table;
+  return table;
+}
 
 /// DCT-I: coefficients a[0..N] of the interpolant of v at the Lobatto points x_j = cos(pi j/N).
 void Chebyshev(const double v[N + 1], double a[N + 1])
 {
+  const CosProducts& cosKJ = CosKJ();
   for (int k = 0; k <= N; ++k)
   {
-    const double* c = CosKJ.V[k];
+    const double* c = cosKJ.V[k];
     double sum = 0.5 * (v[0] + v[N] * c[N]);
     for (int j = 1; j < N; ++j)
     {
@@ -85,6 +91,7 @@ struct Context
   const SegmentRay* Ray;
   bool Emission = false; // Wilhelms-Van Gelder
   bool StopUnconverged = false;
+  int EvaluationsLeft = 0; // panels evaluated, accepted or not (StopUnconverged)
   double EmissionFactor = 1.0;
   double MaxColor = 1.0;
   int Samples = 0;
@@ -185,12 +192,13 @@ Panel IntegratePanel(Context& ctx, double a, double b, int hint)
     bc[0] -= (k % 2 ? -1.0 : 1.0) * bc[k];
   }
   double depth[N + 1];
+  const CosProducts& cosKJ = CosKJ();
   for (int j = 0; j <= N; ++j)
   {
     double sum = 0.0;
     for (int k = 0; k <= N + 1; ++k)
     {
-      sum += bc[k] * CosKJ.V[k][j];
+      sum += bc[k] * cosKJ.V[k][j];
     }
     depth[j] = half * sum;
   }
@@ -250,6 +258,11 @@ bool IntegratePiece(Context& ctx, double p0, double p1, double length, double bu
   {
     const double b = ends[top];
     const Panel panel = IntegratePanel(ctx, a, b, hint);
+    if (ctx.StopUnconverged && --ctx.EvaluationsLeft < 0)
+    {
+      res.Converged = false;
+      return false; // out of evaluations: the caller has another route
+    }
     const double transmit = 1.0 - res.Color.A;
     const double behind = ctx.Emission
       ? ctx.EmissionFactor * ctx.MaxColor * (length - b) + 1.0
@@ -376,6 +389,7 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
   ctx.Emission = settings.Emission == EmissionModel::WilhelmsVanGelder;
   ctx.EmissionFactor = tf.GetEmissionFactor();
   ctx.StopUnconverged = settings.StopWhenUnconverged;
+  ctx.EvaluationsLeft = std::max(settings.MaxPanels, 1);
   const double tol = settings.Tolerance > 0.0 && std::isfinite(settings.Tolerance) ? settings.Tolerance : 1e-9;
   const double budgetPerLength = tol / length;
   const int maxDepth = std::min(std::max(settings.MaxDepth, 0), StackSize - 2);

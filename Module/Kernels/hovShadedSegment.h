@@ -116,7 +116,8 @@ struct ShadedSegmentSettings
   /// Pieces left when mergeable breakpoints are stepped over (file doc); at
   /// most MaxPanels / 2, which is also the default (0).
   int MaxPieces = 0;
-  /// Stop at the first panel that misses its budget (Converged false, the
+  /// Stop at the first panel that misses its budget, or once MaxPanels
+  /// panels have been evaluated, accepted or bisected (Converged false, the
   /// colour incomplete): for a caller that then takes another route.
   bool StopWhenUnconverged = false;
 };
