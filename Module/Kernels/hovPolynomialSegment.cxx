@@ -65,7 +65,9 @@ bool NearNode(const TransferFunction& tf, double v, double bound)
   return false;
 }
 
-/// A bound on the rounding of Horner's rule for @p s at @p t: 2 n eps sum |c_i t^i|, doubled.
+/// A bound on the rounding of Horner's rule for @p s at @p t, generous (FMA
+/// contraction, neighbouring samples): 4 (n + 1) eps sum |c_i t^i|, over
+/// four times the classical gamma_2n sum |c_i t^i|.
 double HornerBound(const Polynomial& s, double t)
 {
   double sum = 0.0, power = 1.0;
@@ -324,17 +326,25 @@ PolynomialSegmentResult IntegratePolynomialScalar(const TransferFunction& tf, co
   // not tried if an end of a run lies within that rounding (or the snap) of
   // a node, where the two routes could put s on different sides of it, nor
   // for a tolerance that is not a positive number.
+  double sRaw[Polynomial::MaxDegree + 2];
+  sRaw[0] = field.C[0];
   sRun[0] = SnapToNode(tf, field.C[0]);
-  bool nearNode = sRun[0] != field.C[0]; // at t = 0 both read C[0] exactly
   for (int run = 0; run + 1 < nEnds; ++run)
   {
-    const double v = EvaluateCompensated(field, ends[run + 1]);
-    sRun[run + 1] = SnapToNode(tf, v);
-    nearNode = nearNode || NearNode(tf, v, HornerBound(field, ends[run + 1]));
+    sRaw[run + 1] = EvaluateCompensated(field, ends[run + 1]);
+    sRun[run + 1] = SnapToNode(tf, sRaw[run + 1]);
   }
-  const bool mayTrySampled = !nearNode && settings.Tolerance > 0.0 && std::isfinite(settings.Tolerance);
-  if (const long long pieces =
-        mayTrySampled ? PiecesWorthSampling(tf, sRun, nEnds - 1, settings.MaxPanels) : 0)
+  const bool mayTrySampled = settings.Tolerance > 0.0 && std::isfinite(settings.Tolerance) &&
+    sRun[0] == sRaw[0]; // at t = 0 both routes read C[0] exactly
+  long long pieces = mayTrySampled ? PiecesWorthSampling(tf, sRun, nEnds - 1, settings.MaxPanels) : 0;
+  for (int run = 1; pieces > 0 && run < nEnds; ++run)
+  {
+    if (NearNode(tf, sRaw[run], HornerBound(field, ends[run])))
+    {
+      pieces = 0;
+    }
+  }
+  if (pieces > 0)
   {
     const int budget = static_cast<int>(
       std::min<long long>(pieces / SampledBudgetDivisor, std::max(settings.MaxPanels, 1)));

@@ -66,10 +66,11 @@
  * linear and extinction convex across the node), and one exact piece per
  * node crossed costs a root, a composition and a quadrature each: a 48^2
  * image took 55 s (hovRobustness case 4603043616, up to 24,388 pieces per
- * segment). So when the runs cross more than MaxPanels / 2 and at least
- * 4,096 nodes, the pieces not bounded by smooth nodes (or by extrema of s)
- * are at most 16, no end of a run lies within Horner's rounding or NodeSnap
- * of a node (the route evaluates s by plain Horner and unrounded), and
+ * segment). So when the runs make more than MaxPanels / 2 and at least
+ * 4,096 pieces (nodes crossed plus runs), at most 16 of them not bounded
+ * by smooth nodes (or by extrema of s), no end of a run lies within
+ * Horner's rounding or NodeSnap of a node (the route evaluates s by plain
+ * Horner and unrounded), and
  * Tolerance is a positive number, the segment first goes to
  * IntegrateShadedPolynomial without shading (hovShadedSegment.h). That
  * keeps every non-smooth node and every extremum of s as a breakpoint, steps
@@ -84,9 +85,10 @@
  * exact one. An evaluation costs as much as 10-17 exact pieces, so a try
  * that fails adds about a quarter of the walk. Measured (hovBenchPolynomial
  * RefinedTable: 16,394 nodes, about 11,000 crossings per segment): at
- * tolerance 1e-9 no try converges, 5.2 ms per segment instead of 4.7; at
- * 1e-6, 89% converge, 0.40 ms instead of 4.5. Case 4603043616 now takes
- * 9.8 s; TestShadedSegment checks the route against the exact walk.
+ * tolerance 1e-9 no try converges, 4.6-6.9 ms per segment instead of
+ * 4.3-4.7 (four runs on a noisy machine); at 1e-6, 89% converge, 0.40-0.46
+ * ms instead of 4.2-4.5. Case 4603043616 now takes 9.8 s; TestShadedSegment
+ * checks the route against the exact walk.
  *
  * Exact paths and degenerate input:
  *  - effective degree <= 1: IntegrateLinearScalar (the linear cells' exact

@@ -257,12 +257,12 @@ bool IntegratePiece(Context& ctx, double p0, double p1, double length, double bu
   while (top >= 0)
   {
     const double b = ends[top];
-    const Panel panel = IntegratePanel(ctx, a, b, hint);
     if (ctx.StopUnconverged && --ctx.EvaluationsLeft < 0)
     {
       res.Converged = false;
       return false; // out of evaluations: the caller has another route
     }
+    const Panel panel = IntegratePanel(ctx, a, b, hint);
     const double transmit = 1.0 - res.Color.A;
     const double behind = ctx.Emission
       ? ctx.EmissionFactor * ctx.MaxColor * (length - b) + 1.0

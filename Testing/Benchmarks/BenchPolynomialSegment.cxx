@@ -86,14 +86,13 @@ std::vector<Segment> Segments(int degree)
   return out;
 }
 
-void RunSegments(benchmark::State& state, int degree, hov::EmissionModel model)
+/// IntegratePolynomialScalar on the segments of @p degree, one per iteration.
+void RunSegments(benchmark::State& state, const hov::TransferFunction& tf, int degree,
+  const hov::PolynomialSegmentSettings& settings)
 {
-  const hov::TransferFunction tf = Table();
   const std::vector<Segment> segs = Segments(degree);
-  hov::PolynomialSegmentSettings settings;
-  settings.Emission = model;
   size_t i = 0;
-  int64_t pieces = 0, panels = 0;
+  int64_t pieces = 0, panels = 0, sampled = 0;
   for (auto _ : state)
   {
     const Segment& s = segs[i++ & Mask];
@@ -101,11 +100,23 @@ void RunSegments(benchmark::State& state, int degree, hov::EmissionModel model)
     benchmark::DoNotOptimize(r);
     pieces += r.Pieces;
     panels += r.Panels;
+    sampled += r.Sampled;
   }
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
   state.counters["pieces_per_segment"] = static_cast<double>(pieces) / state.iterations();
   state.counters["panels_per_segment"] = static_cast<double>(panels) / state.iterations();
+  if (sampled > 0 || tf.GetNumberOfNodes() > 1000)
+  {
+    state.counters["sampled_fraction"] = static_cast<double>(sampled) / state.iterations();
+  }
   state.SetLabel("ns/segment = Time");
+}
+
+void RunSegments(benchmark::State& state, int degree, hov::EmissionModel model)
+{
+  hov::PolynomialSegmentSettings settings;
+  settings.Emission = model;
+  RunSegments(state, Table(), degree, settings);
 }
 
 void Quadratic_WM(benchmark::State& state)
@@ -127,43 +138,19 @@ void Linear_WM_ViaPolynomial(benchmark::State& state)
 
 void RefinedTable(benchmark::State& state)
 {
-  hov::TransferFunctionSpec spec;
-  spec.Semantics = hov::OpacitySemantics::GPUCompatible;
-  spec.UnitDistance = 0.5;
+  hov::TransferFunctionSpec spec = hovBench::TenNodeSpec(hov::OpacitySemantics::GPUCompatible);
   spec.GPUTolerance = 1e-8;
   spec.RefinementBudget = 16384;
-  std::mt19937_64 rng(777); // TenNodeTable's values
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  for (int k = 0; k < 10; ++k)
-  {
-    const double x = k / 9.0;
-    spec.Color.push_back({ x, u01(rng), u01(rng), u01(rng) });
-    spec.Opacity.push_back({ x, 0.9 * u01(rng) });
-  }
   hov::TransferFunction tf;
   tf.Build(spec);
-  const std::vector<Segment> segs = Segments(2);
   hov::PolynomialSegmentSettings settings;
   settings.Tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
   if (state.range(1))
   {
     settings.MaxPanels = 1 << 20;
   }
-  size_t i = 0;
-  int64_t pieces = 0, sampled = 0;
-  for (auto _ : state)
-  {
-    const Segment& s = segs[i++ & Mask];
-    const hov::PolynomialSegmentResult r = hov::IntegratePolynomialScalar(tf, s.S, s.L, settings);
-    benchmark::DoNotOptimize(r);
-    pieces += r.Pieces;
-    sampled += r.Sampled;
-  }
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
   state.counters["table_nodes"] = tf.GetNumberOfNodes();
-  state.counters["pieces_per_segment"] = static_cast<double>(pieces) / state.iterations();
-  state.counters["sampled_fraction"] = static_cast<double>(sampled) / state.iterations();
-  state.SetLabel("ns/segment = Time");
+  RunSegments(state, tf, 2, settings);
 }
 
 void RunRoots(benchmark::State& state, int degree)

@@ -13,7 +13,7 @@
 
 namespace hovBench
 {
-inline hov::TransferFunction TenNodeTable(hov::OpacitySemantics semantics)
+inline hov::TransferFunctionSpec TenNodeSpec(hov::OpacitySemantics semantics)
 {
   hov::TransferFunctionSpec spec;
   spec.Semantics = semantics;
@@ -26,8 +26,13 @@ inline hov::TransferFunction TenNodeTable(hov::OpacitySemantics semantics)
     spec.Color.push_back({ x, u01(rng), u01(rng), u01(rng) });
     spec.Opacity.push_back({ x, 0.9 * u01(rng) });
   }
+  return spec;
+}
+
+inline hov::TransferFunction TenNodeTable(hov::OpacitySemantics semantics)
+{
   hov::TransferFunction tf;
-  tf.Build(spec);
+  tf.Build(TenNodeSpec(semantics));
   return tf;
 }
 }
