@@ -119,8 +119,17 @@ void hov::FeatureSegment::RestrictField(const FrameData& frame, int g, const dou
   }
   const double origin[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
   const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
-  hov::RestrictCellScalar(cell.Shape, cells.GetNodes(cell), scalars, origin, direction, t0, t1,
-    frame.Restriction, out);
+  if (cell.Affine && scalars == cells.GetScalars(cell))
+  {
+    // The cell's own scalar: its kept Field and inverse Jacobian, no set-up per ray.
+    out.resize(1);
+    hov::GeneralCells::RestrictAffine(cell, cells.GetNodes(cell), origin, direction, t0, t1, out[0]);
+  }
+  else
+  {
+    hov::RestrictCellScalar(cell.Shape, cells.GetNodes(cell), scalars, origin, direction, t0, t1,
+      frame.Restriction, out);
+  }
   const double tol = NegligibleRelative * std::max(std::abs(lo), std::abs(hi));
   for (hov::RestrictedPiece& piece : out)
   {

@@ -47,37 +47,6 @@ bool HullRowSpan(const glm::dvec2* corners, int n, double y, double& xMin, doubl
   }
   return xMin <= xMax;
 }
-
-/**
- * hov::RestrictCellScalar's exact affine path with the cell's inverse
- * Jacobian precomputed (hov::GeneralCells): the parametric point moves
- * linearly along the ray, pc(t0 + tau) = pc0 + J^-1 (o + t0 d - x0) + tau J^-1 d
- * (x0, pc0: corner 0), and the cell's field as a polynomial in pcoords
- * (hov::RestrictAffineField, set up per cell) gives s as one polynomial in
- * tau, exact to rounding.
- */
-void RestrictAffine(const hov::GeneralCells::Cell& cell, const double* nodes,
-  const double o[3], const double d[3], double t0, double t1,
-  std::vector<hov::RestrictedPiece>& out)
-{
-  const double* inv = cell.InverseJacobian;
-  double pc0[3], rel[3], start[3], step[3];
-  hov::CellNodeParametricCoords(cell.Shape, 0, pc0);
-  for (int k = 0; k < 3; ++k)
-  {
-    rel[k] = (o[k] - nodes[k]) + t0 * d[k];
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    start[i] = pc0[i] + (inv[3 * i] * rel[0] + inv[3 * i + 1] * rel[1] + inv[3 * i + 2] * rel[2]);
-    step[i] = inv[3 * i] * d[0] + inv[3 * i + 1] * d[1] + inv[3 * i + 2] * d[2];
-  }
-  out.resize(1);
-  hov::RestrictedPiece& piece = out[0];
-  piece.T0 = t0;
-  piece.T1 = t1;
-  piece.S = hov::RestrictAffineField(cell.Field, start, step);
-}
 }
 
 std::array<int, 4> hov::GeneralCellTile::PixelBox(
@@ -192,7 +161,9 @@ const std::vector<hov::RestrictedPiece>& hov::GeneralCellTile::Restrict(const Fr
   const double direction[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
   if (cell.Affine)
   {
-    RestrictAffine(cell, cells.GetNodes(cell), origin, direction, t0, t1, this->Pieces);
+    this->Pieces.resize(1);
+    hov::GeneralCells::RestrictAffine(
+      cell, cells.GetNodes(cell), origin, direction, t0, t1, this->Pieces[0]);
   }
   else
   {

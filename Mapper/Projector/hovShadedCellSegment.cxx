@@ -4,7 +4,7 @@
 #include "hovFeatures.h"     // the shading settings, frames
 #include "hovGeneralCells.h" // the general cells
 
-#include "hovFieldGradient.h"   // AffineGradientAlongRay, CellFieldAndGradient
+#include "hovFieldGradient.h"   // AffineGradientAlongLine, CellFieldAndGradient
 #include "hovShadedSegment.h"   // IntegrateShadedPolynomial, IntegrateShadedSegment
 #include "hovVolumeShading.h"   // IntegrateLinearScalarShaded
 
@@ -39,6 +39,35 @@ void ToWorld(const hov::Features& f, const hov::Polynomial g[3], hov::Polynomial
       out[i].C[k] = n[0][i] * g[0].C[k] + n[1][i] * g[1].C[k] + n[2][i] * g[2].C[k];
     }
   }
+}
+
+/**
+ * grad s along the ray from @p t0 in an affine cell, with the kept inverse
+ * Jacobian (hov::GeneralCells), as the scalar's restriction is; false (the
+ * pointwise route then) for other cells and non-finite results.
+ */
+bool AffineGradient(const hov::GeneralCells::Cell& c, const double* nodes, const double* scalars,
+  const double o[3], const double d[3], double t0, hov::Polynomial g[3])
+{
+  double coefficients[3][hov::AffineFieldTerms];
+  if (!c.Affine || !hov::AffineGradientCoefficients(c.Shape, scalars, coefficients))
+  {
+    return false;
+  }
+  double start[3], step[3];
+  hov::GeneralCells::AffineLine(c, nodes, o, d, t0, start, step);
+  hov::AffineGradientAlongLine(coefficients, c.InverseJacobian, start, step, g);
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i <= g[k].Degree; ++i)
+    {
+      if (!std::isfinite(g[k].C[i]))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
 }
 
 /// The segment's position in the lighting (world) frame, from ray parameter @p t0.
@@ -131,7 +160,7 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
     const double o[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
     const double d[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
     hov::Polynomial g[3], gw[3];
-    if (c.Affine && hov::AffineGradientAlongRay(c.Shape, nodes, scalars, o, d, t0, g))
+    if (AffineGradient(c, nodes, scalars, o, d, t0, g))
     {
       ToWorld(f, g, gw);
       r = hov::IntegrateShadedPolynomial(tf, s, gw, length, f.VolumeShading, go, wray, settings);

@@ -281,3 +281,31 @@ void hov::GeneralCells::Build(vtkUnstructuredGridBase* grid,
   }
   this->Stats.Rendered = static_cast<vtkIdType>(this->Cells.size());
 }
+
+void hov::GeneralCells::AffineLine(const Cell& cell, const double* nodes, const double o[3],
+  const double d[3], double t0, double start[3], double step[3])
+{
+  const double* inv = cell.InverseJacobian;
+  double pc0[3], rel[3];
+  hov::CellNodeParametricCoords(cell.Shape, 0, pc0);
+  for (int k = 0; k < 3; ++k)
+  {
+    rel[k] = (o[k] - nodes[k]) + t0 * d[k];
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    start[i] = pc0[i] + (inv[3 * i] * rel[0] + inv[3 * i + 1] * rel[1] + inv[3 * i + 2] * rel[2]);
+    step[i] = inv[3 * i] * d[0] + inv[3 * i + 1] * d[1] + inv[3 * i + 2] * d[2];
+  }
+}
+
+void hov::GeneralCells::RestrictAffine(const Cell& cell, const double* nodes, const double o[3],
+  const double d[3], double t0, double t1, hov::RestrictedPiece& piece)
+{
+  double start[3], step[3];
+  AffineLine(cell, nodes, o, d, t0, start, step);
+  piece = hov::RestrictedPiece();
+  piece.T0 = t0;
+  piece.T1 = t1;
+  piece.S = hov::RestrictAffineField(cell.Field, start, step);
+}

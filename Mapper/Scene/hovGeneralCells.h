@@ -46,7 +46,8 @@
 #ifndef hovGeneralCells_h
 #define hovGeneralCells_h
 
-#include "hovCellShapes.h" // CellShape
+#include "hovCellRestriction.h" // RestrictedPiece
+#include "hovCellShapes.h"      // CellShape
 
 #include "vtkType.h" // vtkIdType
 
@@ -109,6 +110,24 @@ public:
   /// Global point ids of the cell's nodes.
   const vtkIdType* GetNodeIds(const Cell& c) const { return this->NodeIds.data() + c.NodeOffset; }
   const Statistics& GetStatistics() const { return this->Stats; }
+
+  /**
+   * An affine cell's parametric line of the ray @p o + t @p d from @p t0:
+   * pc(t0 + tau) = @p start + tau @p step, with pc at corner 0 and the kept
+   * inverse Jacobian (no Newton iterations). With the cell's Field
+   * (hov::RestrictAffineField) the scalar along the ray; with
+   * hov::AffineGradientAlongLine its gradient.
+   */
+  static void AffineLine(const Cell& cell, const double* nodes, const double o[3],
+    const double d[3], double t0, double start[3], double step[3]);
+
+  /**
+   * hov::RestrictCellScalar's exact affine path for an affine cell's own
+   * scalar (the kept Field and inverse Jacobian): @p piece is s on
+   * [@p t0, @p t1] as one polynomial in tau = t - t0, exact to rounding.
+   */
+  static void RestrictAffine(const Cell& cell, const double* nodes, const double o[3],
+    const double d[3], double t0, double t1, hov::RestrictedPiece& piece);
 
 private:
   std::vector<Cell> Cells;

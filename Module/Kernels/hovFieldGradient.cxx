@@ -86,6 +86,95 @@ bool TetraGradient(const double* p, const double* s, double g[3])
   return true;
 }
 
+namespace
+{
+/// VTK cell types are below this (the CellShape values).
+constexpr int ShapeSlots = 32;
+
+/// AffineFieldBasis of every shape that has one, built once (thread-safe
+/// initialisation of a function-local static).
+struct BasisTable
+{
+  double V[ShapeSlots][AffineFieldTerms * MaxCellNodes] = {};
+  bool Known[ShapeSlots] = {};
+  BasisTable()
+  {
+    for (int i = 0; i < ShapeSlots; ++i)
+    {
+      const CellShape shape = static_cast<CellShape>(i);
+      this->Known[i] = IsSupportedCellType(i) && AffineFieldBasis(shape, this->V[i]);
+    }
+  }
+};
+}
+
+const double* CachedAffineFieldBasis(CellShape shape)
+{
+  static const BasisTable table;
+  const int i = static_cast<int>(shape);
+  return i >= 0 && i < ShapeSlots && table.Known[i] ? table.V[i] : nullptr;
+}
+
+bool AffineGradientCoefficients(
+  CellShape shape, const double* scalars, double coefficients[3][AffineFieldTerms])
+{
+  const double* basis = CachedAffineFieldBasis(shape);
+  if (!basis)
+  {
+    return false; // pyramids: rational shape functions
+  }
+  const int nodes = CellNodeCount(shape);
+  for (int i = 0; i < nodes; ++i)
+  {
+    if (!std::isfinite(scalars[i]))
+    {
+      return false; // the documented refusal: no NaN coefficient reaches the caller
+    }
+  }
+  // The gradient of s - s_0 (the same polynomial's): a constant field then
+  // has the zero gradient exactly, not rounding noise in a random direction.
+  double shifted[MaxCellNodes];
+  for (int i = 0; i < nodes; ++i)
+  {
+    shifted[i] = scalars[i] - scalars[0];
+  }
+  double c[AffineFieldTerms];
+  AffineFieldCoefficients(basis, nodes, shifted, c);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    DerivativeCoefficients(c, axis, coefficients[axis]);
+  }
+  return true;
+}
+
+void AffineGradientAlongLine(const double coefficients[3][AffineFieldTerms],
+  const double inverseJacobian[9], const double start[3], const double step[3],
+  Polynomial gradient[3])
+{
+  Polynomial dpc[3];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    dpc[axis] = RestrictAffineField(coefficients[axis], start, step);
+  }
+  // grad_a = sum_b (J^-1)_{b a} ds/dpc_b.
+  const double* inv = inverseJacobian;
+  for (int a = 0; a < 3; ++a)
+  {
+    Polynomial g;
+    g.Degree = 0;
+    for (int b = 0; b < 3; ++b)
+    {
+      g.Degree = std::max(g.Degree, dpc[b].Degree);
+      for (int k = 0; k <= dpc[b].Degree; ++k)
+      {
+        g.C[k] += inv[3 * b + a] * dpc[b].C[k];
+      }
+    }
+    g.Degree = EffectiveDegree(g);
+    gradient[a] = g;
+  }
+}
+
 bool AffineGradientAlongRay(CellShape shape, const double* points, const double* scalars,
   const double origin[3], const double direction[3], double t0, Polynomial gradient[3])
 {
@@ -93,10 +182,10 @@ bool AffineGradientAlongRay(CellShape shape, const double* points, const double*
   {
     return false;
   }
-  double basis[AffineFieldTerms * MaxCellNodes];
-  if (!AffineFieldBasis(shape, basis))
+  double coefficients[3][AffineFieldTerms];
+  if (!AffineGradientCoefficients(shape, scalars, coefficients))
   {
-    return false; // pyramids: rational shape functions
+    return false; // pyramids, non-finite scalars
   }
   double pcCenter[3], xc[3], jac[9], inv[9];
   CellParametricCenter(shape, pcCenter);
@@ -122,46 +211,7 @@ bool AffineGradientAlongRay(CellShape shape, const double* points, const double*
       return false;
     }
   }
-  const int nodes = CellNodeCount(shape);
-  for (int i = 0; i < nodes; ++i)
-  {
-    if (!std::isfinite(scalars[i]))
-    {
-      return false; // the documented refusal: no NaN coefficient reaches the caller
-    }
-  }
-  // The gradient of s - s_0 (the same polynomial's): a constant field then
-  // has the zero gradient exactly, not rounding noise in a random direction.
-  double shifted[MaxCellNodes];
-  for (int i = 0; i < nodes; ++i)
-  {
-    shifted[i] = scalars[i] - scalars[0];
-  }
-  double c[AffineFieldTerms];
-  AffineFieldCoefficients(basis, nodes, shifted, c);
-  Polynomial dpc[3];
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    double dc[AffineFieldTerms];
-    DerivativeCoefficients(c, axis, dc);
-    dpc[axis] = RestrictAffineField(dc, pcStart, step);
-  }
-  // grad_a = sum_b (J^-1)_{b a} ds/dpc_b.
-  for (int a = 0; a < 3; ++a)
-  {
-    Polynomial g;
-    g.Degree = 0;
-    for (int b = 0; b < 3; ++b)
-    {
-      g.Degree = std::max(g.Degree, dpc[b].Degree);
-      for (int k = 0; k <= dpc[b].Degree; ++k)
-      {
-        g.C[k] += inv[3 * b + a] * dpc[b].C[k];
-      }
-    }
-    g.Degree = EffectiveDegree(g);
-    gradient[a] = g;
-  }
+  AffineGradientAlongLine(coefficients, inv, pcStart, step, gradient);
   return true;
 }
 

@@ -39,6 +39,7 @@
 #ifndef hovFieldGradient_h
 #define hovFieldGradient_h
 
+#include "hovCellRestriction.h" // AffineFieldTerms
 #include "hovCellShapes.h"
 #include "hovConfig.h"
 #include "hovPolynomial.h"
@@ -57,6 +58,24 @@ HOV_EXPORT bool TetraGradient(const double* points, const double* scalars, doubl
 HOV_EXPORT bool AffineGradientAlongRay(CellShape shape, const double* points,
   const double* scalars, const double origin[3], const double direction[3], double t0,
   Polynomial gradient[3]);
+
+/**
+ * AffineGradientAlongRay in two steps, for callers that keep a cell's inverse
+ * Jacobian (hov::GeneralCells): per cell, @p coefficients[axis] = the
+ * coefficients (AffineFieldTerms, hovCellRestriction.h) of d(s - s_0)/dpc_axis
+ * (false for pyramids and non-finite scalars); per ray, along the parametric
+ * line pc(tau) = @p start + tau @p step, the three polynomials
+ * grad s = J^-T ds/dpc with @p inverseJacobian = J^-1 (row-major).
+ * AffineGradientAlongRay is exactly these two calls with J at the centre.
+ */
+HOV_EXPORT bool AffineGradientCoefficients(
+  CellShape shape, const double* scalars, double coefficients[3][AffineFieldTerms]);
+HOV_EXPORT void AffineGradientAlongLine(const double coefficients[3][AffineFieldTerms],
+  const double inverseJacobian[9], const double start[3], const double step[3],
+  Polynomial gradient[3]);
+
+/// AffineFieldBasis(@p shape), computed once per shape; null where there is none (pyramids).
+HOV_EXPORT const double* CachedAffineFieldBasis(CellShape shape);
 
 /**
  * The field value and world gradient at @p x inside the cell; @p pc is the

@@ -141,11 +141,15 @@ double EdgeOnOpacity(double alpha, double cosIncidence, double minCosine)
   return -std::expm1(std::log1p(-alpha) / c);
 }
 
-void ShadePhong(const double baseColor[3], const double point[3], const double normal[3],
-  const double toViewer[3], const ShadingLight* lights, int lightCount,
-  const ShadingMaterial& material, double out[3])
+void PhongLightSums(const double point[3], const double normal[3], const double toViewer[3],
+  const ShadingLight* lights, int lightCount, const ShadingMaterial& material, double diffuse[3],
+  double specular[3])
 {
-  double diffuse[3] = { 0.0, 0.0, 0.0 }, specular[3] = { 0.0, 0.0, 0.0 };
+  for (int c = 0; c < 3; ++c)
+  {
+    diffuse[c] = 0.0;
+    specular[c] = 0.0;
+  }
   for (int i = 0; lights && i < lightCount; ++i)
   {
     double l[3], factor = 0.0;
@@ -170,6 +174,11 @@ void ShadePhong(const double baseColor[3], const double point[3], const double n
       specular[c] += sf * lights[i].Color[c];
     }
   }
+}
+
+void ComposePhong(const double baseColor[3], const ShadingMaterial& material,
+  const double diffuse[3], const double specular[3], double out[3])
+{
   for (int c = 0; c < 3; ++c)
   {
     double v = material.Ambient * baseColor[c] + material.Diffuse * diffuse[c] * baseColor[c] +
@@ -180,5 +189,14 @@ void ShadePhong(const double baseColor[3], const double point[3], const double n
     }
     out[c] = v;
   }
+}
+
+void ShadePhong(const double baseColor[3], const double point[3], const double normal[3],
+  const double toViewer[3], const ShadingLight* lights, int lightCount,
+  const ShadingMaterial& material, double out[3])
+{
+  double diffuse[3], specular[3];
+  PhongLightSums(point, normal, toViewer, lights, lightCount, material, diffuse, specular);
+  ComposePhong(baseColor, material, diffuse, specular, out);
 }
 }

@@ -115,6 +115,21 @@ HOV_EXPORT double EdgeOnOpacity(
 HOV_EXPORT void ShadePhong(const double baseColor[3], const double point[3],
   const double normal[3], const double toViewer[3], const ShadingLight* lights, int lightCount,
   const ShadingMaterial& material, double out[3]);
+
+/**
+ * ShadePhong in two steps, for callers that compose one lighting with
+ * several materials or base colours: the per-light sums
+ * @p diffuse = sum f_i I_i max(n.l_i, 0) Ld_i and
+ * @p specular = sum f_i I_i max(n.h_i, 0)^p Ls_i (@p material supplies only
+ * TwoSidedLighting and SpecularPower), then ComposePhong's
+ * ka c + kd diffuse c + ks specular, clamped as ClampColor says.
+ * ShadePhong is exactly these two calls.
+ */
+HOV_EXPORT void PhongLightSums(const double point[3], const double normal[3],
+  const double toViewer[3], const ShadingLight* lights, int lightCount,
+  const ShadingMaterial& material, double diffuse[3], double specular[3]);
+HOV_EXPORT void ComposePhong(const double baseColor[3], const ShadingMaterial& material,
+  const double diffuse[3], const double specular[3], double out[3]);
 }
 
 #endif

@@ -160,8 +160,12 @@ ShadingTransform ComputeShadingTransform(const VolumeShadingSettings& settings,
   specular.Diffuse = 0.0;
   specular.ClampColor = false;
   const double one[3] = { 1.0, 1.0, 1.0 }, zero[3] = { 0.0, 0.0, 0.0 };
-  ShadePhong(one, point, normal, toViewer, settings.Lights, settings.LightCount, diffuse, out.Scale);
-  ShadePhong(zero, point, normal, toViewer, settings.Lights, settings.LightCount, specular, out.Offset);
+  // One lighting pass (the light vectors, half vectors and powers), composed twice.
+  double lightDiffuse[3], lightSpecular[3];
+  PhongLightSums(point, normal, toViewer, settings.Lights, settings.LightCount, settings.Material,
+    lightDiffuse, lightSpecular);
+  ComposePhong(one, diffuse, lightDiffuse, lightSpecular, out.Scale);
+  ComposePhong(zero, specular, lightDiffuse, lightSpecular, out.Offset);
   if (settings.Ambient == AmbientTerm::LightAmbient)
   {
     for (int c = 0; c < 3; ++c)
