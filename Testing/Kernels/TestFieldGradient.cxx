@@ -210,6 +210,53 @@ void RayThrough(hov::CellShape shape, const AffineMap& map, std::mt19937_64& rng
   }
 }
 
+/**
+ * AffineGradientCoefficients (per cell) then AffineGradientAlongLine (per ray)
+ * with AffineGradientAlongRay's own inverse Jacobian and parametric line must
+ * give its polynomials bit for bit (hov::ShadedCellSegment takes the two steps
+ * with the inverse kept per cell); the cached basis must be AffineFieldBasis.
+ */
+void CheckTwoStepsBitForBit(hov::CellShape shape, const std::vector<double>& points,
+  const std::vector<double>& s, const double o[3], const double d[3], double t0,
+  const hov::Polynomial expected[3])
+{
+  std::vector<double> basis(hov::AffineFieldTerms * hov::MaxCellNodes, 0.0);
+  ASSERT_TRUE(hov::AffineFieldBasis(shape, basis.data()));
+  const double* cached = hov::CachedAffineFieldBasis(shape);
+  ASSERT_NE(cached, nullptr);
+  for (int i = 0; i < hov::AffineFieldTerms * hov::CellNodeCount(shape); ++i)
+  {
+    ASSERT_EQ(cached[i], basis[i]) << Name(shape) << " term " << i;
+  }
+  double coefficients[3][hov::AffineFieldTerms];
+  ASSERT_TRUE(hov::AffineGradientCoefficients(shape, s.data(), coefficients));
+  double center[3], xc[3], jac[9], inv[9], pc0[3], start[3], step[3];
+  hov::CellParametricCenter(shape, center);
+  hov::EvaluateGeometry(shape, points.data(), center, xc, jac);
+  ASSERT_TRUE(hov::InvertMatrix3(jac, inv));
+  hov::CellNodeParametricCoords(shape, 0, pc0);
+  for (int i = 0; i < 3; ++i)
+  {
+    double rel[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      rel[k] = (o[k] - points[k]) + t0 * d[k];
+    }
+    start[i] = inv[3 * i] * rel[0] + inv[3 * i + 1] * rel[1] + inv[3 * i + 2] * rel[2] + pc0[i];
+    step[i] = inv[3 * i] * d[0] + inv[3 * i + 1] * d[1] + inv[3 * i + 2] * d[2];
+  }
+  hov::Polynomial g[3];
+  hov::AffineGradientAlongLine(coefficients, inv, start, step, g);
+  for (int a = 0; a < 3; ++a)
+  {
+    ASSERT_EQ(g[a].Degree, expected[a].Degree) << Name(shape);
+    for (int k = 0; k <= g[a].Degree; ++k)
+    {
+      ASSERT_EQ(g[a].C[k], expected[a].C[k]) << Name(shape) << " component " << a << " term " << k;
+    }
+  }
+}
+
 TEST(FieldGradient, AffineGradientAlongRayMatchesAnalyticGradient)
 {
   std::mt19937_64 rng(1901);
@@ -229,6 +276,7 @@ TEST(FieldGradient, AffineGradientAlongRayMatchesAnalyticGradient)
       hov::Polynomial g[3];
       ASSERT_TRUE(hov::AffineGradientAlongRay(shape, points.data(), s.data(), o, d, t0, g))
         << Name(shape);
+      CheckTwoStepsBitForBit(shape, points, s, o, d, t0, g);
       const double scale = f.Scale(4.0);
       std::vector<hov::RestrictedPiece> pieces;
       hov::CellRestrictionStatus status;
@@ -504,6 +552,13 @@ TEST(FieldGradient, RefusesPyramidsFlatCellsAndNonFiniteInput)
   NodePoints(hov::CellShape::Pyramid, map, points);
   std::vector<double> s(5, 1.0);
   EXPECT_FALSE(hov::AffineGradientAlongRay(hov::CellShape::Pyramid, points.data(), s.data(), o, d, 0.0, g));
+  double coefficients[3][hov::AffineFieldTerms];
+  EXPECT_FALSE(hov::AffineGradientCoefficients(hov::CellShape::Pyramid, s.data(), coefficients));
+  EXPECT_EQ(hov::CachedAffineFieldBasis(hov::CellShape::Pyramid), nullptr);
+  EXPECT_EQ(hov::CachedAffineFieldBasis(hov::CellShape::QuadraticPyramid), nullptr);
+  EXPECT_EQ(hov::CachedAffineFieldBasis(static_cast<hov::CellShape>(7)), nullptr);
+  const std::vector<double> nanScalars = { 0.0, NAN, 1.0, 2.0 };
+  EXPECT_FALSE(hov::AffineGradientCoefficients(hov::CellShape::Tetra, nanScalars.data(), coefficients));
   EXPECT_EQ(g[0].C[1], 42.0) << "gradient must be untouched on refusal";
   // A flat tetrahedron (all four points in z = 0).
   const double flat[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0 };

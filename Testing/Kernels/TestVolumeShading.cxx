@@ -446,3 +446,79 @@ TEST(VolumeShading, ClampKinkContinuityCompositionAndDegenerateInput)
   EXPECT_EQ(full.A, 1.0);
   EXPECT_EQ(full.R, 1.0); // 2 x 1 clamped to 1
 }
+
+// ComputeShadingTransform lights once (hov::PhongLightSums) and composes the
+// sums twice: Scale and Offset must be, bit for bit, the two ShadePhong calls
+// the file doc defines them by (a unit colour with ka' + kd D, a zero colour
+// with ks S), for every kind of light, both ambient terms and edge-on normals.
+TEST(VolumeShading, TransformIsTwoPhongCallsBitForBit)
+{
+  std::mt19937_64 rng(2026);
+  std::normal_distribution<double> nd;
+  int checked = 0;
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    std::vector<hov::ShadingLight> lights(1 + trial % 3);
+    for (hov::ShadingLight& l : lights)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        l.Direction[i] = nd(rng);
+        l.Position[i] = hovtest::Uniform(rng, -3, 3);
+        l.Color[i] = hovtest::Uniform(rng, 0, 1);
+      }
+      l.Intensity = hovtest::Uniform(rng, 0.2, 2);
+      l.Positional = rng() % 2;
+      l.Attenuation[1] = hovtest::Uniform(rng, 0, 0.5);
+      l.ConeAngle = rng() % 2 ? hovtest::Uniform(rng, 10, 89) : 180.0;
+    }
+    hov::VolumeShadingSettings vs;
+    vs.Shade = true;
+    vs.Material.Ambient = hovtest::Uniform(rng, 0, 0.5);
+    vs.Material.Diffuse = hovtest::Uniform(rng, 0, 1);
+    vs.Material.Specular = hovtest::Uniform(rng, 0, 1);
+    vs.Material.SpecularPower = trial % 4 == 0 ? 10.0 : hovtest::Uniform(rng, 1, 100);
+    vs.Material.TwoSidedLighting = trial % 2;
+    vs.Material.ClampColor = trial % 3 != 0;
+    vs.Ambient = trial % 5 == 0 ? hov::AmbientTerm::LightAmbient : hov::AmbientTerm::MaterialColor;
+    for (double& a : vs.AmbientLight)
+    {
+      a = hovtest::Uniform(rng, 0, 0.3);
+    }
+    vs.Lights = lights.data();
+    vs.LightCount = static_cast<int>(lights.size());
+    const double g[3] = { nd(rng), nd(rng), trial % 7 == 0 ? 0.0 : nd(rng) };
+    const double point[3] = { nd(rng), nd(rng), nd(rng) };
+    double v[3] = { nd(rng), nd(rng), nd(rng) };
+    const double vl = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (double& c : v)
+    {
+      c /= vl;
+    }
+    const hov::ShadingTransform t = hov::ComputeShadingTransform(vs, g, point, v);
+    double normal[3];
+    ASSERT_EQ(t.Lit, hov::VolumeNormal(g, vs.GradientFloor, normal));
+    hov::ShadingMaterial diffuse = vs.Material, specular = vs.Material;
+    diffuse.Ambient = vs.Ambient == hov::AmbientTerm::MaterialColor ? vs.Material.Ambient : 0.0;
+    diffuse.Specular = 0.0;
+    diffuse.ClampColor = false;
+    specular.Ambient = 0.0;
+    specular.Diffuse = 0.0;
+    specular.ClampColor = false;
+    const double one[3] = { 1.0, 1.0, 1.0 }, zero[3] = { 0.0, 0.0, 0.0 };
+    double scale[3], offset[3];
+    hov::ShadePhong(one, point, normal, v, lights.data(), vs.LightCount, diffuse, scale);
+    hov::ShadePhong(zero, point, normal, v, lights.data(), vs.LightCount, specular, offset);
+    for (int c = 0; c < 3; ++c)
+    {
+      if (vs.Ambient == hov::AmbientTerm::LightAmbient)
+      {
+        offset[c] += vs.Material.Ambient * vs.AmbientLight[c];
+      }
+      ASSERT_EQ(t.Scale[c], scale[c]) << "trial " << trial << " channel " << c;
+      ASSERT_EQ(t.Offset[c], offset[c]) << "trial " << trial << " channel " << c;
+    }
+    checked += t.Offset[0] > 0.0; // a highlight reached the transform
+  }
+  EXPECT_GT(checked, 300); // the specular part was exercised
+}
