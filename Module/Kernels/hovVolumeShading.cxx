@@ -1,6 +1,5 @@
 #include "hovVolumeShading.h"
 
-#include "hovGradientOpacity.h"  // VectorLength
 #include "hovSegmentIntegral.h"  // IntegrateSegment (exact pieces)
 #include "hovTransferFunction.h" // the table walked here
 
@@ -121,22 +120,30 @@ bool LightsAreDirectional(const VolumeShadingSettings& settings)
 
 bool VolumeNormal(const double gradient[3], double floor, double normal[3])
 {
-  const double length = VectorLength(gradient);
-  if (!(length > floor) || !(length > 0.0) || !std::isfinite(length))
+  normal[0] = normal[1] = normal[2] = 0.0;
+  if (std::isnan(gradient[0]) || std::isnan(gradient[1]) || std::isnan(gradient[2]))
   {
-    normal[0] = normal[1] = normal[2] = 0.0;
     return false;
   }
-  // Divide by the largest component first (VectorLength's scaling): no
+  // Divide by the largest component first (VectorLength's scaling, whose
+  // arithmetic this repeats once for both the length and the normal): no
   // overflow, and no precision lost when |g| itself is subnormal (the unit
   // length is recomputed from the scaled components, not as |g| / m).
   const double m = std::max(std::fabs(gradient[0]), std::max(std::fabs(gradient[1]), std::fabs(gradient[2])));
+  if (!(m > 0.0) || !std::isfinite(m))
+  {
+    return false; // zero or infinite
+  }
   const double a = gradient[0] / m, b = gradient[1] / m, c = gradient[2] / m;
   const double unit = std::sqrt(a * a + b * b + c * c);
-  for (int i = 0; i < 3; ++i)
+  const double length = m * unit; // VectorLength(gradient)
+  if (!(length > floor) || !(length > 0.0) || !std::isfinite(length))
   {
-    normal[i] = (gradient[i] / m) / unit;
+    return false;
   }
+  normal[0] = a / unit;
+  normal[1] = b / unit;
+  normal[2] = c / unit;
   return true;
 }
 
