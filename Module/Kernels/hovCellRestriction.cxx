@@ -1,5 +1,7 @@
 #include "hovCellRestriction.h"
 
+#include "hovChebyshevFit.h" // the non-affine path
+
 #include <algorithm> // std::max, std::min
 #include <cmath>     // fabs, cos, isfinite
 #include <limits>    // epsilon
@@ -9,16 +11,12 @@ namespace hov
 namespace
 {
 constexpr double Eps = std::numeric_limits<double>::epsilon();
-/// Chebyshev sample count - 1 (degree of the interpolant before truncation).
-constexpr int ChebN = 16;
-/// Largest degree of a returned piece on the non-affine path.
-constexpr int MaxPieceDegree = 8;
+using detail::ChebN;
 /// Newton's parametric tolerance (1e-14) times gradients of a few times the
 /// range: the sample error floor, relative to the scalar range.
 constexpr double NewtonFloor = 1e-13;
 /// Bisection depth limit (the piece count limit usually acts first).
 constexpr int MaxDepth = 24;
-constexpr double Pi = 3.141592653589793238462643383279502884;
 
 
 void MatVec(const double m[9], const double v[3], double r[3])
@@ -87,100 +85,32 @@ struct FitContext
   CellRestrictionStatus* Status;
 };
 
-/// cos(Pi m / ChebN), m = 0 .. 2 ChebN - 1 (the nodes and the DCT-I kernel).
-struct CosTable
-{
-  double V[2 * ChebN];
-  CosTable()
-  {
-    for (int m = 0; m < 2 * ChebN; ++m)
-    {
-      this->V[m] = std::cos(Pi * m / ChebN);
-    }
-  }
-};
-
-/// Chebyshev coefficients of the degree-ChebN interpolant of s on [a, b].
+/// The degree-ChebN interpolant's coefficients of s on [a, b].
 void SampleChebyshev(const FitContext& ctx, double a, double b, double c[ChebN + 1])
 {
-  static const CosTable cosines; // thread-safe initialisation (C++11)
-  const double* cs = cosines.V;
-  const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
-  double f[ChebN + 1];
+  double t[ChebN + 1], f[ChebN + 1];
+  detail::ChebyshevPoints(a, b, t);
   double pc[3];
   CellParametricCenter(ctx.Shape, pc);
   for (int j = 0; j <= ChebN; ++j)
   {
-    const double t = (j == 0) ? b : (j == ChebN) ? a : mid + half * cs[j];
-    const double x[3] = { ctx.O[0] + t * ctx.D[0], ctx.O[1] + t * ctx.D[1],
-      ctx.O[2] + t * ctx.D[2] };
+    const double x[3] = { ctx.O[0] + t[j] * ctx.D[0], ctx.O[1] + t[j] * ctx.D[1],
+      ctx.O[2] + t[j] * ctx.D[2] };
     if (!InvertGeometry(ctx.Shape, ctx.Points, x, pc)) // warm start from the previous sample
     {
       ++ctx.Status->NewtonFailures;
     }
     f[j] = InterpolateCellScalar(ctx.Shape, ctx.Scalars, pc);
   }
-  for (int k = 0; k <= ChebN; ++k)
-  {
-    double sum = 0.5 * (f[0] + ((k % 2) ? -f[ChebN] : f[ChebN]));
-    for (int j = 1; j < ChebN; ++j)
-    {
-      sum += f[j] * cs[(j * k) % (2 * ChebN)];
-    }
-    c[k] = sum * 2.0 / ChebN;
-  }
-  c[0] *= 0.5;
-  c[ChebN] *= 0.5;
-}
-
-/// Monomial polynomial in tau = t - a from Chebyshev coefficients c[0..m] on [a, b].
-Polynomial ChebyshevToLocal(const double* c, int m, double a, double b)
-{
-  double tPrev[MaxPieceDegree + 1] = { 1.0 }, tCur[MaxPieceDegree + 1] = { 0.0, 1.0 };
-  Polynomial mono;
-  mono.Degree = m;
-  mono.C[0] = c[0];
-  if (m >= 1)
-  {
-    mono.C[1] += c[1];
-  }
-  for (int k = 2; k <= m; ++k)
-  {
-    double tNext[MaxPieceDegree + 1] = {};
-    for (int j = 0; j <= k; ++j)
-    {
-      tNext[j] = (j > 0 ? 2.0 * tCur[j - 1] : 0.0) - tPrev[j];
-    }
-    for (int j = 0; j <= k; ++j)
-    {
-      tPrev[j] = tCur[j];
-      tCur[j] = tNext[j];
-      mono.C[j] += c[k] * tNext[j];
-    }
-  }
-  // x = -1 + tau / half.
-  Polynomial local = ComposeAffine(mono, -1.0, 2.0 / (b - a));
-  local.Degree = EffectiveDegree(local);
-  return local;
+  detail::ChebyshevCoefficients(f, c);
 }
 
 void Fit(const FitContext& ctx, double a, double b, int depth)
 {
   double c[ChebN + 1];
   SampleChebyshev(ctx, a, b, c);
-  double sumAbs = 0.0, tail[ChebN + 2] = {};
-  for (int k = ChebN; k >= 0; --k)
-  {
-    tail[k] = tail[k + 1] + std::fabs(c[k]); // tail[k] = sum_{j >= k} |c_j|
-  }
-  sumAbs = tail[0];
-  const double rounding = 64.0 * Eps * sumAbs + ctx.Floor;
-  int m = 0;
-  while (m < MaxPieceDegree && 2.0 * tail[m + 1] + rounding > ctx.TolAbs)
-  {
-    ++m;
-  }
-  const double bound = 2.0 * tail[m + 1] + rounding;
+  double bound = 0.0;
+  const int m = detail::TruncationDegree(c, ctx.Floor, ctx.TolAbs, bound);
   const bool canSplit = depth < MaxDepth && static_cast<int>(ctx.Out->size()) + 2 <= ctx.MaxPieces &&
     0.5 * (a + b) > a && 0.5 * (a + b) < b;
   if (bound > ctx.TolAbs && canSplit)
@@ -197,7 +127,7 @@ void Fit(const FitContext& ctx, double a, double b, int depth)
   RestrictedPiece piece;
   piece.T0 = a;
   piece.T1 = b;
-  piece.S = ChebyshevToLocal(c, m, a, b);
+  piece.S = detail::ChebyshevToLocal(c, m, a, b);
   piece.ErrorBound = bound;
   ctx.Out->push_back(piece);
 }
