@@ -422,7 +422,98 @@ void CellShapeFunctions(CellShape shape, const double pc[3], double* w)
   Shapes<double>(shape, pc[0], pc[1], pc[2], w);
 }
 
+namespace
+{
+/**
+ * Derivatives of the product a b c of one-variable linear factors (a of r, b
+ * of s, c of t; @p da, @p db, @p dc their slopes, +-1) in the order the dual
+ * numbers evaluate (a b) c: d/dr = (da b) c, d/ds = (a db) c, d/dt = (a b) dc.
+ */
+inline void TrilinearTerm(double a, double da, double b, double db, double c, double dc,
+  double* derivs, int n, int i)
+{
+  derivs[i] = (da * b) * c;
+  derivs[n + i] = (a * db) * c;
+  derivs[2 * n + i] = (a * b) * dc;
+}
+
+/// The linear cells' derivatives in closed form (the Newton inversions' inner
+/// loop); false for the quadratic cells.
+bool LinearDerivatives(CellShape shape, const double pc[3], double* d)
+{
+  const double r = pc[0], s = pc[1], t = pc[2];
+  const double rm = 1.0 - r, sm = 1.0 - s, tm = 1.0 - t;
+  switch (shape)
+  {
+    case CellShape::Tetra:
+    {
+      const double v[12] = { -1.0, 1.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 1.0 };
+      for (int k = 0; k < 12; ++k)
+      {
+        d[k] = v[k];
+      }
+      return true;
+    }
+    case CellShape::Voxel:
+      TrilinearTerm(rm, -1.0, sm, -1.0, tm, -1.0, d, 8, 0);
+      TrilinearTerm(r, 1.0, sm, -1.0, tm, -1.0, d, 8, 1);
+      TrilinearTerm(rm, -1.0, s, 1.0, tm, -1.0, d, 8, 2);
+      TrilinearTerm(r, 1.0, s, 1.0, tm, -1.0, d, 8, 3);
+      TrilinearTerm(rm, -1.0, sm, -1.0, t, 1.0, d, 8, 4);
+      TrilinearTerm(r, 1.0, sm, -1.0, t, 1.0, d, 8, 5);
+      TrilinearTerm(rm, -1.0, s, 1.0, t, 1.0, d, 8, 6);
+      TrilinearTerm(r, 1.0, s, 1.0, t, 1.0, d, 8, 7);
+      return true;
+    case CellShape::Hexahedron:
+      TrilinearTerm(rm, -1.0, sm, -1.0, tm, -1.0, d, 8, 0);
+      TrilinearTerm(r, 1.0, sm, -1.0, tm, -1.0, d, 8, 1);
+      TrilinearTerm(r, 1.0, s, 1.0, tm, -1.0, d, 8, 2);
+      TrilinearTerm(rm, -1.0, s, 1.0, tm, -1.0, d, 8, 3);
+      TrilinearTerm(rm, -1.0, sm, -1.0, t, 1.0, d, 8, 4);
+      TrilinearTerm(r, 1.0, sm, -1.0, t, 1.0, d, 8, 5);
+      TrilinearTerm(r, 1.0, s, 1.0, t, 1.0, d, 8, 6);
+      TrilinearTerm(rm, -1.0, s, 1.0, t, 1.0, d, 8, 7);
+      return true;
+    case CellShape::Wedge:
+    {
+      // (1 - r - s) t-factor products; u = 1 - r - s has slopes (-1, -1, 0).
+      const double u = 1.0 - r - s;
+      const double v[18] = { -tm, tm, 0.0, -t, t, 0.0, // d/dr
+        -tm, 0.0, tm, -t, 0.0, t,                         // d/ds
+        -u, -r, -s, u, r, s };                            // d/dt
+      for (int k = 0; k < 18; ++k)
+      {
+        d[k] = v[k];
+      }
+      return true;
+    }
+    case CellShape::Pyramid:
+      TrilinearTerm(rm, -1.0, sm, -1.0, tm, -1.0, d, 5, 0);
+      TrilinearTerm(r, 1.0, sm, -1.0, tm, -1.0, d, 5, 1);
+      TrilinearTerm(r, 1.0, s, 1.0, tm, -1.0, d, 5, 2);
+      TrilinearTerm(rm, -1.0, s, 1.0, tm, -1.0, d, 5, 3);
+      d[4] = 0.0;
+      d[9] = 0.0;
+      d[14] = 1.0;
+      return true;
+    default:
+      return false;
+  }
+}
+}
+
 void CellShapeDerivatives(CellShape shape, const double pc[3], double* derivs)
+{
+  if (LinearDerivatives(shape, pc, derivs))
+  {
+    return;
+  }
+  detail::CellShapeDerivativesDual(shape, pc, derivs);
+}
+
+namespace detail
+{
+void CellShapeDerivativesDual(CellShape shape, const double pc[3], double* derivs)
 {
   Dual r(pc[0]), s(pc[1]), t(pc[2]);
   r.G[0] = s.G[1] = t.G[2] = 1.0;
@@ -435,6 +526,7 @@ void CellShapeDerivatives(CellShape shape, const double pc[3], double* derivs)
     derivs[n + i] = w[i].G[1];
     derivs[2 * n + i] = w[i].G[2];
   }
+}
 }
 
 void CellShapeFunctionsAlongLine(

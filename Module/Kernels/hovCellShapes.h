@@ -75,9 +75,19 @@ HOV_EXPORT void CellShapeFunctions(CellShape shape, const double pc[3], double* 
 
 /**
  * Derivatives dw/dr, dw/ds, dw/dt in VTK's layout: derivs[i], derivs[n + i],
- * derivs[2n + i] for node i, n = CellNodeCount (exact: dual numbers).
+ * derivs[2n + i] for node i, n = CellNodeCount. Linear cells (the geometry
+ * of every cell, so Newton's inner loop): closed forms evaluated in the dual
+ * numbers' order, the same values (up to the sign of a zero); quadratic
+ * cells: dual numbers (exact differentiation of VTK's formulas).
  */
 HOV_EXPORT void CellShapeDerivatives(CellShape shape, const double pc[3], double* derivs);
+
+namespace detail
+{
+/// CellShapeDerivatives by dual numbers for every shape (the reference of
+/// the linear closed forms; TestCellShapes).
+HOV_EXPORT void CellShapeDerivativesDual(CellShape shape, const double pc[3], double* derivs);
+}
 
 /**
  * Shape functions along the parametric line pc(y) = @p pcStart + y @p pcStep:

@@ -89,6 +89,40 @@ TEST(CellShapes, DerivativesMatchCentralDifferences)
   hovtest::ReportMeasured("CellShapes.DerivativeVsCentralDifference", worst);
 }
 
+// The linear cells' closed-form derivatives (Newton's inner loop) are the
+// dual numbers' values (== also equates the two zeros), inside the cell and
+// outside it (Newton's iterates stray), for every shape; the quadratic cells
+// take the dual path itself.
+TEST(CellShapes, ClosedFormDerivativesAreTheDualNumbers)
+{
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> u(-1.5, 2.5);
+  int compared = 0;
+  for (CellShape shape : AllCellShapes())
+  {
+    const int n = hov::CellNodeCount(shape);
+    for (int trial = 0; trial < 2000; ++trial)
+    {
+      double pc[3] = { u(rng), u(rng), u(rng) };
+      if (trial < 8)
+      {
+        pc[0] = trial & 1; // the corners: exact zeros in the factors
+        pc[1] = (trial >> 1) & 1;
+        pc[2] = (trial >> 2) & 1;
+      }
+      double d[3 * hov::MaxCellNodes], ref[3 * hov::MaxCellNodes];
+      hov::CellShapeDerivatives(shape, pc, d);
+      hov::detail::CellShapeDerivativesDual(shape, pc, ref);
+      for (int k = 0; k < 3 * n; ++k)
+      {
+        ASSERT_EQ(d[k], ref[k]) << ShapeName(shape) << " entry " << k << " trial " << trial;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 100000);
+}
+
 TEST(CellShapes, ExpansionAlongLineMatchesPointwise)
 {
   std::mt19937_64 rng(13);
