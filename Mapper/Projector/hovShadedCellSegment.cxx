@@ -5,6 +5,7 @@
 #include "hovGeneralCells.h" // the general cells
 
 #include "hovFieldGradient.h"   // AffineGradientAlongLine, CellFieldAndGradient
+#include "hovGradientRestriction.h" // RestrictCellGradient
 #include "hovShadedSegment.h"   // IntegrateShadedPolynomial, IntegrateShadedSegment
 #include "hovVolumeShading.h"   // IntegrateLinearScalarShaded
 
@@ -14,6 +15,12 @@
 namespace
 {
 using Ray = hov::ViewRays::Ray;
+
+/// The gradient's fit on non-affine cells (hov::RestrictCellGradient): the
+/// scalar restriction's relative tolerance, and few pieces (a gradient that
+/// needs more takes the pointwise route).
+constexpr double GradientRelativeTolerance = 1e-10;
+constexpr int MaxGradientPieces = 8;
 
 /// A bounded cost per segment (pathological fields: the robustness test's
 /// 1e9 scalars); beyond it the result is kept with its error estimate.
@@ -165,10 +172,10 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
       ToWorld(f, g, gw);
       r = hov::IntegrateShadedPolynomial(tf, s, gw, length, f.VolumeShading, go, wray, settings);
     }
-    else
+    else if (!this->IntegrateFitted(frame, c, ray, t0, t1, s, settings, r))
     {
-      // Breakpoints: the table-node crossings of the restricted scalar (the
-      // ones the integral would step over left out).
+      // The pointwise route. Breakpoints: the table-node crossings of the
+      // restricted scalar (the ones the integral would step over left out).
       hov::ShadedBreakpoints(
         tf, s, g, nullptr, length, this->Breaks, &this->Smooth, MaxPanels / 2);
       CellSampler sampler{ &f, c.Shape, nodes, scalars, ray.Origin + t0 * ray.Direction,
@@ -185,4 +192,48 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
     this->WorstError = std::max(this->WorstError, r.ErrorEstimate);
   }
   return r.Color;
+}
+
+bool hov::ShadedCellSegment::IntegrateFitted(const FrameData& frame,
+  const hov::GeneralCells::Cell& c, const Ray& ray, double t0, double t1,
+  const hov::Polynomial& s, const hov::ShadedSegmentSettings& settings,
+  hov::ShadedSegmentResult& out)
+{
+  const hov::Features& f = *frame.Features;
+  const hov::GeneralCells& cells = frame.Setup->GetGeneralCells();
+  const double o[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
+  const double d[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
+  hov::CellRestrictionSettings fit;
+  fit.RelativeTolerance = GradientRelativeTolerance;
+  fit.MaxPieces = MaxGradientPieces;
+  hov::CellRestrictionStatus status;
+  if (hov::RestrictCellGradient(c.Shape, cells.GetNodes(c), cells.GetScalars(c), o, d, t0, t1,
+        fit, this->GradientPieces, &status) == 0 ||
+    !status.Converged || status.NewtonFailures > 0)
+  {
+    return false;
+  }
+  const hov::GradientOpacityFunction* go = f.UseGradientOpacity ? &f.GradientOpacity : nullptr;
+  hov::ShadedSegmentResult sum;
+  for (const hov::GradientPiece& piece : this->GradientPieces)
+  {
+    // s in the piece's own variable, tau' = t - piece.T0.
+    const hov::Polynomial sp =
+      piece.T0 == t0 ? s : hov::ComposeAffine(s, piece.T0 - t0, 1.0);
+    hov::Polynomial gw[3];
+    ToWorld(f, piece.G, gw);
+    const hov::ShadedSegmentResult r = hov::IntegrateShadedPolynomial(*frame.TF, sp, gw,
+      piece.T1 - piece.T0, f.VolumeShading, go, WorldRay(f, ray, piece.T0), settings);
+    sum.ErrorEstimate += (1.0 - sum.Color.A) * r.ErrorEstimate;
+    hov::CompositeBehind(sum.Color, r.Color);
+    sum.Panels += r.Panels;
+    sum.Samples += r.Samples;
+    sum.Converged = sum.Converged && r.Converged;
+    if (sum.Color.A >= 1.0)
+    {
+      break; // nothing behind is visible
+    }
+  }
+  out = sum;
+  return true;
 }

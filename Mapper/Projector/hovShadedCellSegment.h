@@ -18,10 +18,16 @@
  *    polynomials along the ray (hov::AffineGradientAlongRay):
  *    hov::IntegrateShadedPolynomial (closed form when s is linear and the
  *    lights directional, adaptive quadrature with an error estimate otherwise);
- *  - other cells (distorted hexahedra, pyramids): the field and gradient
- *    sampled pointwise (hov::CellFieldAndGradient) for
- *    hov::IntegrateShadedSegment, cut at the transfer-function node
- *    crossings of the restricted scalar.
+ *  - other cells (distorted hexahedra, general wedges, pyramids): the
+ *    gradient restricted to the piece as polynomials too
+ *    (hov::RestrictCellGradient: Chebyshev, within 1e-10 of the largest
+ *    gradient on the piece, at most 8 sub-pieces), each sub-piece then as an
+ *    affine cell's (hov::IntegrateShadedPolynomial with the scalar shifted to
+ *    it): one Newton inversion per fitted point (17 per sub-piece) instead
+ *    of one per quadrature sample. Where that fit does not converge (chords
+ *    near a pyramid's apex) or Newton fails: the field and gradient sampled
+ *    pointwise (hov::CellFieldAndGradient) for hov::IntegrateShadedSegment,
+ *    cut at the transfer-function node crossings of the restricted scalar.
  * Positional lights make the transform vary along every ray: the quadrature
  * path, also on tetrahedra.
  *
@@ -43,6 +49,9 @@
 #include "hovViewRays.h" // Ray
 
 #include "hovCompositing.h"     // RGBA
+#include "hovGeneralCells.h"    // Cell
+#include "hovGradientRestriction.h" // GradientPiece
+#include "hovShadedSegment.h"   // ShadedSegmentSettings, ShadedSegmentResult
 #include "hovPolynomial.h"      // Polynomial
 #include "hovSegmentIntegral.h" // EmissionModel
 
@@ -81,6 +90,14 @@ public:
   void ResetWorstErrorEstimate() { this->WorstError = 0.0; }
 
 private:
+  /// Non-affine cells: grad s fitted by polynomials, each piece integrated as
+  /// an affine cell's; false (the pointwise route then) if the fit did not
+  /// converge.
+  bool IntegrateFitted(const FrameData& frame, const hov::GeneralCells::Cell& cell,
+    const hov::ViewRays::Ray& ray, double t0, double t1, const hov::Polynomial& s,
+    const hov::ShadedSegmentSettings& settings, hov::ShadedSegmentResult& out);
+
+  std::vector<hov::GradientPiece> GradientPieces;
   std::vector<double> Breaks;
   std::vector<unsigned char> Smooth; ///< per breakpoint: mergeable (hovShadedSegment.h)
   double WorstError = 0.0;

@@ -59,36 +59,7 @@ double Direct(const hovtest::TestCell& cell, const double x[3])
   return hov::InterpolateCellScalar(cell.Shape, cell.Scalars.data(), pc);
 }
 
-/// A ray through two random interior points; its inside interval.
-bool RandomChord(const hovtest::TestCell& cell, std::mt19937_64& rng, double o[3], double d[3],
-  hov::RayCellInterval& chord)
-{
-  double pa[3], pb[3], xb[3];
-  hovtest::RandomInteriorPC(cell.Shape, rng, 0.05, pa);
-  hovtest::RandomInteriorPC(cell.Shape, rng, 0.05, pb);
-  hov::EvaluateGeometry(cell.Shape, cell.Points.data(), pa, o, nullptr);
-  hov::EvaluateGeometry(cell.Shape, cell.Points.data(), pb, xb, nullptr);
-  for (int k = 0; k < 3; ++k)
-  {
-    d[k] = xb[k] - o[k];
-  }
-  hov::RayCellInterval iv[hov::MaxRayCellIntervals];
-  const int n =
-    hov::RayCellIntervals(cell.Shape, cell.Points.data(), cell.Ids.data(), o, d, -10, 10, iv);
-  if (n == 0)
-  {
-    return false;
-  }
-  chord = iv[0];
-  for (int i = 1; i < n; ++i)
-  {
-    if (iv[i].T0 <= 0.0) // the interval containing t = 0
-    {
-      chord = iv[i];
-    }
-  }
-  return true;
-}
+using hovtest::RandomChord;
 
 TEST(CellRestriction, AffineCellsAreExactPolynomials)
 {

@@ -9,6 +9,7 @@
 #define hovCellTestSupport_h
 
 #include "hovCellShapes.h"
+#include "hovRayCell.h" // RandomChord
 
 #include <cstdint>
 #include <random>
@@ -116,6 +117,37 @@ inline void RandomInteriorPC(hov::CellShape shape, std::mt19937_64& rng, double 
       pc[k] = u(rng);
     }
   } while (hov::ParametricDistanceOutside(shape, pc) > -margin);
+}
+
+/// A ray through two random interior points; its inside interval.
+inline bool RandomChord(const hovtest::TestCell& cell, std::mt19937_64& rng, double o[3], double d[3],
+  hov::RayCellInterval& chord)
+{
+  double pa[3], pb[3], xb[3];
+  hovtest::RandomInteriorPC(cell.Shape, rng, 0.05, pa);
+  hovtest::RandomInteriorPC(cell.Shape, rng, 0.05, pb);
+  hov::EvaluateGeometry(cell.Shape, cell.Points.data(), pa, o, nullptr);
+  hov::EvaluateGeometry(cell.Shape, cell.Points.data(), pb, xb, nullptr);
+  for (int k = 0; k < 3; ++k)
+  {
+    d[k] = xb[k] - o[k];
+  }
+  hov::RayCellInterval iv[hov::MaxRayCellIntervals];
+  const int n =
+    hov::RayCellIntervals(cell.Shape, cell.Points.data(), cell.Ids.data(), o, d, -10, 10, iv);
+  if (n == 0)
+  {
+    return false;
+  }
+  chord = iv[0];
+  for (int i = 1; i < n; ++i)
+  {
+    if (iv[i].T0 <= 0.0) // the interval containing t = 0
+    {
+      chord = iv[i];
+    }
+  }
+  return true;
 }
 }
 
