@@ -22,7 +22,9 @@
 // ratios peer / ours. Ours is also timed on the tessellated input.
 //
 //   xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" bin/hovBenchMixed [--frames N]
-//     [--size S] [--turn DEG] [--data DIR] [--skip-rc]
+//     [--size S] [--turn DEG] [--data DIR] [--skip-rc] [--shade]
+// --shade: ours is also timed with Shade on (the same property otherwise; the
+// peers do not shade), with the shaded / unshaded ratio.
 #include "hovTestReferenceDatasets.h"
 
 #include "vtkHighOrderOffscreenWindow.h" // windows with X (Xvfb) or without (Mesa EGL)
@@ -58,6 +60,7 @@ struct Options
   double Turn = 10.0;
   std::string Data = HOV_BENCH_DATA_DIR;
   bool SkipRC = false;
+  bool Shade = false; ///< also time ours with vtkVolumeProperty::ShadeOn()
 };
 
 struct Timing
@@ -131,6 +134,7 @@ struct Row
   long long Cells = 0, Tets = 0;
   double TessSeconds = 0;
   Timing Ours, OursTess, PT, RC;
+  Timing OursShaded; ///< --shade only
 };
 
 Row Run(const std::string& name, vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tess,
@@ -153,6 +157,20 @@ Row Run(const std::string& name, vtkUnstructuredGrid* grid, vtkUnstructuredGrid*
     std::cout << "  ours (native)       first " << r.Ours.First << " s, median " << r.Ours.Median
               << " s (" << ours->GetNumberOfRenderedCells() << " cells rendered, "
               << ours->GetNumberOfSkippedCells() << " skipped)\n"
+              << std::flush;
+  }
+  if (opt.Shade)
+  {
+    // Ours only: the peers do not shade unstructured grids.
+    vtkNew<vtkHighOrderVolumeMapper> ours;
+    ours->SetInputData(grid);
+    ours->SetOpacitySemanticsToVTKUnstructured();
+    property->ShadeOn();
+    r.OursShaded = TimeFrames(ours, property, cam, opt, window);
+    property->ShadeOff();
+    std::cout << "  ours (native, Shade on) first " << r.OursShaded.First << " s, median "
+              << r.OursShaded.Median << " s (shading error estimate "
+              << ours->GetShadingErrorEstimate() << ")\n"
               << std::flush;
   }
   {
@@ -215,6 +233,16 @@ void PrintTable(const std::vector<Row>& rows, const Options& opt)
       std::cout << r.RC.Median / r.Ours.Median << " |\n";
     }
   }
+  if (opt.Shade)
+  {
+    std::cout << "\n| dataset | ours native | ours native, Shade on | shaded / unshaded |\n"
+              << "|---|---|---|---|\n";
+    for (const Row& r : rows)
+    {
+      std::cout << "| " << r.Name << " | " << ms(r.Ours) << " | " << ms(r.OursShaded) << " | "
+                << std::setprecision(2) << r.OursShaded.Median / r.Ours.Median << " |\n";
+    }
+  }
   std::cout << std::defaultfloat;
 }
 }
@@ -246,10 +274,14 @@ int main(int argc, char* argv[])
     {
       opt.SkipRC = true;
     }
+    else if (a == "--shade")
+    {
+      opt.Shade = true;
+    }
     else
     {
       std::cout << "usage: hovBenchMixed [--frames N] [--size S] [--turn DEG] [--data DIR] "
-                   "[--skip-rc]\n";
+                   "[--skip-rc] [--shade]\n";
       return a == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
     }
   }
