@@ -1,112 +1,17 @@
 #include "hovCellShapes.h"
 
+#include "hovShapeArithmetic.h" // Dual, LinePoly
+
+#include <algorithm> // std::copy
+
 // The shape-function half of hovCellShapes.h (the geometry map, its inverse
 // and the domain tests are in hovCellGeometry.cxx).
 namespace hov
 {
 namespace
 {
-/// Forward-mode dual number: value and gradient with respect to (r, s, t).
-struct Dual
-{
-  double V = 0.0;
-  double G[3] = { 0.0, 0.0, 0.0 };
-  Dual() = default;
-  Dual(double v) // NOLINT: implicit from constants, like a scalar
-    : V(v)
-  {
-  }
-};
-Dual operator+(const Dual& a, const Dual& b)
-{
-  Dual r(a.V + b.V);
-  for (int k = 0; k < 3; ++k)
-  {
-    r.G[k] = a.G[k] + b.G[k];
-  }
-  return r;
-}
-Dual operator-(const Dual& a, const Dual& b)
-{
-  Dual r(a.V - b.V);
-  for (int k = 0; k < 3; ++k)
-  {
-    r.G[k] = a.G[k] - b.G[k];
-  }
-  return r;
-}
-Dual operator-(const Dual& a)
-{
-  return Dual(0.0) - a;
-}
-Dual operator*(const Dual& a, const Dual& b)
-{
-  Dual r(a.V * b.V);
-  for (int k = 0; k < 3; ++k)
-  {
-    r.G[k] = a.G[k] * b.V + a.V * b.G[k];
-  }
-  return r;
-}
-Dual operator/(const Dual& a, double b)
-{
-  return a * Dual(1.0 / b);
-}
-
-/// Polynomial in one variable y, truncated to Polynomial::MaxDegree (the
-/// shape functions of the supported cells never exceed degree 6 along a line).
-struct LinePoly
-{
-  static constexpr int N = Polynomial::MaxDegree + 1;
-  double C[N] = {};
-  LinePoly() = default;
-  LinePoly(double v) // NOLINT: implicit from constants
-  {
-    this->C[0] = v;
-  }
-};
-LinePoly operator+(const LinePoly& a, const LinePoly& b)
-{
-  LinePoly r;
-  for (int k = 0; k < LinePoly::N; ++k)
-  {
-    r.C[k] = a.C[k] + b.C[k];
-  }
-  return r;
-}
-LinePoly operator-(const LinePoly& a, const LinePoly& b)
-{
-  LinePoly r;
-  for (int k = 0; k < LinePoly::N; ++k)
-  {
-    r.C[k] = a.C[k] - b.C[k];
-  }
-  return r;
-}
-LinePoly operator-(const LinePoly& a)
-{
-  return LinePoly(0.0) - a;
-}
-LinePoly operator*(const LinePoly& a, const LinePoly& b)
-{
-  LinePoly r;
-  for (int i = 0; i < LinePoly::N; ++i)
-  {
-    if (a.C[i] == 0.0)
-    {
-      continue;
-    }
-    for (int j = 0; i + j < LinePoly::N; ++j)
-    {
-      r.C[i + j] += a.C[i] * b.C[j];
-    }
-  }
-  return r;
-}
-LinePoly operator/(const LinePoly& a, double b)
-{
-  return a * LinePoly(1.0 / b);
-}
+using detail::Dual;
+using detail::LinePoly;
 
 // VTK 9.1 InterpolationFunctions, one template for double, Dual and LinePoly.
 template <class T>
@@ -424,17 +329,34 @@ void CellShapeFunctions(CellShape shape, const double pc[3], double* w)
 
 namespace
 {
+/// Per node, which factor of each coordinate x the trilinear shape function
+/// takes: 1 for x, 0 for 1 - x (VTK's node orders).
+constexpr int VoxelCorners[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 },
+  { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 }, { 1, 1, 1 } };
+constexpr int HexCorners[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+  { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } }; // the pyramid's base: the first 4
+
 /**
- * Derivatives of the product a b c of one-variable linear factors (a of r, b
- * of s, c of t; @p da, @p db, @p dc their slopes, +-1) in the order the dual
- * numbers evaluate (a b) c: d/dr = (da b) c, d/ds = (a db) c, d/dt = (a b) dc.
+ * Derivatives of the first @p count nodes' products a b c of one-variable
+ * linear factors (a of r, b of s, c of t, slopes da, db, dc = +-1) in the
+ * order the dual numbers evaluate (a b) c: d/dr = (da b) c, d/ds = (a db) c,
+ * d/dt = (a b) dc; @p n nodes in all (VTK's layout).
  */
-inline void TrilinearTerm(double a, double da, double b, double db, double c, double dc,
-  double* derivs, int n, int i)
+void TrilinearDerivatives(
+  const int (*corners)[3], int count, const double pc[3], double* derivs, int n)
 {
-  derivs[i] = (da * b) * c;
-  derivs[n + i] = (a * db) * c;
-  derivs[2 * n + i] = (a * b) * dc;
+  for (int i = 0; i < count; ++i)
+  {
+    double f[3], df[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      f[k] = corners[i][k] ? pc[k] : 1.0 - pc[k];
+      df[k] = corners[i][k] ? 1.0 : -1.0;
+    }
+    derivs[i] = (df[0] * f[1]) * f[2];
+    derivs[n + i] = (f[0] * df[1]) * f[2];
+    derivs[2 * n + i] = (f[0] * f[1]) * df[2];
+  }
 }
 
 /// The linear cells' derivatives in closed form (the Newton inversions' inner
@@ -442,57 +364,33 @@ inline void TrilinearTerm(double a, double da, double b, double db, double c, do
 bool LinearDerivatives(CellShape shape, const double pc[3], double* d)
 {
   const double r = pc[0], s = pc[1], t = pc[2];
-  const double rm = 1.0 - r, sm = 1.0 - s, tm = 1.0 - t;
   switch (shape)
   {
     case CellShape::Tetra:
     {
       const double v[12] = { -1.0, 1.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 1.0 };
-      for (int k = 0; k < 12; ++k)
-      {
-        d[k] = v[k];
-      }
+      std::copy(v, v + 12, d);
       return true;
     }
     case CellShape::Voxel:
-      TrilinearTerm(rm, -1.0, sm, -1.0, tm, -1.0, d, 8, 0);
-      TrilinearTerm(r, 1.0, sm, -1.0, tm, -1.0, d, 8, 1);
-      TrilinearTerm(rm, -1.0, s, 1.0, tm, -1.0, d, 8, 2);
-      TrilinearTerm(r, 1.0, s, 1.0, tm, -1.0, d, 8, 3);
-      TrilinearTerm(rm, -1.0, sm, -1.0, t, 1.0, d, 8, 4);
-      TrilinearTerm(r, 1.0, sm, -1.0, t, 1.0, d, 8, 5);
-      TrilinearTerm(rm, -1.0, s, 1.0, t, 1.0, d, 8, 6);
-      TrilinearTerm(r, 1.0, s, 1.0, t, 1.0, d, 8, 7);
+      TrilinearDerivatives(VoxelCorners, 8, pc, d, 8);
       return true;
     case CellShape::Hexahedron:
-      TrilinearTerm(rm, -1.0, sm, -1.0, tm, -1.0, d, 8, 0);
-      TrilinearTerm(r, 1.0, sm, -1.0, tm, -1.0, d, 8, 1);
-      TrilinearTerm(r, 1.0, s, 1.0, tm, -1.0, d, 8, 2);
-      TrilinearTerm(rm, -1.0, s, 1.0, tm, -1.0, d, 8, 3);
-      TrilinearTerm(rm, -1.0, sm, -1.0, t, 1.0, d, 8, 4);
-      TrilinearTerm(r, 1.0, sm, -1.0, t, 1.0, d, 8, 5);
-      TrilinearTerm(r, 1.0, s, 1.0, t, 1.0, d, 8, 6);
-      TrilinearTerm(rm, -1.0, s, 1.0, t, 1.0, d, 8, 7);
+      TrilinearDerivatives(HexCorners, 8, pc, d, 8);
       return true;
     case CellShape::Wedge:
     {
       // (1 - r - s) t-factor products; u = 1 - r - s has slopes (-1, -1, 0).
-      const double u = 1.0 - r - s;
+      const double u = 1.0 - r - s, tm = 1.0 - t;
       const double v[18] = { -tm, tm, 0.0, -t, t, 0.0, // d/dr
         -tm, 0.0, tm, -t, 0.0, t,                         // d/ds
         -u, -r, -s, u, r, s };                            // d/dt
-      for (int k = 0; k < 18; ++k)
-      {
-        d[k] = v[k];
-      }
+      std::copy(v, v + 18, d);
       return true;
     }
     case CellShape::Pyramid:
-      TrilinearTerm(rm, -1.0, sm, -1.0, tm, -1.0, d, 5, 0);
-      TrilinearTerm(r, 1.0, sm, -1.0, tm, -1.0, d, 5, 1);
-      TrilinearTerm(r, 1.0, s, 1.0, tm, -1.0, d, 5, 2);
-      TrilinearTerm(rm, -1.0, s, 1.0, tm, -1.0, d, 5, 3);
-      d[4] = 0.0;
+      TrilinearDerivatives(HexCorners, 4, pc, d, 5);
+      d[4] = 0.0; // the apex: w = t
       d[9] = 0.0;
       d[14] = 1.0;
       return true;
