@@ -46,7 +46,7 @@
 #include "hovOpacityRefinement.h" // OpaqueClamp
 #include "hovSegmentIntegral.h"   // SegmentEnd
 
-#include <algorithm> // std::min, std::max (inline lookups)
+#include <algorithm> // std::min, std::max, std::upper_bound (inline lookups)
 #include <string>    // Build() messages
 #include <vector>    // node storage
 
@@ -215,9 +215,17 @@ inline int TransferFunction::FindIntervalUpward(double s) const
       --k;
     }
   }
-  while (k + 1 < n && this->X[k + 1] <= s)
+  // A few steps up; beyond them a binary search: where the nodes crowd into
+  // a few buckets (a table spanning [-1, 1e300] puts every node but one into
+  // bucket 0) a walk would cost one step per node and sample.
+  for (int step = 0; step < 8 && k + 1 < n && this->X[k + 1] <= s; ++step)
   {
     ++k;
+  }
+  if (k + 1 < n && this->X[k + 1] <= s)
+  {
+    k = static_cast<int>(std::upper_bound(this->X.begin() + (k + 1), this->X.end(), s) -
+          this->X.begin()) - 1;
   }
   return k;
 }

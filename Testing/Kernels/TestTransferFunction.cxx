@@ -240,6 +240,18 @@ TEST(TransferFunction, IntervalSearchIsExactNextToNodes)
     }
     tables.push_back(x);
   }
+  // Nodes crowded into a few buckets (a span of 1e300: every node but the
+  // last in bucket 0), where the lookup searches instead of walking.
+  for (const double far : { 1e300, 1e12 })
+  {
+    std::vector<double> x{ -1e3 };
+    for (int k = 0; k < 3000; ++k)
+    {
+      x.push_back(k * 1e-3 + (k % 7 == 0 ? 0.0 : 1e-4 * u(rng)));
+    }
+    x.push_back(far);
+    tables.push_back(x);
+  }
   int checked = 0;
   for (const std::vector<double>& nodes : tables)
   {
@@ -276,5 +288,5 @@ TEST(TransferFunction, IntervalSearchIsExactNextToNodes)
       ++checked;
     }
   }
-  EXPECT_GT(checked, 5000);
+  EXPECT_GT(checked, 20000);
 }
