@@ -215,19 +215,27 @@ bool hov::ShadedCellSegment::IntegrateFitted(const FrameData& frame,
   }
   const hov::GradientOpacityFunction* go = f.UseGradientOpacity ? &f.GradientOpacity : nullptr;
   hov::ShadedSegmentResult sum;
+  const double length = t1 - t0;
   for (const hov::GradientPiece& piece : this->GradientPieces)
   {
+    // The segment's tolerance and panel budget shared among the sub-pieces
+    // as the quadrature shares them among its panels: in proportion to the
+    // length, and what the pieces in front left.
+    hov::ShadedSegmentSettings share = settings;
+    share.Tolerance = settings.Tolerance * ((piece.T1 - piece.T0) / length);
+    share.MaxPanels = std::max(settings.MaxPanels - sum.Panels, 1);
     // s in the piece's own variable, tau' = t - piece.T0.
     const hov::Polynomial sp =
       piece.T0 == t0 ? s : hov::ComposeAffine(s, piece.T0 - t0, 1.0);
     hov::Polynomial gw[3];
     ToWorld(f, piece.G, gw);
     const hov::ShadedSegmentResult r = hov::IntegrateShadedPolynomial(*frame.TF, sp, gw,
-      piece.T1 - piece.T0, f.VolumeShading, go, WorldRay(f, ray, piece.T0), settings);
+      piece.T1 - piece.T0, f.VolumeShading, go, WorldRay(f, ray, piece.T0), share);
     sum.ErrorEstimate += (1.0 - sum.Color.A) * r.ErrorEstimate;
     hov::CompositeBehind(sum.Color, r.Color);
     sum.Panels += r.Panels;
     sum.Samples += r.Samples;
+    sum.SkippedBreakpoints += r.SkippedBreakpoints;
     sum.Converged = sum.Converged && r.Converged;
     if (sum.Color.A >= 1.0)
     {

@@ -15,19 +15,23 @@
  *    hov::IntegrateLinearScalarShaded (exact; no error estimate);
  *  - affine general cells (voxels, parallelepipeds, prismatic wedges,
  *    straight-sided quadratic tetrahedra, ...): s(t) and grad s(t) are
- *    polynomials along the ray (hov::AffineGradientAlongRay):
+ *    polynomials along the ray (hov::AffineGradientAlongLine, from the inverse
+ *    Jacobian kept by hov::GeneralCells):
  *    hov::IntegrateShadedPolynomial (closed form when s is linear and the
  *    lights directional, adaptive quadrature with an error estimate otherwise);
  *  - other cells (distorted hexahedra, general wedges, pyramids): the
  *    gradient restricted to the piece as polynomials too
- *    (hov::RestrictCellGradient: Chebyshev, within 1e-10 of the largest
- *    gradient on the piece, at most 8 sub-pieces), each sub-piece then as an
- *    affine cell's (hov::IntegrateShadedPolynomial with the scalar shifted to
- *    it): one Newton inversion per fitted point (17 per sub-piece) instead
- *    of one per quadrature sample. Where that fit does not converge (chords
- *    near a pyramid's apex) or Newton fails: the field and gradient sampled
- *    pointwise (hov::CellFieldAndGradient) for hov::IntegrateShadedSegment,
- *    cut at the transfer-function node crossings of the restricted scalar.
+ *    (hov::RestrictCellGradient: Chebyshev, to 1e-10 of its scale on the
+ *    piece, at most 8 sub-pieces), each sub-piece then as an affine cell's
+ *    (hov::IntegrateShadedPolynomial with the scalar shifted to it, its
+ *    share of the tolerance and of the panels): one Newton inversion per
+ *    fitted point (17 per sub-piece) instead of one per quadrature sample.
+ *    The fit's error is not in the error estimate (hovGradientRestriction.h
+ *    discusses its effect on the normal). Where that fit needs more pieces
+ *    (chords near a pyramid's apex) or Newton fails: the field and gradient
+ *    sampled pointwise (hov::CellFieldAndGradient) for
+ *    hov::IntegrateShadedSegment, cut at the transfer-function node
+ *    crossings of the restricted scalar.
  * Positional lights make the transform vary along every ray: the quadrature
  * path, also on tetrahedra.
  *
@@ -91,8 +95,9 @@ public:
 
 private:
   /// Non-affine cells: grad s fitted by polynomials, each piece integrated as
-  /// an affine cell's; false (the pointwise route then) if the fit did not
-  /// converge.
+  /// an affine cell's with its share of the tolerance and of the panels;
+  /// false (the pointwise route then) if the fit did not converge within 8
+  /// pieces or a Newton inversion failed.
   bool IntegrateFitted(const FrameData& frame, const hov::GeneralCells::Cell& cell,
     const hov::ViewRays::Ray& ray, double t0, double t1, const hov::Polynomial& s,
     const hov::ShadedSegmentSettings& settings, hov::ShadedSegmentResult& out);

@@ -83,6 +83,7 @@ struct FitContext
   int MaxPieces;
   std::vector<RestrictedPiece>* Out;
   CellRestrictionStatus* Status;
+  int* Intervals; ///< of the partition so far, pending halves included (<= MaxPieces)
 };
 
 /// The degree-ChebN interpolant's coefficients of s on [a, b].
@@ -111,10 +112,11 @@ void Fit(const FitContext& ctx, double a, double b, int depth)
   SampleChebyshev(ctx, a, b, c);
   double bound = 0.0;
   const int m = detail::TruncationDegree(c, ctx.Floor, ctx.TolAbs, bound);
-  const bool canSplit = depth < MaxDepth && static_cast<int>(ctx.Out->size()) + 2 <= ctx.MaxPieces &&
+  const bool canSplit = depth < MaxDepth && *ctx.Intervals + 1 <= ctx.MaxPieces &&
     0.5 * (a + b) > a && 0.5 * (a + b) < b;
   if (bound > ctx.TolAbs && canSplit)
   {
+    ++*ctx.Intervals;
     const double mid = 0.5 * (a + b);
     Fit(ctx, a, mid, depth + 1);
     Fit(ctx, mid, b, depth + 1);
@@ -406,9 +408,10 @@ int RestrictCellScalar(CellShape shape, const double* points, const double* scal
     maxAbs = std::max(maxAbs, std::fabs(scalars[i]));
   }
   double scale = hi - lo > 0.0 ? hi - lo : (maxAbs > 0.0 ? maxAbs : 1.0);
+  int intervals = 1;
   FitContext ctx{ shape, points, scalars, origin, direction,
     settings.RelativeTolerance * scale, NewtonFloor * scale, std::max(settings.MaxPieces, 1),
-    &out, &st };
+    &out, &st, &intervals };
   Fit(ctx, t0, t1, 0);
   return static_cast<int>(out.size());
 }

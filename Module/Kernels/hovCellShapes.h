@@ -77,7 +77,8 @@ HOV_EXPORT void CellShapeFunctions(CellShape shape, const double pc[3], double* 
  * Derivatives dw/dr, dw/ds, dw/dt in VTK's layout: derivs[i], derivs[n + i],
  * derivs[2n + i] for node i, n = CellNodeCount. Linear cells (the geometry
  * of every cell, so Newton's inner loop): closed forms evaluated in the dual
- * numbers' order, the same values (up to the sign of a zero); quadratic
+ * numbers' order, the same values for finite pc (up to the sign of a zero;
+ * where the dual path meets inf * 0 they stay finite); quadratic
  * cells: dual numbers (exact differentiation of VTK's formulas).
  */
 HOV_EXPORT void CellShapeDerivatives(CellShape shape, const double pc[3], double* derivs);

@@ -28,12 +28,13 @@
  *    gradient polynomials exactly.
  *  - CellFieldAndGradient: any supported straight-edged cell at a point x:
  *    pc by InvertGeometry (warm start from @p pc), then the shape-function
- *    derivatives (exact, dual numbers) and J^-T. The pointwise sampler for
+ *    derivatives (exact: CellShapeDerivatives) and J^-T. The pointwise sampler for
  *    non-affine cells (distorted hexahedra, pyramids). The value and
  *    derivatives are those of s - s_0 (plus s_0): a constant field has the
  *    gradient (0, 0, 0), not rounding noise in a random direction.
  *
- * Thread safety: stateless, re-entrant; no allocation.
+ * Thread safety: re-entrant, no allocation; CachedAffineFieldBasis builds its
+ * table (~190 KB) once, on first use (a thread-safe function-local static).
  * @sa hovCellShapes.h, hovCellRestriction.h
  */
 #ifndef hovFieldGradient_h

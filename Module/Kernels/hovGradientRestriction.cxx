@@ -29,10 +29,11 @@ struct Context
   int MaxPieces = 1;
   std::vector<GradientPiece>* Out;
   CellRestrictionStatus* Status;
+  int Intervals = 1; ///< of the partition so far, pending halves included (<= MaxPieces)
 };
 
 /// The three components' Chebyshev coefficients on [a, b].
-void Sample(const Context& ctx, double a, double b, double c[3][ChebN + 1])
+void Sample(Context& ctx, double a, double b, double c[3][ChebN + 1])
 {
   double t[ChebN + 1], f[3][ChebN + 1];
   detail::ChebyshevPoints(a, b, t);
@@ -58,7 +59,7 @@ void Sample(const Context& ctx, double a, double b, double c[3][ChebN + 1])
   }
 }
 
-void Fit(const Context& ctx, double a, double b, int depth, double (*given)[ChebN + 1])
+void Fit(Context& ctx, double a, double b, int depth, double (*given)[ChebN + 1])
 {
   double own[3][ChebN + 1];
   double(*c)[ChebN + 1] = given;
@@ -76,10 +77,11 @@ void Fit(const Context& ctx, double a, double b, int depth, double (*given)[Cheb
     bound = std::max(bound, bi);
   }
   const double mid = 0.5 * (a + b);
-  const bool canSplit = depth < MaxDepth &&
-    static_cast<int>(ctx.Out->size()) + 2 <= ctx.MaxPieces && mid > a && mid < b;
+  const bool canSplit =
+    depth < MaxDepth && ctx.Intervals + 1 <= ctx.MaxPieces && mid > a && mid < b;
   if (!(bound <= ctx.TolAbs) && canSplit)
   {
+    ++ctx.Intervals;
     Fit(ctx, a, mid, depth + 1, nullptr);
     Fit(ctx, mid, b, depth + 1, nullptr);
     return;

@@ -104,7 +104,8 @@ HOV_EXPORT bool IsIdentity(const ShadingTransform& shade);
 /// True if no light is positional: the transform is then constant along a ray for a constant gradient.
 HOV_EXPORT bool LightsAreDirectional(const VolumeShadingSettings& settings);
 
-/// Unit normal g/|g| (toward increasing s) or 0 if |g| <= @p floor or not finite.
+/// Unit normal g/|g| (toward increasing s) or 0 if |g| <= @p floor or not finite
+/// (@p normal must not be @p gradient).
 HOV_EXPORT bool VolumeNormal(const double gradient[3], double floor, double normal[3]);
 
 /**

@@ -260,6 +260,27 @@ TEST(CellRestriction, PyramidNearApexSubdivides)
   }
   std::cout << "[measured] pyramid near apex: " << pieces.size() << " pieces, worst error "
             << worst << ", converged " << status.Converged << std::endl;
+  // MaxPieces bounds the pieces, the halves still pending included (a
+  // depth-first split counted only the finished ones, and gave up to 10 for 8).
+  // Both directions: from the apex the refined end comes first, with the
+  // other halves pending.
+  const double back[3] = { -d[0], -d[1], -d[2] };
+  for (int maxPieces : { 2, 3, 5, 8 })
+  {
+    for (const double* dir : { static_cast<const double*>(d), back })
+    {
+      const double* from = dir == d ? o : xb;
+      hov::CellRestrictionSettings few;
+      few.MaxPieces = maxPieces;
+      hov::RestrictCellScalar(cell.Shape, cell.Points.data(), cell.Scalars.data(), from, dir,
+        0.0, 1.0, few, pieces, &status);
+      EXPECT_LE(static_cast<int>(pieces.size()), maxPieces) << (dir == d ? "to" : "from")
+                                                            << " the apex";
+      EXPECT_FALSE(status.Converged) << maxPieces; // 11 are needed
+      EXPECT_EQ(pieces.front().T0, 0.0);
+      EXPECT_EQ(pieces.back().T1, 1.0);
+    }
+  }
 }
 
 TEST(CellRestriction, DegenerateInput)

@@ -94,14 +94,14 @@ TEST(GradientRestriction, BoundHoldsAndIsTightOnDistortedCells)
         EXPECT_LE(actual, piece.ErrorBound) << ShapeName(shape) << " trial " << trial;
         if (status.Converged)
         {
-          // The tolerance, relative to a scale of at most ~17 times the
+          // The tolerance, relative to a scale of at most 32 times the
           // largest component (sum |c_k| of a degree-16 interpolant).
-          EXPECT_LE(piece.ErrorBound, 1e-10 * 17.0 * scale) << ShapeName(shape);
+          EXPECT_LE(piece.ErrorBound, 1e-10 * 32.0 * scale) << ShapeName(shape);
         }
         relError.Add(actual / scale, ShapeName(shape));
         const double r = piece.ErrorBound / std::max(actual, 1e-13 * scale);
         ratio.Add(r, ShapeName(shape));
-        EXPECT_LE(r, 1e3) << ShapeName(shape) << " trial " << trial;
+        EXPECT_LE(r, 20.0) << ShapeName(shape) << " trial " << trial; // measured 2.2
       }
     }
   }
@@ -178,9 +178,21 @@ TEST(GradientRestriction, RefusesInvalidInput)
   EXPECT_TRUE(pieces.empty());
   EXPECT_FALSE(status.Converged);
   const double inf[3] = { INFINITY, 0.0, 0.0 };
+  pieces.resize(2);
   EXPECT_EQ(hov::RestrictCellGradient(cell.Shape, cell.Points.data(), cell.Scalars.data(), o, inf,
               chord.T0, chord.T1, settings, pieces, &status),
     0);
+  EXPECT_TRUE(pieces.empty());
+  EXPECT_FALSE(status.Converged);
+  EXPECT_EQ(hov::RestrictCellGradient(cell.Shape, cell.Points.data(), cell.Scalars.data(), o, d,
+              NAN, chord.T1, settings, pieces, &status),
+    0);
+  std::vector<double> badPoints = cell.Points;
+  badPoints[4] = NAN;
+  EXPECT_EQ(hov::RestrictCellGradient(cell.Shape, badPoints.data(), cell.Scalars.data(), o, d,
+              chord.T0, chord.T1, settings, pieces, &status),
+    0);
+  EXPECT_FALSE(status.Converged);
   // Zero length: one constant piece, the gradient at the point.
   ASSERT_EQ(hov::RestrictCellGradient(cell.Shape, cell.Points.data(), cell.Scalars.data(), o, d,
               chord.T0, chord.T0, settings, pieces, &status),
@@ -197,5 +209,39 @@ TEST(GradientRestriction, RefusesInvalidInput)
               chord.T0, chord.T1, settings, pieces, &status),
     0);
   EXPECT_FALSE(status.Converged);
+}
+
+// The mapper's setting (hov::ShadedCellSegment: 1e-10, at most 8 pieces) on
+// moderately distorted cells: the fitted route is what runs, the pointwise
+// fallback the exception (chords near a pyramid's apex).
+TEST(GradientRestriction, MapperSettingConvergesOnModeratelyDistortedCells)
+{
+  using S = CellShape;
+  std::mt19937_64 rng(34);
+  hov::CellRestrictionSettings settings;
+  settings.RelativeTolerance = 1e-10;
+  settings.MaxPieces = 8;
+  int fitted = 0, cases = 0;
+  for (S shape : { S::Hexahedron, S::Wedge, S::Pyramid, S::QuadraticHexahedron })
+  {
+    for (int trial = 0; trial < 50; ++trial)
+    {
+      const hovtest::TestCell cell = hovtest::MakeRandomCell(shape, rng, 0.1);
+      double o[3], d[3];
+      hov::RayCellInterval chord;
+      ASSERT_TRUE(hovtest::RandomChord(cell, rng, o, d, chord)) << ShapeName(shape);
+      std::vector<hov::GradientPiece> pieces;
+      hov::CellRestrictionStatus status;
+      ASSERT_GT(hov::RestrictCellGradient(shape, cell.Points.data(), cell.Scalars.data(), o, d,
+                  chord.T0, chord.T1, settings, pieces, &status),
+        0);
+      EXPECT_LE(static_cast<int>(pieces.size()), 8);
+      ++cases;
+      fitted += status.Converged && status.NewtonFailures == 0;
+    }
+  }
+  std::cout << "[measured] GradientRestriction: mapper setting fitted " << fitted << " of "
+            << cases << " chords" << std::endl;
+  EXPECT_GE(fitted, cases * 9 / 10);
 }
 }
