@@ -141,6 +141,38 @@ double EdgeOnOpacity(double alpha, double cosIncidence, double minCosine)
   return -std::expm1(std::log1p(-alpha) / c);
 }
 
+bool ComputeLightVectors(const ShadingLight& light, const double point[3], const double normal[3],
+  const double toViewer[3], LightVectors& out)
+{
+  if (!LightAt(light, point, normal, out.L, out.Factor))
+  {
+    return false;
+  }
+  const double half[3] = { out.L[0] + toViewer[0], out.L[1] + toViewer[1],
+    out.L[2] + toViewer[2] };
+  out.HasHalf = Normalize(half, out.H); // false: the light exactly behind the eye ray
+  return true;
+}
+
+void AddPhongLight(const LightVectors& light, const double normal[3], const double color[3],
+  const ShadingMaterial& material, double diffuse[3], double specular[3])
+{
+  double nDotL = Dot(normal, light.L);
+  double nDotH = light.HasHalf ? Dot(normal, light.H) : 0.0;
+  if (material.TwoSidedLighting)
+  {
+    nDotL = std::fabs(nDotL);
+    nDotH = std::fabs(nDotH);
+  }
+  const double df = light.Factor * std::max(nDotL, 0.0);
+  const double sf = nDotH > 0.0 ? light.Factor * std::pow(nDotH, material.SpecularPower) : 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    diffuse[c] += df * color[c];
+    specular[c] += sf * color[c];
+  }
+}
+
 void PhongLightSums(const double point[3], const double normal[3], const double toViewer[3],
   const ShadingLight* lights, int lightCount, const ShadingMaterial& material, double diffuse[3],
   double specular[3])
@@ -152,26 +184,10 @@ void PhongLightSums(const double point[3], const double normal[3], const double 
   }
   for (int i = 0; lights && i < lightCount; ++i)
   {
-    double l[3], factor = 0.0;
-    if (!LightAt(lights[i], point, normal, l, factor))
+    LightVectors v;
+    if (ComputeLightVectors(lights[i], point, normal, toViewer, v))
     {
-      continue;
-    }
-    double nDotL = Dot(normal, l);
-    const double half[3] = { l[0] + toViewer[0], l[1] + toViewer[1], l[2] + toViewer[2] };
-    double h[3];
-    double nDotH = Normalize(half, h) ? Dot(normal, h) : 0.0; // light exactly behind the eye ray
-    if (material.TwoSidedLighting)
-    {
-      nDotL = std::fabs(nDotL);
-      nDotH = std::fabs(nDotH);
-    }
-    const double df = factor * std::max(nDotL, 0.0);
-    const double sf = nDotH > 0.0 ? factor * std::pow(nDotH, material.SpecularPower) : 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      diffuse[c] += df * lights[i].Color[c];
-      specular[c] += sf * lights[i].Color[c];
+      AddPhongLight(v, normal, lights[i].Color, material, diffuse, specular);
     }
   }
 }

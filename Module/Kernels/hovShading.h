@@ -130,6 +130,30 @@ HOV_EXPORT void PhongLightSums(const double point[3], const double normal[3],
   const ShadingMaterial& material, double diffuse[3], double specular[3]);
 HOV_EXPORT void ComposePhong(const double baseColor[3], const ShadingMaterial& material,
   const double diffuse[3], const double specular[3], double out[3]);
+
+/// One light as seen from a point: the unit vector L toward it, the unit half
+/// vector H of L and the view vector (HasHalf false where L + v = 0: the light
+/// exactly behind the eye ray) and its Factor (intensity x attenuation x spot).
+struct LightVectors
+{
+  double L[3] = { 0.0, 0.0, 0.0 };
+  double H[3] = { 0.0, 0.0, 0.0 };
+  bool HasHalf = false;
+  double Factor = 0.0;
+};
+
+/**
+ * PhongLightSums per light, in two steps, for callers that reuse a light's
+ * vectors (a directional light and one view vector: the same along a ray):
+ * ComputeLightVectors (false if the light does not reach @p point; @p point
+ * and @p normal matter for positional lights only), then AddPhongLight adds
+ * its terms to @p diffuse and @p specular. PhongLightSums is exactly these
+ * calls over its lights, in order, from zero sums.
+ */
+HOV_EXPORT bool ComputeLightVectors(const ShadingLight& light, const double point[3],
+  const double normal[3], const double toViewer[3], LightVectors& out);
+HOV_EXPORT void AddPhongLight(const LightVectors& light, const double normal[3],
+  const double color[3], const ShadingMaterial& material, double diffuse[3], double specular[3]);
 }
 
 #endif

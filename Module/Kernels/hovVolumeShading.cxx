@@ -147,30 +147,29 @@ bool VolumeNormal(const double gradient[3], double floor, double normal[3])
   return true;
 }
 
-ShadingTransform ComputeShadingTransform(const VolumeShadingSettings& settings,
-  const double gradient[3], const double point[3], const double toViewer[3])
+namespace
 {
-  ShadingTransform out;
-  if (!settings.Shade)
-  {
-    return out;
-  }
-  double normal[3];
-  out.Lit = VolumeNormal(gradient, settings.GradientFloor, normal);
-  // M = ka' + kd D (unit colour, no specular), K = ks S (zero colour, specular only).
-  ShadingMaterial diffuse = settings.Material;
+/// The two compositions' materials: M = ka' + kd D (unit colour, no
+/// specular), K = ks S (zero colour, specular only).
+void CompositionMaterials(
+  const VolumeShadingSettings& settings, ShadingMaterial& diffuse, ShadingMaterial& specular)
+{
+  diffuse = settings.Material;
   diffuse.Ambient = settings.Ambient == AmbientTerm::MaterialColor ? settings.Material.Ambient : 0.0;
   diffuse.Specular = 0.0;
   diffuse.ClampColor = false;
-  ShadingMaterial specular = settings.Material;
+  specular = settings.Material;
   specular.Ambient = 0.0;
   specular.Diffuse = 0.0;
   specular.ClampColor = false;
+}
+
+/// The transform from one lighting pass's sums, composed twice.
+void ComposeTransform(const VolumeShadingSettings& settings, const ShadingMaterial& diffuse,
+  const ShadingMaterial& specular, const double lightDiffuse[3], const double lightSpecular[3],
+  ShadingTransform& out)
+{
   const double one[3] = { 1.0, 1.0, 1.0 }, zero[3] = { 0.0, 0.0, 0.0 };
-  // One lighting pass (the light vectors, half vectors and powers), composed twice.
-  double lightDiffuse[3], lightSpecular[3];
-  PhongLightSums(point, normal, toViewer, settings.Lights, settings.LightCount, settings.Material,
-    lightDiffuse, lightSpecular);
   ComposePhong(one, diffuse, lightDiffuse, lightSpecular, out.Scale);
   ComposePhong(zero, specular, lightDiffuse, lightSpecular, out.Offset);
   if (settings.Ambient == AmbientTerm::LightAmbient)
@@ -181,6 +180,76 @@ ShadingTransform ComputeShadingTransform(const VolumeShadingSettings& settings,
     }
   }
   out.Clamp = settings.Material.ClampColor;
+}
+}
+
+ShadingTransform ComputeShadingTransform(const VolumeShadingSettings& settings,
+  const double gradient[3], const double point[3], const double toViewer[3])
+{
+  ShadingTransform out;
+  if (!settings.Shade)
+  {
+    return out;
+  }
+  double normal[3];
+  out.Lit = VolumeNormal(gradient, settings.GradientFloor, normal);
+  ShadingMaterial diffuse, specular;
+  CompositionMaterials(settings, diffuse, specular);
+  // One lighting pass (the light vectors, half vectors and powers), composed twice.
+  double lightDiffuse[3], lightSpecular[3];
+  PhongLightSums(point, normal, toViewer, settings.Lights, settings.LightCount, settings.Material,
+    lightDiffuse, lightSpecular);
+  ComposeTransform(settings, diffuse, specular, lightDiffuse, lightSpecular, out);
+  return out;
+}
+
+bool PrepareDirectionalShading(
+  const VolumeShadingSettings& settings, const double toViewer[3], DirectionalShading& out)
+{
+  out.Settings = &settings;
+  out.Count = 0;
+  if (!settings.Shade)
+  {
+    return true; // the identity, whatever the lights
+  }
+  if (settings.Lights && settings.LightCount > DirectionalShading::MaxLights)
+  {
+    return false;
+  }
+  CompositionMaterials(settings, out.Diffuse, out.Specular);
+  const double anywhere[3] = { 0.0, 0.0, 0.0 }; // directional lights: not read
+  for (int i = 0; settings.Lights && i < settings.LightCount; ++i)
+  {
+    const ShadingLight& light = settings.Lights[i];
+    if (light.Positional)
+    {
+      return false;
+    }
+    if (ComputeLightVectors(light, anywhere, anywhere, toViewer, out.Lights[out.Count]))
+    {
+      out.Colors[out.Count++] = light.Color;
+    }
+  }
+  return true;
+}
+
+ShadingTransform ComputeShadingTransform(const DirectionalShading& prepared, const double gradient[3])
+{
+  ShadingTransform out;
+  const VolumeShadingSettings& settings = *prepared.Settings;
+  if (!settings.Shade)
+  {
+    return out;
+  }
+  double normal[3];
+  out.Lit = VolumeNormal(gradient, settings.GradientFloor, normal);
+  double lightDiffuse[3] = { 0.0, 0.0, 0.0 }, lightSpecular[3] = { 0.0, 0.0, 0.0 };
+  for (int i = 0; i < prepared.Count; ++i)
+  {
+    AddPhongLight(prepared.Lights[i], normal, prepared.Colors[i], settings.Material, lightDiffuse,
+      lightSpecular);
+  }
+  ComposeTransform(settings, prepared.Diffuse, prepared.Specular, lightDiffuse, lightSpecular, out);
   return out;
 }
 

@@ -115,6 +115,35 @@ HOV_EXPORT bool VolumeNormal(const double gradient[3], double floor, double norm
 HOV_EXPORT ShadingTransform ComputeShadingTransform(const VolumeShadingSettings& settings,
   const double gradient[3], const double point[3], const double toViewer[3]);
 
+/**
+ * ComputeShadingTransform's work that does not depend on the gradient, done
+ * once for directional lights and one view vector (along a ray: the lights'
+ * unit vectors and half vectors, the two compositions' materials). Holds
+ * pointers into the settings, which must outlive it.
+ */
+struct DirectionalShading
+{
+  static constexpr int MaxLights = 8;
+  const VolumeShadingSettings* Settings = nullptr;
+  ShadingMaterial Diffuse, Specular; ///< the two compositions' materials
+  int Count = 0;                     ///< lights that reach (in the settings' order)
+  LightVectors Lights[MaxLights];
+  const double* Colors[MaxLights] = {};
+};
+
+/**
+ * Fills @p out for @p settings seen along @p toViewer; false (use
+ * ComputeShadingTransform per point) if a light is positional or there are
+ * more than DirectionalShading::MaxLights.
+ */
+HOV_EXPORT bool PrepareDirectionalShading(
+  const VolumeShadingSettings& settings, const double toViewer[3], DirectionalShading& out);
+
+/// ComputeShadingTransform(settings, @p gradient, any point, toViewer) bit
+/// for bit, from @p prepared.
+HOV_EXPORT ShadingTransform ComputeShadingTransform(
+  const DirectionalShading& prepared, const double gradient[3]);
+
 /// Apply @p shade to the chromaticity @p color (3 channels, in place).
 HOV_EXPORT void ApplyShading(const ShadingTransform& shade, double color[3]);
 
