@@ -42,17 +42,48 @@ void ChebyshevPoints(double a, double b, double t[ChebN + 1])
   }
 }
 
+namespace
+{
+/// cos(Pi j k / ChebN) for j, k in [0, ChebN], row j contiguous in k.
+struct CosProducts
+{
+  double T[ChebN + 1][ChebN + 1];
+  CosProducts()
+  {
+    const double* cs = Cosines();
+    for (int j = 0; j <= ChebN; ++j)
+    {
+      for (int k = 0; k <= ChebN; ++k)
+      {
+        this->T[j][k] = cs[(j * k) % (2 * ChebN)];
+      }
+    }
+  }
+};
+}
+
 void ChebyshevCoefficients(const double f[ChebN + 1], double c[ChebN + 1])
 {
-  const double* cs = Cosines();
+  // Each c_k sums 0.5 (f_0 + (-1)^k f_N), then f_j cos(pi j k/N) for j = 1 ..
+  // N - 1 in this order; all k at once per j (independent sums side by
+  // side), with the same operations per k as one k after the other.
+  static const CosProducts table; // thread-safe initialisation (C++11)
   for (int k = 0; k <= ChebN; ++k)
   {
-    double sum = 0.5 * (f[0] + ((k % 2) ? -f[ChebN] : f[ChebN]));
-    for (int j = 1; j < ChebN; ++j)
+    c[k] = 0.5 * (f[0] + ((k % 2) ? -f[ChebN] : f[ChebN]));
+  }
+  for (int j = 1; j < ChebN; ++j)
+  {
+    const double* row = table.T[j];
+    const double fj = f[j];
+    for (int k = 0; k <= ChebN; ++k)
     {
-      sum += f[j] * cs[(j * k) % (2 * ChebN)];
+      c[k] += fj * row[k];
     }
-    c[k] = sum * 2.0 / ChebN;
+  }
+  for (int k = 0; k <= ChebN; ++k)
+  {
+    c[k] = c[k] * 2.0 / ChebN;
   }
   c[0] *= 0.5;
   c[ChebN] *= 0.5;

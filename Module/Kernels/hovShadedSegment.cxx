@@ -39,10 +39,12 @@ double CosIndex(int m)
 }
 
 /// CosIndex(k j) for k in [0, N + 1], j in [0, N], looked up once (the DCTs
-/// and the depth evaluation of every panel use it: the same values).
+/// and the depth evaluation of every panel use it: the same values), stored
+/// both ways round so that the loops run along a row: V[k][j] and T[j][k].
 struct CosProducts
 {
   double V[N + 2][N + 1];
+  double T[N + 1][N + 2];
   CosProducts()
   {
     for (int k = 0; k <= N + 1; ++k)
@@ -50,6 +52,7 @@ struct CosProducts
       for (int j = 0; j <= N; ++j)
       {
         this->V[k][j] = CosIndex(k * j);
+        this->T[j][k] = this->V[k][j];
       }
     }
   }
@@ -61,19 +64,33 @@ const CosProducts& CosKJ()
   return table;
 }
 
-/// DCT-I: coefficients a[0..N] of the interpolant of v at the Lobatto points x_j = cos(pi j/N).
+/**
+ * DCT-I: coefficients a[0..N] of the interpolant of v at the Lobatto points
+ * x_j = cos(pi j/N). Every coefficient is the sum
+ * 0.5 (v_0 + v_N cos(pi k)) + v_1 cos(pi k/N) + ... + v_{N-1} cos(pi k (N-1)/N)
+ * in this order; the loop runs over all k at once per j (independent sums a
+ * vector unit takes side by side) instead of one k after the other (one
+ * dependent chain of additions each), with the same operations per k.
+ */
 void Chebyshev(const double v[N + 1], double a[N + 1])
 {
   const CosProducts& cosKJ = CosKJ();
   for (int k = 0; k <= N; ++k)
   {
-    const double* c = cosKJ.V[k];
-    double sum = 0.5 * (v[0] + v[N] * c[N]);
-    for (int j = 1; j < N; ++j)
+    a[k] = 0.5 * (v[0] + v[N] * cosKJ.T[N][k]);
+  }
+  for (int j = 1; j < N; ++j)
+  {
+    const double* c = cosKJ.T[j];
+    const double vj = v[j];
+    for (int k = 0; k <= N; ++k)
     {
-      sum += v[j] * c[j];
+      a[k] += vj * c[k];
     }
-    a[k] = sum * (2.0 / N);
+  }
+  for (int k = 0; k <= N; ++k)
+  {
+    a[k] *= 2.0 / N;
   }
   a[0] *= 0.5;
   a[N] *= 0.5;
@@ -92,6 +109,8 @@ struct Context
   const VolumeShadingSettings* Shading;
   const GradientOpacityFunction* GO;
   const SegmentRay* Ray;
+  /// Directional lights: the lighting's per-ray part, prepared once (else null).
+  const DirectionalShading* Directional = nullptr;
   bool Emission = false; // Wilhelms-Van Gelder
   bool StopUnconverged = false;
   int EvaluationsLeft = 0; // panels evaluated, accepted or not (StopUnconverged)
@@ -133,7 +152,11 @@ void Sample(Context& ctx, double t, int hint, double& tau, double e[3], double c
   c[0] = v.Color[0];
   c[1] = v.Color[1];
   c[2] = v.Color[2];
-  if (ctx.Shading->Shade)
+  if (ctx.Directional)
+  {
+    ApplyShading(ComputeShadingTransform(*ctx.Directional, g), c);
+  }
+  else if (ctx.Shading->Shade)
   {
     const SegmentRay& r = *ctx.Ray;
     const double point[3] = { r.Origin[0] + t * r.Direction[0], r.Origin[1] + t * r.Direction[1],
@@ -194,16 +217,21 @@ Panel IntegratePanel(Context& ctx, double a, double b, int hint)
   {
     bc[0] -= (k % 2 ? -1.0 : 1.0) * bc[k];
   }
-  double depth[N + 1];
+  // depth_j = half sum_k bc_k cos(pi k j/N), each sum in k order; all j at once.
+  double depth[N + 1] = {};
   const CosProducts& cosKJ = CosKJ();
+  for (int k = 0; k <= N + 1; ++k)
+  {
+    const double* c = cosKJ.V[k];
+    const double b = bc[k];
+    for (int j = 0; j <= N; ++j)
+    {
+      depth[j] += b * c[j];
+    }
+  }
   for (int j = 0; j <= N; ++j)
   {
-    double sum = 0.0;
-    for (int k = 0; k <= N + 1; ++k)
-    {
-      sum += bc[k] * cosKJ.V[k][j];
-    }
-    depth[j] = half * sum;
+    depth[j] *= half;
   }
   out.Depth = std::max(depth[0], 0.0);
   out.ErrDepth = (b - a) * Tail(at);
@@ -360,6 +388,12 @@ ShadedSegmentResult IntegrateShadedSegment(const TransferFunction& tf, FieldGrad
   ctx.Shading = &shading;
   ctx.GO = gradientOpacity;
   ctx.Ray = &ray;
+  DirectionalShading directional;
+  const double toViewer[3] = { -ray.Direction[0], -ray.Direction[1], -ray.Direction[2] };
+  if (shading.Shade && PrepareDirectionalShading(shading, toViewer, directional))
+  {
+    ctx.Directional = &directional;
+  }
   ctx.Emission = settings.Emission == EmissionModel::WilhelmsVanGelder;
   ctx.EmissionFactor = tf.GetEmissionFactor();
   ctx.StopUnconverged = settings.StopWhenUnconverged;
