@@ -11,6 +11,7 @@
 
 #include <algorithm> // std::max
 #include <cmath>     // std::isfinite
+#include <cstring>   // memcmp, memcpy
 
 namespace
 {
@@ -49,18 +50,15 @@ void ToWorld(const hov::Features& f, const hov::Polynomial g[3], hov::Polynomial
 }
 
 /**
- * grad s along the ray from @p t0 in an affine cell, with the kept inverse
- * Jacobian (hov::GeneralCells), as the scalar's restriction is; false (the
- * pointwise route then) for other cells and non-finite results.
+ * grad s along the ray from @p t0 in an affine cell, from the coefficients
+ * @p coefficients of its scalars and the kept inverse Jacobian
+ * (hov::GeneralCells), as the scalar's restriction is; false (the pointwise
+ * route then) for non-finite results.
  */
-bool AffineGradient(const hov::GeneralCells::Cell& c, const double* nodes, const double* scalars,
-  const double o[3], const double d[3], double t0, hov::Polynomial g[3])
+bool AffineGradient(const hov::GeneralCells::Cell& c, const double* nodes,
+  const double (*coefficients)[hov::AffineFieldTerms], const double o[3], const double d[3],
+  double t0, hov::Polynomial g[3])
 {
-  double coefficients[3][hov::AffineFieldTerms];
-  if (!c.Affine || !hov::AffineGradientCoefficients(c.Shape, scalars, coefficients))
-  {
-    return false;
-  }
   double start[3], step[3];
   hov::GeneralCells::AffineLine(c, nodes, o, d, t0, start, step);
   hov::AffineGradientAlongLine(coefficients, c.InverseJacobian, start, step, g);
@@ -167,7 +165,9 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
     const double o[3] = { ray.Origin.x, ray.Origin.y, ray.Origin.z };
     const double d[3] = { ray.Direction.x, ray.Direction.y, ray.Direction.z };
     hov::Polynomial g[3], gw[3];
-    if (AffineGradient(c, nodes, scalars, o, d, t0, g))
+    const double(*coefficients)[hov::AffineFieldTerms] =
+      c.Affine ? this->Coefficients.Get(c.Shape, scalars) : nullptr;
+    if (coefficients && AffineGradient(c, nodes, coefficients, o, d, t0, g))
     {
       ToWorld(f, g, gw);
       r = hov::IntegrateShadedPolynomial(tf, s, gw, length, f.VolumeShading, go, wray, settings);
@@ -192,6 +192,23 @@ hov::RGBA hov::ShadedCellSegment::Integrate(const FrameData& frame, vtkIdType ce
     this->WorstError = std::max(this->WorstError, r.ErrorEstimate);
   }
   return r.Color;
+}
+
+const double (*hov::ShadedCellSegment::CoefficientCache::Get(
+  hov::CellShape shape, const double* scalars))[hov::AffineFieldTerms]
+{
+  const int n = hov::CellNodeCount(shape);
+  if (!(this->Valid && shape == this->Shape &&
+        std::memcmp(scalars, this->Scalars, n * sizeof(double)) == 0))
+  {
+    // A new cell (or the same one with other scalars: compared by value).
+    this->Valid = false;
+    this->Shape = shape;
+    std::memcpy(this->Scalars, scalars, n * sizeof(double));
+    this->Usable = hov::AffineGradientCoefficients(shape, scalars, this->C);
+    this->Valid = true;
+  }
+  return this->Usable ? this->C : nullptr;
 }
 
 bool hov::ShadedCellSegment::IntegrateFitted(const FrameData& frame,

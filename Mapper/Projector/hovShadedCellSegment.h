@@ -102,6 +102,22 @@ private:
     const hov::ViewRays::Ray& ray, double t0, double t1, const hov::Polynomial& s,
     const hov::ShadedSegmentSettings& settings, hov::ShadedSegmentResult& out);
 
+  /// The affine gradient coefficients (hov::AffineGradientCoefficients) of
+  /// the last cell: a tile visits a cell's pixels one after the other. Keyed
+  /// by the shape and the scalars' values, so never stale.
+  struct CoefficientCache
+  {
+    /// The coefficients of @p scalars, or null if the cell has none.
+    const double (*Get(hov::CellShape shape, const double* scalars))[hov::AffineFieldTerms];
+
+    bool Valid = false;
+    bool Usable = false;
+    hov::CellShape Shape = hov::CellShape::Tetra;
+    double Scalars[hov::MaxCellNodes];
+    double C[3][hov::AffineFieldTerms];
+  };
+  CoefficientCache Coefficients;
+
   std::vector<hov::GradientPiece> GradientPieces;
   std::vector<double> Breaks;
   std::vector<unsigned char> Smooth; ///< per breakpoint: mergeable (hovShadedSegment.h)
