@@ -1,6 +1,7 @@
 #include "hovGeneralCells.h"
 
 #include "hovCellRestriction.h" // IsGeometryAffine
+#include "hovFieldGradient.h"   // CachedAffineFieldBasis
 #include "hovRayCell.h"         // PlanarFaceMask
 
 #include "vtkIdList.h"
@@ -51,8 +52,7 @@ double Det3(const double j[9])
 }
 
 /// The per-pixel work's view-independent data of a valid cell (class doc).
-void PrepareRays(hov::GeneralCells::Cell& cell, const double* nodes,
-  const double* scalars, const std::vector<double>& basis)
+void PrepareRays(hov::GeneralCells::Cell& cell, const double* nodes, const double* scalars)
 {
   cell.PlanarFaces = hov::PlanarFaceMask(cell.Shape, nodes);
   cell.Affine = hov::IsGeometryAffine(cell.Shape, nodes);
@@ -76,11 +76,16 @@ void PrepareRays(hov::GeneralCells::Cell& cell, const double* nodes,
   inv[6] = (j[3] * j[7] - j[4] * j[6]) / det;
   inv[7] = (j[1] * j[6] - j[0] * j[7]) / det;
   inv[8] = (j[0] * j[4] - j[1] * j[3]) / det;
-  if (cell.Affine)
+  const double* basis = hov::CachedAffineFieldBasis(cell.Shape);
+  if (cell.Affine && basis)
   {
     // The field as a polynomial in pcoords: per-pixel restriction without
     // expanding every shape function along the ray.
-    hov::AffineFieldCoefficients(basis.data(), cell.NodeCount, scalars, cell.Field);
+    hov::AffineFieldCoefficients(basis, cell.NodeCount, scalars, cell.Field);
+  }
+  else
+  {
+    cell.Affine = false; // no basis (pyramids are never affine)
   }
 }
 
@@ -174,7 +179,6 @@ void hov::GeneralCells::Build(vtkUnstructuredGridBase* grid,
   }
   double referenceSign[32];
   bool known[32] = {};
-  std::vector<std::vector<double>> bases(32); // hov::AffineFieldBasis per type
   // Offsets of every candidate's nodes in the pools (skipped cells leave a hole).
   std::vector<Cell> all(count);
   vtkIdType next = 0;
@@ -189,8 +193,6 @@ void hov::GeneralCells::Build(vtkUnstructuredGridBase* grid,
     if (!known[type])
     {
       referenceSign[type] = ReferenceOrientation(all[k].Shape);
-      bases[type].assign(hov::AffineFieldTerms * hov::MaxCellNodes, 0.0);
-      hov::AffineFieldBasis(all[k].Shape, bases[type].data());
       known[type] = true;
     }
   }
@@ -249,7 +251,7 @@ void hov::GeneralCells::Build(vtkUnstructuredGridBase* grid,
       status[k] = checks[k].Result;
       if (status[k] == Ok)
       {
-        PrepareRays(cell, x, s, bases[static_cast<int>(cell.Shape)]);
+        PrepareRays(cell, x, s);
       }
     }
   });
