@@ -1,6 +1,6 @@
 #include "hovChebyshevFit.h"
 
-#include <cmath>  // cos, fabs
+#include <cmath>  // fabs
 #include <limits> // epsilon
 
 namespace hov
@@ -10,31 +10,11 @@ namespace detail
 namespace
 {
 constexpr double Eps = std::numeric_limits<double>::epsilon();
-constexpr double Pi = 3.141592653589793238462643383279502884;
-
-/// cos(Pi m / ChebN), m = 0 .. 2 ChebN - 1 (the nodes and the DCT-I kernel).
-struct CosTable
-{
-  double V[2 * ChebN];
-  CosTable()
-  {
-    for (int m = 0; m < 2 * ChebN; ++m)
-    {
-      this->V[m] = std::cos(Pi * m / ChebN);
-    }
-  }
-};
-
-const double* Cosines()
-{
-  static const CosTable cosines; // thread-safe initialisation (C++11)
-  return cosines.V;
-}
 }
 
 void ChebyshevPoints(double a, double b, double t[ChebN + 1])
 {
-  const double* cs = Cosines();
+  const double* cs = ChebyshevCosines;
   const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
   for (int j = 0; j <= ChebN; ++j)
   {
@@ -50,12 +30,11 @@ struct CosProducts
   double T[ChebN + 1][ChebN + 1];
   CosProducts()
   {
-    const double* cs = Cosines();
     for (int j = 0; j <= ChebN; ++j)
     {
       for (int k = 0; k <= ChebN; ++k)
       {
-        this->T[j][k] = cs[(j * k) % (2 * ChebN)];
+        this->T[j][k] = ChebyshevCosine(j * k);
       }
     }
   }
@@ -83,7 +62,7 @@ void ChebyshevCoefficients(const double f[ChebN + 1], double c[ChebN + 1])
   }
   for (int k = 0; k <= ChebN; ++k)
   {
-    c[k] = c[k] * 2.0 / ChebN;
+    c[k] *= 2.0 / ChebN; // exact scaling (no overflow of 2 c_k)
   }
   c[0] *= 0.5;
   c[ChebN] *= 0.5;

@@ -10,7 +10,13 @@
  * Bound of a truncation to degree m (hovCellRestriction.h explains the
  * factor 2): 2 sum_{k > m} |c_k| + 64 eps sum |c_k| + floor.
  *
- * Thread safety: stateless (the cosine table is a function-local static).
+ * One table of cosines serves every Chebyshev step of the kernels (these and
+ * the shaded quadrature's panels, hovShadedSegment.cxx): cos(pi m / ChebN)
+ * correctly rounded, so cos(pi / 2) is exactly 0 and the table is
+ * antisymmetric (cos(pi (N - m) / N) = -cos(pi m / N) bit for bit), which
+ * std::cos(Pi m / N) is not (6e-17 at pi / 2, 1-ulp asymmetries).
+ *
+ * Thread safety: stateless (the product table is a function-local static).
  */
 #ifndef hovChebyshevFit_h
 #define hovChebyshevFit_h
@@ -25,6 +31,23 @@ namespace detail
 constexpr int ChebN = 16;
 /// Largest degree of a returned piece.
 constexpr int MaxPieceDegree = 8;
+
+/// cos(pi m / ChebN), m = 0 .. ChebN, correctly rounded (file doc).
+inline constexpr double ChebyshevCosines[ChebN + 1] = { 1.0, 0.98078528040323044912618223613424,
+  0.92387953251128675612818318939679, 0.83146961230254523707878837761791,
+  0.70710678118654752440084436210485, 0.55557023301960222474283081394853,
+  0.38268343236508977172845998403040, 0.19509032201612826784828486847702, 0.0,
+  -0.19509032201612826784828486847702, -0.38268343236508977172845998403040,
+  -0.55557023301960222474283081394853, -0.70710678118654752440084436210485,
+  -0.83146961230254523707878837761791, -0.92387953251128675612818318939679,
+  -0.98078528040323044912618223613424, -1.0 };
+
+/// cos(pi m / ChebN) for any m >= 0, from the table by symmetry.
+inline double ChebyshevCosine(int m)
+{
+  m %= 2 * ChebN;
+  return m <= ChebN ? ChebyshevCosines[m] : ChebyshevCosines[2 * ChebN - m];
+}
 
 /// The sample points of [a, b]: t[0] = b, t[ChebN] = a, t[j] = mid + half cos(pi j / N).
 void ChebyshevPoints(double a, double b, double t[ChebN + 1]);

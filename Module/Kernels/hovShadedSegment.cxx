@@ -1,5 +1,7 @@
 #include "hovShadedSegment.h"
 
+#include "hovChebyshevFit.h" // the cosines and the DCT
+
 #include "hovBreakpointThinning.h" // which mergeable breakpoints are kept
 #include "hovGradientOpacity.h"  // gamma(|g|)
 #include "hovTransferFunction.h" // extinction and colour at s
@@ -16,43 +18,28 @@ namespace
 {
 // Chebyshev degree per panel: 17 samples. Polynomial integrands of degree
 // <= N - 3 have a zero tail (exact); analytic ones converge like rho^-N.
-constexpr int N = 16;
-// cos(pi m / N), m = 0..N; m in (N, 2N) by symmetry.
-constexpr double CosTable[N + 1] = { 1.0, 0.98078528040323044912618223613424,
-  0.92387953251128675612818318939679, 0.83146961230254523707878837761791,
-  0.70710678118654752440084436210485, 0.55557023301960222474283081394853,
-  0.38268343236508977172845998403040, 0.19509032201612826784828486847702, 0.0,
-  -0.19509032201612826784828486847702, -0.38268343236508977172845998403040,
-  -0.55557023301960222474283081394853, -0.70710678118654752440084436210485,
-  -0.83146961230254523707878837761791, -0.92387953251128675612818318939679,
-  -0.98078528040323044912618223613424, -1.0 };
+// The cosines and the DCT are the restriction fits' (hovChebyshevFit.h).
+constexpr int N = detail::ChebN;
+using detail::ChebyshevCosine;
+constexpr const double* CosTable = detail::ChebyshevCosines;
 // Integration stops once the transmittance is below this times Tolerance / R:
 // what lies behind changes the colour by less than 1e-3 of the tolerance.
 constexpr double StopFactor = 1e-3;
 // Bisection stack size (MaxDepth is clamped below it).
 constexpr int StackSize = 64;
 
-double CosIndex(int m)
-{
-  m %= 2 * N;
-  return m <= N ? CosTable[m] : CosTable[2 * N - m];
-}
-
-/// CosIndex(k j) for k in [0, N + 1], j in [0, N], looked up once (the DCTs
-/// and the depth evaluation of every panel use it: the same values), stored
-/// both ways round so that the loops run along a row: V[k][j] and T[j][k].
+/// cos(pi k j / N) for k in [0, N + 1], j in [0, N], looked up once (the
+/// depth evaluation of every panel; row k contiguous in j).
 struct CosProducts
 {
   double V[N + 2][N + 1];
-  double T[N + 1][N + 2];
   CosProducts()
   {
     for (int k = 0; k <= N + 1; ++k)
     {
       for (int j = 0; j <= N; ++j)
       {
-        this->V[k][j] = CosIndex(k * j);
-        this->T[j][k] = this->V[k][j];
+        this->V[k][j] = ChebyshevCosine(k * j);
       }
     }
   }
@@ -64,36 +51,11 @@ const CosProducts& CosKJ()
   return table;
 }
 
-/**
- * DCT-I: coefficients a[0..N] of the interpolant of v at the Lobatto points
- * x_j = cos(pi j/N). Every coefficient is the sum
- * 0.5 (v_0 + v_N cos(pi k)) + v_1 cos(pi k/N) + ... + v_{N-1} cos(pi k (N-1)/N)
- * in this order; the loop runs over all k at once per j (independent sums a
- * vector unit takes side by side) instead of one k after the other (one
- * dependent chain of additions each), with the same operations per k.
- */
+/// DCT-I: coefficients a[0..N] of the interpolant of v at the Lobatto points
+/// x_j = cos(pi j/N) (the restriction fits' DCT).
 void Chebyshev(const double v[N + 1], double a[N + 1])
 {
-  const CosProducts& cosKJ = CosKJ();
-  for (int k = 0; k <= N; ++k)
-  {
-    a[k] = 0.5 * (v[0] + v[N] * cosKJ.T[N][k]);
-  }
-  for (int j = 1; j < N; ++j)
-  {
-    const double* c = cosKJ.T[j];
-    const double vj = v[j];
-    for (int k = 0; k <= N; ++k)
-    {
-      a[k] += vj * c[k];
-    }
-  }
-  for (int k = 0; k <= N; ++k)
-  {
-    a[k] *= 2.0 / N;
-  }
-  a[0] *= 0.5;
-  a[N] *= 0.5;
+  detail::ChebyshevCoefficients(v, a);
 }
 
 double Tail(const double a[N + 1])
