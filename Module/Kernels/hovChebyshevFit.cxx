@@ -62,7 +62,7 @@ void ChebyshevCoefficients(const double f[ChebN + 1], double c[ChebN + 1])
   }
   for (int k = 0; k <= ChebN; ++k)
   {
-    c[k] *= 2.0 / ChebN; // exact scaling (no overflow of 2 c_k)
+    c[k] *= 2.0 / ChebN; // one multiplication by 1/8 (2 c_k could overflow)
   }
   c[0] *= 0.5;
   c[ChebN] *= 0.5;

@@ -14,7 +14,8 @@
  * the shaded quadrature's panels, hovShadedSegment.cxx): cos(pi m / ChebN)
  * correctly rounded, so cos(pi / 2) is exactly 0 and the table is
  * antisymmetric (cos(pi (N - m) / N) = -cos(pi m / N) bit for bit), which
- * std::cos(Pi m / N) is not (6e-17 at pi / 2, 1-ulp asymmetries).
+ * std::cos(Pi m / N) is not (6e-17 at pi / 2, -1.8e-16 at 3 pi / 2, 21 of 32
+ * entries 1 to 14 ulp off, asymmetries up to 5 ulp).
  *
  * Thread safety: stateless (the product table is a function-local static).
  */

@@ -184,11 +184,11 @@ Panel IntegratePanel(Context& ctx, double a, double b, int hint)
   const CosProducts& cosKJ = CosKJ();
   for (int k = 0; k <= N + 1; ++k)
   {
-    const double* c = cosKJ.V[k];
-    const double b = bc[k];
+    const double* row = cosKJ.V[k];
+    const double bk = bc[k];
     for (int j = 0; j <= N; ++j)
     {
-      depth[j] += b * c[j];
+      depth[j] += bk * row[j];
     }
   }
   for (int j = 0; j <= N; ++j)

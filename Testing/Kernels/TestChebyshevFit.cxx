@@ -45,6 +45,10 @@ bool CorrectlyRounded(double v, long double x)
 
 TEST(ChebyshevFit, CosinesAreCorrectlyRounded)
 {
+  if (sizeof(long double) <= sizeof(double))
+  {
+    GTEST_SKIP() << "long double is no wider than double here: no reference";
+  }
   const long double pi = 3.141592653589793238462643383279502884L;
   for (int m = 0; m <= ChebN; ++m)
   {

@@ -52,7 +52,7 @@ TEST(DirectionalShading, PreparedLightsAreBitForBit)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::mt19937_64 rng(4711);
   std::normal_distribution<double> nd;
-  int checked = 0, lit = 0, edgeCases = 0;
+  int checked = 0, lit = 0, edgeCases = 0, noHalf = 0;
   for (int trial = 0; trial < 4000; ++trial)
   {
     double toViewer[3];
@@ -70,6 +70,9 @@ TEST(DirectionalShading, PreparedLightsAreBitForBit)
       switch ((trial + static_cast<int>(i)) % 23)
       {
         case 0: // the light travels along the view vector: toward it is -v, half = 0
+          // (an axis-aligned view vector, so that normalising it is exact)
+          toViewer[0] = toViewer[1] = 0.0;
+          toViewer[2] = 1.0;
           for (int k = 0; k < 3; ++k)
           {
             l.Direction[k] = toViewer[k];
@@ -110,6 +113,10 @@ TEST(DirectionalShading, PreparedLightsAreBitForBit)
     vs.LightCount = static_cast<int>(lights.size());
     hov::DirectionalShading prepared;
     ASSERT_TRUE(hov::PrepareDirectionalShading(vs, toViewer, prepared)) << trial;
+    for (int i = 0; i < prepared.Count; ++i)
+    {
+      noHalf += !prepared.Lights[i].HasHalf;
+    }
     for (int sample = 0; sample < 8; ++sample)
     {
       double g[3] = { nd(rng), nd(rng), nd(rng) };
@@ -141,9 +148,11 @@ TEST(DirectionalShading, PreparedLightsAreBitForBit)
     }
   }
   std::cout << "[measured] DirectionalShading: " << checked << " transforms bit for bit (" << lit
-            << " lit, " << edgeCases << " edge-case lights)" << std::endl;
+            << " lit, " << edgeCases << " edge-case lights, " << noHalf
+            << " without a half vector)" << std::endl;
   EXPECT_GT(lit, checked / 2);
   EXPECT_GT(edgeCases, 100);
+  EXPECT_GT(noHalf, 10); // the light exactly behind the eye ray was reached
 }
 
 TEST(DirectionalShading, RefusesWhatItCannotPrepare)
