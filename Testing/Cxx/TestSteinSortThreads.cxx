@@ -1,7 +1,7 @@
 // vtkSteinVisibilitySort (ADJACENCY_GRAPH) gives the same result for any number
 // of threads: the bundled bracket (56k tetrahedra), a conforming mixed mesh
 // (non-planar hexahedron faces), the sliding interface (boundary face pairs,
-// its known spurious cycles), a holed block seen from inside the hole (cells
+// coplanar touching faces), a holed block seen from inside the hole (cells
 // clipped by and hidden behind the near plane), disconnected blocks and the
 // cyclic triple, perspective and parallel views. Each case is sorted by a
 // fresh sort object (first sort, with the view-independent set-up) and then
