@@ -43,10 +43,12 @@ inline constexpr double ChebyshevCosines[ChebN + 1] = { 1.0, 0.98078528040323044
   -0.83146961230254523707878837761791, -0.92387953251128675612818318939679,
   -0.98078528040323044912618223613424, -1.0 };
 
-/// cos(pi m / ChebN) for any m >= 0, from the table by symmetry.
+/// cos(pi m / ChebN) for any integer m, from the table by symmetry (the
+/// cosine is even and has period 2 ChebN in m).
 inline double ChebyshevCosine(int m)
 {
-  m %= 2 * ChebN;
+  m %= 2 * ChebN; // in (-2 ChebN, 2 ChebN)
+  m = m < 0 ? -m : m;
   return m <= ChebN ? ChebyshevCosines[m] : ChebyshevCosines[2 * ChebN - m];
 }
 

@@ -57,7 +57,7 @@ TEST(ChebyshevFit, CosinesAreCorrectlyRounded)
     EXPECT_EQ(hov::detail::ChebyshevCosines[ChebN - m], -hov::detail::ChebyshevCosines[m]) << m;
   }
   EXPECT_EQ(hov::detail::ChebyshevCosines[ChebN / 2], 0.0);
-  for (int m = 0; m < 4 * ChebN; ++m)
+  for (int m = -4 * ChebN; m < 4 * ChebN; ++m)
   {
     EXPECT_TRUE(CorrectlyRounded(hov::detail::ChebyshevCosine(m), std::cos(pi * m / ChebN)))
       << m;

@@ -10,6 +10,7 @@
 #include "hovVolumeShading.h"
 
 #include "hovKernelTestUtilities.h"
+#include "hovShadingTestMaterial.h"
 
 #include <gtest/gtest.h>
 
@@ -97,17 +98,7 @@ TEST(DirectionalShading, PreparedLightsAreBitForBit)
     }
     hov::VolumeShadingSettings vs;
     vs.Shade = trial % 50 != 0;
-    vs.Material.Ambient = hovtest::Uniform(rng, 0, 0.5);
-    vs.Material.Diffuse = hovtest::Uniform(rng, 0, 1);
-    vs.Material.Specular = hovtest::Uniform(rng, 0, 1);
-    vs.Material.SpecularPower = trial % 4 == 0 ? 10.0 : hovtest::Uniform(rng, 1, 100);
-    vs.Material.TwoSidedLighting = trial % 2;
-    vs.Material.ClampColor = trial % 3 != 0;
-    vs.Ambient = trial % 5 == 0 ? hov::AmbientTerm::LightAmbient : hov::AmbientTerm::MaterialColor;
-    for (double& a : vs.AmbientLight)
-    {
-      a = hovtest::Uniform(rng, 0, 0.3);
-    }
+    hovtest::RandomShadingMaterial(rng, trial, vs);
     vs.GradientFloor = trial % 11 == 0 ? 0.5 : 0.0;
     vs.Lights = lights.empty() ? nullptr : lights.data();
     vs.LightCount = static_cast<int>(lights.size());

@@ -17,6 +17,7 @@
 #include "hovFeatureTestReference.h"
 #include "hovKernelTestTolerances.h"
 #include "hovKernelTestUtilities.h"
+#include "hovShadingTestMaterial.h"
 
 #include <gtest/gtest.h>
 
@@ -474,17 +475,7 @@ TEST(VolumeShading, TransformIsTwoPhongCallsBitForBit)
     }
     hov::VolumeShadingSettings vs;
     vs.Shade = true;
-    vs.Material.Ambient = hovtest::Uniform(rng, 0, 0.5);
-    vs.Material.Diffuse = hovtest::Uniform(rng, 0, 1);
-    vs.Material.Specular = hovtest::Uniform(rng, 0, 1);
-    vs.Material.SpecularPower = trial % 4 == 0 ? 10.0 : hovtest::Uniform(rng, 1, 100);
-    vs.Material.TwoSidedLighting = trial % 2;
-    vs.Material.ClampColor = trial % 3 != 0;
-    vs.Ambient = trial % 5 == 0 ? hov::AmbientTerm::LightAmbient : hov::AmbientTerm::MaterialColor;
-    for (double& a : vs.AmbientLight)
-    {
-      a = hovtest::Uniform(rng, 0, 0.3);
-    }
+    hovtest::RandomShadingMaterial(rng, trial, vs);
     vs.Lights = lights.data();
     vs.LightCount = static_cast<int>(lights.size());
     const double g[3] = { nd(rng), nd(rng), trial % 7 == 0 ? 0.0 : nd(rng) };
