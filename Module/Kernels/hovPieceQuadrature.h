@@ -22,7 +22,8 @@
  * Quadrature: Gauss-Kronrod panels (the 3-7 pair first, the 7-15 pair when
  * |K7 - G3| misses the panel's budget), initial panels at D = 1, 2, ..., 32,
  * cut at D = 64, bisection until the weighted |K15 - G7| meets the budget
- * (all constants and their reasons in the .cxx).
+ * or the integrals' rounding floor (all constants and their reasons in the
+ * .cxx).
  *
  * Thread safety: re-entrant; no heap allocation.
  */

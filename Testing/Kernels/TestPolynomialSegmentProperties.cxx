@@ -239,6 +239,51 @@ TEST(PolynomialSegmentProperties, OpaqueAndHugeExtinctionNoNaN)
   }
 }
 
+// Colours far beyond [0, 1] (a table with a colour of 1e300, the robustness
+// test's case 4711048797): an absolute tolerance of 1e-9 is then below the
+// rounding of the integrals, which the quadrature cannot resolve. It must not
+// bisect until the panel budget (4096 per segment) is gone: the target is
+// floored at the integrand's rounding, and the colour is still the table's
+// colour times the same integral (the integral is linear in the colours).
+TEST(PolynomialSegmentProperties, HugeColoursStopAtRounding)
+{
+  const hov::Polynomial s = hov::Polynomial::FromCoefficients({ 0.05, 2.7, -2.2 }); // peak in (0, 1)
+  Worst panels;
+  for (auto m : { hov::EmissionModel::WilliamsMax, hov::EmissionModel::WilhelmsVanGelder })
+  {
+    hov::PolynomialSegmentResult unit;
+    for (double big : { 1.0, 1e6, 1e100, 1e300 })
+    {
+      hov::TransferFunctionSpec spec;
+      spec.Color = { { 0.0, 0.2, 0.4, 0.6 }, { 0.45, 0.7, 0.1, 0.3 }, { 1.0, big, 0.5, 0.5 } };
+      spec.Opacity = { { 0.0, 0.1 }, { 0.5, 0.8 }, { 1.0, 0.3 } };
+      hov::TransferFunction tf;
+      ASSERT_TRUE(tf.Build(spec));
+      // The red channel of the last node only: colour big there, 0 elsewhere.
+      spec.Color = { { 0.0, 0.0, 0.4, 0.6 }, { 0.45, 0.0, 0.1, 0.3 }, { 1.0, big, 0.5, 0.5 } };
+      hov::TransferFunction onlyLast;
+      ASSERT_TRUE(onlyLast.Build(spec));
+      const hov::PolynomialSegmentResult r = Integrate(onlyLast, s, 1.3, m);
+      EXPECT_TRUE(hovtest::AllFinite(r.Color)) << big;
+      EXPECT_LE(r.Panels, 400) << "colour " << big << ": " << r.Panels << " panels";
+      panels.Add(r.Panels, "colour " + Str(big));
+      if (big == 1.0)
+      {
+        unit = r;
+        EXPECT_TRUE(r.Converged);
+        continue;
+      }
+      // Linear in the colour: R / big is the unit case's R, G, B and A equal.
+      EXPECT_NEAR(r.Color.R / big, unit.Color.R, 1e-12) << big;
+      EXPECT_NEAR(r.Color.G, unit.Color.G, 1e-12) << big;
+      EXPECT_NEAR(r.Color.A, unit.Color.A, 1e-15) << big;
+      EXPECT_TRUE(std::isfinite(r.ErrorEstimate)) << big;
+      EXPECT_LE(r.ErrorEstimate / big, 1e-12) << big;
+    }
+  }
+  hovtest::ReportMeasured("most panels of a segment with huge colours", panels);
+}
+
 TEST(PolynomialSegmentProperties, IsovalueCrossingsOrdered)
 {
   // s = 1 - 4 (t - 0.5)^2 on [0, 1].

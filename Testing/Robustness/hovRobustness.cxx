@@ -269,6 +269,12 @@ int main(int argc, char* argv[])
     {
       std::cout << "  ok: status " << status << (allZero ? ", empty (with a message)" : "")
                 << ", " << caseSeconds << " s\n";
+      if (messages)
+      {
+        std::cout << "  messages: " << observer->GetErrorMessage() << observer->GetWarningMessage()
+                  << (log->Count > 0 ? " (and " + std::to_string(log->Count) + " logged)" : "")
+                  << "\n";
+      }
     }
   }
   dog.Stop = true;
