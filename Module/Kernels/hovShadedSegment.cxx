@@ -63,6 +63,25 @@ double Tail(const double a[N + 1])
   return std::fabs(a[N - 2]) + std::fabs(a[N - 1]) + std::fabs(a[N]);
 }
 
+// A tail within this of the sum of its function's |coefficients| is the
+// transform's rounding: bisecting cannot make it smaller. A panel whose tails
+// are all that small is accepted even if its weighted estimate misses the
+// target (colours far beyond [0, 1], e.g. a table colour of 1e300, where the
+// panel budget went on rounding noise and the rest of the segment was left
+// coarse); Converged still reports the target.
+constexpr double RoundingFloor = 16.0 * 2.220446049250313e-16;
+
+/// True if Tail(a) is at the rounding of the coefficients a.
+bool TailAtRounding(const double a[N + 1])
+{
+  double sum = 0.0;
+  for (int k = 0; k <= N; ++k)
+  {
+    sum += std::fabs(a[k]);
+  }
+  return Tail(a) <= RoundingFloor * sum;
+}
+
 struct Context
 {
   const TransferFunction* Tf;
@@ -145,6 +164,7 @@ struct Panel
   double C[3] = { 0.0, 0.0, 0.0 };
   double ErrDepth = 0.0;
   double ErrColor[3] = { 0.0, 0.0, 0.0 };
+  bool AtRounding = true; ///< every tail at its coefficients' rounding (TailAtRounding)
 };
 
 /// Spectral integration of one panel [a, b] (file doc).
@@ -197,6 +217,7 @@ Panel IntegratePanel(Context& ctx, double a, double b, int hint)
   }
   out.Depth = std::max(depth[0], 0.0);
   out.ErrDepth = (b - a) * Tail(at);
+  out.AtRounding = TailAtRounding(at);
   for (int i = 0; i < 3; ++i)
   {
     double f[N + 1], af[N + 1];
@@ -212,6 +233,7 @@ Panel IntegratePanel(Context& ctx, double a, double b, int hint)
     }
     out.C[i] = half * sum;
     out.ErrColor[i] = (b - a) * Tail(af);
+    out.AtRounding = out.AtRounding && TailAtRounding(af);
   }
   return out;
 }
@@ -268,7 +290,7 @@ bool IntegratePiece(Context& ctx, double p0, double p1, double length, double bu
     err = std::max(err, panel.ErrDepth); // the opacity
     const bool ok = transmit * err <= budgetPerLength * (b - a);
     const double mid = 0.5 * (a + b);
-    if (!ok && depths[top] < maxDepth && panelsLeft > 1 && top + 1 < StackSize && mid > a && mid < b)
+    if (!ok && !panel.AtRounding && depths[top] < maxDepth && panelsLeft > 1 && top + 1 < StackSize && mid > a && mid < b)
     {
       ++depths[top];
       ++top;

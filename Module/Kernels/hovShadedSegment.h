@@ -28,8 +28,12 @@
  *     eC = (b - a) tail(E e^-D) + eD (|C_panel| + R),
  * R bounding what lies behind (WM: max(1, max c); WVG: EF max(1, max c)
  * (L - b) + 1). A panel is accepted if T_front eC <= Tolerance (b - a)/L,
- * else bisected (depth <= MaxDepth, panels <= MaxPanels; beyond: accepted,
- * Converged = false). The sum of accepted T_front eC is ErrorEstimate. A
+ * or if every tail is within the rounding floor 16 eps of the sum of its
+ * function's |coefficients| (bisection cannot go below rounding: colours far
+ * beyond [0, 1], e.g. 1e300, would otherwise spend the panel budget at the
+ * front and leave the rest coarse; Converged = false if the target was
+ * missed), else bisected (depth <= MaxDepth, panels <= MaxPanels; beyond:
+ * accepted, Converged = false). The sum of accepted T_front eC is ErrorEstimate. A
  * panel whose integrand is a polynomial of degree <= 13 is integrated exactly
  * (tail 0 up to rounding); for analytic integrands the error decays like
  * rho^-N per panel and halving a panel multiplies it by ~2^-16.

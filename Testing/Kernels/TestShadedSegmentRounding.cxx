@@ -1,0 +1,77 @@
+// hovShadedSegment with colours far beyond [0, 1] (a table colour of 1e300,
+// as in the robustness test's random tables): an absolute tolerance of 1e-9
+// is then below the rounding of the panels' Chebyshev coefficients, which no
+// bisection can resolve. The quadrature must accept a panel resolved to
+// rounding instead of bisecting to its panel budget (256 per segment in the
+// mapper, 4096 by default), and the result must still be the table's colour
+// times the same integral: without specular light and clamping, the shaded
+// colour is linear in the table's colour.
+
+#include "hovShadedSegment.h"
+
+#include "hovTransferFunction.h"
+#include "hovVolumeShading.h"
+
+#include "hovKernelTestUtilities.h"
+#include "hovShadedSegmentTestCase.h" // Directional
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using hovtest::Str;
+using hovtest::Worst;
+
+TEST(ShadedSegmentRounding, HugeColoursStopAtRounding)
+{
+  const hov::Polynomial s = hov::Polynomial::FromCoefficients({ 0.05, 2.7, -2.2 }); // peak in (0, 1)
+  const hov::Polynomial g[3] = { hov::Polynomial::FromCoefficients({ 2.7, -4.4 }),
+    hov::Polynomial::FromCoefficients({ 0.3 }), hov::Polynomial::FromCoefficients({ -0.2, 0.5 }) };
+  const hov::ShadingLight light = hovtest::Directional(0.3, -0.2, -1.0);
+  const hov::SegmentRay ray;
+  Worst panels;
+  for (bool shade : { false, true })
+  {
+    hov::VolumeShadingSettings vs;
+    vs.Shade = shade;
+    vs.Lights = &light;
+    vs.LightCount = 1;
+    vs.Material.Specular = 0.0;     // white highlights do not scale with the colour
+    vs.Material.ClampColor = false; // nor does a clamped colour
+    for (auto m : { hov::EmissionModel::WilliamsMax, hov::EmissionModel::WilhelmsVanGelder })
+    {
+      hov::ShadedSegmentResult unit;
+      for (double big : { 1.0, 1e6, 1e100, 1e300 })
+      {
+        hov::TransferFunctionSpec spec;
+        spec.Color = { { 0.0, 0.0, 0.4, 0.6 }, { 0.45, 0.0, 0.1, 0.3 }, { 1.0, big, 0.5, 0.5 } };
+        spec.Opacity = { { 0.0, 0.1 }, { 0.5, 0.8 }, { 1.0, 0.3 } };
+        spec.Semantics = hov::OpacitySemantics::VTKUnstructured; // linear: three nodes
+        hov::TransferFunction tf;
+        ASSERT_TRUE(tf.Build(spec));
+        hov::ShadedSegmentSettings settings;
+        settings.Emission = m;
+        settings.MaxPanels = 256; // the mapper's budget per shaded segment
+        const hov::ShadedSegmentResult r =
+          hov::IntegrateShadedPolynomial(tf, s, g, 1.3, vs, nullptr, ray, settings);
+        const std::string where = Str(big) + (shade ? " shaded" : " unshaded") +
+          (m == hov::EmissionModel::WilliamsMax ? " WM" : " WVG");
+        EXPECT_TRUE(hovtest::AllFinite(r.Color)) << where;
+        EXPECT_LE(r.Panels, 100) << where;
+        panels.Add(r.Panels, where);
+        if (big == 1.0)
+        {
+          unit = r;
+          EXPECT_TRUE(r.Converged) << where;
+          continue;
+        }
+        EXPECT_NEAR(r.Color.R / big, unit.Color.R, 1e-12) << where;
+        EXPECT_NEAR(r.Color.G, unit.Color.G, 1e-12) << where;
+        EXPECT_NEAR(r.Color.A, unit.Color.A, 1e-15) << where;
+        EXPECT_TRUE(std::isfinite(r.ErrorEstimate)) << where;
+        EXPECT_LE(r.ErrorEstimate / big, 1e-12) << where;
+      }
+    }
+  }
+  hovtest::ReportMeasured("most panels of a shaded segment with huge colours", panels);
+}
