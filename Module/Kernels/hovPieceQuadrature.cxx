@@ -33,15 +33,16 @@ constexpr int DepthLevels = 6;
 constexpr double DepthRateCap = 1e300;
 // Bisection depth limit for one panel (2^-40 of the initial panel).
 constexpr int MaxBisectionDepth = 40;
-// The integrals' rounding, per unit of y and relative to the colour factor:
-// a panel's Kronrod-Gauss difference cannot be made smaller than about this
-// (integrands of order 1, 15 terms). A colour target below it (colours far
-// beyond [0, 1], e.g. a table colour of 1e300, or a tolerance far below the
-// colours' scale) is met at this floor instead of bisecting until the panel
-// budget is gone (4096 panels per segment: 160 ms per pixel in robustness
-// case 4711048797). Converged still reports the requested target, and the
-// error estimate what was reached.
-constexpr double RoundingFloor = 16.0 * 2.220446049250313e-16;
+// A panel's Kronrod-Gauss difference within this of the integral of
+// |integrand| over the panel (QUADPACK's 50 eps resabs) is the rule's own
+// rounding: bisecting cannot make it smaller. Such a panel is accepted even
+// if it misses the colour target: a target below rounding (colours far
+// beyond [0, 1], e.g. a table colour of 1e300) would otherwise bisect until
+// the panel budget is gone (4096 panels per segment: 40-90 ms per pixel in
+// robustness case 4711048797). Converged still reports the requested
+// target, and the error estimate what was reached. Accepting costs at most
+// this fraction of the integral of |integrand|, summed over the segment.
+constexpr double RoundingFloor = 50.0 * 2.220446049250313e-16;
 
 /// One piece in normalised coordinates y in [0,1]: u (colour), u', D, and the weights.
 struct Piece
@@ -84,13 +85,20 @@ struct PanelResult
 {
   double Value[2] = { 0.0, 0.0 };
   double Error[2] = { 0.0, 0.0 };
+  double Abs[2] = { 0.0, 0.0 }; ///< the Kronrod rule applied to |integrand|
+
+  /// True if the error is at the rule's rounding (RoundingFloor).
+  bool AtRounding() const
+  {
+    return this->Error[0] + this->Error[1] <= RoundingFloor * (this->Abs[0] + this->Abs[1]);
+  }
 };
 
 /// Gauss-Kronrod 7-15 on [y0, y1].
 PanelResult Kronrod(const Piece& p, double y0, double y1)
 {
   const double half = 0.5 * (y1 - y0), mid = 0.5 * (y0 + y1);
-  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 };
+  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 }, mag[2] = { 0.0, 0.0 };
   for (int i = 0; i < 8; ++i)
   {
     double a0, a1, b0 = 0.0, b1 = 0.0;
@@ -101,6 +109,8 @@ PanelResult Kronrod(const Piece& p, double y0, double y1)
     }
     k[0] += WGK[i] * (a0 + b0);
     k[1] += WGK[i] * (a1 + b1);
+    mag[0] += WGK[i] * (std::fabs(a0) + std::fabs(b0));
+    mag[1] += WGK[i] * (std::fabs(a1) + std::fabs(b1));
     if (i % 2 == 1)
     {
       g[0] += WG[i / 2] * (a0 + b0);
@@ -112,6 +122,7 @@ PanelResult Kronrod(const Piece& p, double y0, double y1)
   {
     r.Value[j] = half * k[j];
     r.Error[j] = std::fabs(half * (k[j] - g[j]));
+    r.Abs[j] = half * mag[j];
   }
   return r;
 }
@@ -120,7 +131,7 @@ PanelResult Kronrod(const Piece& p, double y0, double y1)
 PanelResult Kronrod7(const Piece& p, double y0, double y1)
 {
   const double half = 0.5 * (y1 - y0), mid = 0.5 * (y0 + y1);
-  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 };
+  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 }, mag[2] = { 0.0, 0.0 };
   for (int i = 0; i < 4; ++i)
   {
     double a0, a1, b0 = 0.0, b1 = 0.0;
@@ -131,6 +142,8 @@ PanelResult Kronrod7(const Piece& p, double y0, double y1)
     }
     k[0] += WK7[i] * (a0 + b0);
     k[1] += WK7[i] * (a1 + b1);
+    mag[0] += WK7[i] * (std::fabs(a0) + std::fabs(b0));
+    mag[1] += WK7[i] * (std::fabs(a1) + std::fabs(b1));
     if (i % 2 == 1)
     {
       g[0] += WG3[i / 2] * (a0 + b0);
@@ -142,6 +155,7 @@ PanelResult Kronrod7(const Piece& p, double y0, double y1)
   {
     r.Value[j] = half * k[j];
     r.Error[j] = std::fabs(half * (k[j] - g[j]));
+    r.Abs[j] = half * mag[j];
   }
   return r;
 }
@@ -188,7 +202,6 @@ void Integrate(const Piece& p, double factor, double budget, int& panelsLeft, do
       stack[top++] = Panel{ edges[i - 1], edges[i], 0 };
     }
   }
-  const double reachable = std::max(budget, RoundingFloor * factor);
   while (top > 0)
   {
     const Panel panel = stack[--top];
@@ -196,7 +209,7 @@ void Integrate(const Piece& p, double factor, double budget, int& panelsLeft, do
     // already meets the budget (half the exponentials of the 15-point pair).
     PanelResult r = Kronrod7(p, panel.Y0, panel.Y1);
     double err = factor * (r.Error[0] + r.Error[1]);
-    if (!(err <= reachable * (panel.Y1 - panel.Y0)))
+    if (!(err <= budget * (panel.Y1 - panel.Y0)) && !r.AtRounding())
     {
       r = Kronrod(p, panel.Y0, panel.Y1);
       err = factor * (r.Error[0] + r.Error[1]);
@@ -206,7 +219,7 @@ void Integrate(const Piece& p, double factor, double budget, int& panelsLeft, do
     const double mid = 0.5 * (panel.Y0 + panel.Y1);
     const bool canSplit = panel.Depth < MaxBisectionDepth && panelsLeft > 1 && mid > panel.Y0 &&
       mid < panel.Y1;
-    if (err <= reachable * (panel.Y1 - panel.Y0) || !canSplit)
+    if (err <= budget * (panel.Y1 - panel.Y0) || r.AtRounding() || !canSplit)
     {
       out.Converged = out.Converged && (err <= budget * (panel.Y1 - panel.Y0));
       value[0] += r.Value[0];

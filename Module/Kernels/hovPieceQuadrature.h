@@ -20,10 +20,10 @@
  *  - Wilhelms-Van Gelder: C = h (gA V0 + gB V1), V0 = int (1 - uC) e^-D,
  *    V1 = int uC e^-D.
  * Quadrature: Gauss-Kronrod panels (the 3-7 pair first, the 7-15 pair when
- * |K7 - G3| misses the panel's budget), initial panels at D = 1, 2, ..., 32,
- * cut at D = 64, bisection until the weighted |K15 - G7| meets the budget
- * or the integrals' rounding floor (all constants and their reasons in the
- * .cxx).
+ * |K7 - G3| misses the panel's budget and is above the rule's rounding),
+ * initial panels at D = 1, 2, ..., 32, cut at D = 64, bisection until the
+ * weighted |K15 - G7| meets the budget or is within 50 eps of the rule
+ * applied to |integrand| (all constants and their reasons in the .cxx).
  *
  * Thread safety: re-entrant; no heap allocation.
  */

@@ -79,7 +79,7 @@ bool TailAtRounding(const double a[N + 1])
   {
     sum += std::fabs(a[k]);
   }
-  return Tail(a) <= RoundingFloor * sum;
+  return std::isfinite(sum) && Tail(a) <= RoundingFloor * sum; // an overflowed transform is not
 }
 
 struct Context
