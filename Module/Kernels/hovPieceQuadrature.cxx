@@ -33,15 +33,17 @@ constexpr int DepthLevels = 6;
 constexpr double DepthRateCap = 1e300;
 // Bisection depth limit for one panel (2^-40 of the initial panel).
 constexpr int MaxBisectionDepth = 40;
-// A panel's Kronrod-Gauss difference within this of the integral of
-// |integrand| over the panel (QUADPACK's 50 eps resabs) is the rule's own
-// rounding: bisecting cannot make it smaller. Such a panel is accepted even
-// if it misses the colour target: a target below rounding (colours far
-// beyond [0, 1], e.g. a table colour of 1e300) would otherwise bisect until
-// the panel budget is gone (4096 panels per segment: 40-90 ms per pixel in
-// robustness case 4711048797). Converged still reports the requested
-// target, and the error estimate what was reached. Accepting costs at most
-// this fraction of the integral of |integrand|, summed over the segment.
+// A panel's Kronrod-Gauss difference within this of the same rule applied to
+// the sizes of the terms the integrands are made of (as QUADPACK's 50 eps
+// resabs, with |u'| (e^-D + T(1)) for Williams-Max, whose difference cancels
+// on optically thin pieces) is rounding: bisecting does not make it smaller.
+// Such a panel is accepted even if it misses the colour target: a target
+// below rounding (colours far beyond [0, 1], e.g. a table colour of 1e300)
+// would otherwise bisect until the panel budget is gone (4096 panels per
+// segment: 40-90 ms per pixel in robustness case 4711048797). Converged
+// still reports the requested target, and the error estimate what was
+// reached. Accepting adds at most about this fraction of the transmittance-
+// and factor-weighted term sizes to the estimate, over the whole segment.
 constexpr double RoundingFloor = 50.0 * 2.220446049250313e-16;
 
 /// One piece in normalised coordinates y in [0,1]: u (colour), u', D, and the weights.
@@ -64,8 +66,13 @@ inline double Horner(const Polynomial& p, double y)
   return r;
 }
 
-/// Integrands at y: WM: f0 = u' (e^-D - T(1)); WVG: f0 = (1-u) e^-D, f1 = u e^-D.
-inline void Integrands(const Piece& p, double y, double& f0, double& f1)
+/**
+ * Integrands at y: WM: f0 = u' (e^-D - T(1)); WVG: f0 = (1-u) e^-D, f1 = u e^-D.
+ * @p m: the size of the terms they are made of, which sets their rounding
+ * (WM: |u'| (e^-D + T(1)), which on an optically thin piece is far above
+ * |f0|; WVG: e^-D = f0 + f1).
+ */
+inline void Integrands(const Piece& p, double y, double& f0, double& f1, double& m)
 {
   const double e = std::exp(-Horner(p.Depth, y));
   if (p.Emission)
@@ -73,11 +80,14 @@ inline void Integrands(const Piece& p, double y, double& f0, double& f1)
     const double u = std::min(std::max(Horner(p.U, y), 0.0), 1.0);
     f0 = (1.0 - u) * e;
     f1 = u * e;
+    m = e;
   }
   else
   {
-    f0 = Horner(p.DU, y) * (e - p.EndTransmittance);
+    const double du = Horner(p.DU, y);
+    f0 = du * (e - p.EndTransmittance);
     f1 = 0.0;
+    m = std::fabs(du) * (e + p.EndTransmittance);
   }
 }
 
@@ -85,12 +95,12 @@ struct PanelResult
 {
   double Value[2] = { 0.0, 0.0 };
   double Error[2] = { 0.0, 0.0 };
-  double Abs[2] = { 0.0, 0.0 }; ///< the Kronrod rule applied to |integrand|
+  double Abs = 0.0; ///< the Kronrod rule applied to the integrands' term sizes (Integrands)
 
   /// True if the error is at the rule's rounding (RoundingFloor).
   bool AtRounding() const
   {
-    return this->Error[0] + this->Error[1] <= RoundingFloor * (this->Abs[0] + this->Abs[1]);
+    return std::isfinite(this->Abs) && this->Error[0] + this->Error[1] <= RoundingFloor * this->Abs;
   }
 };
 
@@ -98,19 +108,18 @@ struct PanelResult
 PanelResult Kronrod(const Piece& p, double y0, double y1)
 {
   const double half = 0.5 * (y1 - y0), mid = 0.5 * (y0 + y1);
-  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 }, mag[2] = { 0.0, 0.0 };
+  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 }, mag = 0.0;
   for (int i = 0; i < 8; ++i)
   {
-    double a0, a1, b0 = 0.0, b1 = 0.0;
-    Integrands(p, mid - half * XGK[i], a0, a1);
+    double a0, a1, am, b0 = 0.0, b1 = 0.0, bm = 0.0;
+    Integrands(p, mid - half * XGK[i], a0, a1, am);
     if (i < 7)
     {
-      Integrands(p, mid + half * XGK[i], b0, b1);
+      Integrands(p, mid + half * XGK[i], b0, b1, bm);
     }
     k[0] += WGK[i] * (a0 + b0);
     k[1] += WGK[i] * (a1 + b1);
-    mag[0] += WGK[i] * (std::fabs(a0) + std::fabs(b0));
-    mag[1] += WGK[i] * (std::fabs(a1) + std::fabs(b1));
+    mag += WGK[i] * (am + bm);
     if (i % 2 == 1)
     {
       g[0] += WG[i / 2] * (a0 + b0);
@@ -122,8 +131,8 @@ PanelResult Kronrod(const Piece& p, double y0, double y1)
   {
     r.Value[j] = half * k[j];
     r.Error[j] = std::fabs(half * (k[j] - g[j]));
-    r.Abs[j] = half * mag[j];
   }
+  r.Abs = half * mag;
   return r;
 }
 
@@ -131,19 +140,18 @@ PanelResult Kronrod(const Piece& p, double y0, double y1)
 PanelResult Kronrod7(const Piece& p, double y0, double y1)
 {
   const double half = 0.5 * (y1 - y0), mid = 0.5 * (y0 + y1);
-  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 }, mag[2] = { 0.0, 0.0 };
+  double k[2] = { 0.0, 0.0 }, g[2] = { 0.0, 0.0 }, mag = 0.0;
   for (int i = 0; i < 4; ++i)
   {
-    double a0, a1, b0 = 0.0, b1 = 0.0;
-    Integrands(p, mid - half * XK7[i], a0, a1);
+    double a0, a1, am, b0 = 0.0, b1 = 0.0, bm = 0.0;
+    Integrands(p, mid - half * XK7[i], a0, a1, am);
     if (i < 3)
     {
-      Integrands(p, mid + half * XK7[i], b0, b1);
+      Integrands(p, mid + half * XK7[i], b0, b1, bm);
     }
     k[0] += WK7[i] * (a0 + b0);
     k[1] += WK7[i] * (a1 + b1);
-    mag[0] += WK7[i] * (std::fabs(a0) + std::fabs(b0));
-    mag[1] += WK7[i] * (std::fabs(a1) + std::fabs(b1));
+    mag += WK7[i] * (am + bm);
     if (i % 2 == 1)
     {
       g[0] += WG3[i / 2] * (a0 + b0);
@@ -155,8 +163,8 @@ PanelResult Kronrod7(const Piece& p, double y0, double y1)
   {
     r.Value[j] = half * k[j];
     r.Error[j] = std::fabs(half * (k[j] - g[j]));
-    r.Abs[j] = half * mag[j];
   }
+  r.Abs = half * mag;
   return r;
 }
 

@@ -23,7 +23,8 @@
  * |K7 - G3| misses the panel's budget and is above the rule's rounding),
  * initial panels at D = 1, 2, ..., 32, cut at D = 64, bisection until the
  * weighted |K15 - G7| meets the budget or is within 50 eps of the rule
- * applied to |integrand| (all constants and their reasons in the .cxx).
+ * applied to the sizes of the integrands' terms (all constants and their
+ * reasons in the .cxx).
  *
  * Thread safety: re-entrant; no heap allocation.
  */

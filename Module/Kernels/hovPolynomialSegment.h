@@ -47,11 +47,13 @@
  * composited segment's colour error estimate is <= Tolerance (default 1e-9
  * absolute per channel) unless the panel budget (MaxPanels) or the bisection
  * depth (MaxBisectionDepth = 40) runs out (then Converged = false). A panel
- * whose |K - G| is within 50 eps of the same rule applied to |integrand|
- * (QUADPACK's resabs) is accepted too: bisecting cannot go below the rule's
- * rounding, so a target under it (colours far beyond [0, 1], e.g. 1e300)
- * would only spend the whole budget (Converged is still false if the target
- * was missed; ErrorEstimate says what was reached).
+ * whose |K - G| is within 50 eps of the same rule applied to the sizes of
+ * the integrands' terms (as QUADPACK's resabs; Williams-Max: |u'| (e^-D +
+ * e^-D(1)), which cancel on thin pieces) is accepted too: that much is
+ * rounding, which bisecting does not reduce, so a target under it (colours
+ * far beyond [0, 1], e.g. 1e300) would only spend the whole budget
+ * (Converged is still false if the target was missed; ErrorEstimate says
+ * what was reached).
  * ErrorEstimate is the sum over panels of those weighted estimates plus the
  * DepthCut tails; the opacity has no truncation error.
  *

@@ -28,8 +28,8 @@
  *     eC = (b - a) tail(E e^-D) + eD (|C_panel| + R),
  * R bounding what lies behind (WM: max(1, max c); WVG: EF max(1, max c)
  * (L - b) + 1). A panel is accepted if T_front eC <= Tolerance (b - a)/L,
- * or if every tail is within the rounding floor 16 eps of the sum of its
- * function's |coefficients| (bisection cannot go below rounding: colours far
+ * or if every tail is within the rounding floor 16 eps of the (finite) sum
+ * of its function's |coefficients| (bisection cannot go below rounding: colours far
  * beyond [0, 1], e.g. 1e300, would otherwise spend the panel budget at the
  * front and leave the rest coarse; Converged = false if the target was
  * missed), else bisected (depth <= MaxDepth, panels <= MaxPanels; beyond:

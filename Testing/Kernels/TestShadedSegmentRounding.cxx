@@ -58,6 +58,7 @@ TEST(ShadedSegmentRounding, HugeColoursStopAtRounding)
           settings.Tolerance = 1e-14; // the reference: the unit colour, as tight as it goes
           settings.MaxPanels = 4096;
           unit = hov::IntegrateShadedPolynomial(tf, s, g, 1.3, vs, nullptr, ray, settings);
+          EXPECT_LE(unit.ErrorEstimate, 1e-13);
           continue;
         }
         const hov::ShadedSegmentResult r =
@@ -67,8 +68,9 @@ TEST(ShadedSegmentRounding, HugeColoursStopAtRounding)
         EXPECT_TRUE(hovtest::AllFinite(r.Color)) << where;
         EXPECT_LE(r.Panels, 100) << where;
         panels.Add(r.Panels, where);
-        EXPECT_NEAR(r.Color.R / big, unit.Color.R, 1e-12) << where;
-        EXPECT_NEAR(r.Color.G, unit.Color.G, 1e-12) << where;
+        // To the 1e-9 run's true error (the estimate is pessimistic by 1e3).
+        EXPECT_NEAR(r.Color.R / big, unit.Color.R, 1e-11) << where;
+        EXPECT_NEAR(r.Color.G, unit.Color.G, 1e-11) << where;
         EXPECT_NEAR(r.Color.A, unit.Color.A, 1e-14) << where;
         EXPECT_TRUE(std::isfinite(r.ErrorEstimate)) << where;
         EXPECT_LE(r.ErrorEstimate / big, 1e-9 / big + 1e-12) << where; // the target, or rounding
