@@ -73,6 +73,37 @@ inline bool AllFinite(const hov::RGBA& c)
   return std::isfinite(c.R) && std::isfinite(c.G) && std::isfinite(c.B) && std::isfinite(c.A);
 }
 
+/**
+ * The huge-colour tests' checks of a result @p r (colour @p big at the last
+ * node of RedAtLastNode(), tolerance 1e-9) against @p unit (colour 1, run at
+ * 1e-14): finite, linear in the colour (R / big is the unit's R to the 1e-9
+ * run's true error, which is 1e3 below its estimate; G and A equal), and an
+ * estimate within the target or the rounding. R: a segment result type.
+ */
+template <typename R>
+void ExpectLinearInColour(const R& r, const R& unit, double big, const std::string& where)
+{
+  EXPECT_TRUE(AllFinite(r.Color)) << where;
+  EXPECT_NEAR(r.Color.R / big, unit.Color.R, 1e-11) << where;
+  EXPECT_NEAR(r.Color.G, unit.Color.G, 1e-11) << where;
+  EXPECT_NEAR(r.Color.A, unit.Color.A, 1e-14) << where;
+  EXPECT_TRUE(std::isfinite(r.ErrorEstimate)) << where;
+  EXPECT_LE(r.ErrorEstimate / big, 1e-9 / big + 1e-12) << where; // the target, or rounding
+}
+
+/// The huge-colour tests' table (TestPolynomialSegmentProperties,
+/// TestShadedSegmentRounding): red only at the last node, where it is @p red;
+/// opacity @p opacity / 8, @p opacity, @p opacity / 3 at 0, 0.5 and 1.
+inline hov::TransferFunctionSpec RedAtLastNode(
+  double red, double opacity, hov::OpacitySemantics semantics)
+{
+  hov::TransferFunctionSpec spec;
+  spec.Semantics = semantics;
+  spec.Color = { { 0.0, 0.0, 0.4, 0.6 }, { 0.45, 0.0, 0.1, 0.3 }, { 1.0, red, 0.5, 0.5 } };
+  spec.Opacity = { { 0.0, opacity / 8 }, { 0.5, opacity }, { 1.0, opacity / 3 } };
+  return spec;
+}
+
 /// The reference description (raw nodes, hovKernelTestReference.h) of a
 /// transfer-function spec whose nodes are already valid and sorted.
 inline RefTransferFunction ToReference(const hov::TransferFunctionSpec& spec)
