@@ -54,7 +54,7 @@ TEST(ShadedSegmentRounding, HugeColoursStopAtRounding)
           settings.Tolerance = 1e-14; // the reference: the unit colour, as tight as it goes
           settings.MaxPanels = 4096;
           unit = hov::IntegrateShadedPolynomial(tf, s, g, 1.3, vs, nullptr, ray, settings);
-          EXPECT_LE(unit.ErrorEstimate, 1e-13);
+          EXPECT_LE(unit.ErrorEstimate, 1e-13) << (shade ? "shaded" : "unshaded");
           continue;
         }
         const hov::ShadedSegmentResult r =
