@@ -50,9 +50,9 @@
  * whose |K - G| is within 50 eps of the same rule applied to the sizes of
  * the integrands' terms (as QUADPACK's resabs; Williams-Max: |u'| (e^-D +
  * e^-D(1)), since the integrand u' (e^-D - e^-D(1)) cancels on thin pieces)
- * is accepted too: that much is
- * rounding, which bisecting does not reduce, so a target under it (colours
- * far beyond [0, 1], e.g. 1e300) would only spend the whole budget
+ * is accepted too: that much is rounding, which bisecting does not reduce,
+ * so a target under it (colours far beyond [0, 1], e.g. 1e300) would only
+ * spend the whole budget
  * (Converged is still false if the target was missed; ErrorEstimate says
  * what was reached).
  * ErrorEstimate is the sum over panels of those weighted estimates plus the

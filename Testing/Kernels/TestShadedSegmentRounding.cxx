@@ -49,18 +49,18 @@ TEST(ShadedSegmentRounding, HugeColoursStopAtRounding)
         hov::ShadedSegmentSettings settings;
         settings.Emission = m;
         settings.MaxPanels = 256; // the mapper's budget per shaded segment
+        const std::string where = Str(big) + (shade ? " shaded" : " unshaded") +
+          (m == hov::EmissionModel::WilliamsMax ? " WM" : " WVG");
         if (big == 0.0)
         {
           settings.Tolerance = 1e-14; // the reference: the unit colour, as tight as it goes
           settings.MaxPanels = 4096;
           unit = hov::IntegrateShadedPolynomial(tf, s, g, 1.3, vs, nullptr, ray, settings);
-          EXPECT_LE(unit.ErrorEstimate, 1e-13) << (shade ? "shaded" : "unshaded");
+          EXPECT_LE(unit.ErrorEstimate, 1e-13) << where;
           continue;
         }
         const hov::ShadedSegmentResult r =
           hov::IntegrateShadedPolynomial(tf, s, g, 1.3, vs, nullptr, ray, settings);
-        const std::string where = Str(big) + (shade ? " shaded" : " unshaded") +
-          (m == hov::EmissionModel::WilliamsMax ? " WM" : " WVG");
         EXPECT_LE(r.Panels, 100) << where;
         panels.Add(r.Panels, where);
         hovtest::ExpectLinearInColour(r, unit, big, where);
