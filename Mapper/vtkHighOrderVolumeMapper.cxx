@@ -391,7 +391,7 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
     this->NumberOfProjectedTriangles = st.ProjectedTriangles;
     this->NumberOfProjectedSlabs = st.ProjectedSlabs;
   }
-  const size_t pixels = static_cast<size_t>(std::max(frame.Width, 0)) * std::max(frame.Height, 0);
+  const size_t pixels = frame.ImagePixels(); // 0 for a size the frame refused
   if (windowPixels)
   {
     this->Impl->Check.Check(windowPixels, pixels, frame, this->GetMTime());
@@ -410,8 +410,8 @@ void vtkHighOrderVolumeMapper::Publish(hov::RenderFrame& frame, float* windowPix
   }
   // Checked and converted to float in one parallel pass, into the published
   // array itself unless somebody else holds it.
-  float* out =
-    hov::FloatImagePixels(this->Impl->FloatImage, "RGBA", 4, frame.Width, frame.Height, true);
+  float* out = hov::FloatImagePixels(
+    this->Impl->FloatImage, "RGBA", 4, pixels ? frame.Width : 0, pixels ? frame.Height : 0, true);
   this->Impl->Check.Check(rgba.data(), pixels, frame, this->GetMTime(), out);
 }
 

@@ -87,7 +87,10 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
     frame.Stats.Pieces = st.Pieces;
     return 1;
   }
-  render = render && scene.PrepareOrder(frame, false);
+  if (render && !scene.PrepareOrder(frame, false))
+  {
+    render = ok = false; // an error (no visibility sort): status 0, no empty-image warning
+  }
   frame.Drawn = render;
   if (!render)
   {
@@ -133,8 +136,10 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   }
   else
   {
+    // A missing or short colour/isosurface array: reported as an error.
     frame.ClearImage();
     frame.Stats.Rays = static_cast<vtkIdType>(rw) * rh;
+    frame.Drawn = ok = false;
   }
   frame.Stats.Aborted = st.Aborted;
   frame.Stats.WitnessViolations = st.WitnessViolations;
@@ -158,7 +163,7 @@ int hov::ProjectorBackend::PrepareFeatures(const RenderFrame& frame)
     surface.Value = v[0];
     for (int k = 0; k < 3; ++k)
     {
-      surface.Color[k] = std::min(std::max(v[1 + k], 0.0), 1.0); // NaN -> 0
+      surface.Color[k] = std::min(std::max(v[1 + k], 0.0), 1.0); // NaN stays (kernels clamp)
     }
     surface.Opacity = std::min(std::max(v[4], 0.0), 1.0);
     if (!std::isfinite(surface.Value))

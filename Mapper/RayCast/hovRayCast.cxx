@@ -16,12 +16,12 @@ bool hov::RayCast::SetInput(vtkUnstructuredGrid* grid, vtkDataArray* scalars, in
 {
   this->Ready = false;
   if (!grid || !scalars || !grid->GetPoints() ||
-    scalars->GetNumberOfTuples() !=
+    scalars->GetNumberOfTuples() <
       (cellScalars ? grid->GetNumberOfCells() : grid->GetNumberOfPoints()))
   {
     if (message)
     {
-      *message = "no grid, no points, or no scalars with one value per point (cell)";
+      *message = "no grid, no points, or fewer scalars than points (cells)";
     }
     return false;
   }

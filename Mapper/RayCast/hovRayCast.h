@@ -71,8 +71,8 @@ public:
   /// Conversion counts of the last SetInput() (hov::RayCastCells).
   const hov::RayCastCells& GetConversion() const { return this->Mesh; }
 
-  /// Cells prepared / skipped by the last SetInput().
-  long long GetNumberOfCells() const { return this->Caster.GetNumberOfCells(); }
+  /// Cells prepared / skipped by the last SetInput() (0 prepared if it failed).
+  long long GetNumberOfCells() const { return this->Ready ? this->Caster.GetNumberOfCells() : 0; }
   long long GetNumberOfSkippedCells() const { return this->Caster.GetNumberOfSkippedCells(); }
 
   /**

@@ -19,9 +19,11 @@
 int hov::RayCastBackend::Render(RenderFrame& frame, vtkImageData*)
 {
   frame.ClearImage();
-  this->Error.assign(static_cast<size_t>(std::max(frame.Width, 0)) * std::max(frame.Height, 0), 0.0f);
+  const size_t pixels = frame.ImagePixels(); // 0 for a size Trace() refuses
+  this->Error.assign(pixels, 0.0f);
   const int status = this->Trace(frame);
-  PublishFloatImage(this->ErrorImage, "Error", 1, frame.Width, frame.Height, this->Error.data());
+  PublishFloatImage(this->ErrorImage, "Error", 1, pixels ? frame.Width : 0,
+    pixels ? frame.Height : 0, this->Error.data());
   return status;
 }
 
@@ -70,6 +72,20 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   {
     frame.Error("RAY_CAST needs numeric point or cell scalars (set scalars on the input or "
                 "select a numeric array with SelectScalarArray()).");
+    this->Valid = false;
+    return 0;
+  }
+  const vtkIdType needed =
+    frame.Scalars.CellScalars ? grid->GetNumberOfCells() : grid->GetNumberOfPoints();
+  if (frame.Scalars.Array->GetNumberOfTuples() < needed)
+  {
+    // As CPU_ACCURATE (hov::CellSetup::ReadInput): an error, not a skip.
+    const char* name = frame.Scalars.Array->GetName();
+    std::ostringstream text;
+    text << "Cannot render: scalar array '" << (name ? name : "") << "' has "
+         << frame.Scalars.Array->GetNumberOfTuples() << " tuples for " << needed
+         << (frame.Scalars.CellScalars ? " cells." : " points.");
+    frame.Error(text.str());
     this->Valid = false;
     return 0;
   }

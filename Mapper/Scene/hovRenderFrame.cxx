@@ -24,6 +24,14 @@ bool hov::RenderFrame::ValidateView()
     this->Error("RenderImage needs a camera, a volume and a positive size.");
     return false;
   }
+  if (this->ImagePixels() == 0)
+  {
+    std::ostringstream text;
+    text << "Cannot render: an image of " << this->Width << " x " << this->Height
+         << " pixels exceeds the limit of " << MaxImagePixels << " pixels (16384 x 16384).";
+    this->Error(text.str());
+    return false;
+  }
   const std::string why = hov::CheckView(this->Camera, this->Volume->GetMatrix(), this->Aspect);
   if (!why.empty())
   {

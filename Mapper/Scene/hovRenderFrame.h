@@ -163,12 +163,24 @@ public:
   /// The warning for a transfer function that is transparent everywhere.
   void WarnTransparent() const;
 
-  /// The zero image of the frame's size.
-  void ClearImage()
+  /// Most pixels an image may have: 16384 x 16384 (a CPU frame holds about
+  /// 50 bytes per pixel: RGBA in double and float, tiles, error image).
+  static constexpr size_t MaxImagePixels = size_t(1) << 28;
+
+  /// Width x Height, or 0 if either is not positive or the product exceeds
+  /// MaxImagePixels (ValidateView() reports both): the pixels a frame allocates.
+  size_t ImagePixels() const
   {
-    this->RGBA.assign(
-      static_cast<size_t>(std::max(this->Width, 0)) * std::max(this->Height, 0) * 4, 0.0);
+    if (this->Width <= 0 || this->Height <= 0)
+    {
+      return 0;
+    }
+    const size_t n = static_cast<size_t>(this->Width) * static_cast<size_t>(this->Height);
+    return n <= MaxImagePixels ? n : 0;
   }
+
+  /// The zero image of the frame's size (empty for a size ImagePixels() refuses).
+  void ClearImage() { this->RGBA.assign(this->ImagePixels() * 4, 0.0); }
 };
 }
 

@@ -41,19 +41,47 @@ int TestBadInputConnectivity(int, char*[])
   }
 
   // ---- Scalar arrays shorter than the points / cells they describe.
-  // Renders @p g (whose short array is set) and checks that @p what is reported.
-  auto renderShort = [&](vtkUnstructuredGrid* g, const std::string& what) {
-    scene.Mapper->SetInputData(g);
-    scene.Observer->Clear();
-    int status = -1;
-    const Image img = Render(scene.Mapper, cam, scene.Volume, W, H, &status);
-    const Sanity san = CheckImage(img);
-    std::cout << "  status=" << status << " rendered=" << scene.Mapper->GetNumberOfRenderedCells()
-              << " " << san.Str() << "\n  warning: '" << Msg(scene.Observer->GetWarningMessage())
-              << "' error: '" << Msg(scene.Observer->GetErrorMessage()) << "'" << std::endl;
-    ck.Check(scene.Observer->GetError() || scene.Observer->GetWarning(),
-      what + ": reported (not read past its end)");
-    ck.Check(san.Ok(), what + ": sane image");
+  // Renders @p g (whose short array is set) in CPU_ACCURATE and RAY_CAST, each
+  // right after a valid frame of the block (so a count kept from it would
+  // show): an error naming the array's size, status 0, a zero image of the
+  // requested size, no rendered cell, no other message.
+  auto renderShort = [&](vtkUnstructuredGrid* g, const std::string& what, bool cellScalars) {
+    for (int mode : { vtkHighOrderVolumeMapper::CPU_ACCURATE, vtkHighOrderVolumeMapper::RAY_CAST })
+    {
+      const std::string label = what + (mode == vtkHighOrderVolumeMapper::RAY_CAST
+                                            ? " (RAY_CAST)"
+                                            : " (CPU_ACCURATE)");
+      scene.Mapper->SetRenderMode(mode);
+      scene.Mapper->SetScalarModeToDefault(); // the block has point scalars
+      scene.Mapper->SetInputData(blockGrid);
+      int status = -1;
+      Render(scene.Mapper, cam, scene.Volume, W, H, &status);
+      ck.Check(status == 1 && scene.Mapper->GetNumberOfRenderedCells() == 48,
+        label + ": the block renders first");
+      scene.Mapper->SetInputData(g);
+      if (cellScalars)
+      {
+        scene.Mapper->SetScalarModeToUseCellData();
+      }
+      scene.Observer->Clear();
+      status = -1;
+      const Image img = Render(scene.Mapper, cam, scene.Volume, W, H, &status);
+      const Sanity san = CheckImage(img);
+      const std::string error = scene.Observer->GetErrorMessage();
+      std::cout << "  " << label << ": status=" << status
+                << " rendered=" << scene.Mapper->GetNumberOfRenderedCells() << " " << san.Str()
+                << "\n  warning: '" << Msg(scene.Observer->GetWarningMessage()) << "' error: '"
+                << Msg(error) << "'" << std::endl;
+      ck.Check(scene.Observer->GetError() && error.find("tuples for") != std::string::npos,
+        label + ": an error names the array's size (not read past its end)");
+      ck.Check(!scene.Observer->GetWarning(), label + ": no warning besides the error");
+      ck.Check(status == 0, label + ": RenderImage returns 0");
+      ck.Check(scene.Mapper->GetNumberOfRenderedCells() == 0, label + ": no cell counted");
+      ck.Check(san.Ok() && san.Covered == 0 && img.W == W && img.H == H,
+        label + ": a zero image of the requested size");
+    }
+    scene.Mapper->SetRenderMode(vtkHighOrderVolumeMapper::CPU_ACCURATE);
+    scene.Mapper->SetScalarModeToDefault();
   };
   {
     std::cout << "== point scalars with 2 tuples for " << block.Points.size()
@@ -66,7 +94,7 @@ int TestBadInputConnectivity(int, char*[])
     s->SetValue(1, 1.0);
     g->GetPointData()->SetScalars(s);
     scene.Mapper->SetCellOrderingToPerPixelSort();
-    renderShort(g, "short point-scalar array");
+    renderShort(g, "short point-scalar array", false);
   }
   {
     std::cout << "== cell scalars with 3 tuples for 48 cells: rendering..." << std::endl;
@@ -79,9 +107,7 @@ int TestBadInputConnectivity(int, char*[])
       s->SetValue(i, 0.5 * i);
     }
     g->GetCellData()->SetScalars(s);
-    scene.Mapper->SetScalarModeToUseCellData();
-    renderShort(g, "short cell-scalar array");
-    scene.Mapper->SetScalarModeToDefault();
+    renderShort(g, "short cell-scalar array", true);
   }
 
   // ---- A tetrahedron with point id 100000 (the grid has 27 points).

@@ -1,5 +1,5 @@
 // Image sizes: 1x1 and 4096x4096 through RenderImage, 1x1 on screen, and
-// invalid sizes (0, negative). On the axis-aligned orthographic view of the
+// invalid sizes (0, negative, beyond the limit of 16384 x 16384 pixels). On the axis-aligned orthographic view of the
 // unit cube with a constant transfer function every pixel is known
 // analytically: inside the cube's footprint alpha = 1 - exp(-a/u) (VTK
 // semantics, thickness 1), outside 0.
@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <utility>
 
 using namespace hovTest;
@@ -110,20 +111,38 @@ int TestBadInputSizes(int, char*[])
     ck.Check(err <= 1e-6, "4096: every pixel equals the analytic value within 1e-6");
   }
 
-  // ---- Invalid sizes: an error, status 0, an empty image, no crash.
-  for (auto wh : { std::make_pair(0, 0), std::make_pair(-3, 5), std::make_pair(7, -1) })
+  // ---- Invalid sizes (0, negative, and beyond 16384 x 16384 pixels, which
+  // would ask for tens of GB: refused before anything is allocated) in the
+  // CPU and ray-cast paths: an error, status 0, an empty image, no crash.
+  const std::pair<int, int> invalid[] = { { 0, 0 }, { -3, 5 }, { 7, -1 }, { 20000, 20000 },
+    { 1 << 30, 2 }, { 65536, 65536 }, { 16385, 16384 } };
+  for (int mode : { vtkHighOrderVolumeMapper::CPU_ACCURATE, vtkHighOrderVolumeMapper::RAY_CAST })
   {
-    scene.Observer->Clear();
-    const int st = scene.Mapper->RenderImage(cam, scene.Volume, wh.first, wh.second);
-    int dims[3];
-    scene.Mapper->GetFloatImage()->GetDimensions(dims);
-    vtkDataArray* arr = scene.Mapper->GetFloatImage()->GetPointData()->GetScalars();
-    std::cout << "== RenderImage " << wh.first << "x" << wh.second << ": status=" << st << " dims "
-              << dims[0] << "x" << dims[1] << " tuples " << (arr ? arr->GetNumberOfTuples() : -1)
-              << " error: '" << Msg(scene.Observer->GetErrorMessage()) << "'\n";
-    ck.Check(st == 0 && scene.Observer->GetError(), "invalid size: an error and status 0");
-    ck.Check(!arr || arr->GetNumberOfTuples() == 0, "invalid size: an empty image");
+    scene.Mapper->SetRenderMode(mode);
+    for (const auto& wh : invalid)
+    {
+      const bool large = wh.first > 0 && wh.second > 0;
+      const std::string label = std::to_string(wh.first) + "x" + std::to_string(wh.second) +
+        (mode == vtkHighOrderVolumeMapper::RAY_CAST ? " RAY_CAST" : " CPU_ACCURATE");
+      scene.Observer->Clear();
+      const int st = scene.Mapper->RenderImage(cam, scene.Volume, wh.first, wh.second);
+      int dims[3];
+      scene.Mapper->GetFloatImage()->GetDimensions(dims);
+      vtkDataArray* arr = scene.Mapper->GetFloatImage()->GetPointData()->GetScalars();
+      vtkDataArray* err = scene.Mapper->GetRayCastErrorImage()->GetPointData()->GetScalars();
+      const std::string message = scene.Observer->GetErrorMessage();
+      std::cout << "== RenderImage " << label << ": status=" << st << " dims " << dims[0] << "x"
+                << dims[1] << " tuples " << (arr ? arr->GetNumberOfTuples() : -1) << " error: '"
+                << Msg(message) << "'\n";
+      ck.Check(st == 0 && scene.Observer->GetError(), label + ": an error and status 0");
+      ck.Check(!large || message.find("exceeds the limit") != std::string::npos,
+        label + ": the error names the limit");
+      ck.Check(!arr || arr->GetNumberOfTuples() == 0, label + ": an empty image");
+      ck.Check(mode != vtkHighOrderVolumeMapper::RAY_CAST || !err || err->GetNumberOfTuples() == 0,
+        label + ": an empty error image");
+    }
   }
+  scene.Mapper->SetRenderMode(vtkHighOrderVolumeMapper::CPU_ACCURATE);
 
   // ---- 1x1 on screen: the screen pixel equals the float pixel.
   {

@@ -255,9 +255,11 @@ int TestFieldsTwoArrays(int, char*[])
     double sum = 0;
     for (double x : img.V)
       sum += std::abs(x);
-    check.Check(scene.Observer->GetError() && sum == 0.0,
+    check.Check(scene.Observer->GetError() && sum == 0.0 && status == 0 &&
+        !scene.Observer->GetWarning(),
       std::string(bad == 0 ? "missing" : "short") + " colour array: error '" +
-        Msg(scene.Observer->GetErrorMessage()) + "', image sum " + Fmt(sum));
+        Msg(scene.Observer->GetErrorMessage()) + "', status " + std::to_string(status) +
+        ", warning '" + Msg(scene.Observer->GetWarningMessage()) + "', image sum " + Fmt(sum));
   }
   return check.Result();
 }
