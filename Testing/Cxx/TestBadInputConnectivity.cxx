@@ -15,6 +15,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkPointData.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVisibilitySort.h"
 
 #include <iostream>
 #include <string>
@@ -140,6 +141,30 @@ int TestBadInputConnectivity(int, char*[])
         scene.Mapper->GetNumberOfSkippedCells() == 1,
       std::string(name) + ": 48 rendered, 1 skipped");
     ck.Check(s.Ok() && d.Max <= 1e-6, std::string(name) + ": the valid tets render as alone");
+  }
+
+  // ---- VISIBILITY_SORT without a sort (SetVisibilitySort(nullptr)): an
+  // error, status 0, a zero image and no empty-image warning.
+  {
+    std::cout << "== no visibility sort: rendering..." << std::endl;
+    vtkSmartPointer<vtkVisibilitySort> sort = scene.Mapper->GetVisibilitySort();
+    scene.Mapper->SetCellOrderingToVisibilitySort();
+    scene.Mapper->SetInputData(blockGrid);
+    scene.Mapper->SetVisibilitySort(nullptr);
+    scene.Observer->Clear();
+    int status = -1;
+    const Image img = Render(scene.Mapper, cam, scene.Volume, W, H, &status);
+    const Sanity san = CheckImage(img);
+    std::cout << "  status=" << status << " " << san.Str() << "\n  warning: '"
+              << Msg(scene.Observer->GetWarningMessage()) << "' error: '"
+              << Msg(scene.Observer->GetErrorMessage()) << "'" << std::endl;
+    ck.Check(scene.Observer->GetError() &&
+        scene.Observer->GetErrorMessage().find("No visibility sort") != std::string::npos &&
+        !scene.Observer->GetWarning(),
+      "no sort: one error, no warning");
+    ck.Check(status == 0 && san.Ok() && san.Covered == 0 && img.W == W,
+      "no sort: status 0 and a zero image");
+    scene.Mapper->SetVisibilitySort(sort);
   }
 
   return ck.Result();
