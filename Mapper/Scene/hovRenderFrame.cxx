@@ -103,8 +103,14 @@ bool hov::RenderFrame::SetupRays(ViewRays& rays, int width, int height) const
     this->Error("Singular camera or volume matrix: nothing rendered.");
     return false;
   }
-  rays.SetupClipping(this->Mapper, this->Camera, this->Volume->GetMatrix(),
+  const int ignored = rays.SetupClipping(this->Mapper, this->Camera, this->Volume->GetMatrix(),
     this->Settings.ViewDepthClipping ? this->Settings.ViewDepthRange : nullptr);
+  if (ignored > 0)
+  {
+    this->Warning(std::to_string(ignored) +
+      " clipping plane(s) with a zero normal or a NaN/Inf normal or origin define no "
+      "half-space: ignored.");
+  }
   return true;
 }
 

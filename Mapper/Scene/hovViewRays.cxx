@@ -196,16 +196,24 @@ void hov::ViewRays::ClipRange(const Ray& ray, double& tMin, double& tMax) const
   }
 }
 
-void hov::ViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera,
+int hov::ViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera,
   vtkMatrix4x4* volumeMatrix, const double* viewDepthRange)
 {
   this->ClipPlanes.clear();
   vtkNew<vtkMatrix4x4> identity;
   vtkMatrix4x4* matrix = volumeMatrix ? volumeMatrix : identity.Get();
+  int ignored = 0;
   for (int i = 0; mapper && i < mapper->GetNumberOfClippingPlanes(); ++i)
   {
     double h[4];
     mapper->GetClippingPlaneInDataCoords(matrix, i, h);
+    const bool finite =
+      std::isfinite(h[0]) && std::isfinite(h[1]) && std::isfinite(h[2]) && std::isfinite(h[3]);
+    if (!finite || (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0))
+    {
+      ++ignored; // NaN would keep every bound unchanged, a zero normal clip nothing
+      continue;
+    }
     this->ClipPlanes.emplace_back(h[0], h[1], h[2], h[3]);
   }
   if (viewDepthRange && camera)
@@ -231,6 +239,7 @@ void hov::ViewRays::SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera
       this->ClipPlanes.emplace_back(h[0], h[1], h[2], h[3]);
     }
   }
+  return ignored;
 }
 
 hov::ViewRays::Ray hov::ViewRays::TracedPixelRay(

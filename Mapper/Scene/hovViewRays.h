@@ -111,9 +111,11 @@ public:
    * depths [near, far] (world distance from @p camera's position along its
    * direction of projection), both transformed to dataset coordinates with
    * the volume matrix @p volumeMatrix as
-   * vtkAbstractMapper3D::GetClippingPlaneInDataCoords does.
+   * vtkAbstractMapper3D::GetClippingPlaneInDataCoords does. A plane whose
+   * normal is zero or whose coefficients are not finite defines no half-space:
+   * it is left out; returns how many were.
    */
-  void SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera, vtkMatrix4x4* volumeMatrix,
+  int SetupClipping(vtkAbstractMapper3D* mapper, vtkCamera* camera, vtkMatrix4x4* volumeMatrix,
     const double* viewDepthRange);
   bool HasClipping() const { return !this->ClipPlanes.empty(); }
 

@@ -240,6 +240,38 @@ int TestBadInputCameras(int, char*[])
     CheckRenderImage(ck, scene, cam, mode, "opposite clipping planes", empty);
   }
   scene.Mapper->RemoveAllClippingPlanes();
+  // Planes that define no half-space (a zero normal; a NaN normal; an Inf
+  // origin): left out with a warning, so the image is the unclipped one (a
+  // NaN plane used to keep every ray's bounds silently, a zero normal to clip
+  // nothing without a word).
+  for (int mode : { vtkHighOrderVolumeMapper::CPU_ACCURATE, vtkHighOrderVolumeMapper::RAY_CAST })
+  {
+    AxisView(cam);
+    scene.Mapper->SetRenderMode(mode);
+    const Image unclipped = Render(scene.Mapper, cam, scene.Volume, 32, 24);
+    vtkNew<vtkPlane> zero, nanNormal, infOrigin;
+    zero->SetOrigin(0.5, 0.5, 0.5);
+    zero->SetNormal(0, 0, 0);
+    nanNormal->SetNormal(NaN, 1, 0);
+    infOrigin->SetOrigin(Inf, 0, 0);
+    infOrigin->SetNormal(1, 0, 0);
+    scene.Mapper->AddClippingPlane(zero);
+    scene.Mapper->AddClippingPlane(nanNormal);
+    scene.Mapper->AddClippingPlane(infOrigin);
+    scene.Observer->Clear();
+    int status = -1;
+    const Image img = Render(scene.Mapper, cam, scene.Volume, 32, 24, &status);
+    const DiffStats d = Diff(img, unclipped);
+    const std::string tag = std::string(ModeName(mode)) + " degenerate clipping planes";
+    std::cout << tag << ": status " << status << ", vs unclipped " << d.Str() << ", warning '"
+              << Msg(scene.Observer->GetWarningMessage()) << "'" << std::endl;
+    ck.Check(status == 1 && !scene.Observer->GetError() && d.Max == 0.0 &&
+        CheckImage(img).Covered > 0,
+      tag + ": the unclipped image");
+    ck.Check(scene.Observer->GetWarningMessage().find("3 clipping plane(s)") != std::string::npos,
+      tag + ": a warning counts the 3 planes ignored");
+    scene.Mapper->RemoveAllClippingPlanes();
+  }
 
   // ---- Finding 4: an absurd emission scale is clamped (with a warning); an
   // emission that still overflows (a unit distance of 1e-300) gives

@@ -1,8 +1,8 @@
 // Image sizes: 1x1 and 4096x4096 through RenderImage, 1x1 on screen, and
-// invalid sizes (0, negative, beyond the limit of 16384 x 16384 pixels). On the axis-aligned orthographic view of the
-// unit cube with a constant transfer function every pixel is known
-// analytically: inside the cube's footprint alpha = 1 - exp(-a/u) (VTK
-// semantics, thickness 1), outside 0.
+// invalid sizes (0, negative, beyond the limit of 16384 x 16384 pixels). On
+// the axis-aligned orthographic view of the unit cube with a constant
+// transfer function every pixel is known analytically: inside the cube's
+// footprint alpha = 1 - exp(-a/u) (VTK semantics, thickness 1), outside 0.
 #include "hovTestScenes.h"
 
 #include "vtkCamera.h"
