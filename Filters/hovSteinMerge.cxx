@@ -120,6 +120,16 @@ struct Tiles
   std::vector<std::int64_t> RankOffsets; ///< per rank: offset in RankEntries
   std::vector<std::int16_t> Rect;        ///< per rank: ix0, ix1, iy0, iy1
 
+  /// Most tile entries for @p n cells: 16 per cell (the default tiling makes
+  /// 1-4), at least 2^24, at most what 32-bit links address.
+  static std::int64_t MaxEntries(vtkIdType n)
+  {
+    return std::min<std::int64_t>(std::numeric_limits<std::int32_t>::max(),
+      std::max<std::int64_t>(std::int64_t(1) << 24, 16 * static_cast<std::int64_t>(n)));
+  }
+
+  /// The tile lists of nx x ny tiles; false (nothing built) if they would
+  /// hold more than MaxEntries().
   bool Build(const View& v, const std::vector<vtkIdType>& gsl, int nx, int ny)
   {
     this->Grid = MakeGrid(v, gsl, nx, ny);
@@ -138,6 +148,19 @@ struct Tiles
       q[2] = static_cast<std::int16_t>(this->Grid.IY(b[2]));
       q[3] = static_cast<std::int16_t>(this->Grid.IY(b[3]));
       this->RankOffsets[r] = total;
+      total += static_cast<std::int64_t>(q[1] - q[0] + 1) * (q[3] - q[2] + 1);
+    }
+    this->RankOffsets[n] = total;
+    // Checked before any per-entry work: 4096 x 4096 tiles over cells that
+    // cover much of the view would ask for billions of entries (36 bytes
+    // each) and as many steps.
+    if (total > MaxEntries(n))
+    {
+      return false;
+    }
+    for (vtkIdType r = 0; r < n; ++r)
+    {
+      const std::int16_t* q = this->Rect.data() + 4 * r;
       for (int iy = q[2]; iy <= q[3]; ++iy)
       {
         for (int ix = q[0]; ix <= q[1]; ++ix)
@@ -145,12 +168,6 @@ struct Tiles
           ++start[iy * this->Grid.NX + ix + 1];
         }
       }
-      total += (q[1] - q[0] + 1) * (q[3] - q[2] + 1);
-    }
-    this->RankOffsets[n] = total;
-    if (total > std::numeric_limits<std::int32_t>::max())
-    {
-      return false;
     }
     for (int t = 0; t < nt; ++t)
     {
@@ -344,7 +361,7 @@ void SortBackToFront(const Geometry& g, const View& v, int tilesX, int tilesY,
   Tiles tiles;
   while (!tiles.Build(v, gsl, nx, ny))
   {
-    nx = std::max(1, nx / 2); // too many tile entries for 32-bit links
+    nx = std::max(1, nx / 2); // too many tile entries (MaxEntries)
     ny = std::max(1, ny / 2);
   }
   stats.TilesX = tiles.Grid.NX;

@@ -271,8 +271,9 @@ public:
   ///@}
 
   /**
-   * Tiles used by the last sort (the default or the settings, reduced if the
-   * tile lists would not fit 32-bit links).
+   * Tiles used by the last sort (the default or the settings, halved in both
+   * directions while the tile lists would hold more than 16 entries per cell,
+   * at least 2^24 and at most 2^31 - 1 in all).
    */
   vtkGetVector2Macro(UsedTiles, int);
 

@@ -83,6 +83,34 @@ void CyclicCase(Checker& ck)
   }
 }
 
+/// MULTITILED_MERGE with the most tiles the setters allow (4096 x 4096): the
+/// tile lists would hold ~10^8-10^9 entries (tens of GB, as many steps), so
+/// the tiles are halved until they hold at most 2^24 here; a sane tiling
+/// (64 x 64) is used as set. Both orders stay exact.
+void HugeTiles(Checker& ck, vtkUnstructuredGrid* grid, const SortView& view)
+{
+  vtkNew<vtkCamera> cam;
+  view.Apply(cam);
+  for (int tiles : { 4096, 64 })
+  {
+    vtkNew<vtkSteinVisibilitySort> sort;
+    sort->SetAlgorithmToMultitiledMerge();
+    sort->SetNumberOfTiles(tiles, tiles);
+    const std::vector<vtkIdType> order =
+      FullOrder(sort, grid, cam, nullptr, vtkVisibilitySort::BACK_TO_FRONT);
+    const OracleResult r = CheckVisibilityOrder(grid, cam, nullptr, order);
+    const int* used = sort->GetUsedTiles();
+    const std::string what = "merge, " + std::to_string(tiles) + "^2 tiles requested";
+    std::cout << "  " << what << ": used " << used[0] << " x " << used[1] << ", " << r.Str()
+              << "\n";
+    ck.Check(r.EveryCellOnce() && r.RayViolations == 0 && r.FaceViolations == 0,
+      what + ": exact order");
+    ck.Check(tiles == 4096 ? used[0] < 4096 && used[0] == used[1] && used[0] >= 64
+                           : used[0] == 64 && used[1] == 64,
+      what + (tiles == 4096 ? ": reduced" : ": used as set"));
+  }
+}
+
 /// The graph's order does not depend on the chunk size, the sort object or earlier views.
 void Determinism(Checker& ck, vtkUnstructuredGrid* grid, const SortView& view)
 {
@@ -140,5 +168,6 @@ int TestSteinSortAlgorithms(int, char*[])
   double b[6];
   meshes[0].Grid->GetBounds(b);
   Determinism(ck, meshes[0].Grid, RandomViews(b, 1, 77)[0]);
+  HugeTiles(ck, meshes[0].Grid, RandomViews(b, 1, 78)[0]);
   return ck.Result();
 }
