@@ -97,8 +97,10 @@ def pv_env(args, threads=None):
 
 
 def run_pvbatch(args, cases, out, size, ranks=1, timeout=600, threads=None, oversubscribe=False):
-    """Renders @p cases in one pvbatch run (@p ranks MPI ranks); returns (results, stderr)."""
-    os.makedirs(out, exist_ok=True)
+    """Renders @p cases in one pvbatch run (@p ranks MPI ranks) into @p out, emptied first
+    (so no earlier run's results or layers can pass for this one's); returns (results, stderr)."""
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
     spec = {"plugin": args.plugin, "out": out, "size": list(size), "cases": cases}
     spec_path = os.path.join(out, "spec.json")
     with open(spec_path, "w") as f:
@@ -126,6 +128,13 @@ def run_pvbatch(args, cases, out, size, ranks=1, timeout=600, threads=None, over
         results = json.load(f)
     results["seconds"] = seconds
     return results, stderr
+
+
+def has_errors(output):
+    """Whether pvbatch's output reports an error: VTK's "ERROR:" text, ParaView's logger
+    ("ERR|": with logging compiled in, vtkOutputWindow prints errors only that way) or a
+    Python traceback."""
+    return "ERROR" in output or "ERR|" in output or "Traceback" in output
 
 
 def messages_by_case(stderr):

@@ -32,7 +32,7 @@ def main():
     out = os.path.join(args.temp, "paraview_mpi_%d" % args.ranks)
     res, stderr = hpt.run_pvbatch(args, cases, out, SIZE, ranks=args.ranks,
                                   oversubscribe=args.ranks > os.cpu_count(), threads=1)
-    hpt.check(failures, "ERROR" not in stderr and "Traceback" not in stderr,
+    hpt.check(failures, not hpt.has_errors(stderr),
               "%d ranks: no errors in the output (%.1f s)" % (args.ranks, res["seconds"]))
     for case, one, many in zip(cases, ref["cases"], res["cases"]):
         name = case["name"]

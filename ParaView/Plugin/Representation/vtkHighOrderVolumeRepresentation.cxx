@@ -8,6 +8,8 @@
 #include "vtkColorTransferFunction.h"    // the colour map's vector mode
 #include "vtkCompositeDataIterator.h"    // composite inputs
 #include "vtkCompositeDataSet.h"         // composite inputs
+#include "vtkCellData.h"                 // the separate opacity array
+#include "vtkDataArray.h"                // its components
 #include "vtkDiscretizableColorTransferFunction.h" // ParaView's colour maps
 #include "vtkHighOrderTransferFunction.h" // colour sampling tolerance
 #include "vtkInformation.h"              // pipeline and view requests
@@ -19,6 +21,7 @@
 #include "vtkPVGeometryFilter.h"         // LOD geometry
 #include "vtkPVLODVolume.h"              // the actor
 #include "vtkPVRenderView.h"             // piece delivery, ordered compositing
+#include "vtkPointData.h"                // the separate opacity array
 #include "vtkPolyDataMapper.h"           // LOD mapper
 #include "vtkUnsignedCharArray.h"        // distinct cell types
 #include "vtkUnstructuredGrid.h"         // the native piece
@@ -73,9 +76,11 @@ void vtkHighOrderVolumeRepresentation::UpdateColorFunction()
   }
   // The same function without its 256-step table (the copy is a plain
   // vtkColorTransferFunction: nodes, colour space, clamping, range colours).
-  if (this->ContinuousColorMapTime < discretizable->GetMTime())
+  if (this->ContinuousColorMapSource != discretizable ||
+    this->ContinuousColorMapTime < discretizable->GetMTime())
   {
     this->ContinuousColorMap->DeepCopy(discretizable);
+    this->ContinuousColorMapSource = discretizable;
     this->ContinuousColorMapTime = discretizable->GetMTime();
   }
   this->Property->SetColor(this->ContinuousColorMap);
@@ -245,6 +250,7 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
     colorArrayName = info->Get(vtkDataObject::FIELD_NAME());
     association = info->Get(vtkDataObject::FIELD_ASSOCIATION());
   }
+  const int colorAssociation = association;
   this->UpdateColorFunction(); // the colour map may have changed since SetColor
   vtkColorTransferFunction* ctf = this->ColorMap;
   const bool component = ctf && ctf->GetVectorMode() == vtkScalarsToColors::COMPONENT;
@@ -258,14 +264,40 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
     extinctionArray = this->OpacityArrayName.c_str();
     association = this->OpacityArrayFieldAssociation;
     extinctionComponent = this->OpacityArrayComponent;
-    colorField = colorArrayName ? colorArrayName : "";
-    colorComponent = component ? ctf->GetVectorComponent() : -1;
+    // ParaView's OpacityComponent counts the magnitude as the component after
+    // the last: the mapper's MAGNITUDE (component 0 of a one-component array).
+    vtkDataSetAttributes* fields = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? static_cast<vtkDataSetAttributes*>(this->NativePiece->GetCellData())
+      : static_cast<vtkDataSetAttributes*>(this->NativePiece->GetPointData());
+    vtkDataArray* opacity = fields->GetArray(extinctionArray);
+    const int components = opacity ? opacity->GetNumberOfComponents() : 0;
+    if (components > 0 && extinctionComponent >= components)
+    {
+      extinctionComponent = components > 1 ? -1 : 0;
+    }
+    if (colorAssociation == vtkDataObject::FIELD_ASSOCIATION_CELLS)
+    {
+      // The mapper's separate colour field is a point field.
+      if (!this->WarnedCellColorArray)
+      {
+        this->WarnedCellColorArray = true;
+        vtkWarningMacro("Use Separate Opacity Array: the colouring array '"
+          << (colorArrayName ? colorArrayName : "") << "' is a cell array; Accurate Volume "
+          << "takes a separate colour from a point array only, so the colour map is applied to "
+          << "the opacity array '" << extinctionArray << "'.");
+      }
+    }
+    else
+    {
+      this->WarnedCellColorArray = false;
+      colorField = colorArrayName ? colorArrayName : "";
+      colorComponent = component ? ctf->GetVectorComponent() : -1;
+    }
   }
   this->Mapper->SelectScalarArray(extinctionArray);
   this->Mapper->SetScalarMode(association == vtkDataObject::FIELD_ASSOCIATION_CELLS
       ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA
       : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
-  // ParaView's OpacityComponent counts the magnitude as the component after the last.
   this->Mapper->SetVectorMode(extinctionComponent >= 0 ? vtkHighOrderVolumeMapper::COMPONENT
                                                        : vtkHighOrderVolumeMapper::MAGNITUDE);
   this->Mapper->SetVectorComponent(std::max(extinctionComponent, 0));
@@ -291,6 +323,18 @@ void vtkHighOrderVolumeRepresentation::SetRenderMode(int mode)
 void vtkHighOrderVolumeRepresentation::SetBlendMode(int mode)
 {
   this->Mapper->SetBlendMode(mode);
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  if (ranks > 1 && mode != vtkHighOrderVolumeMapper::COMPOSITE_BLEND &&
+    controller->GetLocalProcessId() == 0)
+  {
+    // ParaView composites the ranks' images with "over" in depth order, which
+    // is not the maximum, minimum or average along the whole ray.
+    vtkWarningMacro("Accurate Volume: with " << ranks << " ranks a blend mode other than "
+                                             << "Composite is exact within each rank's piece "
+                                             << "only; ParaView composites the pieces' images "
+                                             << "with 'over'. Use one rank for an exact image.");
+  }
 }
 void vtkHighOrderVolumeRepresentation::SetOpacitySemantics(int semantics)
 {

@@ -51,6 +51,7 @@
 
 #include "vtkNew.h"          // For vtkNew
 #include "vtkSmartPointer.h" // For the native piece
+#include "vtkWeakPointer.h"  // For the colour map copied
 
 #include <string> // For SeparateColorArray
 
@@ -161,12 +162,16 @@ private:
   vtkNew<vtkPVHighOrderVolumeMapper> Mapper;
   vtkSmartPointer<vtkColorTransferFunction> ColorMap; ///< as ParaView set it
   vtkNew<vtkColorTransferFunction> ContinuousColorMap;
+  /// The map ContinuousColorMap was copied from, and its MTime then (ParaView
+  /// keeps one map per array: a switch back to an older map must copy again).
+  vtkWeakPointer<vtkColorTransferFunction> ContinuousColorMapSource;
   vtkMTimeType ContinuousColorMapTime = 0;
   vtkSmartPointer<vtkUnstructuredGrid> NativePiece;
   std::string SeparateColorArray;
   int SeparateColorArrayComponent = -1;
   double ColorSamplingTolerance = 1e-4;
   bool WarnedMapScalars = false;
+  bool WarnedCellColorArray = false;
   vtkMTimeType ReportedPieceTime = 0;
   std::string ReportedArray = "(none reported)";
 };

@@ -1,15 +1,18 @@
 #include "vtkPVHighOrderVolumeMapper.h"
 
 #include "vtkDataArray.h"               // the error estimate
+#include "vtkFloatArray.h"              // an empty piece's float image
 #include "vtkImageData.h"               // the float image
 #include "vtkMultiProcessController.h"  // the rank in file names
 #include "vtkObjectFactory.h"           // vtkStandardNewMacro
 #include "vtkPointData.h"               // the error estimate
+#include "vtkRenderer.h"                // an empty piece's viewport
 #include "vtkTimerLog.h"                // frame time
 #include "vtkUnstructuredGridBase.h"    // the piece
 #include "vtkXMLImageDataWriter.h"      // float image file
 
-#include <sstream> // file names
+#include <algorithm> // std::max
+#include <sstream>   // file names
 
 vtkStandardNewMacro(vtkPVHighOrderVolumeMapper);
 
@@ -39,17 +42,42 @@ void vtkPVHighOrderVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     // An empty piece (ParaView's redistribution may leave a rank without
     // cells; the representation says so once per piece): the layer stays
     // transparent and the other ranks composite over it as usual.
-    timer->StopTimer();
-    this->LastFrameTime = timer->GetElapsedTime();
-    return;
+    this->PublishEmptyLayer(ren);
   }
-  this->Superclass::Render(ren, vol);
+  else
+  {
+    this->Superclass::Render(ren, vol);
+  }
   timer->StopTimer();
   this->LastFrameTime = timer->GetElapsedTime();
   if (!this->FloatImageFileName.empty())
   {
     this->WriteFloatImage();
   }
+}
+
+void vtkPVHighOrderVolumeMapper::PublishEmptyLayer(vtkRenderer* ren)
+{
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  width = std::max(width, 0);
+  height = std::max(height, 0);
+  vtkNew<vtkFloatArray> rgba;
+  rgba->SetName("RGBA");
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  rgba->FillValue(0.0f);
+  vtkImageData* image = this->GetFloatImage();
+  image->SetDimensions(width, height, 1);
+  image->GetPointData()->SetScalars(rgba);
+  this->WitnessViolations = 0;
+  this->NumberOfRenderedCells = this->NumberOfSkippedCells = 0;
+  this->NumberOfSegments = this->NumberOfPieces = this->NumberOfRays = 0;
+  this->NumberOfCellRecords = this->NumberOfTransparentCells = 0;
+  this->NumberOfSplattedCells = 0;
+  this->LastImageTime = 0.0;
+  this->ShadingErrorEstimate = 0.0;
+  this->LastRenderAborted = false;
 }
 
 double vtkPVHighOrderVolumeMapper::GetRayCastErrorEstimate()

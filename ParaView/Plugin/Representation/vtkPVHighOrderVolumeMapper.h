@@ -9,6 +9,8 @@
  *  - a rank whose piece is empty (ParaView's redistribution gave it no cells)
  *    draws nothing, without the mapper's generic warning (the representation
  *    names the rank once per piece): the other ranks' layers composite as usual;
+ *    its float image is the zero image of the viewport and its counts are 0
+ *    (also written to the file below, so no earlier frame's file is left);
  *  - after every frame the float image can be written to a file
  *    (SetFloatImageFileName; on rank r > 0 of an MPI run "_rank<r>" is added
  *    before the extension: each rank holds only its own piece's layer);
@@ -60,6 +62,8 @@ private:
 
   /// The file name of this rank's float image.
   std::string RankFileName() const;
+  /// An empty piece's frame: the zero float image of @p ren's viewport, counts 0.
+  void PublishEmptyLayer(vtkRenderer* ren);
   void WriteFloatImage();
 
   std::string FloatImageFileName;
