@@ -6,7 +6,9 @@ spec.json: {"plugin": path, "out": folder, "size": [w, h], "cases": [case, ...]}
 case: {"name", "data", "array", "association" ("POINTS"/"CELLS"), "color": [[x, r, g, b]],
        "opacity": [[x, a]], "unit_distance", "camera": {"position", "focal_point",
        "view_up", "view_angle"}, "properties": {representation property: value},
-       "frames": number of renders (timing; default 1)}
+       "frames": number of renders (timing; default 1), "keep_transfer_functions": colour by
+       the array with its colour map and opacity function as they are (no ColorBy, which
+       rescales the map), as a script switching back to an array does}
 
 For each case it writes <out>/<name>.png (the screenshot, 8-bit RGB over black),
 <out>/<name>.vti (the mapper's float image of the last frame) and one entry of
@@ -67,8 +69,16 @@ def render_case(case, view, readers, out, size):
     if case.get("association", "POINTS") == "NONE":
         disp.ColorArrayName = ["POINTS", ""]  # solid colour: no scalars for the volume
     else:
-        ColorBy(disp, (case.get("association", "POINTS"), case["array"]))
-        setup_transfer_functions(case)
+        association = case.get("association", "POINTS")
+        if case.get("keep_transfer_functions"):
+            # As a script switching back does: the array and its existing functions
+            # (ColorBy would rescale the colour map to the data range, a change).
+            disp.ColorArrayName = [association, case["array"]]
+            disp.LookupTable = GetColorTransferFunction(case["array"])
+            disp.ScalarOpacityFunction = GetOpacityTransferFunction(case["array"])
+        else:
+            ColorBy(disp, (association, case["array"]))
+            setup_transfer_functions(case)
     disp.ScalarOpacityUnitDistance = case["unit_distance"]
     for name, value in case.get("properties", {}).items():
         setattr(disp, name, value)
@@ -101,10 +111,12 @@ def render_case(case, view, readers, out, size):
             "clipping_range": list(camera.GetClippingRange()),
         },
     }
-    if case.get("paraview_colormap"):
+    if case.get("paraview_colormap") or case.get("keep_transfer_functions"):
         lut = GetColorTransferFunction(case["array"])
         result["colormap"] = {"points": list(lut.RGBPoints), "space": str(lut.ColorSpace).strip("'\""),
-                              "discretize": int(lut.Discretize)}
+                              "discretize": int(lut.Discretize),
+                              "opacity": list(GetOpacityTransferFunction(case["array"]).Points),
+                              "mtime": lut.GetClientSideObject().GetMTime()}
     if disp.Representation == "Accurate Volume":
         disp.UpdatePropertyInformation()
         result["info"] = {name: info_value(disp, name) for name in INFO}

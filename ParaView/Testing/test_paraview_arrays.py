@@ -1,0 +1,86 @@
+"""hov.ParaView.Arrays: switching the colouring array, and ParaView's separate opacity array,
+through "Accurate Volume" (pvbatch, one rank, CPU accurate, the bracket). The plugin's float
+images (.vti) are compared with each other.
+
+1. Colour maps kept per array. von_mises with ParaView's default map (discretized: the
+   representation renders a continuous copy of it), then displacement_magnitude with its own
+   map, then von_mises again without touching its map, as a user switching back does. The
+   third image must equal the first. (The copy used to be refreshed only when the map's
+   modification time was newer than the last copy's, so switching back kept the second
+   array's map.) The second image must differ from the first, so that the check can fail.
+2. A separate opacity array with ParaView's Magnitude. Colour by von_mises; the extinction
+   from the 3-component displacement with VolumeOpacityComponent = 3 (ParaView's encoding of
+   Magnitude), from the stored one-component displacement_magnitude, and from displacement's
+   z component (2). The first two must agree to 1e-4 (the stored magnitude is rounded to
+   float); the z component must differ. (Magnitude used to reach the mapper as component 3,
+   clamped to the last component: the z image.)
+"""
+import os
+
+import numpy as np
+
+import hov_pv_testing as hpt
+
+SIZE = (120, 120)
+DISPLACEMENT_MAX = 0.23003099314586073
+
+
+def displacement_nodes():
+    """A colour map and an opacity function over displacement's range [0, 0.23]."""
+    hi = DISPLACEMENT_MAX
+    color = [[f * hi, r, g, b] for f, r, g, b in hpt.COLOR_NODES]
+    opacity = [[f * hi, a] for f, a in hpt.OPACITY_NODES]
+    return color, opacity
+
+
+def main():
+    args = hpt.parse_args()
+    failures = []
+    color, opacity = displacement_nodes()
+    first = hpt.make_case(args, "bracket", 0, tag="von_mises_first", paraview_colormap=True)
+    other = hpt.make_case(args, "bracket", 0, tag="displacement_magnitude",
+                          paraview_colormap=True)
+    other.update(array="displacement_magnitude", color=color, opacity=opacity)
+    again = hpt.make_case(args, "bracket", 0, tag="von_mises_again",
+                          keep_transfer_functions=True)
+    cases = [first, other, again]
+    # Separate opacity array: the colour map over von_mises, the opacity function over
+    # displacement's range (whichever function ParaView passes, it is the same in all three).
+    for tag, array, component in (("opacity_magnitude", "displacement", 3),
+                                  ("opacity_stored_magnitude", "displacement_magnitude", 0),
+                                  ("opacity_z", "displacement", 2)):
+        case = hpt.make_case(args, "bracket", 0, tag=tag, properties={
+            "VolumeUseSeparateOpacityArray": 1,
+            "VolumeOpacityArrayName": ["POINTS", array],
+            "VolumeOpacityComponent": component})
+        case["opacity"] = opacity
+        cases.append(case)
+    out = os.path.join(args.temp, "paraview_arrays")
+    results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
+    hpt.check(failures, not hpt.has_errors(stderr),
+              "pvbatch ran without errors (%.1f s)" % results["seconds"])
+    images = {res["name"]: hpt.read_vti_rgba(res["vti"]) for res in results["cases"]}
+    for name, img in images.items():
+        hpt.check(failures, int((img[..., 3] > 1e-3).sum()) > 1000,
+                  "%s: the image is not empty" % name)
+
+    def max_diff(a, b):
+        return float(np.abs(images[a] - images[b]).max())
+
+    same = max_diff("von_mises_first", "von_mises_again")
+    changed = max_diff("von_mises_first", "displacement_magnitude")
+    hpt.check(failures, same <= 1e-7,
+              "colour map switched back: von_mises again vs first: max %.2e (<= 1e-7)" % same)
+    hpt.check(failures, changed > 1e-2,
+              "the other array's image differs from von_mises': max %.2e (> 1e-2)" % changed)
+    magnitude = max_diff("opacity_magnitude", "opacity_stored_magnitude")
+    z = max_diff("opacity_magnitude", "opacity_z")
+    hpt.check(failures, magnitude <= 1e-4,
+              "separate opacity, Magnitude vs the stored magnitude: max %.2e (<= 1e-4)" % magnitude)
+    hpt.check(failures, z > 1e-2,
+              "separate opacity, Magnitude vs the z component: max %.2e (> 1e-2)" % z)
+    hpt.finish(failures)
+
+
+if __name__ == "__main__":
+    main()
