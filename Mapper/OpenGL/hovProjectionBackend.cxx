@@ -195,19 +195,20 @@ int hov::ProjectionBackend::Render(RenderFrame& frame, vtkImageData* floatImage)
 bool hov::ProjectionBackend::PrepareFrame(RenderFrame& frame)
 {
   CellScene& scene = this->Scene;
-  if (!frame.ValidateView() || !scene.Prepare(frame) ||
-    scene.GetCells().GetNumberOfRenderedCells() == 0)
+  if (!frame.ValidateView() || !scene.Prepare(frame))
   {
+    return false;
+  }
+  if (scene.GetCells().GetNumberOfRenderedCells() == 0)
+  {
+    frame.NoRenderedCell(frame.Stats.RenderedCells + frame.Stats.SkippedCells);
     return false;
   }
   bool rebuilt = false;
   if (!frame.UpdateTransferFunction(
         scene.GetTransferFunction(), frame.Settings.GPUOpacityTolerance, rebuilt))
   {
-    if (rebuilt)
-    {
-      frame.WarnTransparent();
-    }
+    frame.NoVisibleVolume(rebuilt);
     return false;
   }
   return frame.Settings.Order != ProjectionOrder::Exact || scene.PrepareOrder(frame, true);

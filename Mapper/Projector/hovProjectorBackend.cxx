@@ -24,6 +24,10 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
   bool ok = frame.ValidateView() && scene.Prepare(frame);
   // Isosurfaces are visible even where the volume does not absorb.
   bool render = ok && scene.GetCells().GetNumberOfRenderedCells() > 0;
+  if (ok && !render)
+  {
+    frame.NoRenderedCell(frame.Stats.RenderedCells + frame.Stats.SkippedCells);
+  }
   bool rebuilt = false;
   vtkHighOrderTransferFunction* tf = scene.GetTransferFunction();
   const bool blend = frame.Settings.Blend != BlendMode::Composite;
@@ -40,10 +44,7 @@ int hov::ProjectorBackend::Render(RenderFrame& frame, vtkImageData*)
     (blend || frame.Settings.NumberOfIsosurfaces() == 0) &&
     frame.Settings.Blend != BlendMode::AverageIntensity)
   {
-    if (rebuilt)
-    {
-      frame.WarnTransparent();
-    }
+    frame.NoVisibleVolume(rebuilt);
     render = false;
   }
   // An interactive frame: one exact ray per f x f block (hovReducedImage.h).

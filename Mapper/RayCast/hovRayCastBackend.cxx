@@ -40,7 +40,7 @@ void hov::RayCastBackend::PrepareCaster(const RenderFrame& frame, vtkUnstructure
       frame.Scalars.CellScalars, &message);
   if (!message.empty())
   {
-    frame.Warning("RAY_CAST: skipped " + message + "; the rest is rendered.");
+    frame.Warning("RAY_CAST: skipped " + message + (ok ? "; the rest is rendered." : "."));
   }
   if (!ok)
   {
@@ -49,6 +49,7 @@ void hov::RayCastBackend::PrepareCaster(const RenderFrame& frame, vtkUnstructure
          << " cells): nothing rendered.";
     frame.Warning(text.str());
   }
+  frame.InputReported = true;
   this->InvisibleValid = false; // a new caster: its cells' flags are computed again
   this->Valid = true; // cached also when nothing is usable: one warning per input
   this->Key = key;
@@ -116,14 +117,12 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   }
   if (frame.Stats.RenderedCells == 0)
   {
-    return 1; // nothing to render (warned above)
+    frame.NoRenderedCell(grid->GetNumberOfCells()); // (warned when the caster was built)
+    return 1;
   }
   if (!visible && s.Blend != BlendMode::AverageIntensity) // average: grey even without opacity
   {
-    if (rebuilt)
-    {
-      frame.WarnTransparent();
-    }
+    frame.NoVisibleVolume(rebuilt);
     return 1; // nothing visible
   }
 

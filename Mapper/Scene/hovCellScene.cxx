@@ -57,6 +57,7 @@ bool hov::CellScene::Prepare(RenderFrame& frame)
       return false;
     }
     this->ReportCells(frame);
+    frame.InputReported = true;
   }
   const CellSetup::Statistics& st = this->Cells.GetStatistics();
   frame.Stats.RenderedCells = st.Rendered;

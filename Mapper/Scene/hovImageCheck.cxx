@@ -221,6 +221,15 @@ void hov::ImageCheck::Check(
     frame.Warning(text.str());
   }
   this->WarnedEmptyImage = empty;
+  // Nothing to draw (no cell rendered, an invisible transfer function): the
+  // backend said why when it found it; said again once a setting changes.
+  const bool notDrawn = !frame.Drawn && !frame.Stats.Aborted && !frame.NotDrawnReason.empty();
+  if (notDrawn && !frame.NotDrawnWarned &&
+    (this->WarnedNotDrawn != frame.NotDrawnReason || this->WarnedTime != settingsTime))
+  {
+    frame.Warning(frame.NotDrawnReason);
+  }
+  this->WarnedNotDrawn = notDrawn ? frame.NotDrawnReason : std::string();
   this->WarnedTime = settingsTime;
 }
 

@@ -10,8 +10,10 @@
  *   part is drawn (hov::ImageDisplay), the rest of the image being zero.
  * - An empty image comes with a warning saying why, once until an image is
  *   not empty again or a setting changes (not when the overflow above is what
- *   emptied it: that has its own warning); a frame that was aborted or had
- *   nothing to draw (RenderFrame::Drawn false) has had its own message.
+ *   emptied it: that has its own warning); a frame that was aborted has had its
+ *   own message, and one that had nothing to draw (RenderFrame::Drawn false)
+ *   had its reason (RenderFrame::NotDrawnReason) said by the backend when it
+ *   found it, and here again once a setting changes.
  *
  * Thread safety: rendering thread only (it keeps the warned state between frames).
  * @sa hov::RenderFrame, vtkHighOrderVolumeMapper
@@ -22,6 +24,7 @@
 #include "vtkType.h" // vtkMTimeType
 
 #include <cstddef> // size_t
+#include <string>  // the reason warned
 
 namespace hov
 {
@@ -53,6 +56,7 @@ public:
 private:
   int NonZeroBox[4] = { 0, 0, 0, 0 };
   bool WarnedEmptyImage = false;
+  std::string WarnedNotDrawn; ///< the last frame's RenderFrame::NotDrawnReason
   vtkMTimeType WarnedTime = 0;
 };
 }

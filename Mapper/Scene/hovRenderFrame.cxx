@@ -138,8 +138,22 @@ bool hov::RenderFrame::UpdateTransferFunction(
     this->Settings.Emission == EmissionModel::WilhelmsVanGelder;
 }
 
-void hov::RenderFrame::WarnTransparent() const
+void hov::RenderFrame::NoVisibleVolume(bool warn) const
 {
-  this->Warning("The transfer function has no opacity anywhere (and the emission model needs "
-                "extinction to glow): the volume is invisible; nothing rendered.");
+  this->NotDrawnReason = "The transfer function has no opacity anywhere (and the emission model "
+                         "needs extinction to glow): the volume is invisible; nothing rendered.";
+  this->NotDrawnWarned = warn;
+  if (warn)
+  {
+    this->Warning(this->NotDrawnReason);
+  }
+}
+
+void hov::RenderFrame::NoRenderedCell(vtkIdType cells) const
+{
+  std::ostringstream text;
+  text << "The image is empty: none of the input's " << cells
+       << " cells is rendered in this mode (see the warnings given when the input was read).";
+  this->NotDrawnReason = text.str();
+  this->NotDrawnWarned = this->InputReported;
 }

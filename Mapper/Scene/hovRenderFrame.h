@@ -124,6 +124,13 @@ public:
   /// Whether visible cells were drawn (an empty image then needs a warning).
   bool Drawn = false;
   FrameStatistics Stats;
+  /// Why a valid frame drew nothing (no cell this mode renders, an invisible
+  /// transfer function; empty otherwise), and whether the backend said so this
+  /// frame (hov::ImageCheck says it again once a setting changes).
+  mutable std::string NotDrawnReason;
+  mutable bool NotDrawnWarned = false;
+  /// Whether the input's cells were read (and reported) this frame.
+  mutable bool InputReported = false;
 
   void Warning(const std::string& text) const { this->Messages->Warning(text); }
   void Error(const std::string& text) const { this->Messages->Error(text); }
@@ -160,8 +167,13 @@ public:
    */
   bool UpdateTransferFunction(vtkHighOrderTransferFunction* tf, double gpuTolerance, bool& rebuilt) const;
 
-  /// The warning for a transfer function that is transparent everywhere.
-  void WarnTransparent() const;
+  /// A transfer function transparent everywhere: the frame's NotDrawnReason,
+  /// said now if @p warn (the table was rebuilt).
+  void NoVisibleVolume(bool warn) const;
+
+  /// No cell of the input is rendered in this mode: the frame's
+  /// NotDrawnReason (the cells' own warnings came when the input was read).
+  void NoRenderedCell(vtkIdType cells) const;
 
   /// Most pixels an image may have: 16384 x 16384 (a CPU frame holds about
   /// 50 bytes per pixel: RGBA in double and float, tiles, error image).
