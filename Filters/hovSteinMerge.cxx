@@ -121,11 +121,12 @@ struct Tiles
   std::vector<std::int16_t> Rect;        ///< per rank: ix0, ix1, iy0, iy1
 
   /// Most tile entries for @p n cells: 16 per cell (the default tiling makes
-  /// 1-4), at least 2^24, at most what 32-bit links address.
+  /// 1-4), at least 2^20 (36 MB with their back links), at most what 32-bit
+  /// links address.
   static std::int64_t MaxEntries(vtkIdType n)
   {
     return std::min<std::int64_t>(std::numeric_limits<std::int32_t>::max(),
-      std::max<std::int64_t>(std::int64_t(1) << 24, 16 * static_cast<std::int64_t>(n)));
+      std::max<std::int64_t>(std::int64_t(1) << 20, 16 * static_cast<std::int64_t>(n)));
   }
 
   /// The tile lists of nx x ny tiles; false (nothing built) if they would
@@ -135,7 +136,10 @@ struct Tiles
     this->Grid = MakeGrid(v, gsl, nx, ny);
     const vtkIdType n = static_cast<vtkIdType>(gsl.size());
     const int nt = this->Grid.NX * this->Grid.NY;
-    std::vector<std::int64_t> start(nt + 1, 0);
+    if (nt > MaxEntries(n))
+    {
+      return false; // more tiles than entries: per-tile arrays alone would be the cost
+    }
     this->Rect.resize(4 * n);
     this->RankOffsets.resize(n + 1);
     std::int64_t total = 0;
@@ -158,6 +162,7 @@ struct Tiles
     {
       return false;
     }
+    std::vector<std::int64_t> start(nt + 1, 0);
     for (vtkIdType r = 0; r < n; ++r)
     {
       const std::int16_t* q = this->Rect.data() + 4 * r;

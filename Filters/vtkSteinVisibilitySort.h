@@ -272,8 +272,8 @@ public:
 
   /**
    * Tiles used by the last sort (the default or the settings, halved in both
-   * directions while the tile lists would hold more than 16 entries per cell,
-   * at least 2^24 and at most 2^31 - 1 in all).
+   * directions while the tiles or their lists' entries would number more than
+   * 16 per cell, at least 2^20 and at most 2^31 - 1 in all).
    */
   vtkGetVector2Macro(UsedTiles, int);
 

@@ -108,7 +108,7 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
   // Every node in a segment's scalar range is a breakpoint to locate on that
   // segment: a budget keeps a frame finite where the tolerance would need
   // 10^5 nodes (hovBackend.h; hovRobustness seed 7, case 7040481).
-  this->TransferFunction->SetRefinementBudget(QuadratureTableBudget);
+  this->TransferFunction->SetRefinementBudget(RayCastTableBudget);
   const bool visible = frame.UpdateTransferFunction(this->TransferFunction,
     std::max(s.GPUOpacityTolerance, 0.1 * s.RayCastTolerance), rebuilt);
   if (rebuilt)

@@ -38,6 +38,17 @@ class RenderFrame;
  */
 constexpr int QuadratureTableBudget = 16384;
 
+/**
+ * The same budget for RAY_CAST, whose curved pieces cost several times more
+ * per node crossed (the crossing is isolated on a degree-16 piece, polished
+ * by Newton on the exact field, and each sub-piece fitted): hovRobustness case
+ * 22002649 (48x48, 74 cells, a magnitude field crossing 9,500 of 16,384
+ * nodes per segment) took over 120 s with 16,384 nodes and 40 s with 4,096.
+ * RayCastTolerance sets the table's tolerance to at least a tenth of itself,
+ * so only GPUOpacityTolerance below ~1e-6 with a sharp table reaches it.
+ */
+constexpr int RayCastTableBudget = 4096;
+
 class Backend
 {
 public:

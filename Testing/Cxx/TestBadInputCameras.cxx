@@ -37,13 +37,6 @@ namespace
 const double NaN = std::numeric_limits<double>::quiet_NaN();
 const double Inf = std::numeric_limits<double>::infinity();
 
-const char* ModeName(int mode)
-{
-  return mode == vtkHighOrderVolumeMapper::CPU_ACCURATE
-    ? "CPU_ACCURATE"
-    : (mode == vtkHighOrderVolumeMapper::OPENGL_PROJECTION ? "OPENGL_PROJECTION" : "RAY_CAST");
-}
-
 /// Non-finite values in the mapper's float image, and whether it is all zero.
 struct FloatStats
 {

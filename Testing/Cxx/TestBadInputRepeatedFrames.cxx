@@ -22,19 +22,6 @@ using namespace hovTest;
 
 namespace
 {
-const char* ModeName(int mode)
-{
-  switch (mode)
-  {
-    case vtkHighOrderVolumeMapper::RAY_CAST:
-      return "RAY_CAST";
-    case vtkHighOrderVolumeMapper::OPENGL_PROJECTION:
-      return "OPENGL_PROJECTION";
-    default:
-      return "CPU_ACCURATE";
-  }
-}
-
 /// Triangles only: no cell any mode renders as a volume.
 vtkSmartPointer<vtkUnstructuredGrid> TrianglesOnly()
 {

@@ -278,10 +278,6 @@ const char* BlendName(int b)
 {
   return b == 1 ? "MIP" : b == 2 ? "MinIP" : "average";
 }
-const char* ModeName(int m)
-{
-  return m == 0 ? "CPU_ACCURATE" : m == 1 ? "OPENGL_PROJECTION" : "RAY_CAST";
-}
 }
 
 int TestBlendModeScenes(int, char*[])
@@ -335,7 +331,7 @@ int TestBlendModeScenes(int, char*[])
           img = hovTest::Render(mapper, cam, vs.Volume, W, H);
         }
         const std::string what =
-          scene.Name + ", " + ModeName(mode) + ", " + BlendName(blend);
+          scene.Name + ", " + hovTest::ModeName(mode) + ", " + BlendName(blend);
         if (!check.Check(img.W == W && img.H == H, what + ": image of the right size"))
         {
           continue;
@@ -377,7 +373,7 @@ int TestBlendModeScenes(int, char*[])
               hovTest::Fmt(hovTest::MaxRayCastError(mapper)) + " <= 1e-9");
         }
       }
-      check.Check(vs.NoMessages(), scene.Name + ", " + ModeName(mode) + ": no message");
+      check.Check(vs.NoMessages(), scene.Name + ", " + hovTest::ModeName(mode) + ": no message");
     }
   }
   return check.Result();

@@ -255,5 +255,19 @@ int TestMixedBadInput(int, char*[])
               << "\n";
     ck.Check(d.Count > 0 && d.Max <= 1e-5, "singular table: the budgeted image within 1e-5");
   }
+  // RAY_CAST stops the same table at its own, smaller budget, and says so.
+  {
+    scene.Mapper->SetRenderMode(vtkHighOrderVolumeMapper::RAY_CAST);
+    scene.Mapper->SetRayCastTolerance(1e-9); // the table at GPUOpacityTolerance (1e-8)
+    int status = 0;
+    const Image img = render(blockGrid, orders[0], status);
+    const std::string warned = scene.Observer->GetWarningMessage();
+    std::cout << "== singular table, RAY_CAST: " << CheckImage(img).Str() << " warning: '"
+              << Msg(warned) << "'\n";
+    ck.Check(status == 1 && warned.find("stopped at its budget of 4096") != std::string::npos &&
+        CheckImage(img).Ok() && CheckImage(img).Covered > 500,
+      "singular table, RAY_CAST: the budget warning (4096 nodes) and a finite image");
+    scene.Mapper->SetRenderMode(vtkHighOrderVolumeMapper::CPU_ACCURATE);
+  }
   return ck.Result();
 }

@@ -43,6 +43,19 @@ int Checker::Result() const
   return this->Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+const char* ModeName(int mode)
+{
+  switch (mode)
+  {
+    case vtkHighOrderVolumeMapper::OPENGL_PROJECTION:
+      return "OPENGL_PROJECTION";
+    case vtkHighOrderVolumeMapper::RAY_CAST:
+      return "RAY_CAST";
+    default:
+      return "CPU_ACCURATE";
+  }
+}
+
 std::string Msg(const std::string& raw)
 {
   std::string out, line;

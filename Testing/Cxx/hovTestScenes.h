@@ -55,6 +55,9 @@ struct Checker
 /// headers (printing those would make ctest's FAIL_REGULAR_EXPRESSION fire).
 std::string Msg(const std::string& raw);
 
+/// "CPU_ACCURATE", "OPENGL_PROJECTION" or "RAY_CAST" for a mapper RenderMode.
+const char* ModeName(int mode);
+
 /// The argument following @p flag ("-D" data dir, "-T" temporary dir), or @p fallback.
 std::string ArgAfter(int argc, char* argv[], const char* flag, const std::string& fallback);
 

@@ -266,9 +266,14 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
     extinctionComponent = this->OpacityArrayComponent;
     // ParaView's OpacityComponent counts the magnitude as the component after
     // the last: the mapper's MAGNITUDE (component 0 of a one-component array).
+    // The piece this rank renders (after ParaView's redistribution), else its own.
+    vtkDataSet* rendered = this->Mapper->GetInput();
+    vtkDataSet* piece = rendered && rendered->GetNumberOfCells() > 0
+      ? rendered
+      : static_cast<vtkDataSet*>(this->NativePiece);
     vtkDataSetAttributes* fields = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
-      ? static_cast<vtkDataSetAttributes*>(this->NativePiece->GetCellData())
-      : static_cast<vtkDataSetAttributes*>(this->NativePiece->GetPointData());
+      ? static_cast<vtkDataSetAttributes*>(piece->GetCellData())
+      : static_cast<vtkDataSetAttributes*>(piece->GetPointData());
     vtkDataArray* opacity = fields->GetArray(extinctionArray);
     const int components = opacity ? opacity->GetNumberOfComponents() : 0;
     if (components > 0 && extinctionComponent >= components)
@@ -283,8 +288,11 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
         this->WarnedCellColorArray = true;
         vtkWarningMacro("Use Separate Opacity Array: the colouring array '"
           << (colorArrayName ? colorArrayName : "") << "' is a cell array; Accurate Volume "
-          << "takes a separate colour from a point array only, so the colour map is applied to "
-          << "the opacity array '" << extinctionArray << "'.");
+          << "takes a separate colour from a point array only, so the colour comes from "
+          << (colorField.empty() ? "the colour map applied to the opacity array '" +
+                  std::string(extinctionArray) + "'"
+                                 : "the separate colour array '" + colorField + "'")
+          << ".");
       }
     }
     else

@@ -75,6 +75,10 @@ void vtkPVHighOrderVolumeMapper::PublishEmptyLayer(vtkRenderer* ren)
   this->NumberOfSegments = this->NumberOfPieces = this->NumberOfRays = 0;
   this->NumberOfCellRecords = this->NumberOfTransparentCells = 0;
   this->NumberOfSplattedCells = 0;
+  this->NumberOfProjectedTriangles = this->NumberOfProjectedSlabs = 0;
+  vtkImageData* error = this->GetRayCastErrorImage(); // no error estimate for no cells
+  error->SetDimensions(0, 0, 1);
+  error->GetPointData()->Initialize();
   this->LastImageTime = 0.0;
   this->ShadingErrorEstimate = 0.0;
   this->LastRenderAborted = false;
