@@ -28,9 +28,9 @@ class RenderFrame;
 
 /**
  * The most nodes the GPU-compatible refinement may add to the table of a
- * frame whose segments take each table node they cross as a breakpoint to
- * locate and integrate to (RAY_CAST; CPU_ACCURATE on non-tetrahedral cells,
- * ~1 us per node against ~30 ns for a tetrahedron's closed form). Opacity 1
+ * CPU_ACCURATE frame with non-tetrahedral cells, whose segments take each
+ * table node they cross as a breakpoint to locate and integrate to (~1 us per
+ * node against ~30 ns for a tetrahedron's closed form; RAY_CAST: below). Opacity 1
  * at a node is a log singularity of the extinction: GPUOpacityTolerance 1e-8
  * there asks for 10^5 nodes or more (hovRobustness case 22000865: 265,956
  * nodes, a 33x33 frame of 70 quadratic cells took 91 s). The table stops at
@@ -44,8 +44,9 @@ constexpr int QuadratureTableBudget = 16384;
  * by Newton on the exact field, and each sub-piece fitted): hovRobustness case
  * 22002649 (48x48, 74 cells, a magnitude field crossing 9,500 of 16,384
  * nodes per segment) took over 120 s with 16,384 nodes and 40 s with 4,096.
- * RayCastTolerance sets the table's tolerance to at least a tenth of itself,
- * so only GPUOpacityTolerance below ~1e-6 with a sharp table reaches it.
+ * The table's tolerance there is max(GPUOpacityTolerance, RayCastTolerance /
+ * 10): only both set far below their defaults (1e-4, 1e-3), with a sharp
+ * table, reach it.
  */
 constexpr int RayCastTableBudget = 4096;
 

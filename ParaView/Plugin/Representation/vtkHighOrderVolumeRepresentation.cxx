@@ -182,13 +182,15 @@ int vtkHighOrderVolumeRepresentation::ProcessViewRequest(
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
-    this->UpdateMapperParameters();
-    this->Actor->SetEnableLOD(inInfo->Has(vtkPVRenderView::USE_LOD()) ? 1 : 0);
     vtkAlgorithmOutput* producerPort = vtkPVRenderView::GetPieceProducer(inInfo, this);
     vtkAlgorithmOutput* producerPortLOD = vtkPVRenderView::GetPieceProducerLOD(inInfo, this);
     auto* piece = producerPort
       ? vtkUnstructuredGridBase::SafeDownCast(producerPort->GetProducer()->GetOutputDataObject(0))
       : nullptr;
+    this->RenderedPiece = piece; // the piece delivered for this frame (read by the next call)
+    this->UpdateMapperParameters();
+    this->RenderedPiece = nullptr;
+    this->Actor->SetEnableLOD(inInfo->Has(vtkPVRenderView::USE_LOD()) ? 1 : 0);
     if (piece)
     {
       this->Mapper->SetInputConnection(producerPort);
@@ -266,11 +268,10 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
     extinctionComponent = this->OpacityArrayComponent;
     // ParaView's OpacityComponent counts the magnitude as the component after
     // the last: the mapper's MAGNITUDE (component 0 of a one-component array).
-    // The piece this rank renders (after ParaView's redistribution), else its own.
-    vtkDataSet* rendered = this->Mapper->GetInput();
-    vtkDataSet* piece = rendered && rendered->GetNumberOfCells() > 0
-      ? rendered
-      : static_cast<vtkDataSet*>(this->NativePiece);
+    // The piece this rank renders (delivered after ParaView's redistribution),
+    // else its own.
+    vtkDataSet* piece = this->RenderedPiece ? this->RenderedPiece
+                                            : static_cast<vtkDataSet*>(this->NativePiece);
     vtkDataSetAttributes* fields = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
       ? static_cast<vtkDataSetAttributes*>(piece->GetCellData())
       : static_cast<vtkDataSetAttributes*>(piece->GetPointData());

@@ -170,6 +170,8 @@ private:
   std::string SeparateColorArray;
   int SeparateColorArrayComponent = -1;
   double ColorSamplingTolerance = 1e-4;
+  /// The piece delivered for the frame being prepared (REQUEST_RENDER), or null.
+  vtkDataSet* RenderedPiece = nullptr;
   bool WarnedMapScalars = false;
   bool WarnedCellColorArray = false;
   vtkMTimeType ReportedPieceTime = 0;
