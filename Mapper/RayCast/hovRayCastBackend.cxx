@@ -1,6 +1,7 @@
 #include "hovRayCastBackend.h"
 
 #include "hovBlendCheck.h"   // BlendSettingsOf
+#include "hovCellSetup.h"    // ShortScalars
 #include "hovFloatImage.h"   // the error image
 #include "hovReducedImage.h" // interactive frames
 #include "hovViewRays.h"     // pixel rays
@@ -76,17 +77,12 @@ int hov::RayCastBackend::Trace(RenderFrame& frame)
     this->Valid = false;
     return 0;
   }
-  const vtkIdType needed =
-    frame.Scalars.CellScalars ? grid->GetNumberOfCells() : grid->GetNumberOfPoints();
-  if (frame.Scalars.Array->GetNumberOfTuples() < needed)
+  // As CPU_ACCURATE (the same check and message): an error, not a skip.
+  const std::string shortArray =
+    CellSetup::ShortScalars(grid, frame.Scalars.Array, frame.Scalars.CellScalars);
+  if (!shortArray.empty())
   {
-    // As CPU_ACCURATE (hov::CellSetup::ReadInput): an error, not a skip.
-    const char* name = frame.Scalars.Array->GetName();
-    std::ostringstream text;
-    text << "Cannot render: scalar array '" << (name ? name : "") << "' has "
-         << frame.Scalars.Array->GetNumberOfTuples() << " tuples for " << needed
-         << (frame.Scalars.CellScalars ? " cells." : " points.");
-    frame.Error(text.str());
+    frame.Error("Cannot render: " + shortArray + ".");
     this->Valid = false;
     return 0;
   }

@@ -123,20 +123,31 @@ Status PrepareTetra(vtkIdList* ids, vtkIdType cellId, const std::vector<glm::dve
 }
 }
 
+std::string hov::CellSetup::ShortScalars(
+  vtkDataSet* grid, vtkDataArray* scalars, bool cellScalars)
+{
+  const vtkIdType needed = cellScalars ? grid->GetNumberOfCells() : grid->GetNumberOfPoints();
+  if (scalars->GetNumberOfTuples() >= needed)
+  {
+    return std::string();
+  }
+  return std::string("scalar array '") + (scalars->GetName() ? scalars->GetName() : "") +
+    "' has " + std::to_string(scalars->GetNumberOfTuples()) + " tuples for " +
+    std::to_string(needed) + (cellScalars ? " cells" : " points");
+}
+
 bool hov::CellSetup::ReadInput(vtkUnstructuredGridBase* grid, vtkDataArray* scalars,
   bool cellScalars, int component, std::vector<double>& values, std::string* error)
 {
-  const vtkIdType numCells = grid->GetNumberOfCells();
   const vtkIdType numPoints = grid->GetNumberOfPoints();
   // One scalar per point (or per cell): component or magnitude.
-  const vtkIdType numValues = cellScalars ? numCells : numPoints;
-  if (scalars->GetNumberOfTuples() < numValues)
+  const vtkIdType numValues = cellScalars ? grid->GetNumberOfCells() : numPoints;
+  const std::string shortArray = ShortScalars(grid, scalars, cellScalars);
+  if (!shortArray.empty())
   {
     if (error)
     {
-      *error = std::string("scalar array '") + (scalars->GetName() ? scalars->GetName() : "") +
-        "' has " + std::to_string(scalars->GetNumberOfTuples()) + " tuples for " +
-        std::to_string(numValues) + (cellScalars ? " cells" : " points");
+      *error = shortArray;
     }
     return false;
   }

@@ -124,6 +124,11 @@ public:
   const std::vector<glm::dvec3>& GetPoints() const { return this->Points; }
   const Statistics& GetStatistics() const { return this->Stats; }
 
+  /// Why @p scalars cannot give one value per point (per cell if
+  /// @p cellScalars) of @p grid: "scalar array 'name' has T tuples for N
+  /// points"; empty if it has enough tuples. Every render mode's check.
+  static std::string ShortScalars(vtkDataSet* grid, vtkDataArray* scalars, bool cellScalars);
+
 private:
   /// The scalar per point (or cell) into @p values and the points; false (and
   /// @p error) if the array is too short.
