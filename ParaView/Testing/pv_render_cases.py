@@ -8,7 +8,9 @@ case: {"name", "data", "array", "association" ("POINTS"/"CELLS"), "color": [[x, 
        "view_up", "view_angle"}, "properties": {representation property: value},
        "frames": number of renders (timing; default 1), "keep_transfer_functions": colour by
        the array with its colour map and opacity function as they are (no ColorBy, which
-       rescales the map), as a script switching back to an array does}
+       rescales the map), as a script switching back to an array does, "interactive_lod":
+       after the still frames, one interactive frame with the view's LOD threshold at 0 (the
+       surface ParaView draws while a large dataset is rotated), saved as <name>_lod.png}
 
 For each case it writes <out>/<name>.png (the screenshot, 8-bit RGB over black),
 <out>/<name>.vti (the mapper's float image of the last frame) and one entry of
@@ -26,6 +28,8 @@ from paraview import servermanager
 from paraview.simple import (ColorBy, GetColorTransferFunction, GetOpacityTransferFunction,
                              Hide, LoadPlugin, Render, SaveScreenshot, Show,
                              XMLUnstructuredGridReader, CreateView, Delete)
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
 INFO = ["WitnessViolations", "RenderedCells", "SkippedCells", "TransparentCells", "PieceCells",
         "PieceCellTypes",
@@ -55,6 +59,26 @@ def setup_transfer_functions(case):
     pwf.Points = [v for x, a in case["opacity"] for v in (x, a, 0.5, 0.0)]
     pwf.ScalarRangeInitialized = 1
     return lut, pwf
+
+
+def save_interactive_lod(view, out, case):
+    """One interactive frame drawn with the LOD (threshold 0), read back as <name>_lod.png."""
+    threshold = view.LODThreshold
+    view.LODThreshold = 0.0
+    view.SMProxy.InteractiveRender()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()
+    grab.SetInputBufferTypeToRGB()
+    grab.Update()
+    path = os.path.join(out, case["name"] + "_lod.png")
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+    view.LODThreshold = threshold
+    return path
 
 
 def render_case(case, view, readers, out, size):
@@ -97,11 +121,13 @@ def render_case(case, view, readers, out, size):
         times.append(time.perf_counter() - start)
     png = os.path.join(out, case["name"] + ".png")
     SaveScreenshot(png, view, ImageResolution=size, TransparentBackground=0)
+    lod_png = save_interactive_lod(view, out, case) if case.get("interactive_lod") else None
     camera = view.GetActiveCamera()
     result = {
         "name": case["name"],
         "png": png,
         "vti": os.path.join(out, case["name"] + ".vti"),
+        "lod_png": lod_png,
         "frame_seconds": times,
         "camera": {
             "position": list(camera.GetPosition()),

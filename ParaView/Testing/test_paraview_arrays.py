@@ -14,6 +14,9 @@ images (.vti) are compared with each other.
    z component (2). The first two must agree to 1e-4 (the stored magnitude is rounded to
    float); the z component must differ. (Magnitude used to reach the mapper as component 3,
    clamped to the last component: the z image.)
+3. The LOD surface ParaView draws during interaction above the view's LOD threshold (set to
+   0 here): coloured by von_mises through the colour map, not the plain white surface it
+   used to be.
 """
 import os
 
@@ -31,6 +34,34 @@ def displacement_nodes():
     color = [[f * hi, r, g, b] for f, r, g, b in hpt.COLOR_NODES]
     opacity = [[f * hi, a] for f, a in hpt.OPACITY_NODES]
     return color, opacity
+
+
+def check_lod(failures, result):
+    """The interactive LOD frame is a surface coloured through the case's colour map: each
+    pixel's colour, scaled to its largest channel (shading scales it), lies near a colour of
+    the map, so scaled."""
+    lod = hpt.read_png_rgb(result["lod_png"]) / 255.0
+    still = hpt.read_png_rgb(result["png"]) / 255.0
+    drawn = lod.max(axis=2) > 10.0 / 255.0
+    hpt.check(failures, int(drawn.sum()) > 1000, "LOD frame: %d pixels drawn" % int(drawn.sum()))
+    hpt.check(failures, float(np.abs(lod - still).mean()) > 5.0 / 255.0,
+              "LOD frame differs from the still volume frame (mean %.1f/255)"
+              % (255.0 * float(np.abs(lod - still).mean())))
+    nodes = np.array(hpt.COLOR_NODES)
+    t = np.linspace(0.0, 1.0, 256)
+    cmap = np.stack([np.interp(t, nodes[:, 0], nodes[:, k]) for k in (1, 2, 3)], axis=1)
+    cmap /= cmap.max(axis=1, keepdims=True)
+    pixels = lod[drawn]
+    pixels = pixels / np.maximum(pixels.max(axis=1, keepdims=True), 1e-6)
+    distance = np.sqrt(((pixels[:, None, :] - cmap[None]) ** 2).sum(axis=2)).min(axis=1)
+    on_map = float((distance < 0.1).mean()) if pixels.size else 0.0
+    hpt.check(failures, on_map > 0.9,
+              "LOD frame coloured through the colour map: %.1f%% of its pixels (> 90%%)"
+              % (100.0 * on_map))
+    blue = float((pixels.argmax(axis=1) == 2).mean()) if pixels.size else 0.0
+    hpt.check(failures, blue > 0.2,
+              "LOD frame shows the map's low (blue) end: %.1f%% of its pixels (> 20%%)"
+              % (100.0 * blue))
 
 
 def main():
@@ -55,11 +86,13 @@ def main():
             "VolumeOpacityComponent": component})
         case["opacity"] = opacity
         cases.append(case)
+    cases.append(hpt.make_case(args, "bracket", 0, tag="lod", interactive_lod=True))
     out = os.path.join(args.temp, "paraview_arrays")
     results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
     hpt.check(failures, not hpt.has_errors(stderr),
               "pvbatch ran without errors (%.1f s)" % results["seconds"])
     images = {res["name"]: hpt.read_vti_rgba(res["vti"]) for res in results["cases"]}
+    check_lod(failures, next(res for res in results["cases"] if res["name"] == "lod"))
     for name, img in images.items():
         hpt.check(failures, int((img[..., 3] > 1e-3).sum()) > 1000,
                   "%s: the image is not empty" % name)

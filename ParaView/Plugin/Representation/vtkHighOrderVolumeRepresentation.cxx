@@ -312,6 +312,7 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
   this->Mapper->SetVectorComponent(std::max(extinctionComponent, 0));
   this->Mapper->SetColorArrayName(colorField.empty() ? nullptr : colorField.c_str());
   this->Mapper->SetColorArrayComponent(colorComponent);
+  this->UpdateLODMapper(colorArrayName, colorAssociation);
   // ParaView sets the functions of component 0 only: the mapper uses those.
   this->Property->SetIndependentComponents(false);
   if (!this->MapScalars && !this->WarnedMapScalars)
@@ -321,6 +322,22 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
                     "function; 'Map Scalars' off is ignored.");
   }
   this->Actor->SetMapper(this->Mapper);
+}
+
+void vtkHighOrderVolumeRepresentation::UpdateLODMapper(const char* arrayName, int association)
+{
+  // The surface drawn while interacting above the view's LOD threshold:
+  // coloured by the colouring array through ParaView's colour map (its
+  // range and vector mode), as ParaView's surfaces are.
+  const bool colored = arrayName && arrayName[0] && this->ColorMap;
+  this->LODMapper->SetScalarVisibility(colored ? 1 : 0);
+  this->LODMapper->SelectColorArray(colored ? arrayName : nullptr);
+  this->LODMapper->SetScalarMode(association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA
+      : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
+  this->LODMapper->SetLookupTable(this->ColorMap);
+  this->LODMapper->SetUseLookupTableScalarRange(1);
+  this->LODMapper->SetInterpolateScalarsBeforeMapping(1);
 }
 
 // ---- forwarded settings ------------------------------------------------------

@@ -154,6 +154,8 @@ private:
   void UpdateColorFunction();
   /// The mapper's colour sampling tolerance: ColorSamplingTolerance, at least 1e-3 in OPENGL_PROJECTION.
   void ApplyColorSamplingTolerance();
+  /// The LOD surface mapper coloured like ParaView's surfaces: @p arrayName through the colour map.
+  void UpdateLODMapper(const char* arrayName, int association);
   /// Warn once per piece about an empty piece (MPI) or a missing colouring array.
   void ReportPiece(vtkDataSet* piece);
   /// The colouring array's name ("" for none).
