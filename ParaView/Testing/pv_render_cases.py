@@ -10,7 +10,9 @@ case: {"name", "data", "array", "association" ("POINTS"/"CELLS"), "color": [[x, 
        the array with its colour map and opacity function as they are (no ColorBy, which
        rescales the map), as a script switching back to an array does, "interactive_lod":
        after the still frames, one interactive frame with the view's LOD threshold at 0 (the
-       surface ParaView draws while a large dataset is rotated), saved as <name>_lod.png}
+       surface ParaView draws while a large dataset is rotated), saved as <name>_lod.png,
+       "blocks": [x, y, z]: render a multiblock dataset instead, blocks "BlockA" (the data)
+       and "BlockB" (the data moved by [x, y, z]); select with properties.BlockSelectors}
 
 For each case it writes <out>/<name>.png (the screenshot, 8-bit RGB over black),
 <out>/<name>.vti (the mapper's float image of the last frame) and one entry of
@@ -26,8 +28,8 @@ import time
 
 from paraview import servermanager
 from paraview.simple import (ColorBy, GetColorTransferFunction, GetOpacityTransferFunction,
-                             Hide, LoadPlugin, Render, SaveScreenshot, Show,
-                             XMLUnstructuredGridReader, CreateView, Delete)
+                             GroupDatasets, Hide, LoadPlugin, Render, SaveScreenshot, Show,
+                             Transform, XMLUnstructuredGridReader, CreateView, Delete)
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
@@ -88,6 +90,15 @@ def render_case(case, view, readers, out, size):
     if data not in readers:
         readers[data] = XMLUnstructuredGridReader(FileName=[data])
     reader = readers[data]
+    if case.get("blocks"):
+        key = (data, tuple(case["blocks"]))
+        if key not in readers:
+            # Block names are the inputs' registration names.
+            first = Transform(registrationName="BlockA", Input=reader)
+            second = Transform(registrationName="BlockB", Input=reader)
+            second.Transform.Translate = case["blocks"]
+            readers[key] = GroupDatasets(Input=[first, second])
+        reader = readers[key]
     disp = Show(reader, view)
     disp.Representation = case.get("representation", "Accurate Volume")
     if case.get("association", "POINTS") == "NONE":

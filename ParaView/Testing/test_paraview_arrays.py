@@ -1,6 +1,7 @@
-"""hov.ParaView.Arrays: switching the colouring array, and ParaView's separate opacity array,
-through "Accurate Volume" (pvbatch, one rank, CPU accurate, the bracket). The plugin's float
-images (.vti) are compared with each other.
+"""hov.ParaView.Arrays: what "Accurate Volume" takes from ParaView's display: the colouring
+array (switched), the separate opacity array, the selected blocks, the LOD surface (pvbatch,
+one rank, CPU accurate, the bracket). The plugin's float images (.vti) are compared with each
+other.
 
 1. Colour maps kept per array. von_mises with ParaView's default map (discretized: the
    representation renders a continuous copy of it), then displacement_magnitude with its own
@@ -14,7 +15,11 @@ images (.vti) are compared with each other.
    z component (2). The first two must agree to 1e-4 (the stored magnitude is rounded to
    float); the z component must differ. (Magnitude used to reach the mapper as component 3,
    clamped to the last component: the z image.)
-3. The LOD surface ParaView draws during interaction above the view's LOD threshold (set to
+3. Blocks of a multiblock input selected with ParaView's BlockSelectors ("Blocks"): block A
+   alone must equal the dataset alone, both must add up, none must draw nothing with a
+   warning (the selection used to be ignored: every block was drawn).
+4. 'Multi Components Mapping' on: a warning that it is ignored.
+5. The LOD surface ParaView draws during interaction above the view's LOD threshold (set to
    0 here): coloured by von_mises through the colour map, not the plain white surface it
    used to be.
 """
@@ -26,6 +31,7 @@ import hov_pv_testing as hpt
 
 SIZE = (120, 120)
 DISPLACEMENT_MAX = 0.23003099314586073
+BLOCK_SHIFT = [130.0, 0.0, 0.0]  # block B beside block A (the bracket is 100 wide in x)
 
 
 def displacement_nodes():
@@ -34,6 +40,44 @@ def displacement_nodes():
     color = [[f * hi, r, g, b] for f, r, g, b in hpt.COLOR_NODES]
     opacity = [[f * hi, a] for f, a in hpt.OPACITY_NODES]
     return color, opacity
+
+
+def block_cases(args):
+    """The bracket alone and as block A of a multiblock whose block B is the bracket moved
+    past it, with block selections; one camera framing both."""
+    camera = hpt.camera_for("bracket", zoom=0.5)
+    for key in ("position", "focal_point"):
+        camera[key] = [camera[key][0] + BLOCK_SHIFT[0] / 2] + camera[key][1:]
+    cases = [hpt.make_case(args, "bracket", 0, tag="single", camera=camera,
+                           properties={"VolumeUseSeparateOpacityArray": 0})]
+    for tag, selectors in (("blocks_all", ["/"]), ("blocks_a", ["/Root/BlockA"]),
+                           ("blocks_b", ["/Root/BlockB"]), ("blocks_none", [])):
+        cases.append(hpt.make_case(args, "bracket", 0, tag=tag, camera=camera,
+                                   blocks=BLOCK_SHIFT,
+                                   properties={"BlockSelectors": selectors}))
+    return cases
+
+
+def check_blocks(failures, images, screenshots, messages):
+    """Block A alone is the bracket alone; B is elsewhere; both are more than either;
+    no block selected draws nothing and says so."""
+    def max_diff(a, b):
+        return float(np.abs(images[a] - images[b]).max())
+    hpt.check(failures, max_diff("blocks_a", "single") <= 1e-6,
+              "block A selected: the bracket alone (max %.2e <= 1e-6)"
+              % max_diff("blocks_a", "single"))
+    for a, b in (("blocks_b", "single"), ("blocks_all", "blocks_a"), ("blocks_all", "blocks_b")):
+        hpt.check(failures, max_diff(a, b) > 1e-2, "%s differs from %s (max %.2f)"
+                  % (a, b, max_diff(a, b)))
+    drawn = {name: float(images[name][..., 3].sum()) for name in images}
+    hpt.check(failures, abs(drawn["blocks_all"] - drawn["blocks_a"] - drawn["blocks_b"])
+              < 0.02 * drawn["blocks_all"],
+              "both blocks: their opacities add up (%.1f vs %.1f + %.1f; they do not overlap)"
+              % (drawn["blocks_all"], drawn["blocks_a"], drawn["blocks_b"]))
+    hpt.check(failures, float(screenshots["blocks_none"].max()) == 0.0 and
+              float(screenshots["blocks_all"].max()) > 0.0 and
+              "selected blocks" in messages.get("blocks_none", ""),
+              "no block selected: a black screenshot and a warning")
 
 
 def check_lod(failures, result):
@@ -86,12 +130,22 @@ def main():
             "VolumeOpacityComponent": component})
         case["opacity"] = opacity
         cases.append(case)
-    cases.append(hpt.make_case(args, "bracket", 0, tag="lod", interactive_lod=True))
+    # The bracket's display keeps the properties set above: the separate opacity array off.
+    plain = {"VolumeUseSeparateOpacityArray": 0}
+    cases.append(hpt.make_case(args, "bracket", 0, tag="lod", interactive_lod=True,
+                               properties=plain))
+    cases += block_cases(args)
+    cases.append(hpt.make_case(args, "bracket", 0, tag="multi_components", properties=dict(
+        plain, MultiComponentsMapping=1)))
     out = os.path.join(args.temp, "paraview_arrays")
     results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
     hpt.check(failures, not hpt.has_errors(stderr),
               "pvbatch ran without errors (%.1f s)" % results["seconds"])
-    images = {res["name"]: hpt.read_vti_rgba(res["vti"]) for res in results["cases"]}
+    # No block selected: ParaView does not call the mapper, so no float image (the
+    # screenshot is checked instead).
+    images = {res["name"]: hpt.read_vti_rgba(res["vti"]) for res in results["cases"]
+              if res["name"] != "blocks_none"}
+    screenshots = {res["name"]: hpt.read_png_rgb(res["png"]) for res in results["cases"]}
     check_lod(failures, next(res for res in results["cases"] if res["name"] == "lod"))
     for name, img in images.items():
         hpt.check(failures, int((img[..., 3] > 1e-3).sum()) > 1000,
@@ -115,6 +169,10 @@ def main():
         d = max_diff(a, b)
         hpt.check(failures, d <= bound if agree else d > bound,
                   "%s: max %.2e (%s %.0e)" % (what, d, "<=" if agree else ">", bound))
+    messages = hpt.messages_by_case(stderr)
+    check_blocks(failures, images, screenshots, messages)
+    hpt.check(failures, "'Multi Components Mapping' is ignored" in messages["multi_components"],
+              "Multi Components Mapping: a warning that it is ignored")
     hpt.finish(failures)
 
 

@@ -1,13 +1,11 @@
 #include "vtkHighOrderVolumeRepresentation.h"
 
+#include "hovParaViewNativePiece.h"     // the grid handed to the view
 #include "hovParaViewStartup.h"         // threaded SMP backend, version check
 #include "vtkPVHighOrderVolumeMapper.h" // the mapper
 
 #include "vtkAlgorithmOutput.h"          // piece producers
-#include "vtkAppendFilter.h"             // composite inputs: leaves merged, cells kept
 #include "vtkColorTransferFunction.h"    // the colour map's vector mode
-#include "vtkCompositeDataIterator.h"    // composite inputs
-#include "vtkCompositeDataSet.h"         // composite inputs
 #include "vtkCellData.h"                 // the separate opacity array
 #include "vtkDataArray.h"                // its components
 #include "vtkDiscretizableColorTransferFunction.h" // ParaView's colour maps
@@ -88,46 +86,30 @@ void vtkHighOrderVolumeRepresentation::UpdateColorFunction()
 
 vtkHighOrderVolumeRepresentation::~vtkHighOrderVolumeRepresentation() = default;
 
+void vtkHighOrderVolumeRepresentation::SetActiveAssembly(const char* name)
+{
+  this->Assembly = name ? name : "";
+  this->Superclass::SetActiveAssembly(name);
+}
+
+void vtkHighOrderVolumeRepresentation::AddBlockSelector(const char* selector)
+{
+  if (selector)
+  {
+    this->BlockSelectors.emplace_back(selector);
+  }
+  this->Superclass::AddBlockSelector(selector);
+}
+
+void vtkHighOrderVolumeRepresentation::RemoveAllBlockSelectors()
+{
+  this->BlockSelectors.clear();
+  this->Superclass::RemoveAllBlockSelectors();
+}
+
 vtkPVHighOrderVolumeMapper* vtkHighOrderVolumeRepresentation::GetHighOrderMapper()
 {
   return this->Mapper;
-}
-
-void vtkHighOrderVolumeRepresentation::PrepareNativePiece(vtkDataObject* input)
-{
-  vtkNew<vtkUnstructuredGrid> piece;
-  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(input))
-  {
-    piece->ShallowCopy(grid);
-  }
-  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkNew<vtkAppendFilter> append;
-    append->MergePointsOff();
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      if (auto* leaf = vtkUnstructuredGrid::SafeDownCast(it->GetCurrentDataObject()))
-      {
-        append->AddInputData(leaf);
-      }
-    }
-    if (append->GetNumberOfInputConnections(0) > 0)
-    {
-      append->Update();
-      piece->ShallowCopy(append->GetOutput());
-    }
-  }
-  else if (auto* dataset = vtkDataSet::SafeDownCast(input))
-  {
-    // Another vtkUnstructuredGridBase: copied cell by cell, types unchanged.
-    vtkNew<vtkAppendFilter> append;
-    append->AddInputData(dataset);
-    append->Update();
-    piece->ShallowCopy(append->GetOutput());
-  }
-  this->NativePiece = piece;
 }
 
 int vtkHighOrderVolumeRepresentation::RequestData(
@@ -138,7 +120,14 @@ int vtkHighOrderVolumeRepresentation::RequestData(
     ? vtkDataObject::GetData(inputVector[0], 0)
     : nullptr;
   // Not the superclass's Preprocessor: it would tetrahedralise.
-  this->PrepareNativePiece(input);
+  bool selectedNothing = false;
+  this->NativePiece =
+    hov::NativePiece(input, this->BlockSelectors, this->Assembly, selectedNothing);
+  if (selectedNothing)
+  {
+    vtkWarningMacro("Accurate Volume: the selected blocks (" << this->BlockSelectors.size()
+      << " selectors) hold no unstructured cells of this piece; nothing is drawn.");
+  }
   if (this->NativePiece->GetNumberOfCells() > 0)
   {
     this->NativePiece->GetBounds(this->DataBounds);
@@ -315,11 +304,13 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
   this->UpdateLODMapper(colorArrayName, colorAssociation);
   // ParaView sets the functions of component 0 only: the mapper uses those.
   this->Property->SetIndependentComponents(false);
-  if (!this->MapScalars && !this->WarnedMapScalars)
+  if ((!this->MapScalars || this->MultiComponentsMapping) && !this->WarnedMapScalars)
   {
     this->WarnedMapScalars = true;
-    vtkWarningMacro("Accurate Volume always maps scalars through the colour map and opacity "
-                    "function; 'Map Scalars' off is ignored.");
+    vtkWarningMacro("Accurate Volume always maps one scalar through the colour map and opacity "
+                    "function; "
+      << (this->MapScalars ? "'Multi Components Mapping'" : "'Map Scalars' off")
+      << " is ignored.");
   }
   this->Actor->SetMapper(this->Mapper);
 }

@@ -13,8 +13,8 @@
  * Native cells: ParaView's volume representation runs every input through
  * vtkVolumeRepresentationPreprocessor, which always tetrahedralises
  * (vtkDataSetTriangleFilter). This representation hands the view the input
- * grid itself instead (composite inputs: their unstructured blocks merged,
- * cells unchanged), so linear, quadratic, mixed and Lagrange cells reach the
+ * grid itself instead (composite inputs: the unstructured grids of the
+ * blocks selected by ParaView's "Blocks" property appended, cells unchanged), so linear, quadratic, mixed and Lagrange cells reach the
  * mapper as stored, also after ParaView's kd-tree redistribution on many
  * ranks (whole cells move; boundary cells are uniquely assigned).
  *
@@ -53,7 +53,8 @@
 #include "vtkSmartPointer.h" // For the native piece
 #include "vtkWeakPointer.h"  // For the colour map copied
 
-#include <string> // For SeparateColorArray
+#include <string> // For SeparateColorArray, the block selectors
+#include <vector> // For the block selectors
 
 class vtkColorTransferFunction;
 class vtkDataSet;
@@ -104,6 +105,18 @@ public:
   void SetIsosurfaceArrayComponent(int component);
   ///@}
 
+  ///@{
+  /**
+   * ParaView's block selection of composite inputs ("Blocks", the Assembly):
+   * the selected blocks' unstructured grids are rendered, as ParaView's
+   * "Volume" does (these hide the superclass's, whose preprocessor is not
+   * used here; they also forward to it).
+   */
+  void SetActiveAssembly(const char* name);
+  void AddBlockSelector(const char* selector);
+  void RemoveAllBlockSelectors();
+  ///@}
+
   /// The colour map (ParaView's LookupTable); the volume uses its continuous form (see above).
   void SetColor(vtkColorTransferFunction* lut);
 
@@ -147,9 +160,6 @@ private:
   vtkHighOrderVolumeRepresentation(const vtkHighOrderVolumeRepresentation&) = delete;
   void operator=(const vtkHighOrderVolumeRepresentation&) = delete;
 
-  /// The piece's unstructured grid with its cells as stored (no tetrahedralisation).
-  void PrepareNativePiece(vtkDataObject* input);
-
   /// The volume property's colour function: @p lut, or its continuous copy.
   void UpdateColorFunction();
   /// The mapper's colour sampling tolerance: ColorSamplingTolerance, at least 1e-3 in OPENGL_PROJECTION.
@@ -170,6 +180,8 @@ private:
   vtkMTimeType ContinuousColorMapTime = 0;
   vtkSmartPointer<vtkUnstructuredGrid> NativePiece;
   std::string SeparateColorArray;
+  std::string Assembly; ///< empty: the extractor's default (the hierarchy)
+  std::vector<std::string> BlockSelectors;
   int SeparateColorArrayComponent = -1;
   double ColorSamplingTolerance = 1e-4;
   /// The piece delivered for the frame being prepared (REQUEST_RENDER), or null.
