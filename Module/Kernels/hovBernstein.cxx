@@ -325,6 +325,39 @@ BernsteinPolynomial BernsteinFromMonomial(const Polynomial& p, int minDegree)
   return b;
 }
 
+namespace
+{
+/// The cosines of ApproximateBernstein's Chebyshev interpolants of degree m
+/// <= 8, each computed once by the expression the interpolant used to
+/// evaluate per call (so the values are the same): Node[m][i] =
+/// cos(pi i / m), Term[m][i][k] = cos(pi i k / m).
+struct ChebyshevCosines
+{
+  double Node[9][9] = {};
+  double Term[9][9][9] = {};
+  ChebyshevCosines()
+  {
+    for (int m = 1; m <= 8; ++m)
+    {
+      for (int i = 0; i <= m; ++i)
+      {
+        this->Node[m][i] = std::cos(Pi * i / m);
+        for (int k = 0; k <= m; ++k)
+        {
+          this->Term[m][i][k] = std::cos(Pi * i * k / m);
+        }
+      }
+    }
+  }
+};
+
+const ChebyshevCosines& Cosines()
+{
+  static const ChebyshevCosines cosines; // thread-safe initialisation
+  return cosines;
+}
+}
+
 Polynomial ApproximateBernstein(const BernsteinPolynomial& b, int maxDegree, double& errorBound)
 {
   const int n = ClampDegree(b.Degree);
@@ -348,17 +381,18 @@ Polynomial ApproximateBernstein(const BernsteinPolynomial& b, int maxDegree, dou
   else
   {
     // Chebyshev interpolant at the m + 1 extreme points x_i = cos(pi i / m).
+    const ChebyshevCosines& cosines = Cosines();
     double f[9], c[9];
     for (int i = 0; i <= m; ++i)
     {
-      f[i] = EvaluateBernstein(b, 0.5 * (1.0 + std::cos(Pi * i / m)));
+      f[i] = EvaluateBernstein(b, 0.5 * (1.0 + cosines.Node[m][i]));
     }
     for (int k = 0; k <= m; ++k)
     {
       double s = 0.0;
       for (int i = 0; i <= m; ++i)
       {
-        s += ((i == 0 || i == m) ? 0.5 : 1.0) * f[i] * std::cos(Pi * i * k / m);
+        s += ((i == 0 || i == m) ? 0.5 : 1.0) * f[i] * cosines.Term[m][i][k];
       }
       c[k] = ((k == 0 || k == m) ? 1.0 : 2.0) * s / m;
     }

@@ -11,8 +11,10 @@ case: {"name", "data", "array", "association" ("POINTS"/"CELLS"), "color": [[x, 
        rescales the map), as a script switching back to an array does, "interactive_lod":
        after the still frames, one interactive frame with the view's LOD threshold at 0 (the
        surface ParaView draws while a large dataset is rotated), saved as <name>_lod.png,
-       "blocks": [x, y, z]: render a multiblock dataset instead, blocks "BlockA" (the data)
-       and "BlockB" (the data moved by [x, y, z]); select with properties.BlockSelectors}
+       "blocks": [x, y, z]: render a composite dataset instead (GroupDatasets, OutputType
+       "group_type", default vtkMultiBlockDataSet), blocks "BlockA" (the data) and "BlockB"
+       (the data moved by [x, y, z]); select with properties.BlockSelectors; "group_type":
+       "ghosts" makes one unstructured grid of both with BlockB's cells marked as ghosts}
 
 For each case it writes <out>/<name>.png (the screenshot, 8-bit RGB over black),
 <out>/<name>.vti (the mapper's float image of the last frame) and one entry of
@@ -27,11 +29,10 @@ import sys
 import time
 
 from paraview import servermanager
-from paraview.simple import (ColorBy, GetColorTransferFunction, GetOpacityTransferFunction,
-                             GroupDatasets, Hide, LoadPlugin, Render, SaveScreenshot, Show,
-                             Transform, XMLUnstructuredGridReader, CreateView, Delete)
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+from paraview.simple import (AppendDatasets, ColorBy, GetColorTransferFunction,
+                             GetOpacityTransferFunction, GroupDatasets, Hide, LoadPlugin,
+                             ProgrammableFilter, Render, SaveScreenshot, Show, Transform,
+                             XMLUnstructuredGridReader, CreateView, Delete)
 
 INFO = ["WitnessViolations", "RenderedCells", "SkippedCells", "TransparentCells", "PieceCells",
         "PieceCellTypes",
@@ -63,23 +64,50 @@ def setup_transfer_functions(case):
     return lut, pwf
 
 
+GHOST_SCRIPT = """
+from vtkmodules.util.numpy_support import numpy_to_vtk
+import numpy as np
+source = self.GetInputDataObject(0, 0)
+grid = self.GetOutputDataObject(0)
+grid.ShallowCopy(source)
+n = source.GetNumberOfCells()
+ghosts = numpy_to_vtk((np.arange(n) >= n // 2).astype(np.uint8), deep=1)
+ghosts.SetName("vtkGhostType")  # 1: a duplicate cell, drawn by its owner
+grid.GetCellData().AddArray(ghosts)
+"""
+
+
+def composite_source(readers, reader, case):
+    """The case's composite source made of @p reader (see "blocks"), made once."""
+    group_type = case.get("group_type", "vtkMultiBlockDataSet")
+    key = (case["data"], tuple(case["blocks"]), group_type)
+    if key not in readers:
+        # Block names are the inputs' registration names.
+        first = Transform(registrationName="BlockA_" + group_type, Input=reader)
+        second = Transform(registrationName="BlockB_" + group_type, Input=reader)
+        second.Transform.Translate = case["blocks"]
+        if group_type == "ghosts":
+            both = AppendDatasets(Input=[first, second])
+            readers[key] = ProgrammableFilter(Input=both, Script=GHOST_SCRIPT)
+        else:
+            readers[key] = GroupDatasets(Input=[first, second], OutputType=group_type,
+                                         BlockNames=["BlockA", "BlockB"])
+    return readers[key]
+
+
 def save_interactive_lod(view, out, case):
-    """One interactive frame drawn with the LOD (threshold 0), read back as <name>_lod.png."""
+    """One interactive frame drawn with the LOD (threshold 0), saved as <name>_lod.png through
+    ParaView's capture of interactive frames."""
     threshold = view.LODThreshold
-    view.LODThreshold = 0.0
-    view.SMProxy.InteractiveRender()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(view.GetRenderWindow())
-    grab.ReadFrontBufferOff()
-    grab.ShouldRerenderOff()
-    grab.SetInputBufferTypeToRGB()
-    grab.Update()
+    interactive = view.UseInteractiveRenderingForScreenshots
     path = os.path.join(out, case["name"] + "_lod.png")
-    writer = vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    view.LODThreshold = threshold
+    try:
+        view.LODThreshold = 0.0
+        view.UseInteractiveRenderingForScreenshots = 1
+        SaveScreenshot(path, view, ImageResolution=list(view.ViewSize), TransparentBackground=0)
+    finally:
+        view.LODThreshold = threshold
+        view.UseInteractiveRenderingForScreenshots = interactive
     return path
 
 
@@ -91,14 +119,7 @@ def render_case(case, view, readers, out, size):
         readers[data] = XMLUnstructuredGridReader(FileName=[data])
     reader = readers[data]
     if case.get("blocks"):
-        key = (data, tuple(case["blocks"]))
-        if key not in readers:
-            # Block names are the inputs' registration names.
-            first = Transform(registrationName="BlockA", Input=reader)
-            second = Transform(registrationName="BlockB", Input=reader)
-            second.Transform.Translate = case["blocks"]
-            readers[key] = GroupDatasets(Input=[first, second])
-        reader = readers[key]
+        reader = composite_source(readers, reader, case)
     disp = Show(reader, view)
     disp.Representation = case.get("representation", "Accurate Volume")
     if case.get("association", "POINTS") == "NONE":

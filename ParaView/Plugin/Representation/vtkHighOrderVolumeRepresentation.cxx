@@ -27,6 +27,7 @@
 
 #include <algorithm> // std::max
 #include <cstring>   // std::strcmp
+#include <utility>   // std::pair
 
 vtkStandardNewMacro(vtkHighOrderVolumeRepresentation);
 
@@ -123,11 +124,21 @@ int vtkHighOrderVolumeRepresentation::RequestData(
   bool selectedNothing = false;
   this->NativePiece =
     hov::NativePiece(input, this->BlockSelectors, this->Assembly, selectedNothing);
-  if (selectedNothing)
+  // Said once per selection, and only on one rank (on several, the selected
+  // blocks may all be on other ranks).
+  std::string selection = this->Assembly;
+  for (const std::string& selector : this->BlockSelectors)
+  {
+    selection += "\n" + selector;
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (selectedNothing && selection != this->WarnedSelection &&
+    (!controller || controller->GetNumberOfProcesses() <= 1))
   {
     vtkWarningMacro("Accurate Volume: the selected blocks (" << this->BlockSelectors.size()
-      << " selectors) hold no unstructured cells of this piece; nothing is drawn.");
+      << " selectors) hold no unstructured cells; nothing is drawn.");
   }
+  this->WarnedSelection = selectedNothing ? selection : std::string("\n(none)");
   if (this->NativePiece->GetNumberOfCells() > 0)
   {
     this->NativePiece->GetBounds(this->DataBounds);
@@ -304,13 +315,19 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
   this->UpdateLODMapper(colorArrayName, colorAssociation);
   // ParaView sets the functions of component 0 only: the mapper uses those.
   this->Property->SetIndependentComponents(false);
-  if ((!this->MapScalars || this->MultiComponentsMapping) && !this->WarnedMapScalars)
+  // Each said once.
+  const std::pair<bool, bool*> ignored[] = { { !this->MapScalars, &this->WarnedMapScalars },
+    { this->MultiComponentsMapping, &this->WarnedMultiComponents } };
+  const char* names[] = { "'Map Scalars' off", "'Multi Components Mapping'" };
+  for (int k = 0; k < 2; ++k)
   {
-    this->WarnedMapScalars = true;
-    vtkWarningMacro("Accurate Volume always maps one scalar through the colour map and opacity "
-                    "function; "
-      << (this->MapScalars ? "'Multi Components Mapping'" : "'Map Scalars' off")
-      << " is ignored.");
+    if (ignored[k].first && !*ignored[k].second)
+    {
+      *ignored[k].second = true;
+      vtkWarningMacro("Accurate Volume always maps one scalar through the colour map and "
+                      "opacity function; "
+        << names[k] << " is ignored.");
+    }
   }
   this->Actor->SetMapper(this->Mapper);
 }
@@ -328,6 +345,7 @@ void vtkHighOrderVolumeRepresentation::UpdateLODMapper(const char* arrayName, in
       : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
   this->LODMapper->SetLookupTable(this->ColorMap);
   this->LODMapper->SetUseLookupTableScalarRange(1);
+  this->LODMapper->SetColorModeToMapScalars(); // also 8-bit arrays, as ParaView's surfaces
   this->LODMapper->SetInterpolateScalarsBeforeMapping(1);
 }
 

@@ -187,6 +187,9 @@ private:
   /// The piece delivered for the frame being prepared (REQUEST_RENDER), or null.
   vtkDataSet* RenderedPiece = nullptr;
   bool WarnedMapScalars = false;
+  bool WarnedMultiComponents = false;
+  /// The block selection last warned as selecting nothing (assembly and selectors).
+  std::string WarnedSelection;
   bool WarnedCellColorArray = false;
   vtkMTimeType ReportedPieceTime = 0;
   std::string ReportedArray = "(none reported)";
