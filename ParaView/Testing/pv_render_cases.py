@@ -14,7 +14,9 @@ case: {"name", "data", "array", "association" ("POINTS"/"CELLS"), "color": [[x, 
        "blocks": [x, y, z]: render a composite dataset instead (GroupDatasets, OutputType
        "group_type", default vtkMultiBlockDataSet), blocks "BlockA" (the data) and "BlockB"
        (the data moved by [x, y, z]); select with properties.BlockSelectors; "group_type":
-       "ghosts" makes one unstructured grid of both with BlockB's cells marked as ghosts}
+       "ghosts" makes one unstructured grid of both with BlockB's cells marked as ghosts,
+       "calculator": {"function", "type"}: render the data with the point array "array"
+       computed by ParaView's Calculator (ResultArrayType "type", e.g. "Unsigned Char")}
 
 For each case it writes <out>/<name>.png (the screenshot, 8-bit RGB over black),
 <out>/<name>.vti (the mapper's float image of the last frame) and one entry of
@@ -29,7 +31,7 @@ import sys
 import time
 
 from paraview import servermanager
-from paraview.simple import (AppendDatasets, ColorBy, GetColorTransferFunction,
+from paraview.simple import (AppendDatasets, Calculator, ColorBy, GetColorTransferFunction,
                              GetOpacityTransferFunction, GroupDatasets, Hide, LoadPlugin,
                              ProgrammableFilter, Render, SaveScreenshot, Show, Transform,
                              XMLUnstructuredGridReader, CreateView, Delete)
@@ -120,6 +122,13 @@ def render_case(case, view, readers, out, size):
     reader = readers[data]
     if case.get("blocks"):
         reader = composite_source(readers, reader, case)
+    if case.get("calculator"):
+        calc = case["calculator"]
+        key = (data, case["array"], calc["function"], calc["type"])
+        if key not in readers:
+            readers[key] = Calculator(Input=reader, ResultArrayName=case["array"],
+                                      Function=calc["function"], ResultArrayType=calc["type"])
+        reader = readers[key]
     disp = Show(reader, view)
     disp.Representation = case.get("representation", "Accurate Volume")
     if case.get("association", "POINTS") == "NONE":

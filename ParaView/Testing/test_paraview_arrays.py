@@ -21,10 +21,11 @@ other.
    partitioned dataset collection is the dataset alone too; a partitioned dataset draws
    both partitions (selectors do not address partitions); one grid of both with block B's
    cells marked as ghosts draws block A alone (ghost cells were drawn).
-4. 'Multi Components Mapping' on: a warning that it is ignored.
+4. 'Map Scalars' off, then 'Multi Components Mapping' on, on one display: a warning for each.
 5. The LOD surface ParaView draws during interaction above the view's LOD threshold (set to
    0 here): coloured by von_mises through the colour map, not the plain white surface it
-   used to be.
+   used to be; also by an 8-bit array (von_mises scaled to 0-255), which VTK's default
+   colour mode would show as grey levels.
 """
 import os
 
@@ -43,6 +44,20 @@ def displacement_nodes():
     color = [[f * hi, r, g, b] for f, r, g, b in hpt.COLOR_NODES]
     opacity = [[f * hi, a] for f, a in hpt.OPACITY_NODES]
     return color, opacity
+
+
+def byte_lod_case(args, plain):
+    """The LOD frame coloured by an 8-bit array (von_mises scaled to 0-255 by ParaView's
+    Calculator): mapped through the colour map, not taken as grey levels."""
+    lo, hi = hpt.DATASETS["bracket"]["range"]
+    case = hpt.make_case(args, "bracket", 0, tag="lod_bytes", interactive_lod=True,
+                         properties=dict(plain, MultiComponentsMapping=0))
+    case.update(array="von_mises_bytes", calculator={
+        "function": "255 * (von_mises - %.17g) / %.17g" % (lo, hi - lo),
+        "type": "Unsigned Char"},
+        color=[[f * 255.0, r, g, b] for f, r, g, b in hpt.COLOR_NODES],
+        opacity=[[f * 255.0, a] for f, a in hpt.OPACITY_NODES])
+    return case
 
 
 def block_cases(args):
@@ -89,7 +104,7 @@ def check_blocks(failures, images, screenshots, messages):
               % (drawn["blocks_all"], drawn["blocks_a"], drawn["blocks_b"]))
     hpt.check(failures, float(screenshots["blocks_none"].max()) == 0.0 and
               float(screenshots["blocks_all"].max()) > 0.0 and
-              "selected blocks" in messages.get("blocks_none", ""),
+              "no block is selected" in messages.get("blocks_none", ""),
               "no block selected: a black screenshot and a warning")
 
 
@@ -100,10 +115,12 @@ def check_lod(failures, result):
     lod = hpt.read_png_rgb(result["lod_png"]) / 255.0
     still = hpt.read_png_rgb(result["png"]) / 255.0
     drawn = lod.max(axis=2) > 10.0 / 255.0
-    hpt.check(failures, int(drawn.sum()) > 1000, "LOD frame: %d pixels drawn" % int(drawn.sum()))
+    name = result["name"]
+    hpt.check(failures, int(drawn.sum()) > 1000, "%s: LOD frame, %d pixels drawn"
+              % (name, int(drawn.sum())))
     hpt.check(failures, float(np.abs(lod - still).mean()) > 5.0 / 255.0,
-              "LOD frame differs from the still volume frame (mean %.1f/255)"
-              % (255.0 * float(np.abs(lod - still).mean())))
+              "%s: LOD frame differs from the still volume frame (mean %.1f/255)"
+              % (name, 255.0 * float(np.abs(lod - still).mean())))
     nodes = np.array(hpt.COLOR_NODES)
     t = np.linspace(0.0, 1.0, 256)
     cmap = np.stack([np.interp(t, nodes[:, 0], nodes[:, k]) for k in (1, 2, 3)], axis=1)
@@ -113,12 +130,12 @@ def check_lod(failures, result):
     distance = np.sqrt(((pixels[:, None, :] - cmap[None]) ** 2).sum(axis=2)).min(axis=1)
     on_map = float((distance < 0.1).mean()) if pixels.size else 0.0
     hpt.check(failures, on_map > 0.8,
-              "LOD frame coloured through the colour map: %.1f%% of its pixels (> 80%%)"
-              % (100.0 * on_map))
+              "%s: LOD frame coloured through the colour map: %.1f%% of its pixels (> 80%%)"
+              % (name, 100.0 * on_map))
     blue = float((pixels.argmax(axis=1) == 2).mean()) if pixels.size else 0.0
     hpt.check(failures, blue > 0.2,
-              "LOD frame shows the map's low (blue) end: %.1f%% of its pixels (> 20%%)"
-              % (100.0 * blue))
+              "%s: LOD frame shows the map's low (blue) end: %.1f%% of its pixels (> 20%%)"
+              % (name, 100.0 * blue))
 
 
 def main():
@@ -148,8 +165,12 @@ def main():
     cases.append(hpt.make_case(args, "bracket", 0, tag="lod", interactive_lod=True,
                                properties=plain))
     cases += block_cases(args)
+    # Two ignored settings on one display: each warned once, the second after the first.
+    cases.append(hpt.make_case(args, "bracket", 0, tag="map_scalars_off", properties=dict(
+        plain, MapScalars=0)))
     cases.append(hpt.make_case(args, "bracket", 0, tag="multi_components", properties=dict(
-        plain, MultiComponentsMapping=1)))
+        plain, MapScalars=1, MultiComponentsMapping=1)))
+    cases.append(byte_lod_case(args, plain))
     out = os.path.join(args.temp, "paraview_arrays")
     results, stderr = hpt.run_pvbatch(args, cases, out, SIZE)
     hpt.check(failures, not hpt.has_errors(stderr),
@@ -159,7 +180,8 @@ def main():
     images = {res["name"]: hpt.read_vti_rgba(res["vti"]) for res in results["cases"]
               if res["name"] != "blocks_none"}
     screenshots = {res["name"]: hpt.read_png_rgb(res["png"]) for res in results["cases"]}
-    check_lod(failures, next(res for res in results["cases"] if res["name"] == "lod"))
+    for name in ("lod", "lod_bytes"):
+        check_lod(failures, next(res for res in results["cases"] if res["name"] == name))
     for name, img in images.items():
         hpt.check(failures, int((img[..., 3] > 1e-3).sum()) > 1000,
                   "%s: the image is not empty" % name)
@@ -184,8 +206,10 @@ def main():
                   "%s: max %.2e (%s %.0e)" % (what, d, "<=" if agree else ">", bound))
     messages = hpt.messages_by_case(stderr)
     check_blocks(failures, images, screenshots, messages)
-    hpt.check(failures, "'Multi Components Mapping' is ignored" in messages["multi_components"],
-              "Multi Components Mapping: a warning that it is ignored")
+    for name, setting in (("map_scalars_off", "'Map Scalars' off"),
+                          ("multi_components", "'Multi Components Mapping'")):
+        hpt.check(failures, setting + " is ignored" in messages[name],
+                  "%s: a warning that it is ignored" % setting)
     hpt.finish(failures)
 
 

@@ -1,6 +1,7 @@
 #include "hovParaViewNativePiece.h"
 
 #include "vtkAppendFilter.h"                  // leaves appended, cells kept
+#include "vtkCellData.h"                      // ghost cells
 #include "vtkCompositeDataIterator.h"         // the selected leaves
 #include "vtkCompositeDataSet.h"              // composite inputs
 #include "vtkExtractBlockUsingDataAssembly.h" // the selected blocks
@@ -75,7 +76,8 @@ vtkSmartPointer<vtkUnstructuredGrid> hov::NativePiece(vtkDataObject* input,
     append->Update();
     piece->ShallowCopy(append->GetOutput());
   }
-  if (piece->GetCellGhostArray())
+  if (piece->GetCellData()->HasAnyGhostBitSet(
+        vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL))
   {
     // Ghost cells are drawn by the rank that owns them, as ParaView's
     // preprocessor removes them (else they would be composited twice).

@@ -7,6 +7,7 @@
 #include "vtkAlgorithmOutput.h"          // piece producers
 #include "vtkColorTransferFunction.h"    // the colour map's vector mode
 #include "vtkCellData.h"                 // the separate opacity array
+#include "vtkCompositeDataSet.h"         // block selection
 #include "vtkDataArray.h"                // its components
 #include "vtkDiscretizableColorTransferFunction.h" // ParaView's colour maps
 #include "vtkHighOrderTransferFunction.h" // colour sampling tolerance
@@ -19,6 +20,7 @@
 #include "vtkPVGeometryFilter.h"         // LOD geometry
 #include "vtkPVLODVolume.h"              // the actor
 #include "vtkPVRenderView.h"             // piece delivery, ordered compositing
+#include "vtkPartitionedDataSet.h"       // no block selection for partitions
 #include "vtkPointData.h"                // the separate opacity array
 #include "vtkPolyDataMapper.h"           // LOD mapper
 #include "vtkUnsignedCharArray.h"        // distinct cell types
@@ -27,6 +29,7 @@
 
 #include <algorithm> // std::max
 #include <cstring>   // std::strcmp
+#include <string>    // std::to_string
 #include <utility>   // std::pair
 
 vtkStandardNewMacro(vtkHighOrderVolumeRepresentation);
@@ -124,21 +127,29 @@ int vtkHighOrderVolumeRepresentation::RequestData(
   bool selectedNothing = false;
   this->NativePiece =
     hov::NativePiece(input, this->BlockSelectors, this->Assembly, selectedNothing);
-  // Said once per selection, and only on one rank (on several, the selected
-  // blocks may all be on other ranks).
+  // Said once per selection: no selector at all (rank 0), or selectors whose
+  // blocks hold no cells (one rank only: on several, the selected blocks may
+  // all be on other ranks).
   std::string selection = this->Assembly;
   for (const std::string& selector : this->BlockSelectors)
   {
     selection += "\n" + selector;
   }
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (selectedNothing && selection != this->WarnedSelection &&
-    (!controller || controller->GetNumberOfProcesses() <= 1))
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  const int rank = controller ? controller->GetLocalProcessId() : 0;
+  const bool noSelector = this->BlockSelectors.empty() &&
+    vtkCompositeDataSet::SafeDownCast(input) && !vtkPartitionedDataSet::SafeDownCast(input);
+  const bool warn = (noSelector && rank == 0) || (selectedNothing && ranks <= 1);
+  if (warn && selection != this->WarnedSelection)
   {
-    vtkWarningMacro("Accurate Volume: the selected blocks (" << this->BlockSelectors.size()
-      << " selectors) hold no unstructured cells; nothing is drawn.");
+    vtkWarningMacro("Accurate Volume: "
+      << (noSelector ? std::string("no block is selected (\"Blocks\")")
+                     : "the selected blocks (" + std::to_string(this->BlockSelectors.size()) +
+                         " selectors) hold no unstructured cells")
+      << "; nothing is drawn.");
   }
-  this->WarnedSelection = selectedNothing ? selection : std::string("\n(none)");
+  this->WarnedSelection = warn ? selection : std::string("\n(none)");
   if (this->NativePiece->GetNumberOfCells() > 0)
   {
     this->NativePiece->GetBounds(this->DataBounds);
