@@ -1,5 +1,6 @@
 """hov.ParaView.MPI<N>: "mpiexec -np N pvbatch" with ParaView's kd-tree redistribution and
-IceT ordered compositing renders the bracket and the zoo (CPU accurate); each composited
+IceT ordered compositing renders the bracket, the zoo, and block B of a multiblock of the
+bracket and a moved copy (ParaView's block selection on every rank; CPU accurate); each composited
 screenshot must equal the 1-rank screenshot of the same camera within 3/255 (max over
 pixels and channels). IceT reads each rank's layer back as 8-bit RGBA before compositing,
 so a few /255 are expected; 3/255 is the acceptance bound.
@@ -26,6 +27,14 @@ def main():
     args = hpt.parse_args(extra)
     failures = []
     cases = [hpt.make_case(args, name, 0) for name in ("bracket", "zoo")]
+    # A multiblock of the bracket (block A) and a moved copy (block B), block B selected:
+    # each rank draws the selected block of its own piece.
+    camera = hpt.camera_for("bracket")
+    for key in ("position", "focal_point"):
+        camera[key] = [camera[key][0] + 130.0] + camera[key][1:]
+    cases.append(hpt.make_case(args, "bracket", 0, tag="bracket_block_b", camera=camera,
+                               blocks=[130.0, 0.0, 0.0],
+                               properties={"BlockSelectors": ["/Root/BlockB"]}))
     # The 1-rank reference of the same cases (its own run: the same script, one rank).
     ref_out = os.path.join(args.temp, "paraview_mpi_ref_%d" % args.ranks)
     ref, _ = hpt.run_pvbatch(args, cases, ref_out, SIZE)
@@ -55,6 +64,12 @@ def main():
         layers = [f for f in os.listdir(out) if f.startswith(name + "_rank")]
         hpt.check(failures, len(layers) == args.ranks - 1,
                   "%s: every other rank wrote its own float layer (%d)" % (name, len(layers)))
+    # Rank 0's share of the selected block B is about its share of the bracket alone (both
+    # blocks would double it).
+    pieces = {c["name"]: r["info"]["PieceCells"] for c, r in zip(cases, res["cases"])}
+    hpt.check(failures, pieces["bracket_block_b"] < 1.5 * pieces["bracket_cpu"],
+              "block B selected: rank 0 holds %d cells, about its %d of the bracket alone"
+              % (pieces["bracket_block_b"], pieces["bracket_cpu"]))
     hpt.finish(failures)
 
 
