@@ -30,7 +30,6 @@
 #include <algorithm> // std::max
 #include <cstring>   // std::strcmp
 #include <string>    // std::to_string
-#include <utility>   // std::pair
 
 vtkStandardNewMacro(vtkHighOrderVolumeRepresentation);
 
@@ -327,18 +326,17 @@ void vtkHighOrderVolumeRepresentation::UpdateMapperParameters()
   // ParaView sets the functions of component 0 only: the mapper uses those.
   this->Property->SetIndependentComponents(false);
   // Each said once.
-  const std::pair<bool, bool*> ignored[] = { { !this->MapScalars, &this->WarnedMapScalars },
-    { this->MultiComponentsMapping, &this->WarnedMultiComponents } };
-  const char* names[] = { "'Map Scalars' off", "'Multi Components Mapping'" };
-  for (int k = 0; k < 2; ++k)
+  if (!this->MapScalars && !this->WarnedMapScalars)
   {
-    if (ignored[k].first && !*ignored[k].second)
-    {
-      *ignored[k].second = true;
-      vtkWarningMacro("Accurate Volume always maps one scalar through the colour map and "
-                      "opacity function; "
-        << names[k] << " is ignored.");
-    }
+    this->WarnedMapScalars = true;
+    vtkWarningMacro("Accurate Volume always maps one scalar through the colour map and opacity "
+                    "function; 'Map Scalars' off is ignored.");
+  }
+  if (this->MultiComponentsMapping && !this->WarnedMultiComponents)
+  {
+    this->WarnedMultiComponents = true;
+    vtkWarningMacro("Accurate Volume always maps one scalar through the colour map and opacity "
+                    "function; 'Multi Components Mapping' is ignored.");
   }
   this->Actor->SetMapper(this->Mapper);
 }
